@@ -1,0 +1,42 @@
+# cad2osmag — one-command setup, demo, tests and benchmarks.
+# Everything installs on a fresh Debian 12 machine as root: `make demo` and `make test` run
+# `make install` first, which is idempotent.
+SHELL := /bin/bash
+ROOT  := $(abspath $(dir $(lastword $(MAKEFILE_LIST))))
+VENV  := $(ROOT)/.venv
+PY    := $(VENV)/bin/python
+APT_PACKAGES := qgis python3-qgis qgis-providers python3-venv python3-gdal gdal-bin osmium-tool xvfb
+STAMP := $(VENV)/.installed
+
+.PHONY: install demo test test-quick bench evaluate clean help
+
+help:
+	@echo "make demo        install what is missing, build the sample building and convert it (out/demo/)"
+	@echo "make test        install what is missing and run the whole test suite"
+	@echo "make test-quick  the suite without the slow real-data tests"
+	@echo "make bench       per-stage wall time and peak memory on real data (docs/benchmarks.md)"
+	@echo "make evaluate    score segmentation on ../shared/data/grid_gt"
+
+install: $(STAMP)
+
+$(STAMP): requirements.txt requirements-dev.txt scripts/install.sh
+	bash scripts/install.sh "$(APT_PACKAGES)"
+	touch $(STAMP)
+
+demo: install
+	bash scripts/demo.sh
+
+test: install
+	QT_QPA_PLATFORM=offscreen $(PY) -m pytest tests -ra
+
+test-quick: install
+	QT_QPA_PLATFORM=offscreen $(PY) -m pytest tests -ra -m "not slow"
+
+bench: install
+	$(PY) scripts/bench.py --write docs/benchmarks.md
+
+evaluate: install
+	$(PY) scripts/evaluate_grids.py
+
+clean:
+	rm -rf out .pytest_cache

@@ -1,0 +1,156 @@
+"""Data passed between pipeline stages.
+
+Coordinates are metres in the drawing's own frame ("CAD frame": x right/east, y up/north) unless a
+stage says otherwise. Polygons and lines are shapely 2 geometries.
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from typing import Dict, List, Optional, Tuple
+
+import numpy as np
+
+# Occupancy raster convention (documented in the README): uint8, 0 = free, 255 = occupied,
+# 128 = unknown (robot maps only; unknown is never treated as free space).
+FREE = 0
+OCCUPIED = 255
+UNKNOWN = 128
+
+# Structural categories the layer rules map layers onto.
+KINDS = ("wall", "column", "window", "door", "stair", "elevator", "reference", "other")
+
+
+# --------------------------------------------------------------------------- stage 1: CAD import
+@dataclass
+class CadGeometry:
+    """One flattened piece of drawing geometry, already exploded out of blocks, in metres."""
+
+    layer: str  # effective layer (layer "0" inside a block takes the INSERT's layer)
+    kind: str  # one of KINDS, from the layer rules
+    coords: np.ndarray  # (N, 2) float64, metres
+    closed: bool = False
+    filled: bool = False  # solid hatch / SOLID / wide polyline outline: rasterize as a filled polygon
+    width: float = 0.0  # constant polyline width in metres (0 = hairline)
+    entity: str = ""  # source DXF type, e.g. "LWPOLYLINE"
+
+
+@dataclass
+class CadText:
+    x: float
+    y: float
+    text: str  # plain text, formatting codes stripped
+    height: float  # metres
+    rotation: float  # degrees, counter-clockwise
+    layer: str
+    entity: str = "TEXT"  # TEXT | MTEXT | ATTRIB
+
+
+@dataclass
+class LayerInfo:
+    name: str
+    counts: Dict[str, int] = field(default_factory=dict)  # DXF type -> count after explosion
+    kind: Optional[str] = None  # matched category, None when the rules drop the layer
+    rule: str = ""  # the keyword that matched
+    frozen: bool = False
+    off: bool = False
+
+    @property
+    def kept(self) -> bool:
+        return self.kind is not None and not self.frozen and not self.off
+
+
+@dataclass
+class CadDrawing:
+    path: str
+    geometries: List[CadGeometry]
+    texts: List[CadText]
+    layers: Dict[str, LayerInfo]
+    unit_name: str  # unit finally used, e.g. "mm"
+    unit_scale: float  # drawing units -> metres
+    header_unit: str  # what $INSUNITS said
+    warnings: List[str] = field(default_factory=list)
+    repairs: List[str] = field(default_factory=list)  # what recover mode fixed
+
+
+# --------------------------------------------------------------------------- stage 2: raster
+@dataclass
+class OccupancyGrid:
+    """A north-up occupancy raster. Pixel (row, col) covers
+    x in [origin_x + col*res, origin_x + (col+1)*res], y in [origin_y - (row+1)*res, origin_y - row*res].
+    """
+
+    data: np.ndarray  # (rows, cols) uint8: FREE / OCCUPIED / UNKNOWN
+    origin_x: float  # x of the top-left corner of pixel (0, 0)
+    origin_y: float  # y of the top-left corner of pixel (0, 0)
+    resolution: float  # metres per pixel
+    crs_wkt: str = ""  # empty: the CAD frame (local engineering coordinates)
+
+    @property
+    def shape(self) -> Tuple[int, int]:
+        return self.data.shape  # type: ignore[return-value]
+
+    @property
+    def geotransform(self) -> Tuple[float, float, float, float, float, float]:
+        return (self.origin_x, self.resolution, 0.0, self.origin_y, 0.0, -self.resolution)
+
+    @property
+    def extent(self) -> Tuple[float, float, float, float]:
+        """(xmin, ymin, xmax, ymax)"""
+        rows, cols = self.data.shape
+        return (self.origin_x, self.origin_y - rows * self.resolution,
+                self.origin_x + cols * self.resolution, self.origin_y)
+
+    def pixel_to_world(self, col, row):
+        """Pixel *corner* coordinates (col, row may be fractional; +0.5 gives centres) -> (x, y)."""
+        return (self.origin_x + np.asarray(col) * self.resolution,
+                self.origin_y - np.asarray(row) * self.resolution)
+
+    def world_to_pixel(self, x, y):
+        """(x, y) -> fractional (col, row) of pixel corners."""
+        return ((np.asarray(x) - self.origin_x) / self.resolution,
+                (self.origin_y - np.asarray(y)) / self.resolution)
+
+
+# --------------------------------------------------------------------------- stage 3+: area graph
+@dataclass
+class Area:
+    id: int
+    polygon: "object"  # shapely Polygon, CAD frame metres
+    type: str = "room"  # room | corridor | stairs | elevator | structure
+    name: str = ""
+    max_clearance: float = 0.0  # metres
+    tags: Dict[str, str] = field(default_factory=dict)  # extra osmAG/OSM tags
+
+    @property
+    def area(self) -> float:
+        return float(self.polygon.area)
+
+    @property
+    def perimeter(self) -> float:
+        return float(self.polygon.length)
+
+
+@dataclass
+class Passage:
+    id: int
+    from_id: int
+    to_id: int
+    line: "object"  # shapely LineString with exactly two points, on the walls at both ends
+    name: str = ""
+    tags: Dict[str, str] = field(default_factory=dict)
+
+    @property
+    def width(self) -> float:
+        return float(self.line.length)
+
+
+@dataclass
+class AreaGraph:
+    areas: List[Area]
+    passages: List[Passage]
+    labels: Optional[np.ndarray] = None  # int32 raster of area ids on ``grid`` (0 = no area)
+    grid: Optional[OccupancyGrid] = None
+    stats: Dict[str, float] = field(default_factory=dict)  # timings (s) and figures for the log
+
+    def area_by_id(self) -> Dict[int, Area]:
+        return {a.id: a for a in self.areas}

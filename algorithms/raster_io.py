@@ -1,0 +1,158 @@
+"""Reading and writing occupancy rasters.
+
+Formats: GeoTIFF (our own output, any single-band GDAL raster), PNG/PGM images with an explicit
+resolution, and ROS ``map_server`` maps (``map.yaml`` + image, honouring resolution, origin,
+negate, occupied_thresh and free_thresh). Everything comes back as an ``OccupancyGrid`` with the
+0 free / 255 occupied / 128 unknown convention.
+"""
+from __future__ import annotations
+
+import math
+import os
+from typing import Optional
+
+import numpy as np
+
+from .errors import InputError
+from .io_utils import atomic_path
+from .model import FREE, OCCUPIED, UNKNOWN, OccupancyGrid
+
+
+def _gdal():
+    from osgeo import gdal  # Debian's python3-gdal (a dependency of QGIS)
+
+    gdal.UseExceptions()
+    return gdal
+
+
+def write_geotiff(path: str, data: np.ndarray, origin_x: float, origin_y: float, resolution: float,
+                  crs_wkt: str = "", nodata: Optional[float] = None) -> str:
+    """Write a single-band north-up GeoTIFF atomically (temp file + rename). Returns ``path``."""
+    gdal = _gdal()
+    if data.ndim != 2:
+        raise InputError(f"expected a single-band 2-D array, got shape {data.shape}")
+    dtype_map = {np.dtype(np.uint8): gdal.GDT_Byte, np.dtype(np.int32): gdal.GDT_Int32,
+                 np.dtype(np.uint16): gdal.GDT_UInt16, np.dtype(np.float32): gdal.GDT_Float32}
+    if data.dtype not in dtype_map:
+        raise InputError(f"unsupported raster dtype {data.dtype}")
+    with atomic_path(path, suffix=".tif") as tmp:
+        drv = gdal.GetDriverByName("GTiff")
+        ds = drv.Create(tmp, int(data.shape[1]), int(data.shape[0]), 1, dtype_map[data.dtype],
+                        options=["COMPRESS=DEFLATE", "TILED=YES"])
+        ds.SetGeoTransform((float(origin_x), float(resolution), 0.0, float(origin_y), 0.0, -float(resolution)))
+        if crs_wkt:
+            ds.SetProjection(crs_wkt)
+        band = ds.GetRasterBand(1)
+        if nodata is not None:
+            band.SetNoDataValue(nodata)
+        band.WriteArray(data)
+        band.FlushCache()
+        ds = None  # close before rename
+    return path
+
+
+def write_grid(path: str, grid: OccupancyGrid) -> str:
+    return write_geotiff(path, grid.data, grid.origin_x, grid.origin_y, grid.resolution, grid.crs_wkt)
+
+
+def _classify(img: np.ndarray, negate: bool = False, occupied_thresh: float = 0.65,
+              free_thresh: float = 0.196) -> np.ndarray:
+    """ROS map_server 'trinary' interpretation of a grey image -> FREE/OCCUPIED/UNKNOWN."""
+    img = img.astype(np.float64)
+    maxv = 255.0 if img.max(initial=0) <= 255 else float(img.max())
+    p = img / maxv if negate else (maxv - img) / maxv  # occupancy probability
+    out = np.full(img.shape, UNKNOWN, np.uint8)
+    out[p > occupied_thresh] = OCCUPIED
+    out[p < free_thresh] = FREE
+    return out
+
+
+def _read_image(path: str) -> np.ndarray:
+    import cv2
+
+    img = cv2.imread(path, cv2.IMREAD_UNCHANGED)
+    if img is None:
+        raise InputError(f"cannot read '{path}' as an image (not an image file, or corrupt)")
+    if img.ndim == 3:
+        if img.shape[2] == 4:
+            img = img[:, :, :3]
+        if not (np.array_equal(img[:, :, 0], img[:, :, 1]) and np.array_equal(img[:, :, 1], img[:, :, 2])):
+            raise InputError(f"'{os.path.basename(path)}' is a colour image with {img.shape[2]} bands; "
+                             "an occupancy grid must be a single grey band")
+        img = img[:, :, 0]
+    return img
+
+
+def read_ros_yaml(path: str) -> OccupancyGrid:
+    """Read a ROS map_server ``map.yaml`` and its image."""
+    import yaml  # python3-yaml ships with Debian's QGIS
+
+    try:
+        with open(path, encoding="utf-8") as fh:
+            meta = yaml.safe_load(fh)
+    except (OSError, yaml.YAMLError) as exc:
+        raise InputError(f"cannot read ROS map description '{path}': {exc}") from exc
+    if not isinstance(meta, dict) or "image" not in meta or "resolution" not in meta:
+        raise InputError(f"'{path}' is not a ROS map yaml (needs 'image' and 'resolution')")
+    img_path = meta["image"]
+    if not os.path.isabs(img_path):
+        img_path = os.path.join(os.path.dirname(os.path.abspath(path)), img_path)
+    img = _read_image(img_path)
+    res = float(meta["resolution"])
+    if not res > 0:
+        raise InputError(f"'{path}': resolution must be positive, got {meta['resolution']}")
+    origin = meta.get("origin", [0.0, 0.0, 0.0]) or [0.0, 0.0, 0.0]
+    mode = str(meta.get("mode", "trinary"))
+    data = _classify(img, bool(int(meta.get("negate", 0))), float(meta.get("occupied_thresh", 0.65)),
+                     float(meta.get("free_thresh", 0.196)))
+    if mode == "scale" or mode == "raw":
+        pass  # trinary interpretation is what segmentation needs
+    # ROS origin is the bottom-left pixel corner; image row 0 is the top.
+    ox, oy = float(origin[0]), float(origin[1])
+    if len(origin) > 2 and abs(float(origin[2])) > 1e-9:
+        raise InputError(f"'{path}': rotated map origins (yaw={origin[2]}) are not supported")
+    return OccupancyGrid(data, ox, oy + img.shape[0] * res, res)
+
+
+def read_grid(path: str, resolution: Optional[float] = None, origin=(0.0, 0.0)) -> OccupancyGrid:
+    """Read any supported occupancy raster.
+
+    ``resolution`` is required for plain images (PNG/PGM/JPG without georeferencing) and overrides
+    nothing for GeoTIFFs, which carry their own geotransform. Grey images are classified like ROS
+    maps (dark = occupied, light = free, mid grey = unknown).
+    """
+    if not os.path.exists(path):
+        raise InputError(f"raster '{path}' does not exist")
+    ext = os.path.splitext(path)[1].lower()
+    if ext in (".yaml", ".yml"):
+        return read_ros_yaml(path)
+    if ext in (".png", ".pgm", ".jpg", ".jpeg", ".bmp"):
+        img = _read_image(path)
+        if resolution is None or not resolution > 0:
+            raise InputError(f"'{os.path.basename(path)}' carries no resolution: give RESOLUTION in metres per pixel")
+        data = _classify(img)
+        return OccupancyGrid(data, float(origin[0]), float(origin[1]) + img.shape[0] * resolution, float(resolution))
+    gdal = _gdal()
+    try:
+        ds = gdal.Open(path)
+    except RuntimeError as exc:
+        raise InputError(f"cannot open raster '{path}': {exc}") from exc
+    if ds.RasterCount != 1:
+        raise InputError(f"'{os.path.basename(path)}' has {ds.RasterCount} bands; an occupancy grid must have one")
+    gt = ds.GetGeoTransform(can_return_null=True)
+    arr = ds.GetRasterBand(1).ReadAsArray()
+    if gt is None or (gt[1] == 1.0 and gt[5] == 1.0 and gt[0] == 0 and gt[3] == 0):
+        if resolution is None:
+            raise InputError(f"'{os.path.basename(path)}' has no geotransform: give RESOLUTION in metres per pixel")
+        gt = (float(origin[0]), resolution, 0.0, float(origin[1]) + arr.shape[0] * resolution, 0.0, -resolution)
+    if abs(gt[2]) > 1e-12 or abs(gt[4]) > 1e-12 or not math.isclose(abs(gt[1]), abs(gt[5]), rel_tol=1e-6):
+        raise InputError(f"'{os.path.basename(path)}' is rotated or has non-square pixels; resample it first")
+    if gt[5] > 0:
+        arr = arr[::-1]
+        gt = (gt[0], gt[1], 0.0, gt[3] + arr.shape[0] * gt[5], 0.0, -gt[5])
+    vals = np.unique(arr)
+    if set(vals.tolist()) <= {FREE, OCCUPIED, UNKNOWN}:
+        data = arr.astype(np.uint8)
+    else:
+        data = _classify(arr)
+    return OccupancyGrid(data, float(gt[0]), float(gt[3]), float(gt[1]), ds.GetProjection() or "")

@@ -1,0 +1,31 @@
+"""Shared fixtures. Real data lives in ../shared/data beside the repository (never copied in)."""
+import os
+import sys
+from pathlib import Path
+
+import pytest
+
+REPO = Path(__file__).resolve().parents[1]
+SHARED_DATA = Path(os.environ.get("CAD2OSMAG_SHARED_DATA", REPO.parent / "shared" / "data"))
+
+# Make the repository importable as the package "cad2osmag" (the plugin folder name) and its
+# sub-packages importable directly (``import algorithms``) for the pure-Python tests.
+if str(REPO) not in sys.path:
+    sys.path.insert(0, str(REPO))
+
+
+def pytest_configure(config):
+    config.addinivalue_line("markers", "slow: real-data or long test (skip with -m 'not slow')")
+    config.addinivalue_line("markers", "qgis_process: runs scripts/qgis-process in a subprocess")
+
+
+@pytest.fixture(scope="session")
+def shared_data() -> Path:
+    if not SHARED_DATA.is_dir():
+        pytest.skip(f"real data folder {SHARED_DATA} is missing (expected ../shared/data beside the repo)")
+    return SHARED_DATA
+
+
+@pytest.fixture(scope="session")
+def repo_root() -> Path:
+    return REPO
