@@ -1,0 +1,111 @@
+"""QGIS desktop integration: registers the Processing provider and adds a menu and a toolbar button."""
+import os
+import sys
+
+from qgis.core import QgsApplication
+from qgis.PyQt.QtCore import QCoreApplication
+from qgis.PyQt.QtGui import QIcon
+from qgis.PyQt.QtWidgets import QAction
+
+PLUGIN_DIR = os.path.dirname(__file__)
+ICON_PATH = os.path.join(PLUGIN_DIR, "icons", "icon.svg")
+MENU = "&CAD to osmAG"
+# The algorithm the toolbar button opens: the whole pipeline when it exists, else the first stage.
+MAIN_ALGORITHMS = ("cad2osmag:dxftoosmag", "cad2osmag:extractstructure", "cad2osmag:samplebuilding")
+
+
+def add_local_venv_to_path():
+    """When the plugin runs from a checkout set up by `make install`, make the venv's pinned
+    dependencies (ezdxf, opencv, shapely, pyproj...) importable inside QGIS."""
+    venv_lib = os.path.join(PLUGIN_DIR, ".venv", "lib",
+                            f"python{sys.version_info.major}.{sys.version_info.minor}", "site-packages")
+    if os.path.isdir(venv_lib) and venv_lib not in sys.path:
+        sys.path.append(venv_lib)
+
+
+class Cad2OsmagPlugin:
+    def __init__(self, iface):
+        self.iface = iface
+        self.provider = None
+        self.actions = []
+        self.menu = None
+        add_local_venv_to_path()
+
+    @staticmethod
+    def tr(text):
+        return QCoreApplication.translate("Cad2OsmagPlugin", text)
+
+    # QGIS calls initProcessing() for plugins with hasProcessingProvider=yes (also in qgis_process)
+    def initProcessing(self):  # noqa: N802
+        if self.provider is None:
+            from .processing_provider.provider import Cad2OsmagProvider
+
+            self.provider = Cad2OsmagProvider()
+            QgsApplication.processingRegistry().addProvider(self.provider)
+
+    def initGui(self):  # noqa: N802
+        self.initProcessing()
+        icon = QIcon(ICON_PATH)
+        main = QAction(icon, self.tr("Convert a DXF floor plan to osmAG…"), self.iface.mainWindow())
+        main.triggered.connect(self.open_main_algorithm)
+        self.iface.addToolBarIcon(main)
+        self._add_to_menu(main)
+        self.actions.append(main)
+
+        toolbox = QAction(self.tr("Show the CAD to osmAG algorithms"), self.iface.mainWindow())
+        toolbox.triggered.connect(self.show_toolbox)
+        self._add_to_menu(toolbox)
+        self.actions.append(toolbox)
+
+        for kind, label in (("osm", self.tr("Add OpenStreetMap basemap")),
+                            ("satellite", self.tr("Add satellite imagery basemap"))):
+            action = QAction(label, self.iface.mainWindow())
+            action.triggered.connect(lambda _checked=False, k=kind: self.add_basemap(k))
+            self._add_to_menu(action)
+            self.actions.append(action)
+
+    def _add_to_menu(self, action):
+        # Vector menu in QGIS; test doubles of QgisInterface may only offer the Plugins menu.
+        add = getattr(self.iface, "addPluginToVectorMenu", None) or self.iface.addPluginToMenu
+        add(MENU, action)
+
+    def unload(self):
+        remove = getattr(self.iface, "removePluginVectorMenu", None) or getattr(self.iface, "removePluginMenu", None)
+        for action in self.actions:
+            if remove is not None:
+                remove(MENU, action)
+            self.iface.removeToolBarIcon(action)
+        self.actions = []
+        if self.provider is not None:
+            QgsApplication.processingRegistry().removeProvider(self.provider)
+            self.provider = None
+
+    # --- actions ------------------------------------------------------------------------------
+    def open_main_algorithm(self):
+        import processing  # QGIS's Processing plugin
+
+        registry = QgsApplication.processingRegistry()
+        for alg_id in MAIN_ALGORITHMS:
+            if registry.algorithmById(alg_id) is not None:
+                processing.execAlgorithmDialog(alg_id)
+                return
+
+    def show_toolbox(self):
+        """Show the Processing toolbox filtered on this provider."""
+        from qgis.PyQt.QtWidgets import QDockWidget, QLineEdit
+
+        dock = self.iface.mainWindow().findChild(QDockWidget, "ProcessingToolbox")
+        if dock is None:
+            return
+        dock.setVisible(True)
+        dock.raise_()
+        search = dock.findChild(QLineEdit)
+        if search is not None:
+            search.setText("cad2osmag")
+
+    def add_basemap(self, kind):
+        from .ui import basemaps
+
+        layer = basemaps.add_xyz_basemap(kind)
+        if layer is not None:
+            self.iface.messageBar().pushInfo("cad2osmag", self.tr("Added basemap “{}”.").format(layer.name()))

@@ -1,0 +1,112 @@
+"""Base class and helpers shared by every cad2osmag Processing algorithm.
+
+The algorithms themselves live in ``algorithms/`` (no qgis import). A Processing class only maps
+parameters, layers and feedback onto them:
+
+* ``self.progress(feedback)`` gives the pipeline a ``Progress`` that reports to the feedback and
+  honours cancel;
+* ``self.call(feedback, func, ...)`` runs a pipeline function and turns ``InputError``/``Canceled``
+  into ``QgsProcessingException`` with the same, user-readable message;
+* ``to_qgs``/``from_qgs`` convert shapely <-> QgsGeometry through WKB.
+"""
+import os
+
+from qgis.core import QgsGeometry, QgsProcessingAlgorithm, QgsProcessingException
+from qgis.PyQt.QtCore import QCoreApplication
+from qgis.PyQt.QtGui import QIcon
+
+from ..algorithms.errors import Canceled, InputError
+from ..algorithms.progress import Progress
+
+ICON_PATH = os.path.join(os.path.dirname(os.path.dirname(__file__)), "icons", "icon.svg")
+
+
+class FeedbackProgress(Progress):
+    """Adapter: pipeline ``Progress`` -> ``QgsProcessingFeedback``."""
+
+    def __init__(self, feedback):
+        self._fb = feedback
+
+    def set_percent(self, percent):
+        if self._fb is not None:
+            self._fb.setProgress(float(percent))
+
+    def info(self, message):
+        if self._fb is not None:
+            self._fb.pushInfo(message)
+
+    def warning(self, message):
+        if self._fb is not None:
+            # pushWarning exists from QGIS 3.16; keep a fallback for safety
+            push = getattr(self._fb, "pushWarning", None) or self._fb.reportError
+            push(message)
+
+    def is_canceled(self):
+        return self._fb is not None and self._fb.isCanceled()
+
+
+class Cad2OsmagAlgorithm(QgsProcessingAlgorithm):
+    """Subclasses set NAME, DISPLAY_NAME, GROUP, GROUP_ID and HELP and implement
+    initAlgorithm/processAlgorithm."""
+
+    NAME = ""
+    DISPLAY_NAME = ""
+    GROUP = "Pipeline"
+    GROUP_ID = "pipeline"
+    HELP = ""
+
+    # --- QgsProcessingAlgorithm boilerplate -----------------------------------------------
+    def tr(self, text):
+        return QCoreApplication.translate(type(self).__name__, text)
+
+    def name(self):
+        return self.NAME
+
+    def displayName(self):  # noqa: N802
+        return self.tr(self.DISPLAY_NAME)
+
+    def group(self):
+        return self.tr(self.GROUP)
+
+    def groupId(self):  # noqa: N802
+        return self.GROUP_ID
+
+    def shortHelpString(self):  # noqa: N802
+        return self.tr(self.HELP)
+
+    def icon(self):
+        return QIcon(ICON_PATH)
+
+    def createInstance(self):  # noqa: N802
+        return type(self)()
+
+    # --- helpers ----------------------------------------------------------------------------
+    @staticmethod
+    def progress(feedback):
+        return FeedbackProgress(feedback)
+
+    def call(self, feedback, func, *args, **kwargs):
+        """Run a pipeline function with a feedback-backed ``progress`` keyword argument."""
+        kwargs.setdefault("progress", self.progress(feedback))
+        try:
+            return func(*args, **kwargs)
+        except Canceled:
+            raise QgsProcessingException(self.tr("Canceled by the user."))
+        except InputError as exc:
+            raise QgsProcessingException(str(exc))
+
+
+def to_qgs(geom):
+    """shapely geometry -> QgsGeometry"""
+    out = QgsGeometry()
+    out.fromWkb(geom.wkb)
+    return out
+
+
+def from_qgs(qgs_geometry):
+    """QgsGeometry -> shapely geometry (None for empty/null)."""
+    import shapely.wkb
+
+    if qgs_geometry is None or qgs_geometry.isNull() or qgs_geometry.isEmpty():
+        return None
+    return shapely.wkb.loads(bytes(qgs_geometry.asWkb()))

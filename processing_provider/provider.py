@@ -1,0 +1,57 @@
+"""The "CAD to osmAG" Processing provider (id ``cad2osmag``).
+
+Algorithms are discovered from the ``alg_*.py`` modules of this package: each defines one subclass of
+``Cad2OsmagAlgorithm``. Adding a stage means adding one file; the provider never changes.
+"""
+import importlib
+import inspect
+import os
+import pkgutil
+
+from qgis.core import QgsMessageLog, QgsProcessingProvider, Qgis
+from qgis.PyQt.QtCore import QCoreApplication
+from qgis.PyQt.QtGui import QIcon
+
+from .base import Cad2OsmagAlgorithm
+
+PROVIDER_ID = "cad2osmag"
+ICON_PATH = os.path.join(os.path.dirname(os.path.dirname(__file__)), "icons", "icon.svg")
+
+
+def algorithm_classes():
+    """Every concrete ``Cad2OsmagAlgorithm`` subclass in ``processing_provider/alg_*.py``, sorted by name."""
+    classes = {}
+    pkg_dir = os.path.dirname(__file__)
+    for info in sorted(pkgutil.iter_modules([pkg_dir]), key=lambda i: i.name):
+        if not info.name.startswith("alg_"):
+            continue
+        try:
+            module = importlib.import_module(f"{__package__}.{info.name}")
+        except Exception as exc:  # a broken module must not hide the others
+            QgsMessageLog.logMessage(f"cannot load {info.name}: {exc!r}", "cad2osmag", Qgis.Critical)
+            continue
+        for _, obj in inspect.getmembers(module, inspect.isclass):
+            if issubclass(obj, Cad2OsmagAlgorithm) and obj is not Cad2OsmagAlgorithm and obj.__module__ == module.__name__:
+                classes[obj.NAME] = obj
+    return [classes[k] for k in sorted(classes)]
+
+
+class Cad2OsmagProvider(QgsProcessingProvider):
+    def id(self):
+        return PROVIDER_ID
+
+    def name(self):
+        return QCoreApplication.translate("Cad2OsmagProvider", "CAD to osmAG")
+
+    def longName(self):
+        return self.name()
+
+    def icon(self):
+        return QIcon(ICON_PATH)
+
+    def svgIconPath(self):
+        return ICON_PATH
+
+    def loadAlgorithms(self):
+        for cls in algorithm_classes():
+            self.addAlgorithm(cls())

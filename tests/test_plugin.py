@@ -1,0 +1,82 @@
+"""The plugin as QGIS sees it: metadata, classFactory/initGui/unload, the provider and its algorithms."""
+import configparser
+import importlib
+import importlib.util
+import re
+import subprocess
+import sys
+
+import pytest
+
+from .conftest import REPO
+
+REQUIRED_METADATA = ("name", "qgisMinimumVersion", "description", "about", "version", "author", "email",
+                     "tracker", "repository", "tags", "category", "icon")
+
+
+def test_metadata_is_complete():
+    cfg = configparser.ConfigParser()
+    cfg.read(REPO / "metadata.txt", encoding="utf-8")
+    general = cfg["general"]
+    for key in REQUIRED_METADATA:
+        assert general.get(key, "").strip(), f"metadata.txt lacks {key}"
+    assert general["qgisMinimumVersion"] == "3.22"
+    assert general["hasProcessingProvider"] == "yes"
+    assert (REPO / general["icon"]).is_file()
+    assert len(general["about"]) > 100
+
+
+def test_algorithms_package_never_imports_qgis():
+    for path in sorted((REPO / "algorithms").rglob("*.py")):
+        text = path.read_text(encoding="utf-8")
+        assert "import qgis" not in text and "from qgis" not in text, f"{path.name} imports qgis"
+
+
+def _plugin_module():
+    """Import the repository as the package 'cad2osmag', as QGIS does with the plugin folder."""
+    if "cad2osmag" not in sys.modules:
+        spec = importlib.util.spec_from_file_location("cad2osmag", REPO / "__init__.py",
+                                                      submodule_search_locations=[str(REPO)])
+        module = importlib.util.module_from_spec(spec)
+        sys.modules["cad2osmag"] = module
+        spec.loader.exec_module(module)
+    return sys.modules["cad2osmag"]
+
+
+def test_plugin_loads_and_unloads(qgis_iface, qgis_app):
+    from qgis.core import QgsApplication
+
+    plugin = _plugin_module().classFactory(qgis_iface)
+    plugin.initGui()
+    try:
+        provider = QgsApplication.processingRegistry().providerById("cad2osmag")
+        assert provider is not None
+        assert provider.name() == "CAD to osmAG"
+        ids = {alg.id() for alg in provider.algorithms()}
+        assert "cad2osmag:samplebuilding" in ids
+        assert len(plugin.actions) >= 3
+    finally:
+        plugin.unload()
+    assert QgsApplication.processingRegistry().providerById("cad2osmag") is None
+    assert plugin.actions == []
+
+
+@pytest.mark.qgis_process
+def test_qgis_process_lists_provider_algorithms():
+    out = subprocess.run([str(REPO / "scripts" / "qgis-process"), "list"], capture_output=True, text=True,
+                         timeout=300)
+    assert out.returncode == 0, out.stderr
+    assert "cannot load" not in out.stdout + out.stderr, out.stdout + out.stderr
+    listed = {line.split()[0] for line in out.stdout.splitlines() if line.strip().startswith("cad2osmag:")}
+    assert expected_algorithm_ids() <= listed
+    assert "cad2osmag:samplebuilding" in listed
+
+
+def expected_algorithm_ids():
+    """Every NAME declared in processing_provider/alg_*.py."""
+    ids = set()
+    for path in (REPO / "processing_provider").glob("alg_*.py"):
+        match = re.search(r'^    NAME = "([a-z0-9_]+)"', path.read_text(encoding="utf-8"), re.M)
+        assert match, f"{path.name} declares no NAME"
+        ids.add("cad2osmag:" + match.group(1))
+    return ids
