@@ -5,6 +5,9 @@ from pathlib import Path
 
 import pytest
 
+# QGIS (through pytest-qgis) needs a Qt platform; tests never open windows.
+os.environ.setdefault("QT_QPA_PLATFORM", "offscreen")
+
 REPO = Path(__file__).resolve().parents[1]
 SHARED_DATA = Path(os.environ.get("CAD2OSMAG_SHARED_DATA", REPO.parent / "shared" / "data"))
 
