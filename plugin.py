@@ -3,7 +3,7 @@ import os
 import sys
 
 from qgis.core import QgsApplication
-from qgis.PyQt.QtCore import QCoreApplication
+from qgis.PyQt.QtCore import QCoreApplication, QLocale, QSettings, QTranslator
 from qgis.PyQt.QtGui import QIcon
 from qgis.PyQt.QtWidgets import QAction
 
@@ -28,8 +28,18 @@ class Cad2OsmagPlugin:
         self.iface = iface
         self.provider = None
         self.actions = []
-        self.menu = None
+        self.translator = None
         add_local_venv_to_path()
+        self._install_translator()
+
+    def _install_translator(self):
+        """Load i18n/cad2osmag_<locale>.qm when QGIS runs in a language we have a translation for."""
+        locale = (QSettings().value("locale/userLocale", "") or QLocale.system().name())[:2]
+        qm = os.path.join(PLUGIN_DIR, "i18n", f"cad2osmag_{locale}.qm")
+        if os.path.exists(qm):
+            self.translator = QTranslator()
+            if self.translator.load(qm):
+                QCoreApplication.installTranslator(self.translator)
 
     @staticmethod
     def tr(text):
