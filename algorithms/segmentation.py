@@ -1,0 +1,531 @@
+"""Area Graph segmentation of an occupancy grid (pipeline stage 3).
+
+After Hou, Yuan and Schwertfeger, "Area Graph: Generation of Topological Maps using the Voronoi
+Diagram" (ICAR 2019), with the dynamic alpha of the CAD-to-osmAG paper. Everything is raster based
+(numpy / scipy.ndimage / OpenCV / GDAL) and runs in a few seconds on multi-million pixel floors.
+
+Steps (``AreaGraph.stats`` keeps the wall time of each):
+
+``interior``
+    Building envelope. A disk of radius ``envelope_gap / 2`` rolled through the free space from
+    outside the image marks everything it can reach as *outside*; facade openings narrower than
+    ``envelope_gap`` (doors, glazing, drawing gaps) are therefore bridged and the interior is the
+    rest of the free space. Outside space is never an area. Unknown cells are never free.
+``skeleton``
+    Clearance (Euclidean distance to the nearest wall) and the generalised Voronoi diagram of the
+    free space, represented by its *cells*: each local clearance maximum (a vertex of the GVD with
+    locally maximal clearance) floods the free space downhill (a watershed of the clearance), so
+    the cell borders are the GVD's clearance minima -- the narrowings where the Voronoi graph
+    would be split at doors -- and the cell interiors hold one stretch of skeleton each.
+``graph``
+    Topology graph: two cells are neighbours when they touch; the edge carries the *saddle*, the
+    largest clearance along the shared border (half the width of the opening between them).
+``merge``
+    Cells are merged in order of decreasing saddle clearance (a merge tree):
+
+    * noise: a cell whose peak clearance rises less than ``prune`` above the saddle is a
+      skeleton branch shorter than ``prune`` and is merged (GVD pruning);
+    * alpha rooms: where the opening is at least the alpha-disk radius
+      ``R = sqrt(alpha)`` px, alpha = ceil((min(door, corridor) + delta)^2 / (4 r^2)), the disk
+      sweeps from one cell into the other, so they belong to the same room; two different alpha
+      rooms (cells whose clearance admits the disk) are never merged through a narrower opening;
+    * doors: an opening no wider than ``door_width + delta`` that is clearly narrower than the
+      space behind it (saddle < ``NARROWING`` x the larger peak) keeps the split -- this finds the
+      rooms that are too narrow for the alpha disk;
+    * anything else (corridor cells split at junctions, bumps) is merged: nothing justifies a split.
+``polygons``
+    Exact pixel-edge outlines of the label raster (GDAL Polygonize), so neighbouring areas share
+    their border vertices exactly.
+``passages``
+    One passage per connected piece of the border between two areas: the segment between the two
+    ends of the shared border (where it meets walls), its length is the passage width.
+"""
+from __future__ import annotations
+
+import math
+import time
+from typing import Dict, List, Optional, Tuple
+
+import numpy as np
+
+from .errors import InputError
+from .model import FREE, Area, AreaGraph, OccupancyGrid, Passage
+from .progress import Progress, ensure
+
+DEFAULT_DOOR_WIDTH = 2.8
+DEFAULT_CORRIDOR_WIDTH = 8.0
+DEFAULT_DELTA = 0.1
+DEFAULT_PRUNE = 0.25
+DEFAULT_ENVELOPE_GAP = 4.0  # widest facade opening (m) bridged when looking for the building interior
+NARROWING = 0.6  # an opening narrower than this fraction of the space behind it is a door
+CORRIDOR_ELONGATION = 4.0  # area / (2 * max clearance)^2 above which an area is a corridor
+MIN_INTERIOR_COMPONENT_M2 = 1.0  # smaller free pockets inside the envelope are dropped
+MIN_PASSAGE_M = 0.2  # shorter extra contacts between two areas that also touch elsewhere are no passage
+
+
+# --------------------------------------------------------------------------- parameters
+def compute_alpha(door_width: float, corridor_width: float, delta: float, resolution: float) -> int:
+    """Dynamic alpha (squared pixel radius of the probe disk), equation (4) of the paper."""
+    return int(math.ceil((min(door_width, corridor_width) + delta) ** 2 / (4.0 * resolution ** 2)))
+
+
+def _check_inputs(grid: OccupancyGrid, door_width: float, corridor_width: float, delta: float,
+                  prune: float) -> Tuple[np.ndarray, int]:
+    data = np.asarray(grid.data)
+    if data.ndim != 2:
+        raise InputError(f"the occupancy grid has shape {data.shape}; it must be a single-band 2-D raster "
+                         "(convert multi-band images to one grey band first)")
+    if data.size == 0:
+        raise InputError("the occupancy grid is empty (0 pixels)")
+    res = grid.resolution
+    if res is None or not np.isfinite(res) or not res > 0:
+        raise InputError(f"the raster has no valid resolution ({res!r}); give RESOLUTION in metres per pixel")
+    for name, val in (("DOOR_WIDTH", door_width), ("CORRIDOR_WIDTH", corridor_width)):
+        if not (np.isfinite(val) and val > 0):
+            raise InputError(f"{name} must be a positive width in metres, got {val!r}")
+    if not (np.isfinite(delta) and delta >= 0):
+        raise InputError(f"DELTA must be >= 0 metres, got {delta!r}")
+    if not (np.isfinite(prune) and prune >= 0):
+        raise InputError(f"PRUNE must be >= 0 metres, got {prune!r}")
+    alpha = compute_alpha(door_width, corridor_width, delta, res)
+    if alpha < 2:
+        raise InputError(f"alpha = {alpha} px^2 is smaller than 2 at {res:g} m/px: the raster is too coarse for "
+                         f"openings of {min(door_width, corridor_width) + delta:g} m; rasterize at a finer "
+                         "resolution or check RESOLUTION")
+    if 2.0 * math.sqrt(alpha) > max(data.shape):
+        raise InputError(f"alpha = {alpha} px^2 (a {2 * math.sqrt(alpha) * res:.3g} m probe disk) is larger than the "
+                         f"map ({data.shape[1]} x {data.shape[0]} px at {res:g} m/px): check RESOLUTION "
+                         "(is it in metres per pixel?) or DOOR_WIDTH / CORRIDOR_WIDTH")
+    if not np.any(data == FREE):
+        raise InputError("the occupancy grid has no free cell (it is all occupied or unknown); "
+                         "free space must be 0 (white in images)")
+    return data, alpha
+
+
+# --------------------------------------------------------------------------- helpers
+def _edt(mask: np.ndarray) -> np.ndarray:
+    """Euclidean distance (px, float32) of every True pixel to the nearest False pixel."""
+    import cv2
+
+    return cv2.distanceTransform(mask.view(np.uint8) if mask.dtype == bool else mask.astype(np.uint8),
+                                 cv2.DIST_L2, cv2.DIST_MASK_PRECISE)
+
+
+def building_interior(free: np.ndarray, resolution: float, envelope_gap: float = DEFAULT_ENVELOPE_GAP
+                      ) -> Tuple[np.ndarray, np.ndarray]:
+    """Free space inside the building envelope.
+
+    Returns ``(interior_free, envelope)``: ``envelope`` is everything a disk of diameter
+    ``envelope_gap`` cannot reach from outside the image through the free space (walls included),
+    ``interior_free`` its free pixels without pockets smaller than ``MIN_INTERIOR_COMPONENT_M2``.
+    """
+    import cv2
+
+    rc = max(1.0, envelope_gap / 2.0 / resolution)
+    pad = int(math.ceil(rc)) + 2
+    padded = np.pad(free, pad, mode="constant", constant_values=True)
+    dist = _edt(padded)
+    centers = (dist > rc).view(np.uint8)
+    n, lab = cv2.connectedComponents(centers, connectivity=8, ltype=cv2.CV_32S)
+    outside_id = lab[0, 0]
+    if outside_id == 0:  # cannot happen with the padding, kept for safety
+        envelope = np.ones(free.shape, bool)
+    else:
+        not_centers = (lab != outside_id).view(np.uint8)
+        reach = _edt(not_centers)[pad:-pad, pad:-pad]
+        envelope = reach > rc  # outside = within rc of an outside disk centre
+    interior = free & envelope
+    # drop tiny pockets (exterior corners the disk could not reach, drawing slivers)
+    n, lab, st, _ = cv2.connectedComponentsWithStats(interior.view(np.uint8), connectivity=4, ltype=cv2.CV_32S)
+    min_px = MIN_INTERIOR_COMPONENT_M2 / resolution ** 2
+    small = st[:, cv2.CC_STAT_AREA] < min_px
+    small[0] = True
+    if small[1:].all() and n > 1:  # a map smaller than the threshold: keep its largest part
+        small[1 + int(np.argmax(st[1:, cv2.CC_STAT_AREA]))] = False
+    interior &= ~small[lab]
+    return interior, envelope
+
+
+def _cells(free: np.ndarray) -> Tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """Clearance and its Voronoi cells. Returns (clearance px float32, cells int32, peak per cell).
+
+    Every free pixel climbs the clearance by steepest ascent (8-neighbourhood) to a local maximum
+    (a plateau of the GVD ridge); the pixels that reach the same maximum form one cell. Pointer
+    jumping makes this a handful of vectorised passes.
+    """
+    import cv2
+
+    dist = _edt(free)
+    rows, cols = free.shape
+    local_max = cv2.dilate(dist, np.ones((3, 3), np.uint8))
+    peaks = (dist >= local_max) & free
+    n, markers = cv2.connectedComponents(peaks.view(np.uint8), connectivity=8, ltype=cv2.CV_32S)
+    peak_val = np.zeros(n, np.float64)
+    peak_val[markers[peaks]] = dist[peaks]
+    # steepest ascent pointer of every pixel (itself when no neighbour is strictly higher)
+    padded = np.pad(dist, 1, mode="constant", constant_values=-1.0)
+    best = dist.copy()
+    step = np.zeros(free.shape, np.int32)
+    for dr in (-1, 0, 1):
+        for dc in (-1, 0, 1):
+            if dr == 0 and dc == 0:
+                continue
+            nb = padded[1 + dr:rows + 1 + dr, 1 + dc:cols + 1 + dc]
+            better = nb > best
+            best[better] = nb[better]
+            step[better] = dr * cols + dc
+    del best, padded, local_max
+    flat_free = np.flatnonzero(free.ravel())
+    pos = np.full(rows * cols, -1, np.int64)
+    pos[flat_free] = np.arange(len(flat_free))
+    parent = pos[flat_free + step.ravel()[flat_free]]
+    del step, pos
+    while True:
+        grand = parent[parent]
+        if np.array_equal(grand, parent):
+            break
+        parent = grand
+    cells = np.zeros(rows * cols, np.int32)
+    cells[flat_free] = markers.ravel()[flat_free[parent]]
+    return dist, cells.reshape(rows, cols), peak_val
+
+
+def _neighbour_pairs(labels: np.ndarray, dist: Optional[np.ndarray] = None):
+    """All 4-neighbour pixel pairs with two different non-zero labels.
+
+    Returns (lo, hi, value, axis, row, col): labels of the pair (lo < hi), min clearance of the two
+    pixels (if ``dist`` is given), axis 0 for vertical neighbours (row, col) / (row+1, col), axis 1
+    for horizontal neighbours (row, col) / (row, col+1).
+    """
+    out = []
+    for axis in (0, 1):
+        if axis == 0:
+            a, b = labels[:-1, :], labels[1:, :]
+        else:
+            a, b = labels[:, :-1], labels[:, 1:]
+        m = (a != b) & (a > 0) & (b > 0)
+        rr, cc = np.nonzero(m)
+        la, lb = a[rr, cc], b[rr, cc]
+        if dist is not None:
+            if axis == 0:
+                v = np.minimum(dist[rr, cc], dist[rr + 1, cc])
+            else:
+                v = np.minimum(dist[rr, cc], dist[rr, cc + 1])
+        else:
+            v = np.zeros(len(rr), np.float32)
+        out.append((np.minimum(la, lb), np.maximum(la, lb), v, np.full(len(rr), axis, np.int8), rr, cc))
+    return tuple(np.concatenate([o[i] for o in out]) for i in range(6))
+
+
+def _cell_graph(cells: np.ndarray, dist: np.ndarray):
+    """Edges of the cell adjacency graph: (lo, hi, saddle px, border length px)."""
+    lo, hi, v, _, _, _ = _neighbour_pairs(cells, dist)
+    if len(lo) == 0:
+        return (np.zeros(0, np.int64),) * 2 + (np.zeros(0),) * 2
+    key = lo.astype(np.int64) * (int(cells.max()) + 1) + hi
+    order = np.lexsort((v, key))
+    key, v = key[order], v[order]
+    last = np.r_[key[1:] != key[:-1], True]
+    first = np.r_[True, key[1:] != key[:-1]]
+    starts = np.nonzero(first)[0]
+    counts = np.diff(np.r_[starts, len(key)])
+    k = key[last]
+    n1 = int(cells.max()) + 1
+    return k // n1, k % n1, v[last].astype(np.float64), counts.astype(np.float64)
+
+
+class _UnionFind:
+    def __init__(self, n: int):
+        self.parent = list(range(n))
+
+    def find(self, a: int) -> int:
+        p = self.parent
+        root = a
+        while p[root] != root:
+            root = p[root]
+        while p[a] != root:
+            p[a], a = root, p[a]
+        return root
+
+
+def _merge_cells(n: int, peak: np.ndarray, lo, hi, saddle, *, r_alpha: float, door_half: float,
+                 prune: float) -> np.ndarray:
+    """Merge tree over the cell graph (see the module doc). All values in px. Returns a lookup
+    table cell -> group representative."""
+    uf = _UnionFind(n)
+    gpeak = [float(x) for x in peak]
+    # strongest connections first; ties broken by ids for determinism
+    order = np.lexsort((hi, lo, -saddle))
+    for i in order.tolist():
+        a, b, s = uf.find(int(lo[i])), uf.find(int(hi[i])), float(saddle[i])
+        if a == b:
+            continue
+        pa, pb = gpeak[a], gpeak[b]
+        if s >= r_alpha:
+            merge = True  # the alpha disk passes: same room
+        elif pa >= r_alpha and pb >= r_alpha:
+            merge = False  # two alpha rooms
+        elif min(pa, pb) - s < prune:
+            merge = True  # insignificant bump: a pruned skeleton branch
+        elif s <= door_half and s < NARROWING * max(pa, pb):
+            merge = False  # door-like narrowing
+        else:
+            merge = True
+        if merge:
+            keep, gone = (a, b) if a < b else (b, a)
+            uf.parent[gone] = keep
+            gpeak[keep] = max(pa, pb)
+    return np.array([uf.find(i) for i in range(n)], np.int64)
+
+
+def _single_pieces(labels: np.ndarray) -> np.ndarray:
+    """Make every label one 4-connected piece: smaller pieces go to the neighbour they touch most."""
+    import cv2
+
+    for _ in range(3):
+        n_lab = int(labels.max())
+        if n_lab == 0:
+            return labels
+        # components of the label raster: pixels connected with the same label
+        comp = np.zeros(labels.shape, np.int32)
+        next_id = 1
+        from scipy import ndimage as ndi
+
+        objs = ndi.find_objects(labels)
+        extra = []
+        for lab_id, sl in enumerate(objs, start=1):
+            if sl is None:
+                continue
+            sub = labels[sl] == lab_id
+            n, cl, st, _ = cv2.connectedComponentsWithStats(sub.view(np.uint8), connectivity=4, ltype=cv2.CV_32S)
+            if n <= 2:
+                continue
+            big = 1 + int(np.argmax(st[1:, cv2.CC_STAT_AREA]))
+            for k in range(1, n):
+                if k != big:
+                    m = np.zeros(labels.shape, bool)
+                    m[sl] = cl == k
+                    extra.append(m)
+        if not extra:
+            return labels
+        for m in extra:
+            ring = cv2.dilate(m.view(np.uint8), np.ones((3, 3), np.uint8)).view(bool) & ~m
+            neigh = labels[ring]
+            neigh = neigh[neigh > 0]
+            if len(neigh):
+                vals, cnt = np.unique(neigh, return_counts=True)
+                labels[m] = vals[np.argmax(cnt)]
+            else:
+                labels[m] = 0
+        del comp, next_id
+    return labels
+
+
+# --------------------------------------------------------------------------- vector output
+def label_polygons(labels: np.ndarray, grid: OccupancyGrid) -> Dict[int, object]:
+    """Exact pixel-edge outline of every label (4-connected), as shapely Polygons in world metres."""
+    import shapely
+    from osgeo import gdal, ogr
+
+    gdal.UseExceptions()
+    rows, cols = labels.shape
+    drv = gdal.GetDriverByName("MEM")
+    ds = drv.Create("", cols, rows, 1, gdal.GDT_Int32)
+    ds.SetGeoTransform(grid.geotransform)
+    band = ds.GetRasterBand(1)
+    band.WriteArray(labels.astype(np.int32, copy=False))
+    mds = drv.Create("", cols, rows, 1, gdal.GDT_Byte)
+    mds.GetRasterBand(1).WriteArray((labels > 0).view(np.uint8))
+    ods = ogr.GetDriverByName("Memory").CreateDataSource("areas")
+    layer = ods.CreateLayer("areas")
+    layer.CreateField(ogr.FieldDefn("id", ogr.OFTInteger))
+    gdal.Polygonize(band, mds.GetRasterBand(1), layer, 0, [])
+    polys: Dict[int, object] = {}
+    for feat in layer:
+        lid = int(feat.GetField(0))
+        geom = shapely.from_wkb(bytes(feat.GetGeometryRef().ExportToWkb()))
+        if lid not in polys or geom.area > polys[lid].area:
+            polys[lid] = geom
+    return polys
+
+
+def _passage_segments(labels: np.ndarray, grid: OccupancyGrid):
+    """For each pair of touching labels, the connected pieces of their shared pixel-edge border.
+
+    Returns a list of (a, b, (c0, r0), (c1, r1), length_px) with the two border ends in pixel-corner
+    coordinates.
+    """
+    from scipy.sparse import coo_matrix
+    from scipy.sparse.csgraph import connected_components
+
+    lo, hi, _, axis, rr, cc = _neighbour_pairs(labels)
+    if len(lo) == 0:
+        return []
+    # border edge endpoints as pixel corners (col, row)
+    # vertical neighbours (r,c)/(r+1,c): horizontal edge from (c, r+1) to (c+1, r+1)
+    # horizontal neighbours (r,c)/(r,c+1): vertical edge from (c+1, r) to (c+1, r+1)
+    c0 = np.where(axis == 0, cc, cc + 1)
+    r0 = np.where(axis == 0, rr + 1, rr)
+    c1 = c0 + np.where(axis == 0, 1, 0)
+    r1 = r0 + np.where(axis == 0, 0, 1)
+    ncols = labels.shape[1] + 1
+    nmax = int(labels.max()) + 1
+    pair = lo.astype(np.int64) * nmax + hi
+    # nodes are (pair, corner) so that borders of different pairs never join
+    k0 = pair * ((labels.shape[0] + 1) * ncols) + r0.astype(np.int64) * ncols + c0
+    k1 = pair * ((labels.shape[0] + 1) * ncols) + r1.astype(np.int64) * ncols + c1
+    nodes, inv = np.unique(np.concatenate([k0, k1]), return_inverse=True)
+    m = len(k0)
+    e0, e1 = inv[:m], inv[m:]
+    g = coo_matrix((np.ones(m), (e0, e1)), shape=(len(nodes), len(nodes)))
+    ncomp, comp = connected_components(g, directed=False)
+    degree = np.bincount(np.concatenate([e0, e1]), minlength=len(nodes))
+    node_pair = nodes // ((labels.shape[0] + 1) * ncols)
+    node_rc = nodes % ((labels.shape[0] + 1) * ncols)
+    node_r, node_c = node_rc // ncols, node_rc % ncols
+    edge_comp = comp[e0]
+    comp_len = np.bincount(edge_comp, minlength=ncomp)
+    out = []
+    order = np.argsort(comp, kind="stable")
+    comp_sorted = comp[order]
+    bounds = np.searchsorted(comp_sorted, np.arange(ncomp + 1))
+    for k in range(ncomp):
+        idx = order[bounds[k]:bounds[k + 1]]
+        p = int(node_pair[idx[0]])
+        ends = idx[degree[idx] == 1]
+        if len(ends) < 2:  # closed loop (an area enclosed by another) or odd junction: farthest points
+            ends = idx
+        pts = np.stack([node_c[ends], node_r[ends]], axis=1).astype(np.float64)
+        if len(pts) > 2:
+            # farthest pair (ends are few; loops are rare and get subsampled)
+            if len(pts) > 400:
+                pts = pts[np.linspace(0, len(pts) - 1, 400).astype(int)]
+            d2 = ((pts[:, None, :] - pts[None, :, :]) ** 2).sum(-1)
+            i, j = np.unravel_index(int(np.argmax(d2)), d2.shape)
+            pts = pts[[i, j]]
+        a, b = p // nmax, p % nmax
+        (ca, ra), (cb, rb) = pts[0], pts[1]
+        # canonical direction for determinism
+        if (rb, cb) < (ra, ca):
+            (ca, ra), (cb, rb) = (cb, rb), (ca, ra)
+        out.append((int(a), int(b), (float(ca), float(ra)), (float(cb), float(rb)), float(comp_len[k])))
+    return out
+
+
+def build_passages(labels: np.ndarray, grid: OccupancyGrid) -> List[Passage]:
+    from shapely.geometry import LineString
+
+    segs = _passage_segments(labels, grid)
+    by_pair: Dict[Tuple[int, int], list] = {}
+    for a, b, p0, p1, n in segs:
+        by_pair.setdefault((a, b), []).append((p0, p1, n))
+    passages: List[Passage] = []
+    min_px = MIN_PASSAGE_M / grid.resolution
+    for (a, b) in sorted(by_pair):
+        pieces = by_pair[(a, b)]
+        width_px = [math.hypot(p1[0] - p0[0], p1[1] - p0[1]) for p0, p1, _ in pieces]
+        keep = [i for i, w in enumerate(width_px) if w >= min_px]
+        if not keep:
+            keep = [int(np.argmax(width_px))]
+        for i in sorted(keep, key=lambda i: (pieces[i][0][1], pieces[i][0][0])):
+            p0, p1, _ = pieces[i]
+            x0, y0 = grid.pixel_to_world(p0[0], p0[1])
+            x1, y1 = grid.pixel_to_world(p1[0], p1[1])
+            passages.append(Passage(id=len(passages) + 1, from_id=a, to_id=b,
+                                    line=LineString([(float(x0), float(y0)), (float(x1), float(y1))])))
+    return passages
+
+
+# --------------------------------------------------------------------------- main entry
+def segment(grid: OccupancyGrid, door_width: float = DEFAULT_DOOR_WIDTH,
+            corridor_width: float = DEFAULT_CORRIDOR_WIDTH, delta: float = DEFAULT_DELTA,
+            prune: float = DEFAULT_PRUNE, progress: Optional[Progress] = None,
+            envelope_gap: float = DEFAULT_ENVELOPE_GAP) -> AreaGraph:
+    """Segment the free space of ``grid`` into an Area Graph.
+
+    Returns an ``AreaGraph`` whose areas carry exact pixel-edge polygons (world metres), whose
+    passages are 2-point lines across the openings between touching areas, ``labels`` (int32
+    raster of area ids on the grid, 0 outside areas) and ``stats`` (per-step seconds, alpha,
+    interior area...). Raises ``InputError`` for unusable input.
+    """
+    progress = ensure(progress)
+    t_all = time.perf_counter()
+    stats: Dict[str, float] = {}
+    data, alpha = _check_inputs(grid, door_width, corridor_width, delta, prune)
+    res = float(grid.resolution)
+    r_alpha = math.sqrt(alpha)
+    stats.update(alpha_px2=float(alpha), alpha_radius_m=r_alpha * res, resolution=res,
+                 pixels=float(data.size))
+    progress.step(2, f"alpha = {alpha} px^2 (probe disk radius {r_alpha * res:.2f} m at {res:g} m/px)")
+
+    t = time.perf_counter()
+    free = data == FREE
+    interior, envelope = building_interior(free, res, envelope_gap)
+    del envelope
+    stats["interior_s"] = time.perf_counter() - t
+    stats["free_area_m2"] = float(free.sum()) * res * res
+    stats["interior_area_m2"] = float(interior.sum()) * res * res
+    if not interior.any():
+        raise InputError("no enclosed free space: every free cell is connected to the outside of the map "
+                         f"through openings wider than {envelope_gap:g} m (is the plan closed by walls?)")
+    progress.step(10, f"building interior: {stats['interior_area_m2']:.1f} m2 of free space "
+                      f"(of {stats['free_area_m2']:.1f} m2 free in the raster)")
+
+    t = time.perf_counter()
+    dist, cells, peak = _cells(interior)
+    stats["skeleton_s"] = time.perf_counter() - t
+    stats["cells"] = float(len(peak) - 1)
+    progress.step(40, f"Voronoi cells: {len(peak) - 1}")
+
+    t = time.perf_counter()
+    lo, hi, saddle, border = _cell_graph(cells, dist)
+    stats["graph_s"] = time.perf_counter() - t
+    progress.step(50, f"cell graph: {len(lo)} adjacencies")
+
+    t = time.perf_counter()
+    # clearances in px measured from pixel centres: a pixel touching a wall has distance 1
+    rep = _merge_cells(len(peak), peak - 0.5, lo, hi, saddle - 0.5, r_alpha=r_alpha,
+                       door_half=(door_width + delta) / 2.0 / res, prune=prune / res)
+    # renumber groups deterministically: by first pixel in raster order
+    group = rep[cells]
+    group[cells == 0] = 0
+    flat = group.ravel()
+    uniq, first = np.unique(flat, return_index=True)
+    keep = uniq != 0
+    uniq, first = uniq[keep], first[keep]
+    order = np.argsort(first)
+    lut = np.zeros(int(rep.max()) + 1, np.int32)
+    lut[uniq[order]] = np.arange(1, len(uniq) + 1, dtype=np.int32)
+    labels = lut[group]
+    del group, flat
+    labels = _single_pieces(labels)
+    stats["merge_s"] = time.perf_counter() - t
+    progress.step(65, f"merged into {int(labels.max())} areas")
+
+    t = time.perf_counter()
+    polys = label_polygons(labels, grid)
+    stats["polygons_s"] = time.perf_counter() - t
+    progress.step(85, "area outlines traced")
+
+    t = time.perf_counter()
+    passages = build_passages(labels, grid)
+    stats["passages_s"] = time.perf_counter() - t
+
+    from scipy import ndimage as ndi
+
+    ids = np.array(sorted(polys), np.int64)
+    maxc = ndi.maximum(dist, labels, ids) if len(ids) else []
+    areas: List[Area] = []
+    for lid, mc in zip(ids.tolist(), np.atleast_1d(maxc).tolist()):
+        poly = polys[lid]
+        clear_m = max(0.0, (float(mc) - 0.5) * res)
+        elong = poly.area / max((2.0 * clear_m) ** 2, res * res)
+        typ = "corridor" if elong >= CORRIDOR_ELONGATION else "room"
+        areas.append(Area(id=int(lid), polygon=poly, type=typ, max_clearance=clear_m))
+    stats["areas"] = float(len(areas))
+    stats["passages"] = float(len(passages))
+    stats["total_s"] = time.perf_counter() - t_all
+    progress.step(100, f"{len(areas)} areas ({sum(a.type == 'room' for a in areas)} rooms), "
+                       f"{len(passages)} passages, interior {stats['interior_area_m2']:.1f} m2")
+    return AreaGraph(areas=areas, passages=passages, labels=labels.astype(np.int32, copy=False), grid=grid,
+                     stats=stats)
