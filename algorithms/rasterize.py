@@ -1,0 +1,234 @@
+"""Stage 2: rasterize structural geometry into an occupancy grid (0 free / 255 occupied).
+
+Public API
+----------
+``rasterize(geometries, resolution=0.044, padding=0.03, percentiles=(0.5, 99.5), kernel=5,
+extent=None, max_pixels=60e6, stroke=0.15, progress=None) -> OccupancyGrid``
+``geometry_bounds(geometries, percentiles=(0.5, 99.5)) -> (xmin, ymin, xmax, ymax)``
+``common_extent(geometry_sets, padding=0.03, percentiles=(0.5, 99.5)) -> (xmin, ymin, xmax, ymax)``
+``grid_for_extent(extent, resolution, max_pixels=60e6) -> (origin_x, origin_y, rows, cols)``
+
+Raster convention: uint8, 0 = free, 255 = occupied (``algorithms.model``); this is the inverse of a
+ROS map_server image (where black = occupied), ``raster_io`` converts when writing ROS maps.
+The geotransform is ``(origin_x, res, 0, origin_y, 0, -res)`` in the CAD frame (metres), with the
+origin snapped to a multiple of the resolution so that rasters of several floors rasterized on a
+common extent line up pixel for pixel.
+
+Drawing: hairlines get a physical stroke width (``stroke`` metres, and at least the repair kernel so
+that single-line walls survive the opening), wide polylines their own width, filled entities (solid
+hatches, SOLIDs) are filled with the even-odd rule (NaN rows separate rings).
+
+Repair: closing with a ``kernel`` x ``kernel`` rectangle (bridges gaps of about kernel*res, plus the
+stroke's round caps: 0.2 m at the defaults), then an opening with the same kernel used as a speck
+filter: a connected component of occupied pixels survives when any part of it survives the opening
+(opening by reconstruction) or when it spans more than 2*kernel pixels, so that thin diagonal walls
+are kept while isolated specks are removed.
+"""
+from __future__ import annotations
+
+import math
+from typing import Iterable, List, Optional, Sequence, Tuple
+
+import numpy as np
+
+from .errors import InputError
+from .model import FREE, OCCUPIED, CadGeometry, OccupancyGrid
+from .progress import ensure
+
+DEFAULT_RESOLUTION = 0.044
+DEFAULT_PADDING = 0.03
+DEFAULT_PERCENTILES = (0.5, 99.5)
+DEFAULT_KERNEL = 5
+DEFAULT_MAX_PIXELS = 60e6
+DEFAULT_STROKE = 0.15  # metres: drawn width of a hairline
+SHIFT = 4  # cv2 sub-pixel bits
+_ONE = 1 << SHIFT
+_LIMIT = float(2 ** 30 // _ONE)  # keep int32 pixel coordinates far from overflow
+
+
+def _all_vertices(geometries: Sequence[CadGeometry]) -> np.ndarray:
+    arrs = [g.coords for g in geometries if len(g.coords)]
+    if not arrs:
+        return np.zeros((0, 2))
+    allc = np.concatenate(arrs, axis=0)
+    return allc[np.isfinite(allc).all(axis=1)]
+
+
+def geometry_bounds(geometries: Sequence[CadGeometry], percentiles=DEFAULT_PERCENTILES
+                    ) -> Tuple[float, float, float, float]:
+    """Percentile bounds (xmin, ymin, xmax, ymax) of every vertex; robust against stray entities."""
+    v = _all_vertices(geometries)
+    if len(v) == 0:
+        raise InputError("there is no geometry to rasterize (the wall layer is empty); check the layer "
+                         "selection of the CAD import")
+    lo_p, hi_p = float(percentiles[0]), float(percentiles[1])
+    if not (0.0 <= lo_p < hi_p <= 100.0):
+        raise InputError(f"percentiles must be two numbers 0 <= low < high <= 100, got {percentiles}")
+    lo = np.percentile(v, lo_p, axis=0)
+    hi = np.percentile(v, hi_p, axis=0)
+    return (float(lo[0]), float(lo[1]), float(hi[0]), float(hi[1]))
+
+
+def pad_extent(extent, padding: float) -> Tuple[float, float, float, float]:
+    """Grow an extent by ``padding`` times its larger side on every side (3 % by default)."""
+    xmin, ymin, xmax, ymax = extent
+    pad = float(padding) * max(xmax - xmin, ymax - ymin, 0.0)
+    return (xmin - pad, ymin - pad, xmax + pad, ymax + pad)
+
+
+def common_extent(geometry_sets: Iterable[Sequence[CadGeometry]], padding: float = DEFAULT_PADDING,
+                  percentiles=DEFAULT_PERCENTILES) -> Tuple[float, float, float, float]:
+    """Union of the percentile bounds of several drawings (floors), padded once."""
+    boxes = [geometry_bounds(g, percentiles) for g in geometry_sets]
+    if not boxes:
+        raise InputError("common_extent needs at least one drawing")
+    b = np.array(boxes)
+    union = (float(b[:, 0].min()), float(b[:, 1].min()), float(b[:, 2].max()), float(b[:, 3].max()))
+    return pad_extent(union, padding)
+
+
+def suggest_resolution(width: float, height: float, max_pixels: float) -> float:
+    r = math.sqrt(max(width * height, 1e-12) / max_pixels) * 1.05
+    mag = 10 ** math.floor(math.log10(r))
+    return math.ceil(r / mag * 100) / 100 * mag
+
+
+def grid_for_extent(extent, resolution: float, max_pixels: float = DEFAULT_MAX_PIXELS):
+    """Snap an extent outward to multiples of ``resolution``: (origin_x, origin_y, rows, cols)."""
+    if not (resolution > 0 and math.isfinite(resolution)):
+        raise InputError(f"resolution must be a positive number of metres per pixel, got {resolution}")
+    xmin, ymin, xmax, ymax = (float(v) for v in extent)
+    if not all(math.isfinite(v) for v in (xmin, ymin, xmax, ymax)) or xmax <= xmin or ymax <= ymin:
+        raise InputError(f"invalid extent {extent}: it needs xmin < xmax and ymin < ymax")
+    eps = 1e-9
+    c0 = math.floor(xmin / resolution + eps)
+    c1 = math.ceil(xmax / resolution - eps)
+    r0 = math.floor(ymin / resolution + eps)
+    r1 = math.ceil(ymax / resolution - eps)
+    cols, rows = max(1, c1 - c0), max(1, r1 - r0)
+    if rows * cols > max_pixels:
+        w, h = xmax - xmin, ymax - ymin
+        raise InputError(
+            f"the raster would be {cols} x {rows} = {rows * cols / 1e6:.1f} Mpx, more than the budget of "
+            f"{max_pixels / 1e6:.0f} Mpx: the extent is {w:.1f} m x {h:.1f} m (x {xmin:.2f}..{xmax:.2f}, "
+            f"y {ymin:.2f}..{ymax:.2f}) at {resolution} m/px. Use a resolution of at least "
+            f"{suggest_resolution(w, h, max_pixels):.3g} m/px, raise the pixel budget, or check the drawing's "
+            "units and stray entities far from the building")
+    return c0 * resolution, r1 * resolution, rows, cols
+
+
+def _split_rings(c: np.ndarray) -> List[np.ndarray]:
+    if not np.isnan(c).any():
+        return [c]
+    bad = np.isnan(c).any(axis=1)
+    idx = np.flatnonzero(bad)
+    parts = np.split(c, idx)
+    return [p[~np.isnan(p).any(axis=1)] for p in parts if len(p[~np.isnan(p).any(axis=1)])]
+
+
+def _to_px(c: np.ndarray, ox: float, oy: float, res: float) -> np.ndarray:
+    """World -> cv2 fixed-point pixel coordinates (pixel centres at integers)."""
+    col = (c[:, 0] - ox) / res - 0.5
+    row = (oy - c[:, 1]) / res - 0.5
+    pts = np.empty((len(c), 2), dtype=np.float64)
+    pts[:, 0] = np.clip(col, -_LIMIT, _LIMIT)
+    pts[:, 1] = np.clip(row, -_LIMIT, _LIMIT)
+    return np.rint(pts * _ONE).astype(np.int32)
+
+
+def cv_thickness(width_px: float) -> int:
+    """cv2 ``thickness`` whose drawn width (always odd: 1, 3, 5... px) is closest to ``width_px``."""
+    n = max(1, 2 * int(round((float(width_px) - 1.0) / 2.0)) + 1)
+    return 1 if n == 1 else n - 1
+
+
+def draw_geometries(img: np.ndarray, geometries: Sequence[CadGeometry], ox: float, oy: float, res: float,
+                    hairline_px: int, progress=None) -> None:
+    import cv2
+
+    by_thickness = {}
+    filled = []
+    n = len(geometries)
+    for i, g in enumerate(geometries):
+        c = g.coords
+        if len(c) == 0:
+            continue
+        if g.filled and len(c) >= 3:
+            filled.append(g)
+            continue
+        t = hairline_px if g.width <= 0 else max(hairline_px, cv_thickness(g.width / res))
+        lst = by_thickness.setdefault(t, ([], []))
+        for ring in _split_rings(c):
+            if len(ring) == 1:
+                ring = np.vstack((ring, ring))
+            (lst[0] if (g.closed and len(ring) >= 3) else lst[1]).append(_to_px(ring, ox, oy, res))
+        if progress is not None and i % 5000 == 4999:
+            progress.step(80.0 * i / n)
+    for t, (closed, opened) in by_thickness.items():
+        if closed:
+            cv2.polylines(img, closed, True, OCCUPIED, thickness=t, lineType=cv2.LINE_8, shift=SHIFT)
+        if opened:
+            cv2.polylines(img, opened, False, OCCUPIED, thickness=t, lineType=cv2.LINE_8, shift=SHIFT)
+    for g in filled:
+        rings = [_to_px(r, ox, oy, res) for r in _split_rings(g.coords) if len(r) >= 3]
+        if rings:
+            cv2.fillPoly(img, rings, OCCUPIED, lineType=cv2.LINE_8, shift=SHIFT)
+            # the outline too, so thin filled slivers do not vanish
+            cv2.polylines(img, rings, True, OCCUPIED, thickness=1, lineType=cv2.LINE_8, shift=SHIFT)
+
+
+def repair(img: np.ndarray, kernel: int) -> np.ndarray:
+    """Closing then opening-by-reconstruction with a kernel x kernel rectangle (see module doc)."""
+    import cv2
+
+    k = int(kernel)
+    if k <= 1:
+        return img
+    se = cv2.getStructuringElement(cv2.MORPH_RECT, (k, k))
+    closed = cv2.morphologyEx(img, cv2.MORPH_CLOSE, se, borderType=cv2.BORDER_CONSTANT, borderValue=0)
+    opened = cv2.morphologyEx(closed, cv2.MORPH_OPEN, se, borderType=cv2.BORDER_CONSTANT, borderValue=0)
+    n, labels, stats, _ = cv2.connectedComponentsWithStats((closed > 0).astype(np.uint8), connectivity=8)
+    if n <= 1:
+        return closed
+    keep = np.zeros(n, dtype=bool)
+    keep[np.unique(labels[opened > 0])] = True
+    span = np.maximum(stats[:, cv2.CC_STAT_WIDTH], stats[:, cv2.CC_STAT_HEIGHT])
+    keep |= span > 2 * k
+    keep[0] = False
+    out = np.where(keep[labels], OCCUPIED, FREE).astype(np.uint8)
+    return out
+
+
+def rasterize(geometries: Sequence[CadGeometry], resolution: float = DEFAULT_RESOLUTION,
+              padding: float = DEFAULT_PADDING, percentiles=DEFAULT_PERCENTILES, kernel: int = DEFAULT_KERNEL,
+              extent: Optional[Sequence[float]] = None, max_pixels: float = DEFAULT_MAX_PIXELS,
+              stroke: float = DEFAULT_STROKE, progress=None) -> OccupancyGrid:
+    """Rasterize geometries (metres) into an occupancy grid.
+
+    ``extent`` (xmin, ymin, xmax, ymax), when given, is used as is (no percentiles, no padding),
+    snapped outward to the resolution: use it with ``common_extent`` for multi-floor sets.
+    """
+    progress = ensure(progress)
+    if not (resolution and resolution > 0):
+        raise InputError(f"resolution must be a positive number of metres per pixel, got {resolution}")
+    if kernel is None or int(kernel) < 0:
+        raise InputError(f"kernel must be a non-negative number of pixels, got {kernel}")
+    if padding is None or padding < 0:
+        raise InputError(f"padding must be >= 0 (a fraction of the building size), got {padding}")
+    geometries = [g for g in geometries if len(g.coords)]
+    if extent is None:
+        extent = pad_extent(geometry_bounds(geometries, percentiles), padding)
+        # at least one stroke of margin so walls at the border are not cut
+        m = 2 * max(stroke, resolution * max(int(kernel), 1))
+        extent = (extent[0] - m, extent[1] - m, extent[2] + m, extent[3] + m)
+    elif not geometries:
+        raise InputError("there is no geometry to rasterize (the wall layer is empty)")
+    ox, oy, rows, cols = grid_for_extent(extent, resolution, max_pixels)
+    progress.step(5, f"raster {cols} x {rows} px at {resolution} m/px")
+    img = np.zeros((rows, cols), dtype=np.uint8)
+    hair = cv_thickness(stroke / resolution)
+    draw_geometries(img, geometries, ox, oy, resolution, hair, progress.sub(5, 70))
+    progress.step(70, "closing gaps and removing specks")
+    img = repair(img, int(kernel))
+    progress.step(100)
+    return OccupancyGrid(img, ox, oy, float(resolution))

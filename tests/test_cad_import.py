@@ -1,0 +1,430 @@
+"""CAD import on small synthetic DXFs written with ezdxf (no real data needed)."""
+import math
+import os
+
+import ezdxf
+import numpy as np
+import pytest
+
+from algorithms.cad_import import choose_unit, import_dxf, inspect_dxf, list_layers
+from algorithms.errors import InputError
+from algorithms.layer_rules import default_rules, load_rules, rules_from_dict
+from algorithms.progress import RecordingProgress
+
+
+def new_doc(units=4):
+    doc = ezdxf.new("R2010", setup=False)
+    doc.header["$INSUNITS"] = units
+    return doc
+
+
+def save(doc, tmp_path, name="plan.dxf"):
+    p = tmp_path / name
+    doc.saveas(p)
+    return str(p)
+
+
+def room(msp, x0, y0, w, h, layer="A-WALL"):
+    """A closed rectangle of 4 LINEs."""
+    pts = [(x0, y0), (x0 + w, y0), (x0 + w, y0 + h), (x0, y0 + h)]
+    for a, b in zip(pts, pts[1:] + pts[:1]):
+        msp.add_line(a, b, dxfattribs={"layer": layer})
+
+
+def bounds(geoms):
+    c = np.concatenate([g.coords for g in geoms])
+    c = c[np.isfinite(c).all(axis=1)]
+    return c.min(axis=0), c.max(axis=0)
+
+
+# ----------------------------------------------------------------------------------------- rules
+@pytest.mark.parametrize("name,kind", [
+    ("A-WALL", "wall"), ("a-wall-full", "wall"), ("E1-RI-1F$0$A-WALL", "wall"), ("A—墙体", "wall"),
+    ("MURATURA sezioni - section wall", "wall"), ("muri", "wall"), ("Muro portante", "wall"), ("Wand", "wall"),
+    ("Tabiqueria", "wall"), ("стены", "wall"), ("A-COLS", "column"), ("PILASTRI struttura", "column"),
+    ("柱", "column"), ("A-STAIR", "stair"), ("A-FLOR-STRS", "stair"), ("楼梯", "stair"), ("Treppe", "stair"),
+    ("A-EVTR", "elevator"), ("电梯", "elevator"), ("A-GLAZ", "window"), ("窗", "window"),
+    ("VETRATE sezioni - windows", "window"), ("A-DOOR", "door"), ("门", "door"), ("PUERTAS", "door"),
+    ("Türen", "door"), ("0", "reference"), ("Defpoints", "reference"), ("DEFPOINTS", "reference"),
+    ("A-ANNO-TEXT", None), ("QUOTE - dimension", None), ("ARREDI attrezzature - furniture", None),
+    ("J-WINDOW_TEXT门窗编号", None), ("A-WALL-DIMS", None), ("mobiliario", None), ("Pluma 8", None),
+])
+def test_default_rules_classify(name, kind):
+    assert default_rules().classify(name)[0] == kind
+
+
+def test_mixed_door_window_layer_is_kept_as_window():
+    # a layer holding doors and windows must stay in the raster (windows close the facade)
+    assert default_rules().classify("PORTE finestre - doors windows")[0] == "window"
+    assert default_rules().classify("A—门窗")[0] == "window"
+
+
+def test_load_rules_custom_and_errors(tmp_path):
+    p = tmp_path / "rules.json"
+    p.write_text('{"kinds": {"wall": ["pluma 8"]}, "exclude": ["txt"]}', encoding="utf-8")
+    r = load_rules(str(p))
+    assert r.classify("PLUMA 8")[0] == "wall"
+    assert r.classify("Pluma 8 txt")[0] is None
+    assert r.classify("0")[0] == "reference"  # preserved by default
+    bad = tmp_path / "bad.json"
+    bad.write_text("{kinds: ", encoding="utf-8")
+    with pytest.raises(InputError, match="not valid JSON"):
+        load_rules(str(bad))
+    bad.write_text('{"kinds": {"walls": ["x"]}}', encoding="utf-8")
+    with pytest.raises(InputError, match="unknown category 'walls'"):
+        load_rules(str(bad))
+    with pytest.raises(InputError, match="does not exist"):
+        load_rules(str(tmp_path / "missing.json"))
+
+
+# ----------------------------------------------------------------------------------------- geometry
+def test_lines_in_mm_become_metres(tmp_path):
+    doc = new_doc(4)
+    room(doc.modelspace(), 0, 0, 20000, 10000)
+    d = import_dxf(save(doc, tmp_path))
+    assert d.unit_name == "mm" and d.unit_scale == 0.001 and d.header_unit == "mm"
+    lo, hi = bounds(d.geometries)
+    assert np.allclose(lo, (0, 0)) and np.allclose(hi, (20, 10))
+    assert all(g.kind == "wall" and g.layer == "A-WALL" and g.entity == "LINE" for g in d.geometries)
+    assert not d.warnings
+
+
+def test_blocks_transforms_layer0_inheritance_and_nesting(tmp_path):
+    doc = new_doc(6)
+    inner = doc.blocks.new("INNER")
+    inner.add_line((0, 0), (1, 0), dxfattribs={"layer": "0"})
+    outer = doc.blocks.new("OUTER", base_point=(1, 1))
+    outer.add_blockref("INNER", (1, 1), dxfattribs={"layer": "0", "xscale": 2, "yscale": 2})
+    outer.add_line((1, 1), (1, 2), dxfattribs={"layer": "A-COLS"})  # keeps its own layer
+    msp = doc.modelspace()
+    room(msp, 0, 0, 20, 10)
+    # rotation 90 deg, insert at (10, 5); base point (1, 1) -> block origin shifted
+    msp.add_blockref("OUTER", (10, 5), dxfattribs={"layer": "A-WALL", "rotation": 90})
+    # mirrored copy (negative x scale) on a furniture layer: inherited geometry is dropped
+    msp.add_blockref("OUTER", (3, 3), dxfattribs={"layer": "FURNITURE", "xscale": -1})
+    d = import_dxf(save(doc, tmp_path))
+    inherited = [g for g in d.geometries if g.layer == "A-WALL" and len(g.coords) == 2
+                 and not np.allclose(g.coords[:, 1], g.coords[0, 1]) or False]
+    # INNER line: (0,0)-(1,0) scaled 2 -> (0,0)-(2,0), at (1,1) in OUTER -> (1,1)-(3,1);
+    # minus base (1,1) -> (0,0)-(2,0); rotated 90 -> (0,0)-(0,2); at (10,5) -> (10,5)-(10,7)
+    hits = [g for g in d.geometries if g.layer == "A-WALL" and np.allclose(np.sort(g.coords[:, 1]), (5, 7))
+            and np.allclose(g.coords[:, 0], 10)]
+    assert len(hits) == 1, inherited
+    cols = [g for g in d.geometries if g.layer == "A-COLS"]
+    # the column line is kept from both inserts (its own layer is visible), mirrored in the second
+    assert len(cols) == 2
+    # OUTER col line (1,1)-(1,2) minus base -> (0,0)-(0,1); rotated 90 -> (0,0)-(-1,0) -> (9..10, 5)
+    assert any(np.allclose(np.sort(c.coords[:, 0]), (9, 10)) and np.allclose(c.coords[:, 1], 5) for c in cols)
+    # mirrored: (0,0)-(0,1) with x scale -1 -> same x; at (3,3): (3,3)-(3,4)
+    assert any(np.allclose(c.coords[:, 0], 3) and np.allclose(np.sort(c.coords[:, 1]), (3, 4)) for c in cols)
+    assert "FURNITURE" not in {g.layer for g in d.geometries}
+    info = {i.name: i for i in list_layers(save(doc, tmp_path, "b.dxf"))}
+    assert info["FURNITURE"].counts == {"LINE": 1} and info["FURNITURE"].kind is None
+    assert info["A-WALL"].counts["LINE"] == 5 and info["A-WALL"].kind == "wall"
+
+
+def test_minsert_array(tmp_path):
+    doc = new_doc(6)
+    blk = doc.blocks.new("COL")
+    blk.add_lwpolyline([(0, 0), (0.4, 0), (0.4, 0.4), (0, 0.4)], close=True, dxfattribs={"layer": "0"})
+    msp = doc.modelspace()
+    room(msp, 0, 0, 30, 20)
+    ins = msp.add_blockref("COL", (2, 2), dxfattribs={"layer": "A-COLS"})
+    ins.dxf.row_count, ins.dxf.column_count = 3, 4
+    ins.dxf.row_spacing, ins.dxf.column_spacing = 5.0, 6.0
+    d = import_dxf(save(doc, tmp_path))
+    cols = [g for g in d.geometries if g.kind == "column"]
+    assert len(cols) == 12
+    xs = sorted({round(float(g.coords[:, 0].min()), 6) for g in cols})
+    ys = sorted({round(float(g.coords[:, 1].min()), 6) for g in cols})
+    assert xs == [2, 8, 14, 20] and ys == [2, 7, 12]
+    assert all(g.closed for g in cols)
+
+
+def test_frozen_and_off_layers_skipped(tmp_path):
+    doc = new_doc(6)
+    doc.layers.add("A-WALL-OLD").freeze()
+    doc.layers.add("A-WALL-OFF").off()
+    doc.layers.add("A-WALL")
+    msp = doc.modelspace()
+    room(msp, 0, 0, 20, 10)
+    room(msp, 100, 100, 5, 5, layer="A-WALL-OLD")
+    room(msp, 200, 200, 5, 5, layer="A-WALL-OFF")
+    blk = doc.blocks.new("B")
+    blk.add_line((0, 0), (3, 0), dxfattribs={"layer": "0"})
+    msp.add_blockref("B", (50, 50), dxfattribs={"layer": "A-WALL-OLD"})  # frozen INSERT: skipped
+    d = import_dxf(save(doc, tmp_path))
+    assert {g.layer for g in d.geometries} == {"A-WALL"}
+    assert len(d.geometries) == 4
+    info = d.layers
+    assert info["A-WALL-OLD"].frozen and not info["A-WALL-OLD"].kept
+    assert info["A-WALL-OFF"].off and not info["A-WALL-OFF"].kept
+
+
+def test_xref_only_drawing_is_reported(tmp_path):
+    doc = new_doc(4)
+    doc.add_xref_def("../shell/Building-Shell.dxf", "SHELL")
+    doc.add_xref_def("grid.dwg", "GRID")
+    msp = doc.modelspace()
+    msp.add_blockref("SHELL", (0, 0))
+    msp.add_blockref("GRID", (0, 0))
+    with pytest.raises(InputError, match=r"references external files .*Building-Shell\.dxf.*grid\.dwg.*bind them in CAD"):
+        import_dxf(save(doc, tmp_path))
+
+
+def test_curves_flattened_within_1cm(tmp_path):
+    doc = new_doc(4)  # millimetres
+    msp = doc.modelspace()
+    room(msp, 0, 0, 20000, 10000)
+    msp.add_circle((5000, 5000), 3000, dxfattribs={"layer": "A-WALL"})
+    msp.add_arc((12000, 5000), 2000, 0, 90, dxfattribs={"layer": "A-WALL"})
+    msp.add_ellipse((15000, 5000), major_axis=(2000, 0), ratio=0.5, dxfattribs={"layer": "A-WALL"})
+    msp.add_lwpolyline([(1000, 1000, 0, 0, 1.0), (3000, 1000, 0, 0, 0)], format="xyseb",
+                       dxfattribs={"layer": "A-WALL"})  # half circle of radius 1 m
+    msp.add_spline([(0, 12000), (5000, 15000), (10000, 12000), (15000, 15000)], dxfattribs={"layer": "A-WALL"})
+    d = import_dxf(save(doc, tmp_path))
+    by = {}
+    for g in d.geometries:
+        by.setdefault(g.entity, []).append(g)
+    circ = by["CIRCLE"][0]
+    r = np.hypot(circ.coords[:, 0] - 5, circ.coords[:, 1] - 5)
+    assert np.allclose(r, 3.0) and circ.closed
+    # chord sagitta r(1 - cos(step/2)) <= 1 cm
+    ang = np.unwrap(np.arctan2(circ.coords[:, 1] - 5, circ.coords[:, 0] - 5))
+    step = np.max(np.abs(np.diff(ang)))
+    assert 3.0 * (1 - math.cos(step / 2)) <= 0.01 + 1e-9
+    arc = by["ARC"][0]
+    assert np.allclose(arc.coords[0], (14, 5)) and np.allclose(arc.coords[-1], (12, 7))
+    ell = by["ELLIPSE"][0]
+    assert np.isclose(ell.coords[:, 0].max(), 17, atol=1e-6) and np.isclose(ell.coords[:, 1].max(), 6, atol=0.01)
+    bulge = by["LWPOLYLINE"][0]
+    rr = np.hypot(bulge.coords[:, 0] - 2, bulge.coords[:, 1] - 1)
+    assert np.allclose(rr, 1.0) and len(bulge.coords) > 10
+    assert bulge.coords[:, 1].min() < 0.01  # bulge 1 from (1,1) to (3,1): CCW, swings below the chord
+    sp = by["SPLINE"][0]
+    assert np.allclose(sp.coords[0], (0, 12)) and np.allclose(sp.coords[-1], (15, 15)) and len(sp.coords) > 10
+
+
+def test_hatch_solid_trace_3dface_widths(tmp_path):
+    doc = new_doc(6)
+    msp = doc.modelspace()
+    room(msp, 0, 0, 20, 10)
+    h = msp.add_hatch(color=1, dxfattribs={"layer": "A-WALL"})  # solid by default
+    h.paths.add_polyline_path([(0, 0), (4, 0), (4, 4), (0, 4)], is_closed=True, flags=1)
+    h.paths.add_polyline_path([(1, 1), (3, 1), (3, 3), (1, 3)], is_closed=True, flags=16)
+    hp = msp.add_hatch(dxfattribs={"layer": "A-WALL"})
+    hp.set_pattern_fill("ANSI31", scale=0.1)
+    hp.paths.add_polyline_path([(10, 0), (12, 0), (12, 2)], is_closed=True)
+    msp.add_solid([(5, 5), (6, 5), (5, 6), (6, 6)], dxfattribs={"layer": "A-COLS"})
+    msp.add_3dface([(7, 7, 0), (8, 7, 0), (8, 8, 0), (7, 8, 0)], dxfattribs={"layer": "A-WALL"})
+    msp.add_lwpolyline([(0, 9), (10, 9)], dxfattribs={"layer": "A-WALL", "const_width": 0.3})
+    pl = msp.add_polyline2d([(0, 8), (5, 8), (5, 7)], dxfattribs={"layer": "A-WALL"})
+    d = import_dxf(save(doc, tmp_path))
+    hat = [g for g in d.geometries if g.entity == "HATCH"]
+    solid = [g for g in hat if g.filled]
+    assert len(solid) == 1 and np.isnan(solid[0].coords).any()  # outer ring + island in one geometry
+    assert len([g for g in hat if not g.filled]) == 1  # pattern hatch: outline only
+    sol = [g for g in d.geometries if g.entity == "SOLID"][0]
+    assert sol.filled and sol.closed and sol.kind == "column"
+    assert np.allclose(sorted(map(tuple, sol.coords)), [(5, 5), (5, 6), (6, 5), (6, 6)])
+    face = [g for g in d.geometries if g.entity == "3DFACE"][0]
+    assert face.closed and not face.filled and len(face.coords) == 4
+    wide = [g for g in d.geometries if g.entity == "LWPOLYLINE"][0]
+    assert wide.width == pytest.approx(0.3)
+    p2 = [g for g in d.geometries if g.entity == "POLYLINE"][0]
+    assert len(p2.coords) == 3
+
+
+def test_texts_mtext_attrib(tmp_path):
+    doc = new_doc(4)
+    msp = doc.modelspace()
+    room(msp, 0, 0, 20000, 10000)
+    msp.add_text("Aula 1", dxfattribs={"layer": "TXT", "height": 300, "rotation": 90, "insert": (5000, 5000)})
+    msp.add_mtext(r"{\fArial|b1;Sala}\Priunioni", dxfattribs={"layer": "SCRITTE", "char_height": 250,
+                                                              "insert": (12000, 3000)})
+    blk = doc.blocks.new("TAG")
+    blk.add_attdef("NAME", (0, 0), dxfattribs={"height": 200})
+    ins = msp.add_blockref("TAG", (15000, 8000), dxfattribs={"layer": "A-ANNO"})
+    ins.add_attrib("NAME", "Office 12", (15000, 8000), dxfattribs={"height": 200})
+    d = import_dxf(save(doc, tmp_path))
+    t = {x.text: x for x in d.texts}
+    assert set(t) == {"Aula 1", "Sala riunioni", "Office 12"}
+    a = t["Aula 1"]
+    assert (a.x, a.y, a.height, a.rotation, a.layer, a.entity) == pytest.approx(
+        (5.0, 5.0, 0.3, 90.0, "TXT", "TEXT")) if False else True
+    assert a.x == pytest.approx(5.0) and a.y == pytest.approx(5.0) and a.height == pytest.approx(0.3)
+    assert a.rotation == pytest.approx(90.0) and a.layer == "TXT" and a.entity == "TEXT"
+    assert t["Sala riunioni"].entity == "MTEXT" and t["Sala riunioni"].height == pytest.approx(0.25)
+    assert t["Office 12"].entity == "ATTRIB" and t["Office 12"].x == pytest.approx(15.0)
+
+
+def test_text_inside_rotated_block(tmp_path):
+    doc = new_doc(6)
+    msp = doc.modelspace()
+    room(msp, 0, 0, 20, 10)
+    blk = doc.blocks.new("LBL")
+    blk.add_text("Bagno", dxfattribs={"insert": (1, 0), "height": 0.2, "layer": "0"})
+    msp.add_blockref("LBL", (10, 5), dxfattribs={"rotation": 90, "xscale": 2, "yscale": 2, "layer": "TESTI"})
+    d = import_dxf(save(doc, tmp_path))
+    (t,) = d.texts
+    assert (t.x, t.y) == pytest.approx((10, 7)) and t.height == pytest.approx(0.4)
+    assert t.rotation == pytest.approx(90) and t.layer == "TESTI"
+
+
+# ----------------------------------------------------------------------------------------- units
+def test_header_mm_but_drawn_in_metres(tmp_path):
+    doc = new_doc(4)
+    room(doc.modelspace(), 100, 200, 30, 12)
+    prog = RecordingProgress()
+    d = import_dxf(save(doc, tmp_path), progress=prog)
+    assert d.unit_name == "m" and d.header_unit == "mm" and d.unit_scale == 1.0
+    assert any("mm" in w and "using m" in w for w in d.warnings)
+    assert any(k == "warning" and "using m" in m for k, m in prog.messages)
+    lo, hi = bounds(d.geometries)
+    assert np.allclose(hi - lo, (30, 12))
+
+
+def test_unitless_and_override(tmp_path):
+    doc = new_doc(0)
+    room(doc.modelspace(), 0, 0, 2500, 1200)  # cm -> 25 m
+    path = save(doc, tmp_path)
+    d = import_dxf(path)
+    assert d.unit_name == "cm" and d.header_unit == "unitless"
+    assert any("no unit" in w for w in d.warnings)
+    d2 = import_dxf(path, units="mm")
+    assert d2.unit_name == "mm" and not any("unit" in w for w in d2.warnings)
+    assert np.allclose(bounds(d2.geometries)[1], (2.5, 1.2))
+    with pytest.raises(InputError, match="unknown unit"):
+        import_dxf(path, units="parsec")
+
+
+def test_choose_unit_rules():
+    assert choose_unit(150000, "mm") == ("mm", None)
+    assert choose_unit(40, "mm")[0] == "m"
+    assert choose_unit(4000, "unitless")[0] == "cm"  # 40 m
+    assert choose_unit(30, "feet") == ("feet", None)  # 9 m is plausible: header kept
+    u, msg = choose_unit(1e9, "mm")
+    assert "implausible" in msg
+
+
+def test_curves_flattened_for_the_chosen_unit(tmp_path):
+    doc = new_doc(4)  # says mm, drawn in metres: curves must be re-flattened at 1 cm
+    msp = doc.modelspace()
+    room(msp, 0, 0, 30, 20)
+    msp.add_circle((10, 10), 2.0, dxfattribs={"layer": "A-WALL"})
+    d = import_dxf(save(doc, tmp_path))
+    c = [g for g in d.geometries if g.entity == "CIRCLE"][0]
+    assert d.unit_name == "m" and len(c.coords) >= 30
+
+
+# ----------------------------------------------------------------------------------------- layers
+def test_doors_left_out_unless_asked(tmp_path):
+    doc = new_doc(6)
+    msp = doc.modelspace()
+    room(msp, 0, 0, 20, 10)
+    msp.add_arc((5, 0), 0.9, 0, 90, dxfattribs={"layer": "A-DOOR"})
+    msp.add_line((5, 0), (5, 0.9), dxfattribs={"layer": "A-DOOR"})
+    path = save(doc, tmp_path)
+    d = import_dxf(path)
+    assert "A-DOOR" not in {g.layer for g in d.geometries}
+    assert d.layers["A-DOOR"].kind == "door"
+    d2 = import_dxf(path, include_doors=True)
+    assert len([g for g in d2.geometries if g.kind == "door"]) == 2
+
+
+def test_explicit_layers_override_rules(tmp_path):
+    doc = new_doc(6)
+    msp = doc.modelspace()
+    room(msp, 0, 0, 20, 10, layer="Pluma 8")
+    room(msp, 0, 0, 5, 5, layer="A-WALL")
+    path = save(doc, tmp_path)
+    d = import_dxf(path, layers=["pluma 8"])
+    assert {g.layer for g in d.geometries} == {"Pluma 8"} and all(g.kind == "wall" for g in d.geometries)
+    with pytest.raises(InputError, match=r"do not exist .*A-WALL"):
+        import_dxf(path, layers=["Muri"])
+
+
+def test_fallback_walls_when_no_wall_keyword(tmp_path):
+    doc = new_doc(6)
+    msp = doc.modelspace()
+    room(msp, 0, 0, 20, 10, layer="Pluma 8")
+    room(msp, 1, 1, 1, 1, layer="Cotas")  # excluded (dimensions)
+    d = import_dxf(save(doc, tmp_path))
+    assert {g.layer for g in d.geometries} == {"Pluma 8"}
+    assert any("no layer name matched a wall keyword" in w for w in d.warnings)
+
+
+def test_filter_keeps_nothing_lists_layers(tmp_path):
+    doc = new_doc(6)
+    msp = doc.modelspace()
+    room(msp, 0, 0, 20, 10, layer="Furniture")
+    msp.add_text("Hall", dxfattribs={"layer": "TEXT"})
+    with pytest.raises(InputError) as exc:
+        import_dxf(save(doc, tmp_path))
+    msg = str(exc.value)
+    assert "'Furniture' (4 entities, exclude: 'furn')" in msg and "'wall' list" in msg and "LAYERS" in msg
+
+
+# ----------------------------------------------------------------------------------------- bad input
+def test_not_a_dxf(tmp_path):
+    p = tmp_path / "photo.dxf"
+    p.write_bytes(b"\x89PNG\r\n\x1a\n" + os.urandom(200))
+    with pytest.raises(InputError, match="not a DXF"):
+        import_dxf(str(p))
+    dwg = tmp_path / "plan.dxf"
+    dwg.write_bytes(b"AC1032" + b"\0" * 100)
+    with pytest.raises(InputError, match="DWG"):
+        import_dxf(str(dwg))
+    with pytest.raises(InputError, match="does not exist"):
+        import_dxf(str(tmp_path / "nope.dxf"))
+    empty = tmp_path / "zero.dxf"
+    empty.write_bytes(b"")
+    with pytest.raises(InputError, match="empty"):
+        import_dxf(str(empty))
+
+
+def test_empty_drawing(tmp_path):
+    with pytest.raises(InputError, match="empty drawing"):
+        import_dxf(save(new_doc(4), tmp_path))
+
+
+def test_truncated_dxf_is_recovered_and_reported(tmp_path):
+    doc = new_doc(6)
+    msp = doc.modelspace()
+    room(msp, 0, 0, 20, 10)
+    room(msp, 2, 2, 3, 3)
+    path = save(doc, tmp_path)
+    data = open(path, "rb").read()
+    start = data.find(b"ENTITIES")
+    end = data.find(b"ENDSEC", start)
+    bad = tmp_path / "truncated.dxf"
+    bad.write_bytes(data[:end])  # cut right after the last entity
+    prog = RecordingProgress()
+    d = import_dxf(str(bad), progress=prog)
+    text = " ".join(d.repairs)
+    assert "truncated" in text and "recover mode" in text
+    assert any(k == "warning" and "truncated" in m for k, m in prog.messages)
+    assert len(d.geometries) == 8
+    bad.write_bytes(data[:(start + end) // 2 + 7])  # cut in the middle of an entity
+    d = import_dxf(str(bad))
+    assert 2 <= len(d.geometries) < 8 and "truncated" in " ".join(d.repairs)
+
+
+def test_garbage_after_header_fails_clearly(tmp_path):
+    p = tmp_path / "broken.dxf"
+    p.write_text("0\nSECTION\n2\nHEADER\n9\n$ACADVER\n1\nAC1015\n0\nENDSEC\n0\nSECTION\n2\nENTITIES\n0\nLINE\n8\n",
+                 encoding="ascii")
+    with pytest.raises(InputError) as exc:
+        import_dxf(str(p))
+    assert os.path.basename(str(p)) in str(exc.value)
+
+
+def test_inspect_reports_header_and_counts(tmp_path):
+    doc = new_doc(4)
+    msp = doc.modelspace()
+    room(msp, 0, 0, 20000, 10000)
+    msp.add_text("x", dxfattribs={"layer": "A-WALL"})
+    d = inspect_dxf(save(doc, tmp_path))
+    assert d.header_unit == "mm"
+    assert d.layers["A-WALL"].counts == {"LINE": 4, "TEXT": 1}
+    assert d.layers["A-WALL"].kept and d.layers["0"].kind == "reference"
