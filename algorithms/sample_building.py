@@ -54,7 +54,6 @@ from dataclasses import dataclass, field
 from typing import Dict, List, Optional, Sequence, Tuple
 
 from shapely.geometry import LineString, Point, Polygon, box, shape
-from shapely.geometry.polygon import orient
 from shapely.ops import unary_union
 
 from .errors import InputError
@@ -497,7 +496,7 @@ def _gt_features(p: FloorPlan):
         if len(hits) != 1 or hits[0] in used:
             raise RuntimeError(f"sample building: label of {r.name!r} is not in exactly one free region")
         used.add(hits[0])
-        poly = orient(comps[hits[0]].simplify(0), sign=1.0)
+        poly = _canonical(comps[hits[0]])
         rooms.append((r, poly))
     left = [c for i, c in enumerate(comps) if i not in used]
     if left:
@@ -520,6 +519,36 @@ def _gt_features(p: FloorPlan):
             na, nb = nb, na
         doors.append((d, na, nb))
     return rooms, doors
+
+
+def _canonical_ring(coords, ccw: bool) -> List[Tuple[float, float]]:
+    """Drop repeated and collinear vertices (exact: coordinates are whole millimetres), orient the
+    ring and start it at its lowest-left vertex, so equal shapes always give equal coordinates."""
+    pts = [(float(x), float(y)) for x, y in list(coords)[:-1]]
+    changed = True
+    while changed and len(pts) > 3:
+        changed = False
+        out = []
+        n = len(pts)
+        for i in range(n):
+            a, b, c = pts[i - 1], pts[i], pts[(i + 1) % n]
+            cross = (b[0] - a[0]) * (c[1] - b[1]) - (b[1] - a[1]) * (c[0] - b[0])
+            if b == a or abs(cross) < 1e-6:
+                changed = True
+                continue
+            out.append(b)
+        pts = out
+    area2 = sum(pts[i - 1][0] * pts[i][1] - pts[i][0] * pts[i - 1][1] for i in range(len(pts)))
+    if (area2 > 0) != ccw:
+        pts.reverse()
+    k = min(range(len(pts)), key=lambda i: (pts[i][1], pts[i][0]))
+    pts = pts[k:] + pts[:k]
+    return pts + [pts[0]]
+
+
+def _canonical(poly: Polygon) -> Polygon:
+    holes = sorted((_canonical_ring(r.coords, ccw=False) for r in poly.interiors), key=lambda r: r[0])
+    return Polygon(_canonical_ring(poly.exterior.coords, ccw=True), holes)
 
 
 def _ring_m(coords) -> List[List[float]]:
@@ -564,6 +593,8 @@ def _new_doc():
     import ezdxf
 
     doc = ezdxf.new("R2018", setup=["linetypes"])
+    # ezdxf stamps the creation time here; a fixed marker keeps the output reproducible
+    doc.ezdxf_metadata()["CREATED_BY_EZDXF"] = f"{ezdxf.__version__} @ cad2osmag sample building"
     doc.header["$INSUNITS"] = 4
     doc.header["$MEASUREMENT"] = 1
     doc.header["$LUNITS"] = 2
