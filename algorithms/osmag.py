@@ -1,0 +1,499 @@
+"""osmAG export and import (pipeline stage 7), see ../shared/docs/osmag-format.md.
+
+Writing (:func:`write_osmag`)
+- ``<osm version="0.6" generator="cad2osmag">``; new objects carry negative ids (JOSM convention),
+  unique per element type: node -1 is the root node, then the area/passage nodes; ways -1.. are the
+  structure areas, the areas, then the passages.
+- One ``name=root`` node at the frame's anchor (or at ``root=(lon, lat)``).
+- Every area is a closed way over its exterior ring. Nodes are shared: vertices of adjacent areas at
+  the same position (and vertices lying on a neighbour's edge, which are inserted there) become one
+  node, so a passage's two nodes are nodes of both areas it joins. Holes (pillars) cannot be expressed
+  by a single closed way: they are left out and counted in the returned stats (``holes_dropped``).
+- Area tags: ``osmAG:type=area``, ``osmAG:areatype``, ``indoor=room`` (``corridor`` for corridors),
+  ``level``, ``height``, ``name`` (the area's name, else a stable generated id ``L<level>-A<id>``,
+  structure areas ``L<level>-S<id>``; duplicate names get the generated id appended so names stay
+  unique), ``osmAG:parent`` (the smallest structure area containing the area, or the one named in the
+  area's ``osmAG:parent`` tag), ``area=yes`` (tells GDAL/OSM renderers that the closed way is an area;
+  ``indoor`` alone is not in GDAL's polygon list) and the area's other tags.
+- Passage tags: ``osmAG:type=passage``, ``osmAG:from``, ``osmAG:to``, ``level``, ``name``
+  (else ``L<level>-P<id>``) and the passage's other tags.
+- Variant ``semantic``: parent/from/to hold area names; ``fix-id``: they hold way ids.
+- Coordinates: areas in the CAD frame with ``frame=LocalFrame(...)`` (the usual pipeline case), or
+  in any CRS with ``crs=...`` (converted to WGS84 through pyproj). lat/lon with 10 decimals.
+- The file is written atomically (temporary file + rename): a failure leaves nothing behind.
+
+Reading (:func:`read_osmag`) accepts both variants, files from this plugin, JOSM (positive ids,
+``action=`` attributes) and other osmAG tools (``osmAG:areaType`` spelling), and reports dangling
+references and unclosed ways instead of failing on them.
+"""
+from __future__ import annotations
+
+import math
+import os
+import xml.etree.ElementTree as ET
+from typing import Dict, List, Optional, Sequence, Tuple
+from xml.sax.saxutils import quoteattr
+
+import numpy as np
+
+from .errors import InputError
+from .io_utils import atomic_write
+from .model import Area, Passage
+from .progress import ensure
+
+AREA_TYPES = ("room", "corridor", "stairs", "elevator", "structure")
+VARIANTS = ("semantic", "fix-id")
+GENERATOR = "cad2osmag"
+_CORE_AREA_KEYS = {"osmAG:type", "osmAG:areatype", "osmAG:areaType", "indoor", "level", "height", "name",
+                   "osmAG:parent", "area"}
+_CORE_PASSAGE_KEYS = {"osmAG:type", "osmAG:from", "osmAG:to", "level", "name"}
+
+
+def _fmt_num(v: float) -> str:
+    s = f"{float(v):.3f}".rstrip("0").rstrip(".")
+    return s or "0"
+
+
+def generated_name(level: str, kind: str, ident: int) -> str:
+    """Stable name for an unnamed object: ``L1-A007`` (area), ``L1-S001`` (structure), ``L1-P012``."""
+    return f"L{level}-{kind}{abs(int(ident)):03d}"
+
+
+# =========================================================================== writing
+def write_osmag(path: str, areas: Sequence[Area], passages: Sequence[Passage] = (), frame=None,
+                level: str = "1", height: float = 3.2, variant: str = "semantic",
+                structure_areas: Sequence[Area] = (), crs=None, root: Optional[Tuple[float, float]] = None,
+                progress=None) -> dict:
+    """Write an osmAG file; see the module docstring for the format.
+
+    ``areas``/``structure_areas``: :class:`Area` with shapely polygons; ``passages``: :class:`Passage`
+    whose ``from_id``/``to_id`` are area ids. Georeference: ``frame`` (a
+    :class:`~algorithms.georef.LocalFrame`, geometries in the CAD frame) or ``crs`` (geometries in that
+    CRS, e.g. "EPSG:4326"); exactly one. ``root``: (lon, lat) of the root node (default: the frame's
+    anchor, or the centre of the data's bounding box).
+
+    Returns stats: ``nodes``, ``areas``, ``structure_areas``, ``passages``, ``shared_nodes`` (nodes used
+    by 2+ area ways), ``holes_dropped``, ``vertices_inserted``, ``root`` (lon, lat), ``warnings``.
+    Raises InputError (nothing written) for empty/invalid polygons, passages referencing missing areas,
+    an unknown variant, a missing georeference.
+    """
+    import shapely
+    from shapely.geometry import MultiPolygon, Polygon
+
+    from .georef import WGS84, _crs, check_lonlat, to_wgs84_points
+    from .refine import _Partition
+
+    progress = ensure(progress)
+    if variant not in VARIANTS:
+        raise InputError(f"unknown osmAG variant {variant!r}; use 'semantic' or 'fix-id'")
+    level = str(level).strip()
+    if not level:
+        raise InputError("LEVEL must not be empty (e.g. '1' or '-1')")
+    if not (height and float(height) > 0):
+        raise InputError(f"HEIGHT must be a positive number of metres, got {height}")
+    if (frame is None) == (crs is None):
+        raise InputError("the areas carry no georeference: give a LocalFrame (anchor, rotation) for CAD-frame "
+                         "geometries, or the CRS they are in; georeference the layers first")
+    all_areas = list(structure_areas) + list(areas)
+    if not areas and not structure_areas:
+        raise InputError("nothing to export: no areas")
+    n_struct = len(structure_areas)
+    warnings: List[str] = []
+    # ---- validate geometries and references
+    ids = [a.id for a in all_areas]
+    dup = sorted({i for i in ids if ids.count(i) > 1})
+    if dup:
+        raise InputError(f"duplicate area ids {dup}; every area (and structure area) needs a unique id")
+    empty = [a.id for a in all_areas if a.polygon is None or a.polygon.is_empty]
+    if empty:
+        raise InputError(f"areas {empty} have empty geometries; remove them or fix the layer")
+    polys = []
+    for a in all_areas:
+        g = a.polygon
+        if isinstance(g, MultiPolygon):
+            if len(g.geoms) > 1:
+                raise InputError(f"area {a.id} is a multipolygon of {len(g.geoms)} parts; an osmAG area is one "
+                                 "closed way: split it into separate areas (QGIS 'Multipart to singleparts')")
+            g = g.geoms[0]
+        if not isinstance(g, Polygon):
+            raise InputError(f"area {a.id} is a {g.geom_type}, not a polygon")
+        if not g.is_valid:
+            raise InputError(f"area {a.id} has an invalid polygon ({shapely.is_valid_reason(g)}); fix it "
+                             "(QGIS 'Fix geometries') and export again")
+        polys.append(g)
+    idset = set(ids)
+    bad = [f"{p.id} ({p.from_id}->{p.to_id})" for p in passages if p.from_id not in idset or p.to_id not in idset]
+    if bad:
+        raise InputError(f"passages reference missing areas: {', '.join(bad)}; delete them or add the areas")
+    for p in passages:
+        if p.line is None or p.line.is_empty or len(p.line.coords) < 2:
+            raise InputError(f"passage {p.id} has no line geometry (needs 2 points)")
+    # ---- coordinates -> WGS84
+    if frame is not None:
+        to_ll = frame.to_wgs84
+        q = 1e-6
+        if root is None:
+            root = (frame.anchor_lon, frame.anchor_lat)
+    else:
+        c = _crs(crs)
+        if c.is_geographic:
+            q = 1e-10
+        else:
+            q = 1e-6
+
+        def to_ll(x, y):
+            return to_wgs84_points(x, y, c)
+    pxy = np.array([[p.line.coords[0][:2], p.line.coords[-1][:2]] for p in passages], dtype=float).reshape(-1, 2)
+    part = _Partition(polys, pxy, q)
+    n_ins = part.node()
+    holes = int(part.ring_hole.sum())
+    if holes:
+        warnings.append(f"{holes} holes (pillars) left out: an osmAG area is one closed way")
+    ext_rings: Dict[int, np.ndarray] = {}
+    for ri, (f, h) in enumerate(zip(part.ring_face, part.ring_hole)):
+        if not h:
+            ext_rings[int(f)] = part.rings[ri]
+    used = np.zeros(len(part.V), bool)
+    for r in ext_rings.values():
+        used[r] = True
+    pe = part.extra_ids.reshape(-1, 2)
+    used[pe.reshape(-1)] = True
+    lon, lat = to_ll(part.V[:, 0], part.V[:, 1])
+    lon, lat = np.asarray(lon, float), np.asarray(lat, float)
+    if not (np.all(np.isfinite(lon[used])) and np.all(np.isfinite(lat[used]))):
+        raise InputError("some coordinates cannot be converted to WGS84; check the layer CRS / georeference")
+    if root is None:
+        root = (float((lon[used].min() + lon[used].max()) / 2), float((lat[used].min() + lat[used].max()) / 2))
+    check_lonlat(float(root[0]), float(root[1]), what="root node")
+    if lat[used].min() <= -90 or lat[used].max() >= 90:
+        raise InputError("converted coordinates fall outside valid latitudes; check the georeference")
+    progress.step(40, f"osmAG: {int(used.sum())} nodes ({n_ins} inserted to share borders)")
+    # ---- node ids
+    # nodes numbered in order of first use (structure areas, areas, passages): reproducible files
+    node_id = np.zeros(len(part.V), np.int64)
+    seq = np.concatenate([ext_rings[k] for k in range(len(all_areas))] + [pe.reshape(-1)])
+    _, first = np.unique(seq, return_index=True)
+    order = seq[np.sort(first)]
+    node_id[order] = -2 - np.arange(len(order))
+    # ---- names, way ids
+    names: List[str] = []
+    seen: Dict[str, int] = {}
+    for k, a in enumerate(all_areas):
+        gen = generated_name(level, "S" if k < n_struct else "A", a.id)
+        nm = (a.name or "").strip() or gen
+        if nm in seen:
+            warnings.append(f"area {a.id}: name '{nm}' already used by area {all_areas[seen[nm]].id}; "
+                            f"written as '{nm} [{gen}]'")
+            nm = f"{nm} [{gen}]"
+        seen[nm] = k
+        names.append(nm)
+    way_id = {a.id: -1 - k for k, a in enumerate(all_areas)}
+    by_id = {a.id: k for k, a in enumerate(all_areas)}
+    # ---- parents
+    parent: Dict[int, int] = {}
+    name_to_k = {n: k for k, n in enumerate(names)}
+    src_names = {}
+    for k, a in enumerate(all_areas):
+        if a.name:
+            src_names.setdefault(a.name, k)
+    struct_idx = list(range(n_struct))
+    for k, a in enumerate(all_areas):
+        explicit = str(a.tags.get("osmAG:parent", "")).strip() if a.tags else ""
+        if explicit:
+            pk = name_to_k.get(explicit, src_names.get(explicit))
+            if pk is None:
+                try:
+                    pk = by_id.get(int(explicit))
+                except ValueError:
+                    pk = None
+                if pk is None:
+                    # a fix-id file read back: the tag holds the old way id of the parent
+                    for j, b in enumerate(all_areas):
+                        if str(b.id) == explicit:
+                            pk = j
+            if pk is not None and pk != k:
+                parent[k] = pk
+                continue
+            warnings.append(f"area {a.id}: parent '{explicit}' is not among the exported areas; parent dropped")
+        if struct_idx:
+            rp = polys[k].representative_point()
+            cands = [j for j in struct_idx if j != k and polys[j].area > polys[k].area and polys[j].covers(rp)]
+            if cands:
+                parent[k] = min(cands, key=lambda j: polys[j].area)
+    # ---- passages
+    pnames = []
+    for p in passages:
+        pnames.append((p.name or "").strip() or generated_name(level, "P", p.id))
+    for k, p in enumerate(passages):
+        for aid in (p.from_id, p.to_id):
+            ring = ext_rings[by_id[aid]]
+            for j in range(2):
+                if not np.any(ring == pe[k, j]):
+                    warnings.append(f"passage {p.id} ({pnames[k]}): end point {j + 1} is not on the border of "
+                                    f"area {aid}; its node is not shared with that area")
+
+    def ref(k):
+        return names[k] if variant == "semantic" else str(way_id[all_areas[k].id])
+
+    # ---- XML
+    hstr = _fmt_num(float(height))
+    lines: List[str] = ['<?xml version="1.0" encoding="UTF-8"?>',
+                        f'<osm version="0.6" generator="{GENERATOR}">']
+    lines.append(f'  <node id="-1" lat="{root[1]:.10f}" lon="{root[0]:.10f}">')
+    lines.append('    <tag k="name" v="root"/>')
+    lines.append('  </node>')
+    for i in order.tolist():
+        lines.append(f'  <node id="{node_id[i]}" lat="{lat[i]:.10f}" lon="{lon[i]:.10f}"/>')
+
+    def tag(k, v):
+        return f"    <tag k={quoteattr(str(k))} v={quoteattr(str(v))}/>"
+
+    shared = np.zeros(len(part.V), np.int64)
+    for k, a in enumerate(all_areas):
+        ring = ext_rings[k]
+        shared[np.unique(ring)] += 1
+        refs = np.append(ring, ring[0])
+        lines.append(f'  <way id="{way_id[a.id]}">')
+        lines.extend(f'    <nd ref="{node_id[v]}"/>' for v in refs.tolist())
+        atype = a.type if a.type in AREA_TYPES else "room"
+        if a.type not in AREA_TYPES:
+            warnings.append(f"area {a.id}: unknown type '{a.type}' written as room")
+        if k < n_struct:
+            atype = "structure"
+        lines.append(tag("osmAG:type", "area"))
+        lines.append(tag("osmAG:areatype", atype))
+        lines.append(tag("indoor", "corridor" if atype == "corridor" else "room"))
+        lines.append(tag("level", level))
+        lines.append(tag("height", hstr))
+        lines.append(tag("name", names[k]))
+        if k in parent:
+            lines.append(tag("osmAG:parent", ref(parent[k])))
+        lines.append(tag("area", "yes"))
+        for kk, vv in sorted((a.tags or {}).items()):
+            if kk not in _CORE_AREA_KEYS and vv not in (None, ""):
+                lines.append(tag(kk, vv))
+        lines.append("  </way>")
+    wid = -1 - len(all_areas)
+    for k, p in enumerate(passages):
+        a0, a1 = int(pe[k, 0]), int(pe[k, 1])
+        lines.append(f'  <way id="{wid - k}">')
+        lines.append(f'    <nd ref="{node_id[a0]}"/>')
+        lines.append(f'    <nd ref="{node_id[a1]}"/>')
+        lines.append(tag("osmAG:type", "passage"))
+        lines.append(tag("osmAG:from", ref(by_id[p.from_id])))
+        lines.append(tag("osmAG:to", ref(by_id[p.to_id])))
+        lines.append(tag("level", level))
+        lines.append(tag("name", pnames[k]))
+        for kk, vv in sorted((p.tags or {}).items()):
+            if kk not in _CORE_PASSAGE_KEYS and vv not in (None, ""):
+                lines.append(tag(kk, vv))
+        lines.append("  </way>")
+    lines.append("</osm>")
+    progress.step(80)
+    with atomic_write(path) as fh:
+        fh.write("\n".join(lines) + "\n")
+    for w in warnings:
+        progress.warning(w)
+    stats = {"path": os.path.abspath(path), "nodes": int(len(order)) + 1, "areas": len(areas),
+             "structure_areas": n_struct, "passages": len(passages), "shared_nodes": int((shared >= 2).sum()),
+             "holes_dropped": holes, "vertices_inserted": n_ins, "root": (float(root[0]), float(root[1])),
+             "variant": variant, "warnings": warnings}
+    progress.step(100, f"osmAG: wrote {len(all_areas)} areas ({n_struct} structure), {len(passages)} passages, "
+                       f"{stats['nodes']} nodes ({stats['shared_nodes']} shared) to {path}")
+    return stats
+
+
+# =========================================================================== reading
+def _get(tags: Dict[str, str], key: str, default=None):
+    if key in tags:
+        return tags[key]
+    low = key.lower()
+    for k, v in tags.items():
+        if k.lower() == low:
+            return v
+    return default
+
+
+def read_osmag(path: str, progress=None):
+    """Read an osmAG file (either variant).
+
+    Returns ``(areas, passages, root, report)``:
+    - ``areas``: :class:`Area` per closed way tagged ``osmAG:type=area``; ``id`` = way id, polygon in
+      WGS84 lon/lat, ``type`` = osmAG:areatype, ``name``, ``tags`` = all the way's tags.
+    - ``passages``: :class:`Passage` per way tagged ``osmAG:type=passage`` whose ends resolve to areas;
+      ``from_id``/``to_id`` = area way ids, ``line`` = its first and last node in lon/lat.
+    - ``root``: (lon, lat) of the ``name=root`` node, or None.
+    - ``report``: ``variant`` (semantic | fix-id | mixed | none), ``nodes``, ``ways``, ``unclosed``
+      (way ids), ``dangling_nodes`` ({way id: [missing node ids]}), ``dangling_refs`` (list of
+      (way id, key, value) that name no area), ``warnings`` (readable lines), ``parents`` ({area id:
+      parent area id}).
+    Raises InputError if the file is missing, not OSM XML, or holds no osmAG area.
+    """
+    from shapely.geometry import LineString, Polygon
+
+    progress = ensure(progress)
+    if not os.path.isfile(path):
+        raise InputError(f"osmAG file '{path}' does not exist")
+    try:
+        tree = ET.parse(path)
+    except ET.ParseError as exc:
+        raise InputError(f"'{os.path.basename(path)}' is not an OSM XML file ({exc})") from exc
+    except OSError as exc:
+        raise InputError(f"cannot read '{path}': {exc}") from exc
+    osm = tree.getroot()
+    if osm.tag != "osm":
+        raise InputError(f"'{os.path.basename(path)}' is XML but not OSM (root element <{osm.tag}>, expected <osm>)")
+    nodes: Dict[int, Tuple[float, float]] = {}
+    node_tags: Dict[int, Dict[str, str]] = {}
+    ways: List[Tuple[int, List[int], Dict[str, str]]] = []
+    warnings: List[str] = []
+    for el in osm:
+        if el.get("action") == "delete":
+            continue
+        if el.tag == "node":
+            try:
+                nid = int(el.get("id"))
+                nodes[nid] = (float(el.get("lon")), float(el.get("lat")))
+            except (TypeError, ValueError):
+                warnings.append(f"node {el.get('id')!r} has no valid id/lat/lon; ignored")
+                continue
+            t = {c.get("k"): c.get("v") for c in el if c.tag == "tag"}
+            if t:
+                node_tags[nid] = t
+        elif el.tag == "way":
+            try:
+                wid = int(el.get("id"))
+            except (TypeError, ValueError):
+                warnings.append(f"way {el.get('id')!r} has no valid id; ignored")
+                continue
+            refs = [int(c.get("ref")) for c in el if c.tag == "nd"]
+            t = {c.get("k"): c.get("v") for c in el if c.tag == "tag"}
+            ways.append((wid, refs, t))
+    progress.step(40)
+    root = None
+    roots = [nid for nid, t in node_tags.items() if t.get("name") == "root"]
+    if roots:
+        root = nodes[roots[0]]
+        if len(roots) > 1:
+            warnings.append(f"{len(roots)} root nodes ({roots}); used node {roots[0]}")
+    else:
+        warnings.append("no root node (name=root)")
+    area_ways = [w for w in ways if str(_get(w[2], "osmAG:type", "")).lower() == "area"]
+    passage_ways = [w for w in ways if str(_get(w[2], "osmAG:type", "")).lower() == "passage"]
+    if not area_ways:
+        raise InputError(f"'{os.path.basename(path)}' is not an osmAG file: none of its {len(ways)} ways is tagged "
+                         "osmAG:type=area (plain OSM data? export it with osmAG tags first)")
+    unclosed: List[int] = []
+    dangling_nodes: Dict[int, List[int]] = {}
+    areas: List[Area] = []
+    for wid, refs, t in area_ways:
+        missing = [r for r in refs if r not in nodes]
+        if missing:
+            dangling_nodes[wid] = missing
+            warnings.append(f"area way {wid}: {len(missing)} missing nodes ({missing[:5]}); area skipped")
+            continue
+        if len(refs) < 4 or refs[0] != refs[-1]:
+            unclosed.append(wid)
+            warnings.append(f"area way {wid} is not closed (first node {refs[0] if refs else '-'} != last node "
+                            f"{refs[-1] if refs else '-'}); area skipped")
+            continue
+        poly = Polygon([nodes[r] for r in refs])
+        if not poly.is_valid:
+            warnings.append(f"area way {wid} is not a valid polygon (self-intersecting?)")
+        atype = str(_get(t, "osmAG:areatype", "room") or "room")
+        areas.append(Area(id=wid, polygon=poly, type=atype, name=t.get("name", ""), tags=dict(t)))
+    by_name: Dict[str, List[int]] = {}
+    for a in areas:
+        if a.name:
+            by_name.setdefault(a.name, []).append(a.id)
+    ids = {a.id for a in areas}
+    dangling_refs: List[Tuple[int, str, str]] = []
+    kinds = {"name": 0, "id": 0}
+
+    def resolve(wid, key, v):
+        if v is None or v == "":
+            dangling_refs.append((wid, key, ""))
+            return None
+        v = str(v).strip()
+        if v in by_name:
+            if len(by_name[v]) > 1:
+                warnings.append(f"way {wid}: {key}='{v}' matches {len(by_name[v])} areas; used way {by_name[v][0]}")
+            kinds["name"] += 1
+            return by_name[v][0]
+        try:
+            iv = int(v)
+        except ValueError:
+            iv = None
+        if iv is not None and iv in ids:
+            kinds["id"] += 1
+            return iv
+        dangling_refs.append((wid, key, v))
+        return None
+
+    parents: Dict[int, int] = {}
+    for a in areas:
+        pv = _get(a.tags, "osmAG:parent")
+        if pv not in (None, ""):
+            pid = resolve(a.id, "osmAG:parent", pv)
+            if pid is not None:
+                parents[a.id] = pid
+            else:
+                warnings.append(f"area way {a.id}: osmAG:parent='{pv}' names no area")
+    passages: List[Passage] = []
+    for wid, refs, t in passage_ways:
+        missing = [r for r in refs if r not in nodes]
+        if missing:
+            dangling_nodes[wid] = missing
+            warnings.append(f"passage way {wid}: missing nodes {missing[:5]}; passage skipped")
+            continue
+        if len(refs) < 2:
+            warnings.append(f"passage way {wid} has {len(refs)} node(s); passage skipped")
+            continue
+        if len(refs) > 2:
+            warnings.append(f"passage way {wid} has {len(refs)} nodes; used its first and last")
+        f = resolve(wid, "osmAG:from", _get(t, "osmAG:from"))
+        to = resolve(wid, "osmAG:to", _get(t, "osmAG:to"))
+        if f is None or to is None:
+            warnings.append(f"passage way {wid}: osmAG:from='{_get(t, 'osmAG:from')}' / osmAG:to='{_get(t, 'osmAG:to')}' "
+                            "does not name an area of this file; passage skipped")
+            continue
+        passages.append(Passage(id=wid, from_id=f, to_id=to, line=LineString([nodes[refs[0]], nodes[refs[-1]]]),
+                                name=t.get("name", ""), tags=dict(t)))
+    variant = ("none" if not (kinds["name"] or kinds["id"]) else "semantic" if not kinds["id"]
+               else "fix-id" if not kinds["name"] else "mixed")
+    report = {"variant": variant, "nodes": len(nodes), "ways": len(ways), "areas": len(areas),
+              "passages": len(passages), "unclosed": unclosed, "dangling_nodes": dangling_nodes,
+              "dangling_refs": dangling_refs, "parents": parents, "warnings": warnings, "root": root}
+    for w in warnings:
+        progress.warning(w)
+    progress.step(100, f"osmAG: read {len(areas)} areas, {len(passages)} passages ({variant} variant), "
+                       f"{len(unclosed)} unclosed ways, {len(dangling_nodes) + len(dangling_refs)} dangling references")
+    return areas, passages, root, report
+
+
+def frame_from_root(root: Tuple[float, float]):
+    """The osmAG local metric frame (x east, y north, metres) centred on the root node."""
+    from .georef import LocalFrame
+
+    if root is None:
+        raise InputError("the osmAG file has no root node (name=root); its local frame is undefined")
+    return LocalFrame(root[0], root[1])
+
+
+def to_frame(areas: Sequence[Area], passages: Sequence[Passage], frame) -> Tuple[List[Area], List[Passage]]:
+    """Copies of lon/lat areas and passages (as read) converted into ``frame``'s CAD/local metres."""
+    import copy
+
+    out_a, out_p = [], []
+    for a in areas:
+        b = copy.copy(a)
+        b.polygon = frame.geometry_from_crs(a.polygon)
+        out_a.append(b)
+    for p in passages:
+        b = copy.copy(p)
+        b.line = frame.geometry_from_crs(p.line)
+        out_p.append(b)
+    return out_a, out_p
+
+
+__all__ = ["write_osmag", "read_osmag", "frame_from_root", "to_frame", "generated_name", "AREA_TYPES", "VARIANTS"]
