@@ -11,7 +11,7 @@ The drawings imitate what architects deliver, so that every later stage can be t
   ``A-DOOR`` with rotation and, where the hinge side demands it, mirroring (x scale -1).
   Single doors 0.8-1.0 m, a 1.8 m double door from the hall to the corridor, and a 1.8 m main
   entrance on floor 1. Windows on ``A-GLAZ``: exterior wall gaps with 2-3 glazing lines.
-* A stair core (``A-STAIR``: treads, stringers, walking-line arrow) and a lift shaft (``A-ELEV``:
+* A stair core (``A-STAIR``: treads, stringers, walking-line arrow) and a lift shaft (``A-FLOR-EVTR``,
   car rectangle with a cross) at identical coordinates on every floor.
 * A central corridor (1.8-2.4 m; the width varies by floor and may step once along the floor),
   offices on both sides, an open hall of about 12 x 11 m ("Hall"), a WC block, an office that
@@ -51,7 +51,7 @@ import math
 import os
 import random
 from dataclasses import dataclass, field
-from typing import Dict, List, Optional, Sequence, Tuple
+from typing import Dict, List, Optional, Tuple
 
 from shapely.geometry import LineString, Point, Polygon, box, shape
 from shapely.ops import unary_union
@@ -94,7 +94,8 @@ LAYERS = [
     ("A-DOOR", 3, "Continuous"),
     ("A-GLAZ", 4, "Continuous"),
     ("A-STAIR", 6, "Continuous"),
-    ("A-ELEV", 6, "Continuous"),
+    ("A-FLOR-EVTR", 6, "Continuous"),  # AIA name for lift cars (A-ELEV means elevations in AIA)
+    ("A-WALL-PATT", 8, "Continuous"),
     ("A-FURN", 9, "Continuous"),
     ("P-SANR-FIXT", 5, "Continuous"),
     ("A-FLOR-PATT", 252, "Continuous"),
@@ -104,6 +105,14 @@ LAYERS = [
     ("S-GRID", 1, "CENTER"),
 ]
 
+LIFT_LAYER = "A-FLOR-EVTR"
+# MTEXT room labels as CAD programs write them: font/bold switch, alignment + relative height,
+# colour + italic font with pitch flags. Plain text of each: "<head> <tail>".
+MTEXT_FORMATS = [
+    "{{\\fArial|b1;{head}}} {tail}",
+    "\\A1;{{\\H1.2x;{head}}} {tail}",
+    "{{\\C1;\\fArial|b0|i1|c0|p34;{head} {tail}}}",
+]
 DOOR_BLOCKS = {800: "DOOR_800", 900: "DOOR_900", 1000: "DOOR_1000"}
 DOUBLE_DOOR_BLOCK = "DOOR_DBL_1800"
 OUTSIDE = "outside"
@@ -149,6 +158,7 @@ class Room:
     style: str = "text"  # text | mtext_bold | mtext_para | tag
     furniture: str = ""  # office | meeting | hall | wc | ""
     box: Optional[Tuple[float, float, float, float]] = None  # rectangle for furniture placement
+    fmt: int = 0  # which of MTEXT_FORMATS a "mtext_bold" label uses
 
 
 @dataclass
@@ -449,17 +459,19 @@ def _plan_floor(level: int, seed: int) -> FloorPlan:
     meeting = {i for i, w in enumerate(widths) if w >= 7000}
     if not meeting:
         meeting = {max(range(len(widths)), key=lambda i: widths[i])}
-    styles = ["text", "mtext_bold", "text", "tag", "text", "mtext_bold", "text", "text", "tag",
-              "mtext_bold", "text", "text", "text", "text", "text"]
-    rng.shuffle(styles)
+    plain_idx = [i for i in range(len(numbered)) if i not in meeting]
+    rng.shuffle(plain_idx)
+    styles = {i: "tag" for i in plain_idx[:2]}  # two room-tag blocks with a NAME attribute
+    styles.update({i: "mtext_bold" for i in plain_idx[2:6]})
     for n, (side, pt, bx) in enumerate(numbered):
         number = f"{level}{n + 1:02d}"
         if n in meeting:
             p.rooms.append(Room(f"Meeting Room {number}", "room", pt, style="mtext_para",
                                 furniture="meeting", box=bx))
         else:
-            p.rooms.append(Room(f"Office {number}", "room", pt, style=styles[n % len(styles)],
-                                furniture="office" if side != "W" else "office_wrap", box=bx))
+            p.rooms.append(Room(f"Office {number}", "room", pt, style=styles.get(n, "text"),
+                                furniture="office" if side != "W" else "office_wrap", box=bx,
+                                fmt=rng.randrange(len(MTEXT_FORMATS))))
     p.rooms.append(Room("WC", "room", (0.5 * (WC_BOX[0] + WC_BOX[2]), 17000), style="text",
                         furniture="wc", box=WC_BOX))
     p.rooms.append(Room("Stair A", "stairs", (0.5 * (sx0 + sx1), 0.5 * (sy0 + sy1) - 600), style="text"))
@@ -515,7 +527,7 @@ def _gt_features(p: FloorPlan):
         na, nb = name_at(a), name_at(b)
         if na == nb:
             raise RuntimeError(f"sample building: door at {d.midline()} joins {na!r} to itself")
-        if na == OUTSIDE:
+        if na == OUTSIDE or na == "Corridor":  # "to": the outside, else the corridor when it is one side
             na, nb = nb, na
         doors.append((d, na, nb))
     return rooms, doors
@@ -709,6 +721,9 @@ def _draw_floor(doc, p: FloorPlan, rooms_gt, rng: random.Random) -> None:
     ext = unary_union(p.walls["exterior"]).difference(openings)
     for poly in _pieces(ext):
         _add_poly_outline(msp, poly, "A-WALL", as_lines=False)
+        h = msp.add_hatch(dxfattribs={"layer": "A-WALL-PATT"})  # masonry hatch of the facade walls
+        h.set_pattern_fill("ANSI31", scale=20)
+        h.paths.add_polyline_path(list(poly.exterior.coords)[:-1], is_closed=True, flags=1)
     inner = unary_union(p.walls["interior"]).difference(openings)
     for i, poly in enumerate(_pieces(inner)):
         _add_poly_outline(msp, poly, "A-WALL", as_lines=(i % 2 == 1))
@@ -783,7 +798,7 @@ def _draw_stair_and_lift(msp) -> None:
         (xa + 120, y_start + 100))
     # lift: car with a cross, counterweight
     lx0, ly0, lx1, ly1 = LIFT
-    lay = {"layer": "A-ELEV"}
+    lay = {"layer": LIFT_LAYER}
     c0, c1 = (lx0 + 150, ly0 + 250), (lx1 - 150, ly1 - 350)
     msp.add_lwpolyline([c0, (c1[0], c0[1]), c1, (c0[0], c1[1])], close=True, dxfattribs=lay)
     msp.add_line(c0, c1, dxfattribs=lay)
@@ -845,9 +860,9 @@ def _mtext_content(r: Room) -> str:
         head, _, tail = r.name.partition(" ")
         return head + "\\P" + tail
     head, _, tail = r.name.rpartition(" ") if r.name[-1].isdigit() else (r.name, "", "")
-    if tail:
-        return "{\\fArial|b1;" + head + "} " + tail
-    return "{\\fArial|b1;" + r.name + "}"
+    if not tail:
+        return "{\\fArial|b1;" + r.name + "}"
+    return MTEXT_FORMATS[r.fmt % len(MTEXT_FORMATS)].format(head=head, tail=tail)
 
 
 def _draw_annotations(doc, msp, p: FloorPlan, rooms_gt) -> None:

@@ -6,7 +6,6 @@ import ezdxf
 import numpy as np
 import pytest
 from ezdxf import path as dxfpath
-from ezdxf.math import Vec3
 from shapely.geometry import LineString, Point, box
 from shapely.strtree import STRtree
 
@@ -105,7 +104,8 @@ def test_header_layers_and_blocks(docs):
         assert doc.dxfversion in ("AC1027", "AC1032")
         assert doc.header["$INSUNITS"] == 4
         layers = {layer.dxf.name for layer in doc.layers}
-        for name in ("A-WALL", "A-DOOR", "A-GLAZ", "A-STAIR", "A-ELEV", "A-COLS", "A-FURN", "A-ANNO-TEXT",
+        for name in ("A-WALL", "A-WALL-PATT", "A-DOOR", "A-GLAZ", "A-STAIR", "A-FLOR-EVTR", "A-COLS",
+                     "A-FURN", "A-ANNO-TEXT",
                      "A-ANNO-DIMS", "S-GRID", "A-FLOR-PATT"):
             assert name in layers
         for name in ("DOOR_800", "DOOR_900", "DOOR_1000", "DOOR_DBL_1800", "OFFICE_MODULE", "ROOM_TAG",
@@ -272,7 +272,7 @@ def test_exploded_geometry_matches_ground_truth(build, docs):
         ents = explode(doc)
         layers = {layer for layer, _ in ents}
         assert "0" not in {layer for layer, e in ents if e.dxftype() in ("LINE", "LWPOLYLINE", "ARC")}
-        assert {"A-WALL", "A-DOOR", "A-GLAZ", "A-STAIR", "A-ELEV", "A-COLS", "A-FURN"} <= layers
+        assert {"A-WALL", "A-DOOR", "A-GLAZ", "A-STAIR", "A-FLOR-EVTR", "A-COLS", "A-FURN"} <= layers
         walls = segments_m([e for layer, e in ents if layer == "A-WALL"])
         assert len(walls) > 100
         xs = [c[0] for s in walls for c in s.coords]
@@ -319,7 +319,7 @@ def test_exploded_geometry_matches_ground_truth(build, docs):
         assert all(band.buffer(1e-6).contains(s) for s in glaz)
         # stair treads and the lift cross are inside their rooms
         poly = {r["name"]: r["polygon"] for r in rooms}
-        for layer, name in (("A-STAIR", "Stair A"), ("A-ELEV", "Lift 1")):
+        for layer, name in (("A-STAIR", "Stair A"), ("A-FLOR-EVTR", "Lift 1")):
             segs = segments_m([e for lay, e in ents if lay == layer])
             assert len(segs) > (20 if layer == "A-STAIR" else 4)
             assert all(poly[name].buffer(1e-6).contains(s) for s in segs)
