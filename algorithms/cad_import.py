@@ -154,6 +154,66 @@ def _extrusion(e):
         return None
 
 
+def _edge_points(edge, tol: float) -> Optional[np.ndarray]:
+    et = type(edge).__name__
+    if et == "LineEdge":
+        return np.array(((edge.start[0], edge.start[1]), (edge.end[0], edge.end[1])), dtype=np.float64)
+    if et == "ArcEdge":  # ezdxf gives the angles in counter-clockwise orientation
+        return _arc_points(edge.center[0], edge.center[1], float(edge.radius), math.radians(edge.start_angle),
+                           math.radians(edge.end_angle), tol,
+                           full=abs(abs(edge.end_angle - edge.start_angle) - 360.0) < 1e-9)
+    tool = edge.construction_tool()
+    if et == "EllipseEdge":
+        return np.array([(v.x, v.y) for v in tool.flattening(tol)], dtype=np.float64)
+    if et == "SplineEdge":
+        return np.array([(v.x, v.y) for v in tool.flattening(tol)], dtype=np.float64)
+    return None
+
+
+def _chain(pieces: List[np.ndarray], eps: float) -> List[np.ndarray]:
+    """Join edge polylines end to start (reversing where needed) into closed rings."""
+    rings = []
+    todo = [p for p in pieces if p is not None and len(p) >= 2]
+    while todo:
+        cur = [todo.pop(0)]
+        start = cur[0][0]
+        end = cur[0][-1]
+        while todo and np.hypot(*(end - start)) > eps:
+            heads = np.array([p[0] for p in todo])
+            tails = np.array([p[-1] for p in todo])
+            dh = np.hypot(heads[:, 0] - end[0], heads[:, 1] - end[1])
+            dt = np.hypot(tails[:, 0] - end[0], tails[:, 1] - end[1])
+            i, j = int(np.argmin(dh)), int(np.argmin(dt))
+            if dh[i] <= eps and dh[i] <= dt[j]:
+                nxt = todo.pop(i)
+            elif dt[j] <= eps:
+                nxt = todo.pop(j)[::-1]
+            else:
+                break
+            cur.append(nxt[1:])
+            end = nxt[-1]
+        ring = np.concatenate(cur, axis=0)
+        if len(ring) >= 3:
+            rings.append(ring)
+    return rings
+
+
+def _boundary_rings(bpath, tol: float) -> List[np.ndarray]:
+    """Closed rings of one HATCH boundary path (edges chained by their end points)."""
+    if type(bpath).__name__ == "PolylinePath":
+        v = np.array([(p[0], p[1], p[2] if len(p) > 2 else 0.0) for p in bpath.vertices], dtype=np.float64)
+        if len(v) < 2:
+            return []
+        return [_bulge_polyline(v[:, :2], v[:, 2], True, tol)]
+    pieces = [_edge_points(ed, tol) for ed in getattr(bpath, "edges", [])]
+    pieces = [p for p in pieces if p is not None and len(p) >= 2]
+    if not pieces:
+        return []
+    allp = np.concatenate(pieces)
+    eps = max(1e-6 * float(np.max(np.abs(allp))), tol * 0.5)
+    return _chain(pieces, eps)
+
+
 # ------------------------------------------------------------------------------------------ containers
 @dataclass
 class _Pieces:
@@ -430,17 +490,15 @@ class _Exploder:
         out.add(xy, layer, "ELLIPSE", full)
 
     def _hatch(self, e, layer, out):
-        from ezdxf import path as ezpath
-
         solid = bool(e.dxf.get("solid_fill", 0))
         rings = []
-        for p in ezpath.from_hatch(e):
+        for bpath in e.paths.paths:
             try:
-                xy = np.array([(v.x, v.y) for v in p.flattening(self.tol)], dtype=np.float64)
+                rings.extend(_boundary_rings(bpath, self.tol))
             except Exception:
                 continue
-            if len(xy) >= 3:
-                rings.append(xy)
+        ex = _extrusion(e)
+        rings = [_ocs_to_wcs(r, ex) for r in rings if len(r) >= 3]
         if not rings:
             return
         if solid:
@@ -489,6 +547,69 @@ class _Exploder:
 
     def _inherited_ok(self, layer, etype) -> bool:
         return self._keep_layer(layer)
+
+
+# ------------------------------------------------------------------------------------------ door swings
+DOOR_RADIUS = (0.5, 1.6)  # metres: leaf width of a swing door
+DOOR_SWEEP = (80.0, 100.0)  # degrees: a swing arc is (about) a quarter circle
+
+
+def _circle_from_3(p0, p1, p2):
+    ax, ay = p0
+    bx, by = p1
+    cx, cy = p2
+    d = 2.0 * (ax * (by - cy) + bx * (cy - ay) + cx * (ay - by))
+    if abs(d) < 1e-12:
+        return None
+    ux = ((ax * ax + ay * ay) * (by - cy) + (bx * bx + by * by) * (cy - ay) + (cx * cx + cy * cy) * (ay - by)) / d
+    uy = ((ax * ax + ay * ay) * (cx - bx) + (bx * bx + by * by) * (ax - cx) + (cx * cx + cy * cy) * (bx - ax)) / d
+    return ux, uy, math.hypot(ax - ux, ay - uy)
+
+
+def find_door_swings(geoms: Sequence[CadGeometry]) -> List[int]:
+    """Indices of door swing arcs (quarter arcs of 0.5-1.6 m radius) and of the door leaves hinged at
+    their centre (a line or thin rectangle from the centre to an end of the arc)."""
+    arcs = []  # (index, cx, cy, r, end points)
+    for i, g in enumerate(geoms):
+        if g.entity not in ("ARC", "LWPOLYLINE", "POLYLINE") or g.kind == "column" or g.closed or len(g.coords) < 5:
+            continue
+        c = g.coords
+        circ = _circle_from_3(c[0], c[len(c) // 2], c[-1])
+        if circ is None:
+            continue
+        cx, cy, r = circ
+        if not (DOOR_RADIUS[0] <= r <= DOOR_RADIUS[1]):
+            continue
+        if np.max(np.abs(np.hypot(c[:, 0] - cx, c[:, 1] - cy) - r)) > 0.02:
+            continue
+        a = np.unwrap(np.arctan2(c[:, 1] - cy, c[:, 0] - cx))
+        sweep = abs(math.degrees(a[-1] - a[0]))
+        if DOOR_SWEEP[0] <= sweep <= DOOR_SWEEP[1]:
+            arcs.append((i, cx, cy, r, c[0], c[-1]))
+    if not arcs:
+        return []
+    from scipy.spatial import cKDTree
+
+    centres = np.array([(a[1], a[2]) for a in arcs])
+    tree = cKDTree(centres)
+    drop = {a[0] for a in arcs}
+    arc_set = set(drop)
+    for i, g in enumerate(geoms):
+        if i in arc_set or g.kind == "column" or g.filled:
+            continue
+        c = g.coords
+        if len(c) < 2 or len(c) > 5 or not np.isfinite(c).all():
+            continue
+        for k in set(j for lst in tree.query_ball_point(c, 0.16) for j in lst):
+            _, cx, cy, r, e0, e1 = arcs[k]
+            d = np.hypot(c[:, 0] - cx, c[:, 1] - cy)
+            if d.min() > 0.1 * r or not (0.85 * r <= d.max() <= 1.15 * r):
+                continue
+            far = c[int(np.argmax(d))]
+            if min(math.hypot(*(far - e0)), math.hypot(*(far - e1))) <= 0.15 * r:
+                drop.add(i)
+                break
+    return sorted(drop)
 
 
 # ------------------------------------------------------------------------------------------ reading
@@ -806,14 +927,17 @@ def _xref_message(xrefs: List[str]) -> str:
 
 
 def import_dxf(path: str, rules=None, layers: Optional[Sequence[str]] = None, units: Optional[str] = None,
-               include_doors: bool = False, fallback_walls: bool = True, progress=None) -> CadDrawing:
+               include_doors: bool = False, fallback_walls: bool = True, drop_door_swings: bool = True,
+               progress=None) -> CadDrawing:
     """Read a DXF and return the structural geometry (metres, CAD frame) and every visible text.
 
     ``rules``: LayerRules, a JSON path, or None for the defaults. ``layers``: explicit layer names
     (case-insensitive) that override the rules. ``units``: "mm", "cm", "m", "inch", "feet" or
     None/"" for automatic. ``include_doors``: also keep door layers (doorways get closed).
     ``fallback_walls``: when no layer matches a wall keyword, keep every layer that no rule excludes
-    (generic names such as "Pluma 8" or "4") as walls, with a warning.
+    (generic names such as "Pluma 8" or "4") as walls, with a warning. ``drop_door_swings``: unless
+    doors are included, also leave out door swings drawn on other layers (a quarter arc of 0.5-1.6 m
+    radius and the leaf hinged at its centre), as found in mixed "doors windows" layers and blocks.
     Raises InputError for anything the user can fix.
     """
     progress = ensure(progress)
@@ -888,6 +1012,13 @@ def import_dxf(path: str, rules=None, layers: Optional[Sequence[str]] = None, un
         geoms.append(CadGeometry(layer=p.layer[i], kind=infos[p.layer[i]].kind, coords=c * scale,
                                  closed=p.closed[i], filled=p.filled[i], width=p.width[i] * scale,
                                  entity=p.etype[i]))
+    if not include_doors and drop_door_swings:
+        swings = find_door_swings(geoms)
+        if swings:
+            gone = set(swings)
+            geoms = [g for k, g in enumerate(geoms) if k not in gone]
+            progress.info(f"left out {len(swings)} door swing arcs and leaves drawn on non-door layers "
+                          "(doorways stay open; set include_doors to close them)")
     texts = [CadText(x=t[0] * scale, y=t[1] * scale, text=t[2], height=t[3] * scale, rotation=t[4],
                      layer=t[5], entity=t[6]) for t in p.texts]
     kept_layers = sorted({g.layer for g in geoms})

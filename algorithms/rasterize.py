@@ -54,9 +54,10 @@ def _all_vertices(geometries: Sequence[CadGeometry]) -> np.ndarray:
     return allc[np.isfinite(allc).all(axis=1)]
 
 
-def geometry_bounds(geometries: Sequence[CadGeometry], percentiles=DEFAULT_PERCENTILES
+def geometry_bounds(geometries: Sequence[CadGeometry], percentiles=DEFAULT_PERCENTILES, grow: bool = True
                     ) -> Tuple[float, float, float, float]:
-    """Percentile bounds (xmin, ymin, xmax, ymax) of every vertex; robust against stray entities."""
+    """Percentile bounds (xmin, ymin, xmax, ymax) of every vertex, robust against stray entities,
+    grown (``grow``) to the full extent of the entities that reach into them."""
     v = _all_vertices(geometries)
     if len(v) == 0:
         raise InputError("there is no geometry to rasterize (the wall layer is empty); check the layer "
@@ -66,7 +67,42 @@ def geometry_bounds(geometries: Sequence[CadGeometry], percentiles=DEFAULT_PERCE
         raise InputError(f"percentiles must be two numbers 0 <= low < high <= 100, got {percentiles}")
     lo = np.percentile(v, lo_p, axis=0)
     hi = np.percentile(v, hi_p, axis=0)
-    return (float(lo[0]), float(lo[1]), float(hi[0]), float(hi[1]))
+    box = (float(lo[0]), float(lo[1]), float(hi[0]), float(hi[1]))
+    return _grow_to_touching(geometries, box) if grow else box
+
+
+def _grow_to_touching(geometries: Sequence[CadGeometry], box, max_growth: float = 0.5):
+    """Extend a percentile box to the full bounds of every geometry that reaches into it.
+
+    Percentiles of vertices cut off sparse but real parts of a building (a long wing drawn with few
+    long lines); entities that touch the core box are part of the building, strays far away are not.
+    Growth is capped at ``max_growth`` times the box size on each side.
+    """
+    xmin, ymin, xmax, ymax = box
+    mins, maxs = [], []
+    for g in geometries:
+        c = g.coords
+        if len(c) == 0:
+            continue
+        if len(c) == 2:
+            a, b = c[0], c[1]
+            mins.append((min(a[0], b[0]), min(a[1], b[1])))
+            maxs.append((max(a[0], b[0]), max(a[1], b[1])))
+        else:
+            mins.append(np.nanmin(c, axis=0))
+            maxs.append(np.nanmax(c, axis=0))
+    if not mins:
+        return box
+    mn, mx = np.array(mins, dtype=np.float64), np.array(maxs, dtype=np.float64)
+    touch = (mx[:, 0] >= xmin) & (mn[:, 0] <= xmax) & (mx[:, 1] >= ymin) & (mn[:, 1] <= ymax)
+    if not touch.any():
+        return box
+    w, h = xmax - xmin, ymax - ymin
+    nx0 = max(float(mn[touch, 0].min()), xmin - max_growth * w)
+    ny0 = max(float(mn[touch, 1].min()), ymin - max_growth * h)
+    nx1 = min(float(mx[touch, 0].max()), xmax + max_growth * w)
+    ny1 = min(float(mx[touch, 1].max()), ymax + max_growth * h)
+    return (min(nx0, xmin), min(ny0, ymin), max(nx1, xmax), max(ny1, ymax))
 
 
 def pad_extent(extent, padding: float) -> Tuple[float, float, float, float]:
