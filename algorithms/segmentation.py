@@ -60,6 +60,7 @@ DEFAULT_ENVELOPE_GAP = 4.0  # widest facade opening (m) bridged when looking for
 NARROWING = 0.6  # an opening narrower than this fraction of the space behind it is a door
 CORRIDOR_ELONGATION = 4.0  # area / (2 * max clearance)^2 above which an area is a corridor
 MIN_INTERIOR_COMPONENT_M2 = 1.0  # smaller free pockets inside the envelope are dropped
+OUTSIDE_CONTACT = 0.35  # areas whose outline is open to the outside for this fraction are exterior recesses
 MIN_PASSAGE_M = 0.2  # shorter extra contacts between two areas that also touch elsewhere are no passage
 
 
@@ -251,30 +252,37 @@ class _UnionFind:
 def _merge_cells(n: int, peak: np.ndarray, lo, hi, saddle, *, r_alpha: float, door_half: float,
                  prune: float) -> np.ndarray:
     """Merge tree over the cell graph (see the module doc). All values in px. Returns a lookup
-    table cell -> group representative."""
+    table cell -> group representative.
+
+    Pass 1 (strongest connections first) merges what belongs together whatever the widths: cells
+    whose peak rises less than ``prune`` above their saddle (GVD branches shorter than PRUNE) and
+    cells the alpha disk sweeps between (saddle >= R). Pass 2 then judges every remaining opening
+    against the significant spaces on both sides from pass 1: a door-sized opening clearly narrower
+    than the space behind it keeps the split, anything else merges.
+    """
+    order = np.lexsort((hi, lo, -saddle))  # strongest first; ties broken by ids (deterministic)
     uf = _UnionFind(n)
     gpeak = [float(x) for x in peak]
-    # strongest connections first; ties broken by ids for determinism
-    order = np.lexsort((hi, lo, -saddle))
     for i in order.tolist():
         a, b, s = uf.find(int(lo[i])), uf.find(int(hi[i])), float(saddle[i])
         if a == b:
             continue
         pa, pb = gpeak[a], gpeak[b]
-        if s >= r_alpha:
-            merge = True  # the alpha disk passes: same room
-        elif pa >= r_alpha and pb >= r_alpha:
-            merge = False  # two alpha rooms
-        elif min(pa, pb) - s < prune:
-            merge = True  # insignificant bump: a pruned skeleton branch
-        elif s <= door_half and s < NARROWING * max(pa, pb):
-            merge = False  # door-like narrowing
-        else:
-            merge = True
-        if merge:
+        if s >= r_alpha or min(pa, pb) - s < prune:
             keep, gone = (a, b) if a < b else (b, a)
             uf.parent[gone] = keep
             gpeak[keep] = max(pa, pb)
+    base = [uf.find(i) for i in range(n)]
+    bpeak = [gpeak[base[i]] for i in range(n)]
+    for i in order.tolist():
+        a, b, s = uf.find(int(lo[i])), uf.find(int(hi[i])), float(saddle[i])
+        if a == b:
+            continue
+        pa, pb = bpeak[int(lo[i])], bpeak[int(hi[i])]
+        if s <= door_half and s < NARROWING * max(pa, pb):
+            continue  # door-like narrowing
+        keep, gone = (a, b) if a < b else (b, a)
+        uf.parent[gone] = keep
     return np.array([uf.find(i) for i in range(n)], np.int64)
 
 
@@ -319,6 +327,31 @@ def _single_pieces(labels: np.ndarray) -> np.ndarray:
                 labels[m] = 0
         del comp, next_id
     return labels
+
+
+def _drop_outside_pockets(labels: np.ndarray, outside: np.ndarray, group_peak: np.ndarray):
+    """Remove areas that are mostly open to the outside (exterior recesses the envelope disk could
+    not reach) and renumber the rest 1..n in the same order. Returns (labels, peaks, dropped px)."""
+    n = int(labels.max())
+    if n == 0 or not outside.any():
+        return labels, group_peak, 0
+    total = np.zeros(n + 1, np.int64)
+    open_ = np.zeros(n + 1, np.int64)
+    for axis in (0, 1):
+        a, b = (labels[:-1, :], labels[1:, :]) if axis == 0 else (labels[:, :-1], labels[:, 1:])
+        oa, ob = (outside[:-1, :], outside[1:, :]) if axis == 0 else (outside[:, :-1], outside[:, 1:])
+        diff = a != b
+        total += np.bincount(a[diff], minlength=n + 1) + np.bincount(b[diff], minlength=n + 1)
+        open_ += np.bincount(a[(a > 0) & ob], minlength=n + 1) + np.bincount(b[(b > 0) & oa], minlength=n + 1)
+    drop = open_ >= OUTSIDE_CONTACT * np.maximum(total, 1)
+    drop[0] = False
+    if not drop.any():
+        return labels, group_peak, 0
+    keep_ids = np.nonzero(~drop[1:])[0] + 1
+    lut = np.zeros(n + 1, np.int32)
+    lut[keep_ids] = np.arange(1, len(keep_ids) + 1, dtype=np.int32)
+    dropped_px = int(np.isin(labels, np.nonzero(drop)[0]).sum())
+    return lut[labels], np.r_[0.0, group_peak[keep_ids]], dropped_px
 
 
 # --------------------------------------------------------------------------- vector output
@@ -486,19 +519,23 @@ def segment(grid: OccupancyGrid, door_width: float = DEFAULT_DOOR_WIDTH,
     # clearances in px measured from pixel centres: a pixel touching a wall has distance 1
     rep = _merge_cells(len(peak), peak - 0.5, lo, hi, saddle - 0.5, r_alpha=r_alpha,
                        door_half=(door_width + delta) / 2.0 / res, prune=prune / res)
-    # renumber groups deterministically: by first pixel in raster order
-    group = rep[cells]
-    group[cells == 0] = 0
-    flat = group.ravel()
-    uniq, first = np.unique(flat, return_index=True)
-    keep = uniq != 0
-    uniq, first = uniq[keep], first[keep]
-    order = np.argsort(first)
-    lut = np.zeros(int(rep.max()) + 1, np.int32)
-    lut[uniq[order]] = np.arange(1, len(uniq) + 1, dtype=np.int32)
-    labels = lut[group]
-    del group, flat
+    # renumber groups deterministically: representatives are the smallest cell id of their group
+    # and cell ids follow the raster order of the clearance maxima
+    reps = np.unique(rep[1:])
+    lut = np.zeros(len(rep), np.int32)
+    lut[reps] = np.arange(1, len(reps) + 1, dtype=np.int32)
+    cell_label = lut[rep]
+    cell_label[0] = 0
+    labels = cell_label[cells]
+    group_peak = np.zeros(len(reps) + 1)
+    np.maximum.at(group_peak, cell_label, peak)
+    group_peak[0] = 0
+    del cells
     labels = _single_pieces(labels)
+    labels, group_peak, dropped_px = _drop_outside_pockets(labels, free & ~interior, group_peak)
+    if dropped_px:
+        stats["interior_area_m2"] -= dropped_px * res * res
+        stats["outside_pockets_m2"] = dropped_px * res * res
     stats["merge_s"] = time.perf_counter() - t
     progress.step(65, f"merged into {int(labels.max())} areas")
 
@@ -511,12 +548,10 @@ def segment(grid: OccupancyGrid, door_width: float = DEFAULT_DOOR_WIDTH,
     passages = build_passages(labels, grid)
     stats["passages_s"] = time.perf_counter() - t
 
-    from scipy import ndimage as ndi
-
-    ids = np.array(sorted(polys), np.int64)
-    maxc = ndi.maximum(dist, labels, ids) if len(ids) else []
+    ids = sorted(polys)
     areas: List[Area] = []
-    for lid, mc in zip(ids.tolist(), np.atleast_1d(maxc).tolist()):
+    for lid in ids:
+        mc = group_peak[lid] if lid < len(group_peak) else 1.0
         poly = polys[lid]
         clear_m = max(0.0, (float(mc) - 0.5) * res)
         elong = poly.area / max((2.0 * clear_m) ** 2, res * res)
