@@ -764,6 +764,12 @@ def _draw_floor(doc, p: FloorPlan, rooms_gt, rng: random.Random) -> None:
     _draw_stair_and_lift(msp)
     _draw_furniture(msp, p, rng)
     _draw_annotations(doc, msp, p, rooms_gt)
+    # drawing extents (grid bubbles and title block included) and a model-space view on them
+    lo, hi = (-5000.0, -8500.0, 0.0), (WIDTH + 5000.0, DEPTH + 5000.0, 0.0)
+    msp.dxf.extmin, msp.dxf.extmax = lo, hi  # ezdxf copies these into $EXTMIN / $EXTMAX on save
+    msp.dxf.limmin, msp.dxf.limmax = lo[:2], hi[:2]
+    doc.set_modelspace_vport(height=1.05 * (hi[1] - lo[1]),
+                             center=(0.5 * (lo[0] + hi[0]), 0.5 * (lo[1] + hi[1])))
 
 
 def _win_box(w: Window):
@@ -943,7 +949,8 @@ def generate_building(out_dir: str, floors: int = 3, seed: int = 0, name: str = 
     Same ``seed`` -> byte-identical files; the stair and lift are at the same coordinates on every
     floor (and for every seed). Returns ``{"dxf": [paths], "ground_truth": [paths], "floors": n,
     "seed": seed, "rooms": [room count per floor], "doors": [door count per floor],
-    "names": [[room names] per floor]}``.
+    "names": [[room names] per floor], "anchors": {"Stair A": (x, y), "Lift 1": (x, y)} (metres,
+    the shaft centres, the same on every floor), "envelope": (xmin, ymin, xmax, ymax) metres}``.
     """
     progress = ensure(progress)
     try:
@@ -962,7 +969,11 @@ def generate_building(out_dir: str, floors: int = 3, seed: int = 0, name: str = 
         raise InputError(f"cannot create output folder {out_dir}: {exc}")
 
     result = {"dxf": [], "ground_truth": [], "floors": floors, "seed": seed, "rooms": [], "doors": [],
-              "names": []}
+              "names": [],
+              # same on every floor: where multi-floor fusion can align (metres, centres of the shafts)
+              "anchors": {"Stair A": (0.5e-3 * (STAIR[0] + STAIR[2]), 0.5e-3 * (STAIR[1] + STAIR[3])),
+                          "Lift 1": (0.5e-3 * (LIFT[0] + LIFT[2]), 0.5e-3 * (LIFT[1] + LIFT[3]))},
+              "envelope": (0.0, 0.0, WIDTH / 1000.0, DEPTH / 1000.0)}
     for k in range(1, floors + 1):
         progress.step(100.0 * (k - 1) / floors, f"sample building: floor {k} of {floors}")
         plan = _plan_floor(k, seed)

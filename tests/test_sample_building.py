@@ -84,6 +84,9 @@ def test_files_and_return_value(build):
     assert sorted(os.listdir(os.path.dirname(res["dxf"][0]))) == sorted(
         os.path.basename(p) for p in res["dxf"] + res["ground_truth"])
     assert [os.path.basename(p) for p in build["c"]["dxf"]][0] == "other-F1.dxf"
+    assert res["anchors"] == {"Stair A": (17.7, 17.1), "Lift 1": (20.5, 15.4)}
+    assert res["envelope"] == (0.0, 0.0, 40.0, 25.0)
+    assert res["names"][0][:2] == ["Hall", "Office 101"] and len(res["names"]) == FLOORS
 
 
 def test_same_seed_is_byte_identical_other_seed_differs(build):
@@ -103,6 +106,8 @@ def test_header_layers_and_blocks(docs):
     for doc in docs:
         assert doc.dxfversion in ("AC1027", "AC1032")
         assert doc.header["$INSUNITS"] == 4
+        emin, emax = doc.header["$EXTMIN"], doc.header["$EXTMAX"]
+        assert emin[0] < 0 < 40000 < emax[0] and emin[1] < 0 < 25000 < emax[1]
         layers = {layer.dxf.name for layer in doc.layers}
         for name in ("A-WALL", "A-WALL-PATT", "A-DOOR", "A-GLAZ", "A-STAIR", "A-FLOR-EVTR", "A-COLS",
                      "A-FURN", "A-ANNO-TEXT",
@@ -258,6 +263,7 @@ def test_stair_and_lift_identical_across_floors(build):
         assert anchors["Lift 1"]["areatype"] == "elevator" and anchors["Stair A"]["areatype"] == "stairs"
         for n, a in anchors.items():
             assert rooms[n].contains(a["point"])
+            assert a["point"].distance(Point(build["a"]["anchors"][n])) < 1e-9
         cur = (rooms["Stair A"], rooms["Lift 1"])
         if ref is None:
             ref = cur
