@@ -35,6 +35,23 @@ from .errors import InputError
 from .model import FREE, OCCUPIED, CadGeometry, OccupancyGrid
 from .progress import ensure
 
+# The drawing's own frame as a CRS: a local engineering CRS in metres (QGIS 3.22 accepts this WKT2;
+# GDAL stores it as LOCAL_CS in GeoTIFFs). ``OccupancyGrid.crs_wkt`` stays "" for this frame in the
+# pipeline; use ``is_local_frame`` to recognise either form.
+LOCAL_FRAME_NAME = "CAD drawing frame (local, metres)"
+LOCAL_FRAME_WKT = (
+    f'ENGCRS["{LOCAL_FRAME_NAME}",EDATUM["CAD drawing origin"],CS[Cartesian,2],'
+    'AXIS["drawing x (E)",east,ORDER[1],LENGTHUNIT["metre",1]],'
+    'AXIS["drawing y (N)",north,ORDER[2],LENGTHUNIT["metre",1]]]')
+LOCAL_FRAME_WKT1 = (f'LOCAL_CS["{LOCAL_FRAME_NAME}",LOCAL_DATUM["CAD drawing origin",32767],UNIT["metre",1],'
+                    'AXIS["Easting",EAST],AXIS["Northing",NORTH]]')
+
+
+def is_local_frame(wkt: str) -> bool:
+    """True for "" (no CRS) and for the local drawing frame written by this plugin."""
+    return not wkt or LOCAL_FRAME_NAME in wkt or wkt.lstrip().upper().startswith(("LOCAL_CS", "ENGCRS"))
+
+
 DEFAULT_RESOLUTION = 0.044
 DEFAULT_PADDING = 0.03
 DEFAULT_PERCENTILES = (0.5, 99.5)

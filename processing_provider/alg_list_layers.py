@@ -1,0 +1,96 @@
+"""cad2osmag:listlayers — every layer of a DXF with entity counts and what the layer rules make of it."""
+from qgis.core import (
+    QgsFeature,
+    QgsFeatureSink,
+    QgsField,
+    QgsFields,
+    QgsProcessing,
+    QgsProcessingOutputNumber,
+    QgsProcessingOutputString,
+    QgsProcessingParameterFeatureSink,
+    QgsProcessingParameterFile,
+    QgsWkbTypes,
+    QgsCoordinateReferenceSystem,
+)
+from qgis.PyQt.QtCore import QVariant
+
+from ..algorithms import cad_import
+from ..algorithms.layer_rules import load_rules
+from .base import Cad2OsmagAlgorithm
+
+# DXF types that get their own count column; everything else is summed in n_other
+COUNT_COLUMNS = ("LINE", "LWPOLYLINE", "POLYLINE", "ARC", "CIRCLE", "ELLIPSE", "SPLINE", "HATCH", "SOLID",
+                 "3DFACE", "TEXT", "MTEXT", "ATTRIB", "DIMENSION")
+
+
+class ListLayersAlgorithm(Cad2OsmagAlgorithm):
+    NAME = "listlayers"
+    DISPLAY_NAME = "List DXF layers"
+    GROUP = "Pipeline"
+    GROUP_ID = "pipeline"
+    HELP = ("Reports every layer of a DXF drawing with its entity counts by type (after exploding blocks: "
+            "entities on layer 0 inside a block count on the INSERT's layer), whether it is frozen or off, "
+            "and whether the layer rules keep it (kind and matching keyword). Use the table to choose the "
+            "LAYERS of 'Extract structure from DXF' or to write your own LAYER_RULES JSON file.\n"
+            "Output: a table without geometry (save it as CSV, or keep it as a memory layer).")
+
+    INPUT = "INPUT"
+    LAYER_RULES = "LAYER_RULES"
+    OUTPUT = "OUTPUT"
+
+    def initAlgorithm(self, config=None):  # noqa: N802
+        self.addParameter(QgsProcessingParameterFile(self.INPUT, self.tr("DXF drawing"), extension="dxf"))
+        self.addParameter(QgsProcessingParameterFile(
+            self.LAYER_RULES, self.tr("Layer rules (JSON, empty = built-in defaults)"), extension="json",
+            optional=True))
+        self.addParameter(QgsProcessingParameterFeatureSink(
+            self.OUTPUT, self.tr("Layer report"), QgsProcessing.TypeVector))
+        self.addOutput(QgsProcessingOutputNumber("LAYER_COUNT", self.tr("Number of layers")))
+        self.addOutput(QgsProcessingOutputString("KEPT_LAYERS", self.tr("Layers the rules keep (semicolon separated)")))
+        self.addOutput(QgsProcessingOutputString("HEADER_UNIT", self.tr("Unit written in the header ($INSUNITS)")))
+
+    def processAlgorithm(self, parameters, context, feedback):  # noqa: N802
+        path = self.parameterAsFile(parameters, self.INPUT, context)
+        rules_path = self.parameterAsFile(parameters, self.LAYER_RULES, context) or None
+        rules = self.call(feedback, _load_rules, rules_path)
+        drawing = self.call(feedback, cad_import.inspect_dxf, path, rules)
+        for msg in drawing.repairs + drawing.warnings:
+            feedback.pushWarning(msg) if hasattr(feedback, "pushWarning") else feedback.reportError(msg)
+        infos = sorted(drawing.layers.values(), key=lambda i: i.name.lower())
+
+        fields = QgsFields()
+        fields.append(QgsField("layer", QVariant.String))
+        fields.append(QgsField("kind", QVariant.String))
+        fields.append(QgsField("kept", QVariant.Bool))
+        fields.append(QgsField("rule", QVariant.String))
+        fields.append(QgsField("frozen", QVariant.Bool))
+        fields.append(QgsField("off", QVariant.Bool))
+        fields.append(QgsField("total", QVariant.Int))
+        for col in COUNT_COLUMNS:
+            fields.append(QgsField("n_" + col.lower(), QVariant.Int))
+        fields.append(QgsField("n_other", QVariant.Int))
+        fields.append(QgsField("counts", QVariant.String))
+
+        feats = []
+        for info in infos:
+            f = QgsFeature(fields)
+            counts = info.counts
+            other = sum(v for k, v in counts.items() if k not in COUNT_COLUMNS)
+            attrs = [info.name, info.kind or "", bool(info.kept), info.rule, bool(info.frozen), bool(info.off),
+                     int(sum(counts.values()))]
+            attrs += [int(counts.get(c, 0)) for c in COUNT_COLUMNS]
+            attrs += [int(other), "; ".join(f"{k}={v}" for k, v in sorted(counts.items()))]
+            f.setAttributes(attrs)
+            feats.append(f)
+        (sink, dest) = self.parameterAsSink(parameters, self.OUTPUT, context, fields, QgsWkbTypes.NoGeometry,
+                                            QgsCoordinateReferenceSystem())
+        for f in feats:
+            sink.addFeature(f, QgsFeatureSink.FastInsert)
+        kept = [i.name for i in infos if i.kept]
+        feedback.pushInfo(self.tr("{} layers, {} kept by the rules: {}").format(len(infos), len(kept), ", ".join(kept)))
+        return {self.OUTPUT: dest, "LAYER_COUNT": len(infos), "KEPT_LAYERS": ";".join(kept),
+                "HEADER_UNIT": drawing.header_unit}
+
+
+def _load_rules(path, progress=None):
+    return load_rules(path)
