@@ -328,7 +328,7 @@ def _plan_floor(level: int, seed: int) -> FloorPlan:
         box(WC_BOX[2], Y_NZ, WC_BOX[2] + T_PART, Y1),
     ]
     # module walls in world coordinates (they are drawn by the block, but they are solids)
-    mod_walls, mod_door, mod_desks = _module_local()
+    mod_walls, mod_door, _ = _module_local()
     module_solids = []
     for m in p.modules:
         f = _module_transform(m)
@@ -445,16 +445,16 @@ def _plan_floor(level: int, seed: int) -> FloorPlan:
                                 style="mtext_bold", furniture="hall", box=bx))
         else:
             numbered.append(("S", (0.5 * (xa + xb), 0.5 * (Y0 + top)), bx))
-    north_boxes = [(X0, Y_NZ, p1, Y1)]
-    north_boxes += [(m.x - MODULE_BAY + T_PART, Y_NZ, m.x, Y1) for m in p.modules if not m.mirrored]
-    north_boxes.append(("WRAP",))
-    north_boxes += [(m.x, Y_NZ, m.x + MODULE_BAY - T_PART, Y1) for m in p.modules if m.mirrored]
-    north_boxes.append((ne_end, Y_NZ, X1, Y1))
-    for bx in north_boxes:
-        if bx == ("WRAP",):
-            numbered.append(("W", (0.5 * (sx0 + lx1), 22400), (sx0, sy1 + T_CORE, WRAP_EAST, Y1)))
+    north_boxes = [("N", (X0, Y_NZ, p1, Y1))]
+    north_boxes += [("M", (m.x - MODULE_BAY + T_PART, Y_NZ, m.x, Y1)) for m in p.modules if not m.mirrored]
+    north_boxes.append(("W", (sx0, sy1 + T_CORE, WRAP_EAST, Y1)))
+    north_boxes += [("M", (m.x, Y_NZ, m.x + MODULE_BAY - T_PART, Y1)) for m in p.modules if m.mirrored]
+    north_boxes.append(("N", (ne_end, Y_NZ, X1, Y1)))
+    for side, bx in north_boxes:
+        if side == "W":
+            numbered.append((side, (0.5 * (sx0 + lx1), 22400), bx))
         else:
-            numbered.append(("N", (0.5 * (bx[0] + bx[2]), 0.5 * (bx[1] + bx[3])), bx))
+            numbered.append((side, (0.5 * (bx[0] + bx[2]), 0.5 * (bx[1] + bx[3])), bx))
     widths = [b[2] - b[0] for _, _, b in numbered]
     meeting = {i for i, w in enumerate(widths) if w >= 7000}
     if not meeting:
@@ -470,7 +470,7 @@ def _plan_floor(level: int, seed: int) -> FloorPlan:
                                 furniture="meeting", box=bx))
         else:
             p.rooms.append(Room(f"Office {number}", "room", pt, style=styles.get(n, "text"),
-                                furniture="office" if side != "W" else "office_wrap", box=bx,
+                                furniture={"W": "office_wrap", "M": ""}.get(side, "office"), box=bx,
                                 fmt=rng.randrange(len(MTEXT_FORMATS))))
     p.rooms.append(Room("WC", "room", (0.5 * (WC_BOX[0] + WC_BOX[2]), 17000), style="text",
                         furniture="wc", box=WC_BOX))
@@ -479,8 +479,6 @@ def _plan_floor(level: int, seed: int) -> FloorPlan:
                         style="mtext_bold"))
     cx = 10500 if (jog is None or abs(jog - 10500) > 1000) else 30500
     p.rooms.append(Room("Corridor", "corridor", (cx, Y_CN - 900), style="text"))
-    # keep modules' workstation positions for the record
-    p._module_desks = mod_desks  # type: ignore[attr-defined]
     return p
 
 
