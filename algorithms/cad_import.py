@@ -899,6 +899,14 @@ def _resolve_rules(rules) -> LayerRules:
     return load_rules(str(rules))
 
 
+def layer_kept(info: LayerInfo, rules=None, include_doors: bool = False) -> bool:
+    """Whether the import keeps a layer's geometry: a raster kind of the rules (doors only when
+    asked), not frozen, not off. (``LayerInfo.kept`` is True for door layers too.)"""
+    rules = _resolve_rules(rules)
+    kinds = set(rules.raster_kinds) | ({"door"} if include_doors else set())
+    return info.kind in kinds and not info.frozen and not info.off
+
+
 def list_layers(path: str, rules=None, progress=None) -> List[LayerInfo]:
     """Every layer of the drawing (table + effective layers after explosion), sorted by name."""
     drawing = inspect_dxf(path, rules, progress)

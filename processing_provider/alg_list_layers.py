@@ -30,7 +30,8 @@ class ListLayersAlgorithm(Cad2OsmagAlgorithm):
     GROUP_ID = "pipeline"
     HELP = ("Reports every layer of a DXF drawing with its entity counts by type (after exploding blocks: "
             "entities on layer 0 inside a block count on the INSERT's layer), whether it is frozen or off, "
-            "and whether the layer rules keep it (kind and matching keyword). Use the table to choose the "
+            "and whether the layer rules keep it (kind and matching keyword; door layers are listed with kind "
+            "'door' but not kept, since doorways stay open unless doors are included). Use the table to choose the "
             "LAYERS of 'Extract structure from DXF' or to write your own LAYER_RULES JSON file.\n"
             "Output: a table without geometry (save it as CSV, or keep it as a memory layer).")
 
@@ -76,7 +77,7 @@ class ListLayersAlgorithm(Cad2OsmagAlgorithm):
             f = QgsFeature(fields)
             counts = info.counts
             other = sum(v for k, v in counts.items() if k not in COUNT_COLUMNS)
-            attrs = [info.name, info.kind or "", bool(info.kept), info.rule, bool(info.frozen), bool(info.off),
+            attrs = [info.name, info.kind or "", cad_import.layer_kept(info, rules), info.rule, bool(info.frozen), bool(info.off),
                      int(sum(counts.values()))]
             attrs += [int(counts.get(c, 0)) for c in COUNT_COLUMNS]
             attrs += [int(other), "; ".join(f"{k}={v}" for k, v in sorted(counts.items()))]
@@ -86,7 +87,7 @@ class ListLayersAlgorithm(Cad2OsmagAlgorithm):
                                             QgsCoordinateReferenceSystem())
         for f in feats:
             sink.addFeature(f, QgsFeatureSink.FastInsert)
-        kept = [i.name for i in infos if i.kept]
+        kept = [i.name for i in infos if cad_import.layer_kept(i, rules)]
         feedback.pushInfo(self.tr("{} layers, {} kept by the rules: {}").format(len(infos), len(kept), ", ".join(kept)))
         return {self.OUTPUT: dest, "LAYER_COUNT": len(infos), "KEPT_LAYERS": ";".join(kept),
                 "HEADER_UNIT": drawing.header_unit}

@@ -1,0 +1,147 @@
+"""listlayers / extractstructure / rasterize headless through qgis_process on small synthetic DXFs."""
+import csv
+import sqlite3
+
+import ezdxf
+import numpy as np
+import pytest
+
+from algorithms.cad_import import import_dxf
+from algorithms.raster_io import read_grid
+from algorithms.rasterize import rasterize
+
+from .qgis_process import run_alg
+
+pytestmark = pytest.mark.qgis_process
+
+
+def _plan(path, dx=0.0, units=4):
+    """A 20 m x 10 m room in millimetres with a partition, a door block, a column hatch and texts."""
+    doc = ezdxf.new("R2010", setup=False)
+    doc.header["$INSUNITS"] = units
+    msp = doc.modelspace()
+    pts = [(0, 0), (20000, 0), (20000, 10000), (0, 10000)]
+    for a, b in zip(pts, pts[1:] + pts[:1]):
+        msp.add_line((a[0] + dx, a[1]), (b[0] + dx, b[1]), dxfattribs={"layer": "A-WALL"})
+    msp.add_lwpolyline([(8000 + dx, 0), (8000 + dx, 4000)], dxfattribs={"layer": "Muri", "const_width": 200})
+    msp.add_lwpolyline([(8000 + dx, 5000), (8000 + dx, 10000)], dxfattribs={"layer": "Muri"})
+    door = doc.blocks.new("DOOR")
+    door.add_arc((0, 0), 900, 0, 90, dxfattribs={"layer": "0"})
+    door.add_line((0, 0), (0, 900), dxfattribs={"layer": "0"})
+    msp.add_blockref("DOOR", (8000 + dx, 4000), dxfattribs={"layer": "A-DOOR"})
+    h = msp.add_hatch(dxfattribs={"layer": "A-COLS"})
+    h.paths.add_polyline_path([(14000 + dx, 4000), (14400 + dx, 4000), (14400 + dx, 4400), (14000 + dx, 4400)])
+    msp.add_text("Office", dxfattribs={"layer": "A-ANNO-TEXT", "height": 250, "insert": (4000 + dx, 5000)})
+    msp.add_mtext(r"{\LMeeting} room", dxfattribs={"layer": "A-ANNO-TEXT", "char_height": 250,
+                                                    "insert": (12000 + dx, 5000)})
+    msp.add_line((0, -2000), (20000, -2000), dxfattribs={"layer": "A-ANNO-DIMS"})
+    doc.saveas(path)
+    return str(path)
+
+
+def _gpkg_rows(path, sql):
+    con = sqlite3.connect(str(path))
+    try:
+        return con.execute(sql).fetchall()
+    finally:
+        con.close()
+
+
+def _table(path):
+    con = sqlite3.connect(str(path))
+    try:
+        return con.execute("select table_name from gpkg_contents").fetchone()[0]
+    finally:
+        con.close()
+
+
+def test_listlayers_writes_a_csv_report(tmp_path):
+    dxf = _plan(tmp_path / "plan.dxf")
+    _, res, _ = run_alg("listlayers", {"INPUT": dxf, "OUTPUT": str(tmp_path / "layers.csv")})
+    rows = {r["layer"]: r for r in csv.DictReader(open(tmp_path / "layers.csv", encoding="utf-8"))}
+    assert res["HEADER_UNIT"] == "mm" and res["LAYER_COUNT"] == len(rows)
+    assert rows["A-WALL"]["kind"] == "wall" and rows["A-WALL"]["n_line"] == "4"
+    assert rows["A-DOOR"]["kind"] == "door" and rows["A-DOOR"]["n_arc"] == "1" and rows["A-DOOR"]["n_line"] == "1"
+    assert rows["A-ANNO-TEXT"]["kind"] == "" and rows["A-ANNO-TEXT"]["n_text"] == "1"
+    assert rows["A-ANNO-TEXT"]["n_mtext"] == "1"
+    assert rows["A-COLS"]["n_hatch"] == "1" and rows["Muri"]["kind"] == "wall"
+    kept = set(res["KEPT_LAYERS"].split(";"))
+    assert {"A-WALL", "Muri", "A-COLS"} <= kept and "A-DOOR" not in kept and "A-ANNO-DIMS" not in kept
+
+
+def test_extract_then_rasterize_matches_the_library(tmp_path):
+    dxf = _plan(tmp_path / "plan.dxf")
+    walls, texts = tmp_path / "walls.gpkg", tmp_path / "texts.gpkg"
+    _, res, _ = run_alg("extractstructure", {"INPUT": dxf, "WALLS": str(walls), "TEXTS": str(texts)})
+    assert res["UNIT"] == "mm" and res["UNIT_SCALE"] == pytest.approx(0.001)
+    assert res["GEOMETRY_COUNT"] == 7 and res["TEXT_COUNT"] == 2
+    wt = _table(walls)
+    rows = _gpkg_rows(walls, f'select layer, kind, entity, closed, filled, width from "{wt}"')
+    assert sorted({r[0] for r in rows}) == ["A-COLS", "A-WALL", "Muri"]
+    assert ("Muri", "wall", "LWPOLYLINE", 0, 0, pytest.approx(0.2)) in [tuple(r) for r in rows]
+    assert any(r[0] == "A-COLS" and r[3] == 1 and r[4] == 1 for r in rows)  # solid hatch: closed + filled
+    srs = _gpkg_rows(walls, "select s.definition from gpkg_spatial_ref_sys s join gpkg_geometry_columns g "
+                            "on s.srs_id = g.srs_id")[0][0]
+    assert "drawing frame" in srs  # the local engineering CRS
+    tt = _table(texts)
+    trows = dict((r[0], r[1:]) for r in _gpkg_rows(texts, f'select text, height, layer, entity from "{tt}"'))
+    assert trows["Office"] == (pytest.approx(0.25), "A-ANNO-TEXT", "TEXT")
+    assert trows["Meeting room"][2] == "MTEXT"
+
+    tif = tmp_path / "occ.tif"
+    _, res, _ = run_alg("rasterize", {"WALLS": str(walls), "OCCUPANCY": str(tif)})
+    grid = read_grid(str(tif))
+    ref = rasterize(import_dxf(dxf).geometries)
+    assert grid.shape == ref.shape and grid.geotransform == pytest.approx(ref.geotransform)
+    assert np.array_equal(grid.data, ref.data)  # fields rebuild the same geometry
+    assert (res["WIDTH"], res["HEIGHT"]) == (ref.shape[1], ref.shape[0])
+    c, r = grid.world_to_pixel(14.2, 4.2)
+    assert grid.data[int(r), int(c)] == 255  # filled column
+    c, r = grid.world_to_pixel(8.0, 4.5)
+    assert grid.data[int(r), int(c)] == 0  # doorway open (door layer left out)
+
+
+def test_rasterize_common_extent_aligns_floors(tmp_path):
+    d1 = _plan(tmp_path / "f1.dxf")
+    d2 = _plan(tmp_path / "f2.dxf", dx=6000)
+    w1, w2 = tmp_path / "w1.gpkg", tmp_path / "w2.gpkg"
+    for d, w in ((d1, w1), (d2, w2)):
+        run_alg("extractstructure", {"INPUT": d, "WALLS": str(w), "TEXTS": "TEMPORARY_OUTPUT"})
+    grids = []
+    for w in (w1, w2):
+        tif = tmp_path / (w.stem + ".tif")
+        run_alg("rasterize", {"WALLS": str(w), "FLOOR_LAYERS": [str(w1), str(w2)], "OCCUPANCY": str(tif),
+                              "RESOLUTION": 0.05})
+        grids.append(read_grid(str(tif)))
+    assert grids[0].shape == grids[1].shape and grids[0].geotransform == grids[1].geotransform
+    assert grids[0].origin_x / 0.05 == pytest.approx(round(grids[0].origin_x / 0.05))
+    # an explicit extent works too
+    tif = tmp_path / "ext.tif"
+    run_alg("rasterize", {"WALLS": str(w1), "COMMON_EXTENT": "-1,27,-1,11", "OCCUPANCY": str(tif),
+                          "RESOLUTION": 0.05})
+    g = read_grid(str(tif))
+    assert g.extent == pytest.approx((-1.0, -1.0, 27.0, 11.0)) and g.shape == (240, 560)
+
+
+def test_bad_inputs_fail_clearly_without_output(tmp_path):
+    bad = tmp_path / "notes.dxf"
+    bad.write_text("this is not a drawing\n" * 20)
+    walls = tmp_path / "walls.gpkg"
+    code, _, out = run_alg("extractstructure", {"INPUT": str(bad), "WALLS": str(walls),
+                                                "TEXTS": str(tmp_path / "t.gpkg")}, check=False)
+    assert code != 0 and "not a DXF file" in out and not walls.exists()
+
+    doc = ezdxf.new("R2010", setup=False)
+    for i in range(3):
+        doc.modelspace().add_line((0, i * 1000), (20000, i * 1000), dxfattribs={"layer": "Furniture"})
+    doc.saveas(tmp_path / "furniture.dxf")
+    code, _, out = run_alg("extractstructure", {"INPUT": str(tmp_path / "furniture.dxf"), "WALLS": str(walls),
+                                                "TEXTS": str(tmp_path / "t.gpkg")}, check=False)
+    assert code != 0 and "'Furniture' (3 entities" in out and "LAYER_RULES" in out and not walls.exists()
+
+    dxf = _plan(tmp_path / "plan.dxf")
+    run_alg("extractstructure", {"INPUT": dxf, "WALLS": str(walls), "TEXTS": "TEMPORARY_OUTPUT"})
+    tif = tmp_path / "big.tif"
+    code, _, out = run_alg("rasterize", {"WALLS": str(walls), "RESOLUTION": 0.001, "MAX_MPX": 1,
+                                         "OCCUPANCY": str(tif)}, check=False)
+    assert code != 0 and "Mpx" in out and "resolution of at least" in out and not tif.exists()
