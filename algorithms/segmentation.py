@@ -49,7 +49,7 @@ from typing import Dict, List, Optional, Tuple
 import numpy as np
 
 from .errors import InputError
-from .model import FREE, Area, AreaGraph, OccupancyGrid, Passage
+from .model import FREE, UNKNOWN, Area, AreaGraph, OccupancyGrid, Passage
 from .progress import Progress, ensure
 
 DEFAULT_DOOR_WIDTH = 2.8
@@ -112,19 +112,21 @@ def _edt(mask: np.ndarray) -> np.ndarray:
                                  cv2.DIST_L2, cv2.DIST_MASK_PRECISE)
 
 
-def building_interior(free: np.ndarray, resolution: float, envelope_gap: float = DEFAULT_ENVELOPE_GAP
-                      ) -> Tuple[np.ndarray, np.ndarray]:
+def building_interior(free: np.ndarray, resolution: float, envelope_gap: float = DEFAULT_ENVELOPE_GAP,
+                      unknown: Optional[np.ndarray] = None) -> Tuple[np.ndarray, np.ndarray]:
     """Free space inside the building envelope.
 
     Returns ``(interior_free, envelope)``: ``envelope`` is everything a disk of diameter
-    ``envelope_gap`` cannot reach from outside the image through the free space (walls included),
-    ``interior_free`` its free pixels without pockets smaller than ``MIN_INTERIOR_COMPONENT_M2``.
+    ``envelope_gap`` cannot reach from outside the image through free (or ``unknown``: unexplored,
+    no evidence of a building) space, walls included; ``interior_free`` its free pixels without
+    pockets smaller than ``MIN_INTERIOR_COMPONENT_M2``.
     """
     import cv2
 
     rc = max(1.0, envelope_gap / 2.0 / resolution)
     pad = int(math.ceil(rc)) + 2
-    padded = np.pad(free, pad, mode="constant", constant_values=True)
+    passable = free if unknown is None else (free | unknown)
+    padded = np.pad(passable, pad, mode="constant", constant_values=True)
     dist = _edt(padded)
     centers = (dist > rc).view(np.uint8)
     n, lab = cv2.connectedComponents(centers, connectivity=8, ltype=cv2.CV_32S)
@@ -493,7 +495,7 @@ def segment(grid: OccupancyGrid, door_width: float = DEFAULT_DOOR_WIDTH,
 
     t = time.perf_counter()
     free = data == FREE
-    interior, envelope = building_interior(free, res, envelope_gap)
+    interior, envelope = building_interior(free, res, envelope_gap, unknown=data == UNKNOWN)
     del envelope
     stats["interior_s"] = time.perf_counter() - t
     stats["free_area_m2"] = float(free.sum()) * res * res

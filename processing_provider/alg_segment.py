@@ -1,0 +1,210 @@
+"""cad2osmag:segment — Area Graph segmentation of an occupancy grid (stage 3)."""
+import os
+
+from qgis.core import (
+    QgsCoordinateReferenceSystem,
+    QgsFeature,
+    QgsFeatureSink,
+    QgsField,
+    QgsFields,
+    QgsProcessing,
+    QgsProcessingException,
+    QgsProcessingOutputNumber,
+    QgsProcessingParameterFeatureSink,
+    QgsProcessingParameterNumber,
+    QgsProcessingParameterRasterDestination,
+    QgsProcessingParameterRasterLayer,
+    QgsWkbTypes,
+)
+from qgis.PyQt.QtCore import QVariant
+
+from ..algorithms import segmentation
+from ..algorithms.errors import InputError
+from .base import Cad2OsmagAlgorithm, to_qgs
+
+ROS_EXTENSIONS = (".yaml", ".yml")
+
+
+def _area_fields():
+    fields = QgsFields()
+    fields.append(QgsField("id", QVariant.LongLong))
+    fields.append(QgsField("type", QVariant.String))
+    fields.append(QgsField("name", QVariant.String))
+    fields.append(QgsField("max_clearance", QVariant.Double))
+    fields.append(QgsField("area_m2", QVariant.Double))
+    fields.append(QgsField("perimeter_m", QVariant.Double))
+    return fields
+
+
+def _passage_fields():
+    fields = QgsFields()
+    fields.append(QgsField("id", QVariant.LongLong))
+    fields.append(QgsField("from_id", QVariant.LongLong))
+    fields.append(QgsField("to_id", QVariant.LongLong))
+    fields.append(QgsField("name", QVariant.String))
+    fields.append(QgsField("width_m", QVariant.Double))
+    return fields
+
+
+class SegmentAlgorithm(Cad2OsmagAlgorithm):
+    NAME = "segment"
+    DISPLAY_NAME = "Segment occupancy grid into an Area Graph"
+    GROUP = "Pipeline"
+    GROUP_ID = "pipeline"
+    HELP = ("Area Graph segmentation (Hou et al. 2019) with the dynamic alpha of the CAD-to-osmAG method. "
+            "INPUT is the output of 'Rasterize', or any occupancy grid: a GeoTIFF, a PNG/PGM image with "
+            "RESOLUTION (m/px), or a ROS map.yaml (its resolution, origin, negate and thresholds are used; "
+            "unknown cells are never free). Only the free space inside the building envelope is segmented: "
+            "facade openings narrower than ENVELOPE_GAP are bridged, outside space is never an area; the "
+            "log reports the interior area. alpha = ceil((min(DOOR_WIDTH, CORRIDOR_WIDTH) + DELTA)^2 / "
+            "(4 r^2)) px^2 is the probe disk: spaces it sweeps through an opening are one room; door-sized "
+            "narrowings that are clearly narrower than the space behind them separate rooms (this also "
+            "finds rooms too narrow for the disk); corridor cells merge where nothing justifies a split; "
+            "clearance bumps lower than PRUNE are noise. Outputs: AREAS (exact pixel-edge polygons: id, "
+            "type room/corridor, area, perimeter, max clearance), PASSAGES (a segment across every "
+            "opening between two areas, ends on the walls: from, to, width) and LABELS (area ids on the "
+            "input grid, 0 outside areas).")
+
+    INPUT = "INPUT"
+    RESOLUTION = "RESOLUTION"
+    DOOR_WIDTH = "DOOR_WIDTH"
+    CORRIDOR_WIDTH = "CORRIDOR_WIDTH"
+    DELTA = "DELTA"
+    PRUNE = "PRUNE"
+    ENVELOPE_GAP = "ENVELOPE_GAP"
+    AREAS = "AREAS"
+    PASSAGES = "PASSAGES"
+    LABELS = "LABELS"
+
+    def initAlgorithm(self, config=None):  # noqa: N802
+        self.addParameter(QgsProcessingParameterRasterLayer(
+            self.INPUT, self.tr("Occupancy grid (GeoTIFF, PNG/PGM, or ROS map.yaml)")))
+        self.addParameter(QgsProcessingParameterNumber(
+            self.RESOLUTION, self.tr("Resolution of a plain image (m/px; 0 = from the raster)"),
+            QgsProcessingParameterNumber.Double, 0.0, True, 0.0, 100.0))
+        self.addParameter(QgsProcessingParameterNumber(
+            self.DOOR_WIDTH, self.tr("Widest door (m)"), QgsProcessingParameterNumber.Double,
+            segmentation.DEFAULT_DOOR_WIDTH, False, 0.01, 1000.0))
+        self.addParameter(QgsProcessingParameterNumber(
+            self.CORRIDOR_WIDTH, self.tr("Narrowest corridor (m)"), QgsProcessingParameterNumber.Double,
+            segmentation.DEFAULT_CORRIDOR_WIDTH, False, 0.01, 1000.0))
+        self.addParameter(QgsProcessingParameterNumber(
+            self.DELTA, self.tr("Delta δ added to the width (m)"), QgsProcessingParameterNumber.Double,
+            segmentation.DEFAULT_DELTA, False, 0.0, 100.0))
+        self.addParameter(QgsProcessingParameterNumber(
+            self.PRUNE, self.tr("Prune Voronoi branches shorter than (m)"), QgsProcessingParameterNumber.Double,
+            segmentation.DEFAULT_PRUNE, False, 0.0, 100.0))
+        self.addParameter(QgsProcessingParameterNumber(
+            self.ENVELOPE_GAP, self.tr("Bridge facade openings up to (m)"), QgsProcessingParameterNumber.Double,
+            segmentation.DEFAULT_ENVELOPE_GAP, False, 0.1, 1000.0))
+        self.addParameter(QgsProcessingParameterFeatureSink(
+            self.AREAS, self.tr("Areas"), QgsProcessing.TypeVectorPolygon))
+        self.addParameter(QgsProcessingParameterFeatureSink(
+            self.PASSAGES, self.tr("Passages"), QgsProcessing.TypeVectorLine))
+        self.addParameter(QgsProcessingParameterRasterDestination(self.LABELS, self.tr("Area id raster")))
+        for name, label in (("AREA_COUNT", "Areas"), ("ROOM_COUNT", "Rooms"), ("CORRIDOR_COUNT", "Corridors"),
+                            ("PASSAGE_COUNT", "Passages"), ("INTERIOR_AREA_M2", "Free area inside the building (m²)"),
+                            ("ALPHA", "alpha (px²)"), ("SECONDS", "Segmentation time (s)")):
+            self.addOutput(QgsProcessingOutputNumber(name, self.tr(label)))
+
+    def checkParameterValues(self, parameters, context):  # noqa: N802
+        # a ROS map.yaml is not a raster QGIS can load: accept it here, read_grid checks it
+        value = parameters.get(self.INPUT)
+        if isinstance(value, str) and value.lower().endswith(ROS_EXTENSIONS):
+            if not os.path.isfile(value):
+                return False, self.tr("INPUT: '{}' does not exist").format(value)
+            return True, ""
+        return super().checkParameterValues(parameters, context)
+
+    def _input_path(self, parameters, context):
+        value = parameters.get(self.INPUT)
+        if isinstance(value, str) and value.lower().endswith(ROS_EXTENSIONS):
+            return value, None
+        layer = self.parameterAsRasterLayer(parameters, self.INPUT, context)
+        if layer is None:
+            raise QgsProcessingException(self.tr("INPUT: the raster cannot be opened"))
+        path = layer.source().split("|")[0]
+        if not os.path.exists(path):
+            raise QgsProcessingException(self.tr("INPUT: '{}' is not a raster file on disk").format(path))
+        return path, layer
+
+    def processAlgorithm(self, parameters, context, feedback):  # noqa: N802
+        from ..algorithms.raster_io import read_grid, write_geotiff
+
+        path, layer = self._input_path(parameters, context)
+        res = self.parameterAsDouble(parameters, self.RESOLUTION, context)
+        try:
+            grid = read_grid(path, resolution=res if res > 0 else None)
+        except InputError as exc:
+            raise QgsProcessingException(str(exc))
+        if res > 0 and path.lower().endswith((".tif", ".tiff")) and abs(grid.resolution - res) > 1e-9:
+            feedback.pushInfo(self.tr("RESOLUTION ignored: the GeoTIFF carries {} m/px").format(grid.resolution))
+        feedback.pushInfo(self.tr("Grid {} x {} px at {} m/px").format(grid.shape[1], grid.shape[0], grid.resolution))
+        ag = self.call(feedback, segmentation.segment, grid,
+                       door_width=self.parameterAsDouble(parameters, self.DOOR_WIDTH, context),
+                       corridor_width=self.parameterAsDouble(parameters, self.CORRIDOR_WIDTH, context),
+                       delta=self.parameterAsDouble(parameters, self.DELTA, context),
+                       prune=self.parameterAsDouble(parameters, self.PRUNE, context),
+                       envelope_gap=self.parameterAsDouble(parameters, self.ENVELOPE_GAP, context))
+        st = ag.stats
+        feedback.pushInfo(self.tr("Interior free area: {:.1f} m² (of {:.1f} m² free in the raster)").format(
+            st["interior_area_m2"], st["free_area_m2"]))
+        feedback.pushInfo(self.tr("Timing (s): ") + ", ".join(
+            f"{k[:-2]} {v:.2f}" for k, v in st.items() if k.endswith("_s")))
+
+        # everything computed: now create the outputs
+        if grid.crs_wkt:
+            crs = QgsCoordinateReferenceSystem.fromWkt(grid.crs_wkt)
+        elif layer is not None and layer.crs().isValid():
+            crs = layer.crs()
+        else:
+            crs = QgsCoordinateReferenceSystem()
+        labels_path = self.parameterAsOutputLayer(parameters, self.LABELS, context)
+        if not labels_path.lower().endswith((".tif", ".tiff")):
+            labels_path = os.path.splitext(labels_path)[0] + ".tif"
+        afields, pfields = _area_fields(), _passage_fields()
+        sink_a, dest_a = self.parameterAsSink(parameters, self.AREAS, context, afields, QgsWkbTypes.Polygon, crs)
+        if sink_a is None:
+            raise QgsProcessingException(self.invalidSinkError(parameters, self.AREAS))
+        sink_p, dest_p = self.parameterAsSink(parameters, self.PASSAGES, context, pfields, QgsWkbTypes.LineString,
+                                              crs)
+        if sink_p is None:
+            raise QgsProcessingException(self.invalidSinkError(parameters, self.PASSAGES))
+        for a in ag.areas:
+            f = QgsFeature(afields)
+            f.setGeometry(to_qgs(a.polygon))
+            f["id"] = int(a.id)
+            f["type"] = a.type
+            f["name"] = a.name or None
+            f["max_clearance"] = round(float(a.max_clearance), 4)
+            f["area_m2"] = float(a.area)
+            f["perimeter_m"] = float(a.perimeter)
+            if not sink_a.addFeature(f, QgsFeatureSink.FastInsert):
+                raise QgsProcessingException(self.tr("cannot write area {}").format(a.id))
+        for p in ag.passages:
+            f = QgsFeature(pfields)
+            f.setGeometry(to_qgs(p.line))
+            f["id"] = int(p.id)
+            f["from_id"] = int(p.from_id)
+            f["to_id"] = int(p.to_id)
+            f["name"] = p.name or None
+            f["width_m"] = float(p.width)
+            if not sink_p.addFeature(f, QgsFeatureSink.FastInsert):
+                raise QgsProcessingException(self.tr("cannot write passage {}").format(p.id))
+        write_geotiff(labels_path, ag.labels, grid.origin_x, grid.origin_y, grid.resolution,
+                      crs.toWkt() if crs.isValid() else grid.crs_wkt, nodata=None)
+        n_rooms = sum(a.type == "room" for a in ag.areas)
+        feedback.pushInfo(self.tr("{} areas ({} rooms, {} corridors), {} passages").format(
+            len(ag.areas), n_rooms, len(ag.areas) - n_rooms, len(ag.passages)))
+        return {
+            self.AREAS: dest_a,
+            self.PASSAGES: dest_p,
+            self.LABELS: labels_path,
+            "AREA_COUNT": len(ag.areas),
+            "ROOM_COUNT": n_rooms,
+            "CORRIDOR_COUNT": len(ag.areas) - n_rooms,
+            "PASSAGE_COUNT": len(ag.passages),
+            "INTERIOR_AREA_M2": float(st["interior_area_m2"]),
+            "ALPHA": float(st["alpha_px2"]),
+            "SECONDS": float(st["total_s"]),
+        }
