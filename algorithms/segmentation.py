@@ -49,7 +49,7 @@ from typing import Dict, List, Optional, Tuple
 import numpy as np
 
 from .errors import InputError
-from .model import FREE, UNKNOWN, Area, AreaGraph, OccupancyGrid, Passage
+from .model import FREE, Area, AreaGraph, OccupancyGrid, Passage
 from .progress import Progress, ensure
 
 DEFAULT_DOOR_WIDTH = 2.8
@@ -495,7 +495,8 @@ def segment(grid: OccupancyGrid, door_width: float = DEFAULT_DOOR_WIDTH,
 
     t = time.perf_counter()
     free = data == FREE
-    interior, envelope = building_interior(free, res, envelope_gap, unknown=data == UNKNOWN)
+    # unknown cells are not passable for the envelope disk either: some maps draw walls in grey
+    interior, envelope = building_interior(free, res, envelope_gap)
     del envelope
     stats["interior_s"] = time.perf_counter() - t
     stats["free_area_m2"] = float(free.sum()) * res * res

@@ -63,7 +63,10 @@ def test_segment_geotiff(plan_tif, tmp_path):
 def test_segment_ros_yaml_with_unknown(tmp_path):
     plan = Plan(facade_gaps=False)
     data = plan.grid.data.copy()
-    data[:40, :] = UNKNOWN
+    x0, y0, x1, y1 = [int(round(v / 0.05)) for v in plan.bx]
+    outside = np.ones(data.shape, bool)
+    outside[y0 - 2:y1 + 3, x0 - 2:x1 + 3] = False
+    data[outside] = UNKNOWN  # a robot map: nothing known outside the walls
     img = np.where(data == FREE, 254, np.where(data == OCCUPIED, 0, 205)).astype(np.uint8)
     cv2.imwrite(str(tmp_path / "map.pgm"), img)
     (tmp_path / "map.yaml").write_text("image: map.pgm\nresolution: 0.05\norigin: [-3.0, -2.0, 0.0]\n"
