@@ -153,7 +153,7 @@ def grid_for_extent(extent, resolution: float, max_pixels: float = DEFAULT_MAX_P
     xmin, ymin, xmax, ymax = (float(v) for v in extent)
     if not all(math.isfinite(v) for v in (xmin, ymin, xmax, ymax)) or xmax <= xmin or ymax <= ymin:
         raise InputError(f"invalid extent {extent}: it needs xmin < xmax and ymin < ymax")
-    eps = 1e-9
+    eps = 1e-6
     c0 = math.floor(xmin / resolution + eps)
     c1 = math.ceil(xmax / resolution - eps)
     r0 = math.floor(ymin / resolution + eps)
@@ -196,8 +196,10 @@ def cv_thickness(width_px: float) -> int:
 
 
 def draw_geometries(img: np.ndarray, geometries: Sequence[CadGeometry], ox: float, oy: float, res: float,
-                    hairline_px: int, progress=None) -> None:
+                    hairline_px: int, progress=None, antialias: bool = False) -> None:
     import cv2
+
+    lt = cv2.LINE_AA if antialias else cv2.LINE_8
 
     by_thickness = {}
     filled = []
@@ -219,15 +221,15 @@ def draw_geometries(img: np.ndarray, geometries: Sequence[CadGeometry], ox: floa
             progress.step(80.0 * i / n)
     for t, (closed, opened) in by_thickness.items():
         if closed:
-            cv2.polylines(img, closed, True, OCCUPIED, thickness=t, lineType=cv2.LINE_8, shift=SHIFT)
+            cv2.polylines(img, closed, True, OCCUPIED, thickness=t, lineType=lt, shift=SHIFT)
         if opened:
-            cv2.polylines(img, opened, False, OCCUPIED, thickness=t, lineType=cv2.LINE_8, shift=SHIFT)
+            cv2.polylines(img, opened, False, OCCUPIED, thickness=t, lineType=lt, shift=SHIFT)
     for g in filled:
         rings = [_to_px(r, ox, oy, res) for r in _split_rings(g.coords) if len(r) >= 3]
         if rings:
-            cv2.fillPoly(img, rings, OCCUPIED, lineType=cv2.LINE_8, shift=SHIFT)
+            cv2.fillPoly(img, rings, OCCUPIED, lineType=lt, shift=SHIFT)
             # the outline too, so thin filled slivers do not vanish
-            cv2.polylines(img, rings, True, OCCUPIED, thickness=1, lineType=cv2.LINE_8, shift=SHIFT)
+            cv2.polylines(img, rings, True, OCCUPIED, thickness=1, lineType=lt, shift=SHIFT)
 
 
 def repair(img: np.ndarray, kernel: int) -> np.ndarray:
@@ -285,3 +287,158 @@ def rasterize(geometries: Sequence[CadGeometry], resolution: float = DEFAULT_RES
     img = repair(img, int(kernel))
     progress.step(100)
     return OccupancyGrid(img, ox, oy, float(resolution))
+
+
+# ------------------------------------------------------------------------------------------ floor sets
+def _bounds_area(b):
+    return max(b[2] - b[0], 0.0) * max(b[3] - b[1], 0.0)
+
+
+def _overlap(a, b) -> float:
+    """Intersection over the smaller box."""
+    w = min(a[2], b[2]) - max(a[0], b[0])
+    h = min(a[3], b[3]) - max(a[1], b[1])
+    if w <= 0 or h <= 0:
+        return 0.0
+    return w * h / max(min(_bounds_area(a), _bounds_area(b)), 1e-12)
+
+
+def floors_share_frame(geometry_sets, percentiles=DEFAULT_PERCENTILES, min_overlap: float = 0.5) -> bool:
+    """True when every floor's bounds overlap the first floor's (a shared drawing frame is plausible)."""
+    boxes = [geometry_bounds(g, percentiles) for g in geometry_sets]
+    return all(_overlap(boxes[0], b) >= min_overlap for b in boxes[1:])
+
+
+def floor_offsets(geometry_sets, reference: int = 0, resolution: float = 0.2, percentiles=DEFAULT_PERCENTILES,
+                  progress=None) -> List[Tuple[float, float]]:
+    """Translation (dx, dy) in metres that brings each floor into the reference floor's frame.
+
+    For floor sets drawn with different origins (same orientation and scale): each floor is rasterized
+    at ``resolution`` on its own bounds, walls blurred, and the peak of the FFT cross-correlation with
+    the reference floor (refined to sub-pixel by a parabola) gives the shift. Accuracy is about a
+    tenth of ``resolution`` (walls are drawn anti-aliased).
+    """
+    import cv2
+
+    progress = ensure(progress)
+    sets = list(geometry_sets)
+    boxes = [geometry_bounds(g, percentiles) for g in sets]
+    w = max(b[2] - b[0] for b in boxes)
+    h = max(b[3] - b[1] for b in boxes)
+    cols = int(math.ceil(1.3 * w / resolution)) + 8
+    rows = int(math.ceil(1.3 * h / resolution)) + 8
+    cols, rows = cv2.getOptimalDFTSize(cols), cv2.getOptimalDFTSize(rows)
+    if rows * cols > 64e6:
+        raise InputError(f"the floors are too large ({w:.0f} m x {h:.0f} m) to align at {resolution} m/px")
+    imgs, origins = [], []
+    for k, (g, b) in enumerate(zip(sets, boxes)):
+        progress.step(80.0 * k / len(sets))
+        ox = math.floor(b[0] / resolution) * resolution - 4 * resolution
+        oy = math.ceil(b[3] / resolution) * resolution + 4 * resolution
+        img = np.zeros((rows, cols), np.uint8)
+        hair = cv_thickness(max(0.3, 2 * resolution) / resolution)
+        draw_geometries(img, g, ox, oy, resolution, hair, antialias=True)
+        f = cv2.GaussianBlur(img.astype(np.float32) / 255.0, (0, 0), 1.5)
+        imgs.append(f - f.mean())
+        origins.append((ox, oy))
+    ref = np.fft.rfft2(imgs[reference])
+    out = []
+    for k in range(len(sets)):
+        if k == reference:
+            out.append((0.0, 0.0))
+            continue
+        corr = np.fft.irfft2(ref * np.conj(np.fft.rfft2(imgs[k])), s=imgs[k].shape)
+        r, c = np.unravel_index(int(np.argmax(corr)), corr.shape)
+
+        def sub(a, b, cc):  # parabola through three samples
+            den = a - 2 * b + cc
+            return 0.0 if abs(den) < 1e-12 else 0.5 * (a - cc) / den
+
+        dr = sub(corr[(r - 1) % rows, c], corr[r, c], corr[(r + 1) % rows, c])
+        dc = sub(corr[r, (c - 1) % cols], corr[r, c], corr[r, (c + 1) % cols])
+        sr = (r if r < rows // 2 else r - rows) + dr  # ref(r, c) ~ img_k(r - sr, c - sc)
+        sc = (c if c < cols // 2 else c - cols) + dc
+        (oxr, oyr), (oxk, oyk) = origins[reference], origins[k]
+        # world_ref(r, c) = world_k(r - sr, c - sc) + d
+        dx = (oxr - oxk) + sc * resolution
+        dy = (oyr - oyk) - sr * resolution
+        out.append((float(dx), float(dy)))
+    progress.step(100)
+    return out
+
+
+def shift_geometries(geometries: Sequence[CadGeometry], dx: float, dy: float) -> List[CadGeometry]:
+    from dataclasses import replace
+
+    d = np.array((dx, dy))
+    return [replace(g, coords=g.coords + d) for g in geometries]
+
+
+def common_grid(geometry_sets, resolution: float = DEFAULT_RESOLUTION, padding: float = DEFAULT_PADDING,
+                percentiles=DEFAULT_PERCENTILES, kernel: int = DEFAULT_KERNEL, max_pixels: float = DEFAULT_MAX_PIXELS,
+                stroke: float = DEFAULT_STROKE, align: Optional[bool] = None, extent=None, progress=None):
+    """The common grid of a floor set: ``(extent, offsets)``.
+
+    ``extent`` is snapped to ``resolution`` in the first floor's frame; floor k is rasterized with
+    ``floor_extent(extent, offsets[k])``. ``align``: None = register the floors (``floor_offsets``)
+    only when their bounds do not overlap (floors drawn with different origins), True = always,
+    False = never (a shared frame is assumed). Offsets are rounded to multiples of ``resolution`` so
+    that each floor's geotransform still maps its pixels exactly onto its own CAD frame.
+    """
+    progress = ensure(progress)
+    sets = [list(g) for g in geometry_sets]
+    if not sets:
+        raise InputError("a floor set needs at least one floor")
+    if align is None:
+        align = len(sets) > 1 and not floors_share_frame(sets, percentiles)
+        if align:
+            progress.warning("the floors do not overlap: they are drawn with different origins; registering "
+                             "them by cross-correlation (translation only)")
+    if align and len(sets) > 1:
+        offs = floor_offsets(sets, 0, percentiles=percentiles, progress=progress.sub(0, 90))
+        offs = [(round(dx / resolution) * resolution, round(dy / resolution) * resolution) for dx, dy in offs]
+        for k, (dx, dy) in enumerate(offs):
+            if k:
+                progress.info(f"floor {k + 1}: offset ({dx:.3f}, {dy:.3f}) m to the first floor's frame")
+    else:
+        offs = [(0.0, 0.0)] * len(sets)
+    if extent is None:
+        moved = [shift_geometries(g, dx, dy) for g, (dx, dy) in zip(sets, offs)]
+        extent = common_extent(moved, padding, percentiles)
+        m = 2 * max(stroke, resolution * max(int(kernel), 1))
+        extent = (extent[0] - m, extent[1] - m, extent[2] + m, extent[3] + m)
+    ox, oy, rows, cols = grid_for_extent(extent, resolution, max_pixels)
+    progress.step(100)
+    return (ox, oy - rows * resolution, ox + cols * resolution, oy), offs
+
+
+def floor_extent(extent, offset):
+    """The common extent (first floor's frame) expressed in a floor's own frame."""
+    dx, dy = offset
+    return (extent[0] - dx, extent[1] - dy, extent[2] - dx, extent[3] - dy)
+
+
+def floor_grids(geometry_sets, resolution: float = DEFAULT_RESOLUTION, padding: float = DEFAULT_PADDING,
+                percentiles=DEFAULT_PERCENTILES, kernel: int = DEFAULT_KERNEL, max_pixels: float = DEFAULT_MAX_PIXELS,
+                stroke: float = DEFAULT_STROKE, align: Optional[bool] = None, extent=None, progress=None):
+    """Rasterize several floors on one common grid: same shape, and pixel (r, c) is the same place on
+    every floor. Returns ``(grids, offsets)``; see ``common_grid`` for ``align`` and ``extent``."""
+    progress = ensure(progress)
+    sets = [list(g) for g in geometry_sets]
+    ext, offs = common_grid(sets, resolution, padding, percentiles, kernel, max_pixels, stroke, align, extent,
+                            progress.sub(0, 30))
+    shape = None
+    grids = []
+    for k, (g, off) in enumerate(zip(sets, offs)):
+        progress.step(30 + 70.0 * k / len(sets), f"floor {k + 1} of {len(sets)}")
+        grid = rasterize(g, resolution, padding, percentiles, kernel, floor_extent(ext, off), max_pixels, stroke)
+        if shape is None:
+            shape = grid.shape
+        elif grid.shape != shape:  # float noise in snapping a shifted extent: force the common shape
+            fixed = np.zeros(shape, np.uint8)
+            rr, cc = min(shape[0], grid.shape[0]), min(shape[1], grid.shape[1])
+            fixed[:rr, :cc] = grid.data[:rr, :cc]
+            grid = OccupancyGrid(fixed, grid.origin_x, grid.origin_y, grid.resolution)
+        grids.append(grid)
+    progress.step(100)
+    return grids, offs

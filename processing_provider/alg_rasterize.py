@@ -6,6 +6,7 @@ from qgis.core import (
     QgsProcessing,
     QgsProcessingException,
     QgsProcessingOutputNumber,
+    QgsProcessingParameterEnum,
     QgsProcessingParameterExtent,
     QgsProcessingParameterFeatureSource,
     QgsProcessingParameterMultipleLayers,
@@ -96,8 +97,11 @@ class RasterizeAlgorithm(Cad2OsmagAlgorithm):
             "pixels back to the drawing frame exactly.\n"
             "Repair: a closing with a KERNEL x KERNEL square bridges gaps up to about 0.2 m, then an opening "
             "removes isolated specks (components that do not survive the opening and are small).\n"
-            "Multi-floor sets: give COMMON_EXTENT, or the structure layers of all floors as FLOOR_LAYERS; "
-            "every floor rasterized with the same value gets the same grid, pixel for pixel.\n"
+            "Multi-floor sets: give the structure layers of all floors as FLOOR_LAYERS (and/or a COMMON_EXTENT "
+            "in the first floor's frame); every floor rasterized with the same values gets the same grid, "
+            "pixel for pixel. Floors drawn with different origins (their extents do not overlap) are "
+            "registered by cross-correlation (ALIGN_FLOORS); each raster's geotransform still maps its pixels "
+            "onto its own drawing frame, so the origins differ by the floor offset but the pixels line up.\n"
             "A raster above MAX_MPX megapixels stops with an error that suggests a resolution.")
 
     WALLS = "WALLS"
@@ -109,6 +113,7 @@ class RasterizeAlgorithm(Cad2OsmagAlgorithm):
     MAX_MPX = "MAX_MPX"
     COMMON_EXTENT = "COMMON_EXTENT"
     FLOOR_LAYERS = "FLOOR_LAYERS"
+    ALIGN_FLOORS = "ALIGN_FLOORS"
     OCCUPANCY = "OCCUPANCY"
 
     def initAlgorithm(self, config=None):  # noqa: N802
@@ -136,6 +141,10 @@ class RasterizeAlgorithm(Cad2OsmagAlgorithm):
         self.addParameter(QgsProcessingParameterMultipleLayers(
             self.FLOOR_LAYERS, self.tr("Structure layers of all floors: rasterize on their common extent (optional)"),
             QgsProcessing.TypeVectorAnyGeometry, optional=True))
+        self.addParameter(QgsProcessingParameterEnum(
+            self.ALIGN_FLOORS, self.tr("Register the floors (translation) before building the common grid"),
+            options=[self.tr("automatic (only when the floors do not overlap)"), self.tr("yes"), self.tr("no")],
+            defaultValue=0))
         self.addParameter(QgsProcessingParameterRasterDestination(self.OCCUPANCY, self.tr("Occupancy raster")))
         self.addOutput(QgsProcessingOutputNumber("WIDTH", self.tr("Raster width (pixels)")))
         self.addOutput(QgsProcessingOutputNumber("HEIGHT", self.tr("Raster height (pixels)")))
@@ -171,7 +180,8 @@ class RasterizeAlgorithm(Cad2OsmagAlgorithm):
             if not rect.isNull() and rect.width() > 0 and rect.height() > 0:
                 extent = (rect.xMinimum(), rect.yMinimum(), rect.xMaximum(), rect.yMaximum())
         floor_layers = self.parameterAsLayerList(parameters, self.FLOOR_LAYERS, context) or []
-        if extent is None and floor_layers:
+        align = [None, True, False][self.parameterAsEnum(parameters, self.ALIGN_FLOORS, context)]
+        if floor_layers:
             sets = []
             for lyr in floor_layers:
                 tr = None
@@ -181,7 +191,14 @@ class RasterizeAlgorithm(Cad2OsmagAlgorithm):
                 if g:
                     sets.append(g)
             if sets:
-                extent = self.call(feedback, _common_extent, sets, padding, pct)
+                # this floor goes last: its offset comes out of the same registration as the others'
+                common, offs = self.call(feedback, ras.common_grid, sets + [geoms], res, padding, pct, kernel,
+                                         max_px, stroke, align, extent)
+                offset = offs[-1]
+                if offset != (0.0, 0.0):
+                    feedback.pushInfo(self.tr("This floor is offset by ({:.3f}, {:.3f}) m from the first floor "
+                                              "layer").format(*offset))
+                extent = ras.floor_extent(common, offset)
         grid = self.call(feedback, ras.rasterize, geoms, resolution=res, padding=padding, percentiles=pct,
                          kernel=kernel, extent=extent, max_pixels=max_px, stroke=stroke)
         out = self.parameterAsOutputLayer(parameters, self.OCCUPANCY, context)
@@ -197,5 +214,3 @@ class RasterizeAlgorithm(Cad2OsmagAlgorithm):
         return {self.OCCUPANCY: out, "WIDTH": cols, "HEIGHT": rows, "OCCUPIED_SHARE": share}
 
 
-def _common_extent(sets, padding, pct, progress=None):
-    return ras.common_extent(sets, padding, pct)

@@ -145,3 +145,43 @@ def test_repair_keeps_long_thin_lines():
     img[10:12, 10:12] = OCCUPIED  # 2x2 speck
     out = repair(img, 5)
     assert out[50, 50] == OCCUPIED and out[10, 10] == FREE
+
+
+def _irregular_floor(seed=1):
+    rng = np.random.default_rng(seed)
+    geoms = [box(0, 0, 60, 30)]
+    for x in rng.uniform(3, 57, 12):
+        geoms.append(line((x, 0), (x, rng.uniform(8, 14))))
+    for y in rng.uniform(3, 27, 6):
+        x0 = rng.uniform(0, 30)
+        geoms.append(line((x0, y), (x0 + rng.uniform(5, 25), y)))
+    geoms.append(box(20, 12, 24.5, 18.3))  # a stair core
+    return geoms
+
+
+def test_floor_offsets_recover_a_translation():
+    from algorithms.rasterize import floor_offsets, floors_share_frame, shift_geometries
+
+    f1 = _irregular_floor()
+    f2 = shift_geometries(f1[:-3], 1234.567, -345.678) + [line((1300, -340), (1310, -330))]
+    assert not floors_share_frame([f1, f2])
+    (d0, d1) = floor_offsets([f1, f2])
+    assert d0 == (0.0, 0.0)
+    assert d1 == pytest.approx((-1234.567, 345.678), abs=0.03)
+
+
+def test_floor_grids_line_up_floors_drawn_with_different_origins():
+    from algorithms.rasterize import floor_grids, shift_geometries
+
+    f1 = _irregular_floor()
+    f2 = shift_geometries(f1, 500.0, 200.0)
+    f3 = f1[:-1]  # same frame, no stair core
+    grids, offs = floor_grids([f1, f2, f3], resolution=0.05)
+    assert {g.shape for g in grids} == {grids[0].shape}
+    assert offs[1] == pytest.approx((-500.0, -200.0), abs=1e-9) and offs[2] == (0.0, 0.0)
+    assert np.array_equal(grids[0].data, grids[1].data)  # pixel for pixel
+    assert grids[1].origin_x == pytest.approx(grids[0].origin_x + 500.0)
+    # the stair core is at the same pixels on floors 1 and 3, and only there
+    c, r = grids[0].world_to_pixel(20.0, 15.0)
+    assert grids[0].data[int(r), int(c)] == OCCUPIED and grids[2].data[int(r), int(c)] == FREE
+    assert np.array_equal(grids[0].data[:, :int(c) - 10], grids[2].data[:, :int(c) - 10])
