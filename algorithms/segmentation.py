@@ -58,6 +58,8 @@ DEFAULT_DELTA = 0.1
 DEFAULT_PRUNE = 0.25
 DEFAULT_ENVELOPE_GAP = 4.0  # widest facade opening (m) bridged when looking for the building interior
 NARROWING = 0.6  # an opening narrower than this fraction of the space behind it is a door
+CORRIDOR_MERGE = False
+MIN_CORRIDOR_OPENING_PX = 3.0
 CORRIDOR_ELONGATION = 4.0  # area / (2 * max clearance)^2 above which an area is a corridor
 MIN_INTERIOR_COMPONENT_M2 = 1.0  # smaller free pockets inside the envelope are dropped
 OUTSIDE_CONTACT = 0.35  # areas whose outline is open to the outside for this fraction are exterior recesses
@@ -252,7 +254,7 @@ class _UnionFind:
 
 
 def _merge_cells(n: int, peak: np.ndarray, lo, hi, saddle, *, r_alpha: float, door_half: float,
-                 prune: float) -> np.ndarray:
+                 prune: float, cell_area: Optional[np.ndarray] = None) -> np.ndarray:
     """Merge tree over the cell graph (see the module doc). All values in px. Returns a lookup
     table cell -> group representative.
 
@@ -285,25 +287,38 @@ def _merge_cells(n: int, peak: np.ndarray, lo, hi, saddle, *, r_alpha: float, do
             continue  # door-like narrowing
         keep, gone = (a, b) if a < b else (b, a)
         uf.parent[gone] = keep
+    if cell_area is not None and CORRIDOR_MERGE:
+        # pass 3: corridors are not split by narrowings: join touching corridor-shaped groups
+        garea = np.zeros(n)
+        gpk = np.zeros(n)
+        roots = np.array([uf.find(i) for i in range(n)])
+        np.add.at(garea, roots, cell_area)
+        np.maximum.at(gpk, roots, peak)
+        garea, gpk = garea.tolist(), gpk.tolist()
+
+        def corridor(g):
+            return garea[g] >= CORRIDOR_ELONGATION * (2.0 * max(gpk[g], 1.0)) ** 2
+
+        for i in order.tolist():
+            a, b, s = uf.find(int(lo[i])), uf.find(int(hi[i])), float(saddle[i])
+            if a == b or s < MIN_CORRIDOR_OPENING_PX or not (corridor(a) and corridor(b)):
+                continue
+            keep, gone = (a, b) if a < b else (b, a)
+            uf.parent[gone] = keep
+            garea[keep] += garea[gone]
+            gpk[keep] = max(gpk[a], gpk[b])
     return np.array([uf.find(i) for i in range(n)], np.int64)
 
 
 def _single_pieces(labels: np.ndarray) -> np.ndarray:
-    """Make every label one 4-connected piece: smaller pieces go to the neighbour they touch most."""
+    """Make every label one 4-connected piece: smaller pieces go to the other label they touch
+    most (8-neighbourhood), or to no area when they touch none."""
     import cv2
+    from scipy import ndimage as ndi
 
     for _ in range(3):
-        n_lab = int(labels.max())
-        if n_lab == 0:
-            return labels
-        # components of the label raster: pixels connected with the same label
-        comp = np.zeros(labels.shape, np.int32)
-        next_id = 1
-        from scipy import ndimage as ndi
-
-        objs = ndi.find_objects(labels)
         extra = []
-        for lab_id, sl in enumerate(objs, start=1):
+        for lab_id, sl in enumerate(ndi.find_objects(labels), start=1):
             if sl is None:
                 continue
             sub = labels[sl] == lab_id
@@ -311,23 +326,27 @@ def _single_pieces(labels: np.ndarray) -> np.ndarray:
             if n <= 2:
                 continue
             big = 1 + int(np.argmax(st[1:, cv2.CC_STAT_AREA]))
+            # work in the bounding box grown by one pixel
+            r0, r1 = max(sl[0].start - 1, 0), min(sl[0].stop + 1, labels.shape[0])
+            c0, c1 = max(sl[1].start - 1, 0), min(sl[1].stop + 1, labels.shape[1])
+            box = (slice(r0, r1), slice(c0, c1))
             for k in range(1, n):
                 if k != big:
-                    m = np.zeros(labels.shape, bool)
-                    m[sl] = cl == k
-                    extra.append(m)
+                    m = np.zeros((r1 - r0, c1 - c0), bool)
+                    m[sl[0].start - r0:sl[0].stop - r0, sl[1].start - c0:sl[1].stop - c0] = cl == k
+                    extra.append((lab_id, box, m))
         if not extra:
-            return labels
-        for m in extra:
+            break
+        for lab_id, box, m in extra:
+            sub = labels[box]
             ring = cv2.dilate(m.view(np.uint8), np.ones((3, 3), np.uint8)).view(bool) & ~m
-            neigh = labels[ring]
-            neigh = neigh[neigh > 0]
+            neigh = sub[ring]
+            neigh = neigh[(neigh > 0) & (neigh != lab_id)]
             if len(neigh):
                 vals, cnt = np.unique(neigh, return_counts=True)
-                labels[m] = vals[np.argmax(cnt)]
+                sub[m] = vals[np.argmax(cnt)]
             else:
-                labels[m] = 0
-        del comp, next_id
+                sub[m] = 0
     return labels
 
 
@@ -520,7 +539,9 @@ def segment(grid: OccupancyGrid, door_width: float = DEFAULT_DOOR_WIDTH,
 
     t = time.perf_counter()
     # clearances in px measured from pixel centres: a pixel touching a wall has distance 1
-    rep = _merge_cells(len(peak), peak - 0.5, lo, hi, saddle - 0.5, r_alpha=r_alpha,
+    cell_area = np.bincount(cells.ravel(), minlength=len(peak)).astype(np.float64)
+    cell_area[0] = 0
+    rep = _merge_cells(len(peak), peak - 0.5, lo, hi, saddle - 0.5, r_alpha=r_alpha, cell_area=cell_area,
                        door_half=(door_width + delta) / 2.0 / res, prune=prune / res)
     # renumber groups deterministically: representatives are the smallest cell id of their group
     # and cell ids follow the raster order of the clearance maxima
