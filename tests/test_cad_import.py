@@ -428,3 +428,72 @@ def test_inspect_reports_header_and_counts(tmp_path):
     assert d.header_unit == "mm"
     assert d.layers["A-WALL"].counts == {"LINE": 4, "TEXT": 1}
     assert d.layers["A-WALL"].kept and d.layers["0"].kind == "reference"
+
+
+# ----------------------------------------------------------------------------------------- sample building
+@pytest.fixture(scope="module")
+def sample_floor(tmp_path_factory):
+    sb = pytest.importorskip("algorithms.sample_building")
+    out = tmp_path_factory.mktemp("sample")
+    res = sb.generate_building(str(out), floors=1, seed=0)
+    import json
+
+    gt = json.load(open(res["ground_truth"][0], encoding="utf-8"))
+    return res["dxf"][0], gt
+
+
+def test_sample_building_structure_texts_and_raster(sample_floor):
+    import cv2
+    from shapely.geometry import Point, shape
+
+    from algorithms.rasterize import rasterize
+
+    path, gt = sample_floor
+    d = import_dxf(path)
+    assert d.unit_name == "mm" and not d.warnings
+    kept = {g.layer for g in d.geometries}
+    assert {"A-WALL", "A-COLS", "A-GLAZ"} <= kept
+    assert not kept & {"A-DOOR", "A-FURN", "A-ANNO-DIMS", "A-ANNO-TEXT", "S-GRID", "P-SANR-FIXT", "A-FLOR-PATT"}
+    lo, hi = bounds(d.geometries)
+    assert np.allclose(lo, (0, 0), atol=0.01) and np.allclose(hi, (40, 25), atol=0.01)
+    # every room name of the ground truth is among the texts, formatting codes stripped
+    names = {f["properties"]["name"] for f in gt["features"] if f["properties"]["kind"] == "room"}
+    texts = {t.text for t in d.texts}
+    missing = [n for n in names if n not in texts and n not in ("Corridor",)]
+    assert not missing, (missing, sorted(texts)[:40])
+    assert {t.entity for t in d.texts} >= {"TEXT", "MTEXT", "ATTRIB"}
+
+    grid = rasterize(d.geometries)
+    rooms = [f for f in gt["features"] if f["properties"]["kind"] == "room"]
+    n, labels = cv2.connectedComponents((grid.data == 0).astype(np.uint8), connectivity=4)
+    comp = {}
+    for f in rooms:
+        poly = shape(f["geometry"])
+        inner = poly.buffer(-0.25)
+        if inner.is_empty or f["properties"]["areatype"] in ("stairs", "elevator"):
+            continue  # stair treads and the lift car are drawn (kept layers)
+        # the room's inside is free space
+        minx, miny, maxx, maxy = inner.bounds
+        xs = np.arange(minx, maxx, 0.2)
+        ys = np.arange(miny, maxy, 0.2)
+        pts = [(x, y) for x in xs for y in ys if inner.contains(Point(x, y))]
+        c, r = grid.world_to_pixel(np.array([p[0] for p in pts]), np.array([p[1] for p in pts]))
+        vals = grid.data[r.astype(int), c.astype(int)]
+        assert (vals == 0).mean() > 0.9, (f["properties"]["name"], (vals == 0).mean())
+        p = inner.representative_point()
+        c, r = grid.world_to_pixel(p.x, p.y)
+        comp[f["properties"]["name"]] = labels[int(r), int(c)]
+    # doors stay open: every door's midpoint is free and the rooms it joins are connected
+    for f in gt["features"]:
+        pr = f["properties"]
+        if pr["kind"] != "door" or pr["to"] == "outside":
+            continue
+        (x0, y0), (x1, y1) = f["geometry"]["coordinates"]
+        c, r = grid.world_to_pixel((x0 + x1) / 2, (y0 + y1) / 2)
+        assert grid.data[int(r), int(c)] == 0, pr
+        if pr["from"] in comp and pr["to"] in comp:
+            assert comp[pr["from"]] == comp[pr["to"]], pr
+    # with doors included, the doorways are drawn (door blocks on A-DOOR)
+    d2 = import_dxf(path, include_doors=True)
+    assert "A-DOOR" in {g.layer for g in d2.geometries}
+    assert len(d2.geometries) > len(d.geometries)
