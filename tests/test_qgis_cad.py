@@ -101,6 +101,7 @@ def test_extract_then_rasterize_matches_the_library(tmp_path):
     assert grid.data[int(r), int(c)] == 0  # doorway open (door layer left out)
 
 
+@pytest.mark.slow
 def test_rasterize_common_extent_aligns_floors(tmp_path):
     d1 = _plan(tmp_path / "f1.dxf")
     d2 = _plan(tmp_path / "f2.dxf", dx=6000)
@@ -145,3 +146,31 @@ def test_bad_inputs_fail_clearly_without_output(tmp_path):
     code, _, out = run_alg("rasterize", {"WALLS": str(walls), "RESOLUTION": 0.001, "MAX_MPX": 1,
                                          "OCCUPANCY": str(tif)}, check=False)
     assert code != 0 and "Mpx" in out and "resolution of at least" in out and not tif.exists()
+
+
+@pytest.mark.slow
+def test_all_three_on_every_real_plan(tmp_path, shared_data):
+    files = sorted((shared_data / "dxf").glob("*/*.dxf"))
+    assert len(files) >= 13
+    for f in files:
+        out = tmp_path / f.stem
+        out.mkdir()
+        _, res, _ = run_alg("listlayers", {"INPUT": str(f), "OUTPUT": str(out / "layers.csv")})
+        rows = list(csv.DictReader(open(out / "layers.csv", encoding="utf-8")))
+        assert len(rows) == res["LAYER_COUNT"] >= 2 and res["KEPT_LAYERS"], f.name
+        _, res, _ = run_alg("extractstructure", {"INPUT": str(f), "WALLS": str(out / "walls.gpkg"),
+                                                 "TEXTS": str(out / "texts.gpkg")})
+        assert res["GEOMETRY_COUNT"] > 50, f.name
+        _, res, _ = run_alg("rasterize", {"WALLS": str(out / "walls.gpkg"), "OCCUPANCY": str(out / "occ.tif")})
+        grid = read_grid(str(out / "occ.tif"))
+        assert 0.02 <= res["OCCUPIED_SHARE"] <= 0.40, f.name
+        assert grid.shape == (res["HEIGHT"], res["WIDTH"]) and grid.data.size <= 60e6
+    # the SIST floors on their registered common grid: same shape; F2 and F4 share a drawing frame
+    sist = [str(tmp_path / f"SIST-F{k}" / "walls.gpkg") for k in range(1, 6)]
+    grids = []
+    for k in (2, 4):
+        tif = tmp_path / f"common-F{k}.tif"
+        run_alg("rasterize", {"WALLS": sist[k - 1], "FLOOR_LAYERS": sist, "OCCUPANCY": str(tif)})
+        grids.append(read_grid(str(tif)))
+    assert grids[0].shape == grids[1].shape
+    assert grids[0].geotransform == pytest.approx(grids[1].geotransform, abs=1e-6)
