@@ -316,8 +316,12 @@ class _Exploder:
     def _keep_layer(self, layer: str) -> bool:
         return layer == "0" or self.visible(layer)
 
-    def block(self, name: str) -> _Pieces:
-        got = self.cache.get(name)
+    def block(self, name: str, tol: Optional[float] = None) -> _Pieces:
+        """Flattened content of a block in its own coordinates, curves at chord error ``tol`` (block
+        units; defaults to the current tolerance), cached per (name, tol)."""
+        tol = self.tol if tol is None else tol
+        key = (name, tol)
+        got = self.cache.get(key)
         if got is not None:
             return got
         if name in self.stack:
@@ -327,19 +331,21 @@ class _Exploder:
         out = _Pieces()
         if blk is None:
             self._warn_once(("missing", name), f"block '{name}' is referenced but not defined; skipped")
-            self.cache[name] = out
+            self.cache[key] = out
             return out
         if blk.block.is_xref:
             path = blk.block.dxf.get("xref_path", "") or name
             out.xrefs.append(path)
-            self.cache[name] = out
+            self.cache[key] = out
             return out
         self.stack.append(name)
+        saved, self.tol = self.tol, tol
         try:
             self.entities(blk, out, top=False)
         finally:
             self.stack.pop()
-        self.cache[name] = out
+            self.tol = saved
+        self.cache[key] = out
         return out
 
     def entities(self, entities: Iterable, out: _Pieces, top: bool) -> None:
@@ -518,15 +524,20 @@ class _Exploder:
         name = e.dxf.name
         if layer != "0" and not self.visible(layer, frozen_only=True):
             return
-        blk = self.block(name)
         if e.dxf.get("row_count", 1) > 1 or e.dxf.get("column_count", 1) > 1:
             inserts = list(e.multi_insert())
         else:
             inserts = [e]
+        blk = None
         for ins in inserts:
             m = ins.matrix44()
             A = np.array(((m[0, 0], m[1, 0]), (m[0, 1], m[1, 1])), dtype=np.float64)
             t = np.array((m[3, 0], m[3, 1]), dtype=np.float64)
+            if blk is None:
+                # an enlarged block needs a finer tolerance in its own units (powers of 2 keep the cache small)
+                s = float(np.linalg.norm(A, 2))
+                tol = self.tol / (2.0 ** math.ceil(math.log2(s))) if s > 1.0 + 1e-9 else self.tol
+                blk = self.block(name, tol)
             _transform_pieces(blk, A, t, layer, out, self._inherited_ok)
             # attributes are stored in the parent's coordinates already
             for a in ins.attribs:

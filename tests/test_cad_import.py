@@ -497,3 +497,27 @@ def test_sample_building_structure_texts_and_raster(sample_floor):
     d2 = import_dxf(path, include_doors=True)
     assert "A-DOOR" in {g.layer for g in d2.geometries}
     assert len(d2.geometries) > len(d.geometries)
+
+
+def test_scaled_block_keeps_1cm_chord_error(tmp_path):
+    doc = new_doc(6)
+    blk = doc.blocks.new("RING")
+    blk.add_circle((0, 0), 1.0, dxfattribs={"layer": "0"})
+    msp = doc.modelspace()
+    room(msp, 0, 0, 40, 30)
+    msp.add_blockref("RING", (20, 15), dxfattribs={"layer": "A-WALL", "xscale": 10, "yscale": 10})
+    d = import_dxf(save(doc, tmp_path))
+    circ = [g for g in d.geometries if g.entity == "CIRCLE"][0]
+    assert np.allclose(np.hypot(circ.coords[:, 0] - 20, circ.coords[:, 1] - 15), 10.0)
+    ang = np.sort(np.arctan2(circ.coords[:, 1] - 15, circ.coords[:, 0] - 20))
+    step = np.max(np.diff(np.concatenate([ang, ang[:1] + 2 * np.pi])))
+    assert 10.0 * (1 - math.cos(step / 2)) <= 0.01 + 1e-9
+
+
+def test_cancel_stops_the_import(tmp_path):
+    from algorithms.errors import Canceled
+
+    doc = new_doc(6)
+    room(doc.modelspace(), 0, 0, 20, 10)
+    with pytest.raises(Canceled):
+        import_dxf(save(doc, tmp_path), progress=RecordingProgress(cancel_after=0))
