@@ -58,6 +58,7 @@ DEFAULT_DELTA = 0.1
 DEFAULT_PRUNE = 0.25
 DEFAULT_ENVELOPE_GAP = 4.0  # widest facade opening (m) bridged when looking for the building interior
 NARROWING = 0.6  # an opening narrower than this fraction of the space behind it is a door
+SPECK_M2 = 0.1  # m2: obstacle blobs up to this size inside the space (noise, clutter) make no narrowings
 CORRIDOR_MERGE = False
 MIN_CORRIDOR_OPENING_PX = 3.0
 CORRIDOR_ELONGATION = 4.0  # area / (2 * max clearance)^2 above which an area is a corridor
@@ -149,6 +150,20 @@ def building_interior(free: np.ndarray, resolution: float, envelope_gap: float =
         small[1 + int(np.argmax(st[1:, cv2.CC_STAT_AREA]))] = False
     interior &= ~small[lab]
     return interior, envelope
+
+
+def _without_specks(interior: np.ndarray, resolution: float) -> np.ndarray:
+    """The space with obstacle specks (non-free blobs smaller than ``SPECK_M2`` lying inside it:
+    sensor noise, clutter) counted as space: they make no narrowings."""
+    import cv2
+
+    n, lab, st, _ = cv2.connectedComponentsWithStats((~interior).view(np.uint8), connectivity=8,
+                                                     ltype=cv2.CV_32S)
+    small = st[:, cv2.CC_STAT_AREA] * resolution ** 2 <= SPECK_M2
+    small[0] = False
+    if not small.any():
+        return interior
+    return interior | small[lab]
 
 
 def _cells(free: np.ndarray) -> Tuple[np.ndarray, np.ndarray, np.ndarray]:
@@ -527,7 +542,10 @@ def segment(grid: OccupancyGrid, door_width: float = DEFAULT_DOOR_WIDTH,
                       f"(of {stats['free_area_m2']:.1f} m2 free in the raster)")
 
     t = time.perf_counter()
-    dist, cells, peak = _cells(interior)
+    space = _without_specks(interior, res) if SPECK_M2 > 0 else interior
+    dist, cells, peak = _cells(space)
+    if space is not interior:
+        cells[~interior] = 0
     stats["skeleton_s"] = time.perf_counter() - t
     stats["cells"] = float(len(peak) - 1)
     progress.step(40, f"Voronoi cells: {len(peak) - 1}")
