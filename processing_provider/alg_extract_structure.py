@@ -1,6 +1,4 @@
 """cad2osmag:extractstructure — structural lines (walls, columns, glazing, stairs...) and texts of a DXF."""
-import math
-
 from qgis.core import (
     QgsCoordinateReferenceSystem,
     QgsFeature,

@@ -8,7 +8,7 @@ import pytest
 
 from algorithms.cad_import import choose_unit, import_dxf, inspect_dxf, list_layers
 from algorithms.errors import InputError
-from algorithms.layer_rules import default_rules, load_rules, rules_from_dict
+from algorithms.layer_rules import default_rules, load_rules
 from algorithms.progress import RecordingProgress
 
 
@@ -103,13 +103,11 @@ def test_blocks_transforms_layer0_inheritance_and_nesting(tmp_path):
     # mirrored copy (negative x scale) on a furniture layer: inherited geometry is dropped
     msp.add_blockref("OUTER", (3, 3), dxfattribs={"layer": "FURNITURE", "xscale": -1})
     d = import_dxf(save(doc, tmp_path))
-    inherited = [g for g in d.geometries if g.layer == "A-WALL" and len(g.coords) == 2
-                 and not np.allclose(g.coords[:, 1], g.coords[0, 1]) or False]
     # INNER line: (0,0)-(1,0) scaled 2 -> (0,0)-(2,0), at (1,1) in OUTER -> (1,1)-(3,1);
     # minus base (1,1) -> (0,0)-(2,0); rotated 90 -> (0,0)-(0,2); at (10,5) -> (10,5)-(10,7)
     hits = [g for g in d.geometries if g.layer == "A-WALL" and np.allclose(np.sort(g.coords[:, 1]), (5, 7))
             and np.allclose(g.coords[:, 0], 10)]
-    assert len(hits) == 1, inherited
+    assert len(hits) == 1
     cols = [g for g in d.geometries if g.layer == "A-COLS"]
     # the column line is kept from both inserts (its own layer is visible), mirrored in the second
     assert len(cols) == 2
@@ -250,8 +248,6 @@ def test_texts_mtext_attrib(tmp_path):
     t = {x.text: x for x in d.texts}
     assert set(t) == {"Aula 1", "Sala riunioni", "Office 12"}
     a = t["Aula 1"]
-    assert (a.x, a.y, a.height, a.rotation, a.layer, a.entity) == pytest.approx(
-        (5.0, 5.0, 0.3, 90.0, "TXT", "TEXT")) if False else True
     assert a.x == pytest.approx(5.0) and a.y == pytest.approx(5.0) and a.height == pytest.approx(0.3)
     assert a.rotation == pytest.approx(90.0) and a.layer == "TXT" and a.entity == "TEXT"
     assert t["Sala riunioni"].entity == "MTEXT" and t["Sala riunioni"].height == pytest.approx(0.25)
