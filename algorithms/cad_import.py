@@ -660,13 +660,13 @@ def _read_doc(path: str, progress):
     except Exception as exc:
         rec_msg = f"{type(exc).__name__}: {exc}"
     truncated = _is_truncated(path)
-    if truncated and (doc is None or len(doc.modelspace()) == 0):
-        patched = _close_truncated(path)
-        if patched is not None:
+    if doc is None or (truncated and len(doc.modelspace()) == 0):
+        salvaged = _salvage(path)
+        if salvaged is not None:
+            stream, notes = salvaged
             try:
-                doc, auditor = recover.read(patched)
-                repairs.append("the file is truncated (it ends without the DXF end-of-file marker); the open "
-                               "section was closed and what precedes the cut was read, the rest is missing")
+                doc, auditor = recover.read(stream)
+                repairs.extend(notes)
             except Exception as exc:
                 rec_msg = rec_msg or f"{type(exc).__name__}: {exc}"
     if doc is None:
@@ -674,7 +674,7 @@ def _read_doc(path: str, progress):
                          f"recover: {rec_msg}). Open and re-save it in a CAD program, "
                          "or export it again as DXF")
     if truncated and not repairs:
-        repairs.append("the file is truncated (it ends without the DXF end-of-file marker)")
+        repairs.append("the file is truncated: it ends without the DXF end-of-file marker")
     repairs.append(f"the file is damaged ({first_msg}); it was read in ezdxf's recover mode")
     for fix in list(getattr(auditor, "fixes", []))[:20]:
         repairs.append(f"fixed: {getattr(fix, 'message', fix)}")
@@ -696,8 +696,22 @@ def _is_truncated(path: str) -> bool:
     return b"EOF" not in tail.upper()
 
 
-def _close_truncated(path: str):
-    """A copy of a truncated ASCII DXF cut at the last complete group and closed with ENDSEC/EOF."""
+_FLOAT_CODES = [(10, 59), (110, 149), (210, 239), (460, 469), (1010, 1059)]
+_INT_CODES = [(60, 99), (170, 179), (270, 299), (370, 389), (400, 409), (420, 429), (440, 459), (1060, 1071)]
+
+
+def _code_kind(code: int) -> str:
+    if any(a <= code <= b for a, b in _FLOAT_CODES):
+        return "f"
+    if any(a <= code <= b for a, b in _INT_CODES):
+        return "i"
+    return "s"
+
+
+def _salvage(path: str):
+    """Rebuild a damaged ASCII DXF in memory for recover mode: drop every entity (or header variable)
+    holding an unreadable number, stop at a broken group structure or at the end of a truncated file,
+    and close the open section. Returns ``(stream, notes)`` or None."""
     import io
 
     try:
@@ -705,17 +719,53 @@ def _close_truncated(path: str):
             data = fh.read()
     except OSError:
         return None
-    lines = data.replace(b"\r\n", b"\n").split(b"\n")
-    # keep whole (code, value) pairs, and stop before the last entity (it may be incomplete)
-    n = len(lines) - (len(lines) % 2)
-    last0 = None
-    for i in range(0, n, 2):
-        if lines[i].strip() == b"0":
-            last0 = i
-    if last0 is None:
+    if data.startswith(b"AutoCAD Binary DXF"):
         return None
-    body = b"\n".join(lines[:last0])
-    return io.BytesIO(body + b"\n  0\nENDSEC\n  0\nEOF\n")
+    lines = data.replace(b"\r\n", b"\n").replace(b"\r", b"\n").split(b"\n")
+    out: List[bytes] = []
+    unit: List[bytes] = []
+    unit_bad = False
+    dropped, bad_lines = 0, []
+    stopped_at = None
+    i = 0
+    n = len(lines) - 1
+    while i < n:
+        code_txt, value = lines[i].strip(), lines[i + 1]
+        try:
+            code = int(code_txt)
+        except ValueError:
+            stopped_at = i + 1
+            break
+        if code in (0, 9):  # a new entity / table entry / section marker or header variable
+            if unit_bad:
+                dropped += 1
+            else:
+                out.extend(unit)
+            unit, unit_bad = [], False
+        unit.extend((lines[i], value))
+        kind = _code_kind(code)
+        if kind != "s":
+            try:
+                float(value.strip()) if kind == "f" else int(value.strip())
+            except ValueError:
+                unit_bad = True
+                bad_lines.append(i + 2)
+        i += 2
+    ended = bool(unit) and unit[0].strip() == b"0" and unit[1].strip() == b"EOF"
+    if ended and not unit_bad:
+        out.extend(unit)
+    notes = []
+    if dropped or (unit_bad and not ended):
+        notes.append(f"dropped {dropped + (1 if unit_bad and not ended else 0)} entities with unreadable numbers "
+                     f"(lines {', '.join(map(str, bad_lines[:10]))}{'…' if len(bad_lines) > 10 else ''})")
+    if not ended:
+        why = (f"its group structure breaks at line {stopped_at}" if stopped_at is not None
+               else "it ends without the DXF end-of-file marker")
+        notes.append(f"the file is truncated or broken ({why}); what precedes was read, the rest is missing")
+        out.extend([b"  0", b"ENDSEC", b"  0", b"EOF"])
+    if not notes:
+        return None
+    return io.BytesIO(b"\n".join(out) + b"\n"), notes
 
 
 def _layer_states(doc):

@@ -517,3 +517,22 @@ def test_cancel_stops_the_import(tmp_path):
     room(doc.modelspace(), 0, 0, 20, 10)
     with pytest.raises(Canceled):
         import_dxf(save(doc, tmp_path), progress=RecordingProgress(cancel_after=0))
+
+
+def test_entity_with_unreadable_number_is_dropped_and_reported(tmp_path):
+    doc = new_doc(6)
+    msp = doc.modelspace()
+    for i in range(8):
+        msp.add_line((i * 3, 0), (i * 3, 20), dxfattribs={"layer": "A-WALL"})
+    path = save(doc, tmp_path)
+    text = open(path, encoding="utf-8").read()
+    ent = text.find("ENTITIES")
+    j = text.find("\n 10\n", text.find("\nLINE\n", ent))
+    k = text.find("\n", j + 5)
+    bad = tmp_path / "corrupt.dxf"
+    bad.write_text(text[:j + 5] + "abc" + text[k:], encoding="utf-8")  # recover mode alone gives up
+    prog = RecordingProgress()
+    d = import_dxf(str(bad), progress=prog)
+    assert len(d.geometries) == 7
+    assert any("dropped 1 entities with unreadable numbers" in r for r in d.repairs)
+    assert any(kind == "warning" and "recover mode" in m for kind, m in prog.messages)
