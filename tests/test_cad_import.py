@@ -494,6 +494,14 @@ def test_sample_building_structure_texts_and_raster(sample_floor):
     assert "A-DOOR" in {g.layer for g in d2.geometries}
     assert len(d2.geometries) > len(d.geometries)
 
+    def big_free_parts(g):
+        n, _, st, _ = cv2.connectedComponentsWithStats((g.data == 0).astype(np.uint8), connectivity=4)
+        return int((st[1:, cv2.CC_STAT_AREA] * g.resolution ** 2 > 2.0).sum())
+
+    # open doors: the floor's free space is one piece (plus the outside); closed doors: one per room
+    assert big_free_parts(grid) <= 3
+    assert big_free_parts(rasterize(d2.geometries)) >= len(rooms) - 3
+
 
 def test_scaled_block_keeps_1cm_chord_error(tmp_path):
     doc = new_doc(6)
