@@ -8,6 +8,15 @@ Public API
     Every layer with its entity counts after block explosion and what the rules make of it.
 ``inspect_dxf(path, rules=None, progress=None) -> CadDrawing``
     Same as list_layers but returns the whole drawing summary (layers, units, warnings, repairs).
+``layer_kept(info, rules=None, include_doors=False) -> bool``
+    Whether import_dxf keeps a layer (``LayerInfo.kept`` is also True for door layers).
+``choose_unit(size_du, header_unit) -> (unit, warning or None)``
+    The unit plausibility rule on its own.
+
+Damaged files: ``ezdxf.readfile`` first (fast); if it fails, ``ezdxf.recover``; if that fails too (or
+a truncated file yields nothing), the file is salvaged in memory (entities with unreadable numbers
+dropped, a truncated or broken tail cut, the open section closed) and recovered again. Every repair
+is listed in ``CadDrawing.repairs`` and reported as a progress warning.
 
 Conventions
 -----------

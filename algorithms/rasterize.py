@@ -7,6 +7,13 @@ extent=None, max_pixels=60e6, stroke=0.15, progress=None) -> OccupancyGrid``
 ``geometry_bounds(geometries, percentiles=(0.5, 99.5)) -> (xmin, ymin, xmax, ymax)``
 ``common_extent(geometry_sets, padding=0.03, percentiles=(0.5, 99.5)) -> (xmin, ymin, xmax, ymax)``
 ``grid_for_extent(extent, resolution, max_pixels=60e6) -> (origin_x, origin_y, rows, cols)``
+``floor_grids(geometry_sets, resolution=0.044, ..., align=None, extent=None) -> (grids, offsets)``
+    Several floors on one common grid (same shape; pixel (r, c) is the same place on every floor).
+    Floors drawn with different origins are registered first (``floor_offsets``: translation by FFT
+    cross-correlation of anti-aliased coarse rasters, about 1 cm); floor k's geotransform still maps
+    onto its own CAD frame (origin_k = common origin - offset_k, offsets rounded to the resolution).
+``common_grid(...) -> (extent, offsets)`` and ``floor_extent(extent, offset)``: the same in two steps,
+    for callers that rasterize one floor at a time (the Processing algorithm).
 
 Raster convention: uint8, 0 = free, 255 = occupied (``algorithms.model``); this is the inverse of a
 ROS map_server image (where black = occupied), ``raster_io`` converts when writing ROS maps.
