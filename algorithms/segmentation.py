@@ -59,8 +59,9 @@ DEFAULT_PRUNE = 0.25
 DEFAULT_ENVELOPE_GAP = 4.0  # widest facade opening (m) bridged when looking for the building interior
 NARROWING = 0.6  # an opening narrower than this fraction of the space behind it is a door
 SPECK_M2 = 0.1  # m2: obstacle blobs up to this size inside the space (noise, clutter) make no narrowings
-CORRIDOR_MERGE = False
+CORRIDOR_MERGE = True
 MIN_CORRIDOR_OPENING_PX = 3.0
+PASS3_ELONGATION = 8.0  # length >= 8 x mean width: a corridor, whatever narrowings it has
 CORRIDOR_ELONGATION = 4.0  # area / (2 * max clearance)^2 above which an area is a corridor
 MIN_INTERIOR_COMPONENT_M2 = 1.0  # smaller free pockets inside the envelope are dropped
 OUTSIDE_CONTACT = 0.35  # areas whose outline is open to the outside for this fraction are exterior recesses
@@ -304,15 +305,18 @@ def _merge_cells(n: int, peak: np.ndarray, lo, hi, saddle, *, r_alpha: float, do
         uf.parent[gone] = keep
     if cell_area is not None and CORRIDOR_MERGE:
         # pass 3: corridors are not split by narrowings: join touching corridor-shaped groups
+        # width of a group = twice its area-weighted mean cell peak (a wide junction or bay does
+        # not make a corridor look like a room)
         garea = np.zeros(n)
         gpk = np.zeros(n)
         roots = np.array([uf.find(i) for i in range(n)])
         np.add.at(garea, roots, cell_area)
-        np.maximum.at(gpk, roots, peak)
+        np.add.at(gpk, roots, cell_area * peak)
         garea, gpk = garea.tolist(), gpk.tolist()
 
         def corridor(g):
-            return garea[g] >= CORRIDOR_ELONGATION * (2.0 * max(gpk[g], 1.0)) ** 2
+            half = gpk[g] / garea[g] if garea[g] > 0 else 0.0
+            return garea[g] >= PASS3_ELONGATION * (2.0 * max(half, 1.0)) ** 2
 
         for i in order.tolist():
             a, b, s = uf.find(int(lo[i])), uf.find(int(hi[i])), float(saddle[i])
@@ -321,7 +325,7 @@ def _merge_cells(n: int, peak: np.ndarray, lo, hi, saddle, *, r_alpha: float, do
             keep, gone = (a, b) if a < b else (b, a)
             uf.parent[gone] = keep
             garea[keep] += garea[gone]
-            gpk[keep] = max(gpk[a], gpk[b])
+            gpk[keep] += gpk[gone]
     return np.array([uf.find(i) for i in range(n)], np.int64)
 
 
