@@ -13,26 +13,34 @@ Steps (``AreaGraph.stats`` keeps the wall time of each):
     rest of the free space. Outside space is never an area. Unknown cells are never free.
 ``skeleton``
     Clearance (Euclidean distance to the nearest wall) and the generalised Voronoi diagram of the
-    free space, represented by its *cells*: each local clearance maximum (a vertex of the GVD with
-    locally maximal clearance) floods the free space downhill (a watershed of the clearance), so
-    the cell borders are the GVD's clearance minima -- the narrowings where the Voronoi graph
-    would be split at doors -- and the cell interiors hold one stretch of skeleton each.
+    free space, represented by its *cells*: every free pixel climbs the clearance by steepest
+    ascent to a local clearance maximum (a GVD vertex or ridge plateau); the pixels reaching the
+    same maximum form one cell. Cell borders are the clearance valleys, so they cross the GVD at
+    its clearance minima -- the narrowings where the Voronoi graph is split at doors -- and every
+    cell holds one stretch of skeleton. Obstacle specks up to ``SPECK_M2`` (sensor noise,
+    clutter) are ignored here so that they make no narrowings (they stay holes in the areas).
 ``graph``
     Topology graph: two cells are neighbours when they touch; the edge carries the *saddle*, the
     largest clearance along the shared border (half the width of the opening between them).
 ``merge``
-    Cells are merged in order of decreasing saddle clearance (a merge tree):
+    Merge tree over the cell graph, strongest connections (largest saddle) first:
 
-    * noise: a cell whose peak clearance rises less than ``prune`` above the saddle is a
-      skeleton branch shorter than ``prune`` and is merged (GVD pruning);
-    * alpha rooms: where the opening is at least the alpha-disk radius
-      ``R = sqrt(alpha)`` px, alpha = ceil((min(door, corridor) + delta)^2 / (4 r^2)), the disk
-      sweeps from one cell into the other, so they belong to the same room; two different alpha
-      rooms (cells whose clearance admits the disk) are never merged through a narrower opening;
-    * doors: an opening no wider than ``door_width + delta`` that is clearly narrower than the
-      space behind it (saddle < ``NARROWING`` x the larger peak) keeps the split -- this finds the
-      rooms that are too narrow for the alpha disk;
-    * anything else (corridor cells split at junctions, bumps) is merged: nothing justifies a split.
+    1. what belongs together whatever the widths: a cell whose peak clearance rises less than
+       ``prune`` above the saddle is a skeleton branch shorter than PRUNE (GVD pruning); where
+       the opening is at least the alpha-disk radius ``R = sqrt(alpha)`` px,
+       alpha = ceil((min(door, corridor) + delta)^2 / (4 r^2)), the disk sweeps from one cell
+       into the other, so they are one room (alpha-shape room detection);
+    2. doors: an opening no wider than ``door_width + delta`` that is clearly narrower than the
+       space behind it (saddle < ``NARROWING`` x the larger peak of the two pass-1 groups) keeps
+       the split -- this also finds the rooms too narrow for the alpha disk. Anything else
+       (corridor cells split at junctions, bumps) merges: nothing justifies a split;
+    3. corridors: long groups (length >= ``PASS3_ELONGATION`` x their mean width) join the
+       corridor-shaped groups they touch even through narrowings (fire doors, clutter).
+
+    Areas whose outline is mostly open to the outside (exterior recesses the envelope disk could
+    not enter) are dropped; a label split in pieces keeps its largest piece, the rest goes to the
+    neighbour it touches most. Type: ``corridor`` when area >= ``CORRIDOR_ELONGATION`` x (2 x max
+    clearance)^2, else ``room``.
 ``polygons``
     Exact pixel-edge outlines of the label raster (GDAL Polygonize), so neighbouring areas share
     their border vertices exactly.
@@ -60,7 +68,7 @@ DEFAULT_ENVELOPE_GAP = 4.0  # widest facade opening (m) bridged when looking for
 NARROWING = 0.6  # an opening narrower than this fraction of the space behind it is a door
 SPECK_M2 = 0.1  # m2: obstacle blobs up to this size inside the space (noise, clutter) make no narrowings
 CORRIDOR_MERGE = True
-MIN_CORRIDOR_OPENING_PX = 3.0
+MIN_CORRIDOR_OPENING_M = 0.15  # corridors do not join through slits narrower than this (x 2)
 PASS3_ELONGATION = 8.0  # length >= 8 x mean width: a corridor, whatever narrowings it has
 CORRIDOR_ELONGATION = 4.0  # area / (2 * max clearance)^2 above which an area is a corridor
 MIN_INTERIOR_COMPONENT_M2 = 1.0  # smaller free pockets inside the envelope are dropped
@@ -270,7 +278,8 @@ class _UnionFind:
 
 
 def _merge_cells(n: int, peak: np.ndarray, lo, hi, saddle, *, r_alpha: float, door_half: float,
-                 prune: float, cell_area: Optional[np.ndarray] = None) -> np.ndarray:
+                 prune: float, cell_area: Optional[np.ndarray] = None, corridor_opening: float = 3.0
+                 ) -> np.ndarray:
     """Merge tree over the cell graph (see the module doc). All values in px. Returns a lookup
     table cell -> group representative.
 
@@ -320,7 +329,7 @@ def _merge_cells(n: int, peak: np.ndarray, lo, hi, saddle, *, r_alpha: float, do
 
         for i in order.tolist():
             a, b, s = uf.find(int(lo[i])), uf.find(int(hi[i])), float(saddle[i])
-            if a == b or s < MIN_CORRIDOR_OPENING_PX or not (corridor(a) and corridor(b)):
+            if a == b or s < corridor_opening or not (corridor(a) and corridor(b)):
                 continue
             keep, gone = (a, b) if a < b else (b, a)
             uf.parent[gone] = keep
@@ -564,6 +573,7 @@ def segment(grid: OccupancyGrid, door_width: float = DEFAULT_DOOR_WIDTH,
     cell_area = np.bincount(cells.ravel(), minlength=len(peak)).astype(np.float64)
     cell_area[0] = 0
     rep = _merge_cells(len(peak), peak - 0.5, lo, hi, saddle - 0.5, r_alpha=r_alpha, cell_area=cell_area,
+                       corridor_opening=MIN_CORRIDOR_OPENING_M / res,
                        door_half=(door_width + delta) / 2.0 / res, prune=prune / res)
     # renumber groups deterministically: representatives are the smallest cell id of their group
     # and cell ids follow the raster order of the clearance maxima
