@@ -97,6 +97,19 @@ def test_segment_bad_input_writes_nothing(tmp_path):
                                        **{k: str(v) for k, v in out.items()}}, check=False)
     assert code != 0 and "no free cell" in log
     assert not any(p.exists() for p in out.values())
+    # a colour (multi-band) image
+    colour = np.zeros((200, 300, 3), np.uint8)
+    colour[..., 2] = 255
+    cv2.imwrite(str(tmp_path / "colour.png"), colour)
+    code, _, log = run_alg("segment", {"INPUT": tmp_path / "colour.png", "RESOLUTION": 0.05,
+                                       **{k: str(v) for k, v in out.items()}}, check=False)
+    assert code != 0 and "band" in log
+    # a resolution so coarse that alpha < 2 px^2
+    cv2.imwrite(str(tmp_path / "white.png"), np.full((200, 300), 255, np.uint8))
+    code, _, log = run_alg("segment", {"INPUT": tmp_path / "white.png", "RESOLUTION": 3.0,
+                                       **{k: str(v) for k, v in out.items()}}, check=False)
+    assert code != 0 and "smaller than 2" in log
+    assert not any(p.exists() for p in out.values())
 
 
 @pytest.mark.qgis_process
