@@ -1,7 +1,6 @@
 """Overlay picture of an Area Graph: areas in colours, walls black, passages red, ids at centroids."""
 from __future__ import annotations
 
-import math
 import os
 
 import numpy as np

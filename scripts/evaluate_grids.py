@@ -46,12 +46,14 @@ def run(data: Path, previews=None, only=None, out=sys.stdout):
             ag = segmentation.segment(grid, door_width=dw, corridor_width=cw)
             dt = time.perf_counter() - t
             ev = evaluate(ag.labels, gt)
+            figures = {k: ev[k] for k in ("recall", "precision", "mcc", "f1", "n_gt")}
             results.append(dict(map=m["name"], setting=setting, door=dw, corridor=cw, seconds=dt,
-                                areas=len(ag.areas), **{k: ev[k] for k in ("recall", "precision", "mcc", "f1", "n_gt")}))
+                                areas=len(ag.areas), **figures))
             if previews:
                 from algorithms.preview import render_preview
                 render_preview(grid, ag, os.path.join(previews, f"seg_{m['name']}_{setting.replace('.', '_')}.png"))
-    hdr = f"{'map':22s} {'widths':9s} {'door':>5s} {'corr':>5s} {'areas':>5s} {'gt':>3s} {'recall':>6s} {'prec':>6s} {'MCC':>6s} {'F1':>6s} {'s':>5s}"
+    hdr = (f"{'map':22s} {'widths':9s} {'door':>5s} {'corr':>5s} {'areas':>5s} {'gt':>3s} {'recall':>6s} "
+           f"{'prec':>6s} {'MCC':>6s} {'F1':>6s} {'s':>5s}")
     print(hdr, file=out)
     print("-" * len(hdr), file=out)
     for r in results:

@@ -1,6 +1,5 @@
 """Area Graph segmentation on real data: robot maps with ground truth, the sample building, CAD floors."""
 import json
-import math
 from pathlib import Path
 
 import numpy as np
@@ -122,7 +121,8 @@ def _envelope_by_closing(grid, radius_m=1.0):
 
 
 def _cad_files(shared_data):
-    return sorted((shared_data / "dxf" / "sist").glob("*.dxf")) + sorted((shared_data / "dxf" / "archweb").glob("*.dxf"))
+    return (sorted((shared_data / "dxf" / "sist").glob("*.dxf"))
+            + sorted((shared_data / "dxf" / "archweb").glob("*.dxf")))
 
 
 @pytest.fixture(scope="module")
