@@ -287,7 +287,9 @@ def _merge_cells(n: int, peak: np.ndarray, lo, hi, saddle, *, r_alpha: float, do
     whose peak rises less than ``prune`` above their saddle (GVD branches shorter than PRUNE) and
     cells the alpha disk sweeps between (saddle >= R). Pass 2 then judges every remaining opening
     against the significant spaces on both sides from pass 1: a door-sized opening clearly narrower
-    than the space behind it keeps the split, anything else merges.
+    than the space behind it keeps the split, anything else merges. Pass 3 joins touching
+    corridor-shaped groups (``PASS3_ELONGATION``) through any opening wider than
+    ``corridor_opening``.
     """
     order = np.lexsort((hi, lo, -saddle))  # strongest first; ties broken by ids (deterministic)
     uf = _UnionFind(n)
