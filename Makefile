@@ -5,7 +5,8 @@ SHELL := /bin/bash
 ROOT  := $(abspath $(dir $(lastword $(MAKEFILE_LIST))))
 VENV  := $(ROOT)/.venv
 PY    := $(VENV)/bin/python
-APT_PACKAGES := qgis python3-qgis qgis-providers python3-venv python3-gdal gdal-bin osmium-tool xvfb
+APT_PACKAGES := qgis python3-qgis qgis-providers python3-venv python3-gdal gdal-bin osmium-tool xvfb \
+                python3-dev build-essential libproj-dev libgeos-dev
 STAMP := $(VENV)/.installed
 
 .PHONY: install demo test test-quick bench evaluate clean help
@@ -19,7 +20,7 @@ help:
 
 install: $(STAMP)
 
-$(STAMP): requirements.txt requirements-dev.txt scripts/install.sh
+$(STAMP): requirements.txt requirements-dev.txt constraints-build.txt scripts/install.sh scripts/setup-profile.sh
 	bash scripts/install.sh "$(APT_PACKAGES)"
 	touch $(STAMP)
 

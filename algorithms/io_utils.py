@@ -21,6 +21,9 @@ def atomic_path(path: str, suffix: str = "") -> Iterator[str]:
     base = os.path.basename(path)
     fd, tmp = tempfile.mkstemp(prefix="." + base + ".", suffix=suffix or os.path.splitext(base)[1], dir=folder)
     os.close(fd)
+    umask = os.umask(0)
+    os.umask(umask)
+    os.chmod(tmp, 0o666 & ~umask)  # mkstemp creates 0600 files; outputs get the usual permissions
     try:
         yield tmp
         os.replace(tmp, path)

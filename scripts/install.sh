@@ -4,7 +4,7 @@
 # plugin linked into a project-local QGIS profile with the plugin enabled.
 set -euo pipefail
 ROOT="$(cd "$(dirname "$0")/.." && pwd)"
-APT_PACKAGES="${1:-qgis python3-qgis qgis-providers python3-venv python3-gdal gdal-bin osmium-tool xvfb}"
+APT_PACKAGES="${1:-qgis python3-qgis qgis-providers python3-venv python3-gdal gdal-bin osmium-tool xvfb python3-dev build-essential libproj-dev libgeos-dev}"
 
 missing=()
 for p in $APT_PACKAGES; do
@@ -23,8 +23,10 @@ if [ ! -x "$ROOT/.venv/bin/python" ]; then
   echo "[install] creating .venv from $SYSPY --system-site-packages"
   "$SYSPY" -m venv --system-site-packages "$ROOT/.venv"
 fi
-"$ROOT/.venv/bin/python" -m pip install -q --disable-pip-version-check -r "$ROOT/requirements-dev.txt"
-"$ROOT/.venv/bin/python" -c "import qgis.core, osgeo.gdal, numpy, cv2, shapely, ezdxf, pyproj, scipy; assert numpy.__version__ < '2'" \
+# pyproj/shapely are compiled against the system PROJ/GEOS (see requirements.txt); pin their build tools.
+PIP_CONSTRAINT="$ROOT/constraints-build.txt" "$ROOT/.venv/bin/python" -m pip install -q --disable-pip-version-check \
+  -r "$ROOT/requirements-dev.txt"
+"$ROOT/.venv/bin/python" -c "import qgis.core, osgeo.gdal, numpy, cv2, shapely, ezdxf, pyproj, scipy; assert numpy.__version__ < '2'; assert pyproj.proj_version_str.startswith('9.1'), 'pyproj must use the system PROJ'" \
   || { echo "[install] the venv cannot import its dependencies" >&2; exit 1; }
 
 bash "$ROOT/scripts/setup-profile.sh"

@@ -23,6 +23,14 @@ def test_atomic_write_leaves_nothing_on_failure(tmp_path):
     assert os.listdir(tmp_path) == []
 
 
+def test_atomic_output_has_ordinary_permissions(tmp_path):
+    with atomic_write(str(tmp_path / "f.txt")) as fh:
+        fh.write("x")
+    umask = os.umask(0)
+    os.umask(umask)
+    assert (tmp_path / "f.txt").stat().st_mode & 0o777 == 0o666 & ~umask
+
+
 def test_atomic_write_keeps_previous_file_until_success(tmp_path):
     target = tmp_path / "out.txt"
     target.write_text("old")
