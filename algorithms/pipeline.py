@@ -1,0 +1,118 @@
+"""The whole pipeline in one call: DXF floor plan -> osmAG file (+ preview, raster, labels).
+
+Stages: CAD import (structural layers, metres) -> rasterize -> Area Graph segmentation -> refinement
+-> osmAG export (georeferenced through a ``LocalFrame``). Each stage is also its own Processing
+algorithm; this module only chains them with the same defaults, for ``cad2osmag:dxftoosmag``, the demo
+and scripts. Outputs are written atomically, and only after every stage succeeded.
+"""
+from __future__ import annotations
+
+import time
+from dataclasses import dataclass, field
+from typing import Dict, List, Optional, Sequence
+
+from shapely.geometry import Polygon
+from shapely.ops import unary_union
+
+from . import cad_import, osmag, rasterize, refine, segmentation
+from .georef import LocalFrame
+from .model import Area, AreaGraph, CadDrawing, OccupancyGrid
+from .progress import ensure
+
+# Default anchor when the user gives none: the osmAG root must be a real WGS84 position. (0, 0) would put
+# the building in the Gulf of Guinea, so the log says clearly that the map is not georeferenced yet.
+DEFAULT_ANCHOR = (0.0, 0.0)
+
+
+@dataclass
+class FloorResult:
+    drawing: CadDrawing
+    grid: OccupancyGrid
+    segmented: AreaGraph
+    refined: AreaGraph
+    floor_area: Optional[Area]
+    stats: Dict[str, object] = field(default_factory=dict)
+
+
+def floor_outline(areas: Sequence[Area], wall_gap: float = 0.8) -> Optional[Polygon]:
+    """The floor's outline: the union of its areas with the walls between them closed (gaps up to
+    ``wall_gap`` metres), without holes. Every area lies strictly inside it, so it can be their
+    ``osmAG:parent`` structure area."""
+    polys = [a.polygon for a in areas if a.polygon is not None and not a.polygon.is_empty]
+    if not polys:
+        return None
+    half = wall_gap / 2.0
+    merged = unary_union([p.buffer(half, join_style=2) for p in polys]).buffer(-half * 0.5, join_style=2)
+    parts = list(getattr(merged, "geoms", [merged]))
+    outline = Polygon(max(parts, key=lambda p: p.area).exterior)
+    for extra in parts:  # outlying parts (a detached wing) still have to contain their areas
+        if extra.area < outline.area:
+            outline = unary_union([outline, Polygon(extra.exterior)]).convex_hull if not outline.contains(extra) else outline
+    return outline
+
+
+def process_floor(dxf_path: str, *, rules=None, layers=None, units=None, include_doors: bool = False,
+                  resolution: float = rasterize.DEFAULT_RESOLUTION, extent=None,
+                  door_width: float = segmentation.DEFAULT_DOOR_WIDTH,
+                  corridor_width: float = segmentation.DEFAULT_CORRIDOR_WIDTH,
+                  delta: float = segmentation.DEFAULT_DELTA, prune: float = segmentation.DEFAULT_PRUNE,
+                  epsilon_px: float = refine.EPSILON_PX, min_area: float = refine.MIN_AREA_M2,
+                  level: str = "1", progress=None) -> FloorResult:
+    """Run stages 1-4 on one DXF floor; nothing is written."""
+    progress = ensure(progress)
+    timings: Dict[str, float] = {}
+
+    def timed(name, start, end, func, *args, **kwargs):
+        t0 = time.perf_counter()
+        out = func(*args, progress=progress.sub(start, end), **kwargs)
+        timings[name] = time.perf_counter() - t0
+        return out
+
+    drawing = timed("cad_import", 0, 25, cad_import.import_dxf, dxf_path, rules=rules, layers=layers,
+                    units=units, include_doors=include_doors)
+    grid = timed("rasterize", 25, 35, rasterize.rasterize, drawing.geometries, resolution=resolution,
+                 extent=extent)
+    seg = timed("segment", 35, 80, segmentation.segment, grid, door_width=door_width,
+                corridor_width=corridor_width, delta=delta, prune=prune)
+    refined, rstats = timed("refine", 80, 95, refine.refine, seg, grid.resolution, epsilon_px=epsilon_px,
+                            min_area=min_area)
+    outline = floor_outline(refined.areas)
+    floor_area = None
+    if outline is not None:
+        floor_area = Area(id=0, polygon=outline, type="structure", name=f"Level {level}")
+    stats = {"timings": timings, "refine": rstats, "segment": dict(seg.stats),
+             "texts": len(drawing.texts), "geometries": len(drawing.geometries), "unit": drawing.unit_name,
+             "raster_shape": grid.shape, "areas": len(refined.areas), "passages": len(refined.passages)}
+    progress.info(f"floor {level}: {len(refined.areas)} areas, {len(refined.passages)} passages "
+                  f"({rstats.get('vertex_reduction', 0):.0%} fewer vertices after refinement)")
+    return FloorResult(drawing, grid, seg, refined, floor_area, stats)
+
+
+def convert_dxf(dxf_path: str, out_osm: str, *, preview_png: Optional[str] = None,
+                anchor_lon: Optional[float] = None, anchor_lat: Optional[float] = None,
+                rotation_deg: float = 0.0, scale: float = 1.0, level: str = "1", height: float = 3.2,
+                variant: str = "semantic", progress=None, **floor_kwargs) -> Dict[str, object]:
+    """DXF floor plan -> osmAG file (and optionally a preview PNG). Returns figures for the log."""
+    progress = ensure(progress)
+    if anchor_lon is None or anchor_lat is None:
+        anchor_lon, anchor_lat = DEFAULT_ANCHOR
+        progress.warning("no anchor given: the map is placed at lon/lat 0/0; give ANCHOR (and ROTATION) "
+                         "or run cad2osmag:georeference to put it on the Earth")
+    frame = LocalFrame(anchor_lon, anchor_lat, rotation_deg=rotation_deg, scale=scale)
+    floor = process_floor(dxf_path, level=level, progress=progress.sub(0, 90), **floor_kwargs)
+    structure = [floor.floor_area] if floor.floor_area is not None else []
+    t0 = time.perf_counter()
+    written = osmag.write_osmag(out_osm, floor.refined.areas, floor.refined.passages, frame=frame, level=level,
+                                height=height, variant=variant, structure_areas=structure,
+                                progress=progress.sub(90, 97))
+    floor.stats["timings"]["export"] = time.perf_counter() - t0
+    if preview_png:
+        from .preview import render_preview
+
+        render_preview(floor.grid, floor.refined, preview_png)
+    progress.step(100)
+    out = dict(floor.stats)
+    out["osm"] = {k: v for k, v in written.items() if k != "warnings"}
+    for w in written.get("warnings", []):
+        progress.warning(w)
+    return out

@@ -1,0 +1,105 @@
+"""cad2osmag:dxftoosmag — the whole pipeline for one floor: DXF -> osmAG (+ preview)."""
+from qgis.core import (
+    QgsCoordinateReferenceSystem,
+    QgsCoordinateTransform,
+    QgsProcessingException,
+    QgsProcessingOutputNumber,
+    QgsProcessingParameterBoolean,
+    QgsProcessingParameterEnum,
+    QgsProcessingParameterFile,
+    QgsProcessingParameterFileDestination,
+    QgsProcessingParameterNumber,
+    QgsProcessingParameterPoint,
+    QgsProcessingParameterString,
+)
+
+from ..algorithms import pipeline
+from .base import Cad2OsmagAlgorithm
+
+UNITS = ["auto", "mm", "cm", "m", "inch", "feet"]
+VARIANTS = ["semantic", "fix-id"]
+
+
+class DxfToOsmagAlgorithm(Cad2OsmagAlgorithm):
+    NAME = "dxftoosmag"
+    DISPLAY_NAME = "Convert DXF floor plan to osmAG"
+    GROUP = "Pipeline"
+    GROUP_ID = "pipeline"
+    HELP = ("Runs the whole pipeline on one floor: structural layers of the DXF are kept (walls, columns, "
+            "glazing, stairs), rasterized, segmented into an Area Graph of rooms, corridors and the passages "
+            "between them, refined (simplified polygons with shared borders) and written as an osmAG file "
+            "anchored on the Earth. ANCHOR is the position of the drawing origin (pick it on a basemap), "
+            "ROTATION the direction of the drawing's +y axis in degrees clockwise from north. Each step is "
+            "also available as its own algorithm for finer control.")
+
+    def initAlgorithm(self, config=None):  # noqa: N802
+        self.addParameter(QgsProcessingParameterFile("INPUT", self.tr("DXF floor plan"), extension="dxf"))
+        self.addParameter(QgsProcessingParameterFile("LAYER_RULES", self.tr("Layer rules (JSON, optional)"),
+                                                     extension="json", optional=True))
+        self.addParameter(QgsProcessingParameterEnum("UNITS", self.tr("Drawing units"), UNITS, defaultValue=0))
+        self.addParameter(QgsProcessingParameterNumber("RESOLUTION", self.tr("Raster resolution (m/px)"),
+                                                       QgsProcessingParameterNumber.Double, 0.044, False, 0.005, 1.0))
+        self.addParameter(QgsProcessingParameterNumber("DOOR_WIDTH", self.tr("Widest door (m)"),
+                                                       QgsProcessingParameterNumber.Double, 2.8, False, 0.3, 20))
+        self.addParameter(QgsProcessingParameterNumber("CORRIDOR_WIDTH", self.tr("Corridor width (m)"),
+                                                       QgsProcessingParameterNumber.Double, 8.0, False, 0.3, 50))
+        self.addParameter(QgsProcessingParameterNumber("MIN_AREA", self.tr("Merge areas smaller than (m²)"),
+                                                       QgsProcessingParameterNumber.Double, 10.0, False, 0, 1000))
+        self.addParameter(QgsProcessingParameterBoolean("INCLUDE_DOORS",
+                                                        self.tr("Close doorways (rasterize door layers)"), False))
+        self.addParameter(QgsProcessingParameterString("LEVEL", self.tr("Level"), "1"))
+        self.addParameter(QgsProcessingParameterNumber("HEIGHT", self.tr("Floor height (m)"),
+                                                       QgsProcessingParameterNumber.Double, 3.2, False, 0.1, 100))
+        self.addParameter(QgsProcessingParameterPoint("ANCHOR", self.tr("Position of the drawing origin"),
+                                                      optional=True))
+        self.addParameter(QgsProcessingParameterNumber("ROTATION", self.tr("Rotation (degrees clockwise from north)"),
+                                                       QgsProcessingParameterNumber.Double, 0.0, False, -360, 360))
+        self.addParameter(QgsProcessingParameterEnum("VARIANT", self.tr("osmAG variant"), VARIANTS, defaultValue=0))
+        self.addParameter(QgsProcessingParameterFileDestination("OUTPUT", self.tr("osmAG file"),
+                                                                self.tr("OpenStreetMap XML (*.osm)")))
+        self.addParameter(QgsProcessingParameterFileDestination("PREVIEW", self.tr("Preview image"),
+                                                                self.tr("PNG image (*.png)"), optional=True,
+                                                                createByDefault=False))
+        for key, label in (("AREA_COUNT", "Areas"), ("PASSAGE_COUNT", "Passages")):
+            self.addOutput(QgsProcessingOutputNumber(key, self.tr(label)))
+
+    def anchor_lonlat(self, parameters, context):
+        """The ANCHOR point in WGS84 (lon, lat), or (None, None) when not given."""
+        if parameters.get("ANCHOR") in (None, ""):
+            return None, None
+        point = self.parameterAsPoint(parameters, "ANCHOR", context)
+        crs = self.parameterAsPointCrs(parameters, "ANCHOR", context)
+        wgs84 = QgsCoordinateReferenceSystem("EPSG:4326")
+        if crs.isValid() and crs != wgs84:
+            point = QgsCoordinateTransform(crs, wgs84, context.transformContext()).transform(point)
+        return point.x(), point.y()
+
+    def processAlgorithm(self, parameters, context, feedback):  # noqa: N802
+        units = UNITS[self.parameterAsEnum(parameters, "UNITS", context)]
+        lon, lat = self.anchor_lonlat(parameters, context)
+        out = self.parameterAsFileOutput(parameters, "OUTPUT", context)
+        preview = self.parameterAsFileOutput(parameters, "PREVIEW", context) or None
+        if not out:
+            raise QgsProcessingException(self.tr("OUTPUT: give the .osm file to write"))
+        stats = self.call(
+            feedback, pipeline.convert_dxf,
+            self.parameterAsFile(parameters, "INPUT", context), out, preview_png=preview,
+            rules=self.parameterAsFile(parameters, "LAYER_RULES", context) or None,
+            units=None if units == "auto" else units,
+            include_doors=self.parameterAsBool(parameters, "INCLUDE_DOORS", context),
+            resolution=self.parameterAsDouble(parameters, "RESOLUTION", context),
+            door_width=self.parameterAsDouble(parameters, "DOOR_WIDTH", context),
+            corridor_width=self.parameterAsDouble(parameters, "CORRIDOR_WIDTH", context),
+            min_area=self.parameterAsDouble(parameters, "MIN_AREA", context),
+            level=self.parameterAsString(parameters, "LEVEL", context).strip() or "1",
+            height=self.parameterAsDouble(parameters, "HEIGHT", context),
+            anchor_lon=lon, anchor_lat=lat,
+            rotation_deg=self.parameterAsDouble(parameters, "ROTATION", context),
+            variant=VARIANTS[self.parameterAsEnum(parameters, "VARIANT", context)],
+        )
+        timing = ", ".join(f"{k} {v:.2f} s" for k, v in stats["timings"].items())
+        feedback.pushInfo(self.tr("Stage times: {}").format(timing))
+        result = {"OUTPUT": out, "AREA_COUNT": stats["areas"], "PASSAGE_COUNT": stats["passages"]}
+        if preview:
+            result["PREVIEW"] = preview
+        return result
