@@ -3,8 +3,8 @@
 The CAD frame is metric (x right, y up). A :class:`LocalFrame` places it with a similarity transform
 (rotation, uniform scale, translation) into a *local transverse Mercator* projection centred on the
 anchor (``+proj=tmerc +lat_0=<anchor lat> +lon_0=<anchor lon> +k=1``, WGS84 ellipsoid). Every
-conversion to WGS84 or any other CRS goes through pyproj from that projection, never through a
-flat-earth (degrees-per-metre) shortcut. At the anchor the projection's scale is exactly 1 and grid
+conversion to WGS84 or any other CRS goes through PROJ (pyproj; GDAL osr inside QGIS executables) from
+that projection, never through a flat-earth (degrees-per-metre) shortcut. At the anchor the projection's scale is exactly 1 and grid
 north is true north; at 1 km from the anchor the scale error is ~1e-8, far below a millimetre per
 100 m.
 
@@ -22,6 +22,7 @@ metres measured on the ellipsoid.
 from __future__ import annotations
 
 import math
+import os
 from typing import Iterable, List, Optional, Sequence, Tuple
 
 import numpy as np
@@ -31,20 +32,159 @@ from .errors import InputError
 WGS84 = "EPSG:4326"
 
 
-def _pyproj():
-    import pyproj
+# =========================================================================== PROJ backends
+# pyproj's wheels bundle their own PROJ. Inside the QGIS executables (qgis, qgis_process) the system
+# PROJ that QGIS links is loaded into the global symbol namespace and shadows pyproj's copy, which then
+# fails (TypeError / bad_alloc). There, the same PROJ is reached through GDAL's osr bindings, which are
+# built against the system PROJ. Both backends do real projections; set CAD2OSMAG_PROJ_BACKEND=pyproj|osr
+# to force one.
+_BACKEND = None
 
-    return pyproj
+
+def _proj_loaded_globally() -> bool:
+    import ctypes
+
+    try:
+        return hasattr(ctypes.CDLL(None), "proj_context_create")
+    except OSError:  # pragma: no cover
+        return False
+
+
+def backend() -> str:
+    """'pyproj' or 'osr' (see above)."""
+    global _BACKEND
+    if _BACKEND is None:
+        forced = os.environ.get("CAD2OSMAG_PROJ_BACKEND", "").strip().lower()
+        if forced in ("pyproj", "osr"):
+            _BACKEND = forced
+        else:
+            _BACKEND = "osr" if _proj_loaded_globally() else "pyproj"
+    return _BACKEND
+
+
+def _crs_text(crs) -> str:
+    """Any CRS description (EPSG code, 'EPSG:xxxx', WKT, PROJ string, pyproj CRS) -> text."""
+    if isinstance(crs, int):
+        return f"EPSG:{crs}"
+    if hasattr(crs, "to_wkt"):
+        return crs.to_wkt()
+    return str(crs)
+
+
+def _osr_srs(crs):
+    from osgeo import osr
+
+    osr.UseExceptions()
+    srs = osr.SpatialReference()
+    try:
+        srs.SetFromUserInput(_crs_text(crs))
+    except RuntimeError as exc:
+        raise InputError(f"unknown coordinate reference system {crs!r}: {exc}") from exc
+    srs.SetAxisMappingStrategy(osr.OAMS_TRADITIONAL_GIS_ORDER)
+    return srs
 
 
 def _crs(crs):
-    pyproj = _pyproj()
+    """Validated CRS object of the active backend."""
+    if backend() == "osr":
+        return _osr_srs(crs)
+    import pyproj
+
     if isinstance(crs, pyproj.CRS):
         return crs
     try:
-        return pyproj.CRS.from_user_input(crs)
+        return pyproj.CRS.from_user_input(_crs_text(crs))
     except Exception as exc:  # pyproj.exceptions.CRSError and friends
         raise InputError(f"unknown coordinate reference system {crs!r}: {exc}") from exc
+
+
+def crs_is_geographic(crs) -> bool:
+    c = _crs(crs)
+    return bool(c.IsGeographic()) if backend() == "osr" else bool(c.is_geographic)
+
+
+class _Transformer:
+    """x/lon-first transformer between two CRSs, vectorised over numpy arrays."""
+
+    def __init__(self, src, dst):
+        if backend() == "osr":
+            from osgeo import osr
+
+            self._ct = osr.CoordinateTransformation(_osr_srs(src), _osr_srs(dst))
+            self._tr = None
+        else:
+            import pyproj
+
+            self._tr = pyproj.Transformer.from_crs(_crs(src), _crs(dst), always_xy=True)
+
+    def transform(self, x, y):
+        if self._tr is not None:
+            X, Y = self._tr.transform(x, y)
+            return X, Y
+        xa = np.asarray(x, dtype=float)
+        ya = np.asarray(y, dtype=float)
+        flat = np.column_stack([xa.reshape(-1), ya.reshape(-1)])
+        if len(flat) == 0:
+            return xa.copy(), ya.copy()
+        ok = np.all(np.isfinite(flat), axis=1)
+        out = np.full((len(flat), 2), np.inf)
+        if ok.any():
+            try:
+                res = np.asarray(self._ct.TransformPoints(flat[ok].tolist()), dtype=float)[:, :2]
+            except RuntimeError:
+                res = np.array([self._one(p) for p in flat[ok]])
+            out[ok] = res
+        X, Y = out[:, 0].reshape(xa.shape), out[:, 1].reshape(ya.shape)
+        if xa.ndim == 0:
+            return float(X), float(Y)
+        return X, Y
+
+    def _one(self, p):
+        try:
+            return self._ct.TransformPoint(float(p[0]), float(p[1]))[:2]
+        except RuntimeError:
+            return (np.inf, np.inf)
+
+
+def _vincenty_inverse(lon1, lat1, lon2, lat2):
+    """Geodesic inverse on WGS84 (Vincenty 1975; ~0.1 mm for non-antipodal points): (az12, dist)."""
+    a, f = 6378137.0, 1 / 298.257223563
+    b = a * (1 - f)
+    L = np.radians(np.asarray(lon2, float) - np.asarray(lon1, float))
+    U1 = np.arctan((1 - f) * np.tan(np.radians(np.asarray(lat1, float))))
+    U2 = np.arctan((1 - f) * np.tan(np.radians(np.asarray(lat2, float))))
+    sU1, cU1, sU2, cU2 = np.sin(U1), np.cos(U1), np.sin(U2), np.cos(U2)
+    lam = L
+    for _ in range(200):
+        sl, cl = np.sin(lam), np.cos(lam)
+        ss = np.sqrt((cU2 * sl) ** 2 + (cU1 * sU2 - sU1 * cU2 * cl) ** 2)
+        cs = sU1 * sU2 + cU1 * cU2 * cl
+        sig = np.arctan2(ss, cs)
+        with np.errstate(invalid="ignore", divide="ignore"):
+            sa = np.where(ss > 0, cU1 * cU2 * sl / np.where(ss > 0, ss, 1), 0.0)
+            c2a = 1 - sa ** 2
+            c2sm = np.where(c2a > 0, cs - 2 * sU1 * sU2 / np.where(c2a > 0, c2a, 1), 0.0)
+        C = f / 16 * c2a * (4 + f * (4 - 3 * c2a))
+        prev = lam
+        lam = L + (1 - C) * f * sa * (sig + C * ss * (c2sm + C * cs * (-1 + 2 * c2sm ** 2)))
+        if np.all(np.abs(lam - prev) < 1e-13):
+            break
+    u2 = c2a * (a * a - b * b) / (b * b)
+    A = 1 + u2 / 16384 * (4096 + u2 * (-768 + u2 * (320 - 175 * u2)))
+    B = u2 / 1024 * (256 + u2 * (-128 + u2 * (74 - 47 * u2)))
+    ds = B * ss * (c2sm + B / 4 * (cs * (-1 + 2 * c2sm ** 2) - B / 6 * c2sm * (-3 + 4 * ss ** 2) * (-3 + 4 * c2sm ** 2)))
+    dist = b * A * (sig - ds)
+    az = np.degrees(np.arctan2(cU2 * np.sin(lam), cU1 * sU2 - sU1 * cU2 * np.cos(lam)))
+    return az, dist
+
+
+def _geod_inv(lon1, lat1, lon2, lat2):
+    if backend() == "osr":
+        return _vincenty_inverse(lon1, lat1, lon2, lat2)
+    import pyproj
+
+    az, _, d = pyproj.Geod(ellps="WGS84").inv(lon1, lat1, lon2, lat2)
+    return az, d
 
 
 def check_lonlat(lon: float, lat: float, what: str = "anchor") -> None:
@@ -75,10 +215,9 @@ class LocalFrame:
         self.rotation_deg = float(rotation_deg) % 360.0
         self.scale = float(scale)
         self.cad_anchor = (float(cad_anchor[0]), float(cad_anchor[1]))
-        pyproj = _pyproj()
-        self.crs = pyproj.CRS.from_proj4(
-            f"+proj=tmerc +lat_0={anchor_lat:.12f} +lon_0={anchor_lon:.12f} +k=1 +x_0=0 +y_0=0 "
-            "+ellps=WGS84 +units=m +no_defs +type=crs")
+        # the local projection as a PROJ string (accepted by pyproj, osr and QGIS)
+        self.crs = (f"+proj=tmerc +lat_0={anchor_lat:.12f} +lon_0={anchor_lon:.12f} +k=1 +x_0=0 +y_0=0 "
+                    "+ellps=WGS84 +units=m +no_defs +type=crs")
         self._transformers = {}
         th = math.radians(self.rotation_deg)
         self._c, self._s = math.cos(th), math.sin(th)
@@ -108,15 +247,10 @@ class LocalFrame:
 
     # -------------------------------------------------------------------- CRS transforms
     def _transformer(self, crs, inverse=False):
-        pyproj = _pyproj()
-        target = _crs(crs)
-        key = (target.to_wkt(), inverse)
+        key = (_crs_text(crs), inverse)
         tr = self._transformers.get(key)
         if tr is None:
-            if inverse:
-                tr = pyproj.Transformer.from_crs(target, self.crs, always_xy=True)
-            else:
-                tr = pyproj.Transformer.from_crs(self.crs, target, always_xy=True)
+            tr = _Transformer(crs, self.crs) if inverse else _Transformer(self.crs, crs)
             self._transformers[key] = tr
         return tr
 
@@ -164,8 +298,7 @@ def transform_geometry(geom, src_crs, dst_crs):
     """Transform a shapely geometry (or an array of them) between two pyproj CRSs."""
     import shapely
 
-    pyproj = _pyproj()
-    tr = pyproj.Transformer.from_crs(_crs(src_crs), _crs(dst_crs), always_xy=True)
+    tr = _Transformer(src_crs, dst_crs)
 
     def f(xy):
         X, Y = tr.transform(xy[:, 0], xy[:, 1])
@@ -176,23 +309,20 @@ def transform_geometry(geom, src_crs, dst_crs):
 
 def to_wgs84_points(X, Y, crs) -> Tuple[np.ndarray, np.ndarray]:
     """Points in any CRS -> (lon, lat)."""
-    pyproj = _pyproj()
-    tr = pyproj.Transformer.from_crs(_crs(crs), _crs(WGS84), always_xy=True)
+    tr = _Transformer(crs, WGS84)
     lon, lat = tr.transform(np.asarray(X, float), np.asarray(Y, float))
     return np.asarray(lon, float), np.asarray(lat, float)
 
 
 def geodesic_distance(lon1, lat1, lon2, lat2):
     """Ellipsoidal (WGS84) distance in metres."""
-    g = _pyproj().Geod(ellps="WGS84")
-    _, _, d = g.inv(lon1, lat1, lon2, lat2)
+    _, d = _geod_inv(lon1, lat1, lon2, lat2)
     return d
 
 
 def azimuth(lon1, lat1, lon2, lat2) -> float:
     """Forward azimuth (degrees clockwise from north) from point 1 to point 2 on the ellipsoid."""
-    g = _pyproj().Geod(ellps="WGS84")
-    az, _, _ = g.inv(lon1, lat1, lon2, lat2)
+    az, _ = _geod_inv(lon1, lat1, lon2, lat2)
     return float(az) % 360.0
 
 
@@ -317,5 +447,5 @@ def ellipsoidal_length_of_line(coords_lonlat: Iterable[Tuple[float, float]]) -> 
     return float(np.sum(d))
 
 
-__all__: List[str] = ["LocalFrame", "fit_gcps", "transform_geometry", "to_wgs84_points", "geodesic_distance",
+__all__: List[str] = ["LocalFrame", "backend", "crs_is_geographic", "fit_gcps", "transform_geometry", "to_wgs84_points", "geodesic_distance",
                       "azimuth", "rotation_from_two_points", "check_lonlat", "frame_from_params", "WGS84"]

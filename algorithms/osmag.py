@@ -80,7 +80,7 @@ def write_osmag(path: str, areas: Sequence[Area], passages: Sequence[Passage] = 
     import shapely
     from shapely.geometry import MultiPolygon, Polygon
 
-    from .georef import WGS84, _crs, check_lonlat, to_wgs84_points
+    from .georef import check_lonlat, crs_is_geographic, to_wgs84_points
     from .refine import _Partition
 
     progress = ensure(progress)
@@ -135,11 +135,8 @@ def write_osmag(path: str, areas: Sequence[Area], passages: Sequence[Passage] = 
         if root is None:
             root = (frame.anchor_lon, frame.anchor_lat)
     else:
-        c = _crs(crs)
-        if c.is_geographic:
-            q = 1e-10
-        else:
-            q = 1e-6
+        c = crs
+        q = 1e-10 if crs_is_geographic(c) else 1e-6
 
         def to_ll(x, y):
             return to_wgs84_points(x, y, c)

@@ -1,0 +1,196 @@
+"""cad2osmag:loadosmag — open an osmAG file as styled AREAS and PASSAGES layers."""
+from qgis.core import (
+    QgsCoordinateReferenceSystem,
+    QgsCategorizedSymbolRenderer,
+    QgsFeature,
+    QgsFeatureSink,
+    QgsField,
+    QgsFields,
+    QgsFillSymbol,
+    QgsLineSymbol,
+    QgsPalLayerSettings,
+    QgsProcessing,
+    QgsProcessingException,
+    QgsProcessingLayerPostProcessorInterface,
+    QgsProcessingOutputNumber,
+    QgsProcessingOutputString,
+    QgsProcessingParameterCrs,
+    QgsProcessingParameterFeatureSink,
+    QgsProcessingParameterFile,
+    QgsRendererCategory,
+    QgsTextFormat,
+    QgsVectorLayerSimpleLabeling,
+    QgsWkbTypes,
+)
+from qgis.PyQt.QtCore import QVariant
+from qgis.PyQt.QtGui import QColor
+
+from .alg_georeference import qgs_crs_to_pyproj
+from .base import Cad2OsmagAlgorithm, to_qgs
+
+AREA_COLOURS = {  # osmAG:areatype -> (fill RGBA, outline)
+    "room": ("255,235,160,180", "120,100,40"),
+    "corridor": ("170,210,250,180", "60,100,150"),
+    "stairs": ("250,170,90,200", "150,80,20"),
+    "elevator": ("200,150,230,200", "110,60,140"),
+    "structure": ("0,0,0,0", "90,90,90"),
+}
+FIRST_KEYS = ["osmAG:type", "osmAG:areatype", "name", "level", "height", "indoor", "osmAG:parent",
+              "osmAG:from", "osmAG:to"]
+
+
+def _labels(layer, size=9.0, colour="30,30,30"):
+    settings = QgsPalLayerSettings()
+    settings.fieldName = "name"
+    settings.enabled = True
+    fmt = QgsTextFormat()
+    fmt.setSize(size)
+    fmt.setColor(QColor(*[int(c) for c in colour.split(",")]))
+    settings.setFormat(fmt)
+    layer.setLabeling(QgsVectorLayerSimpleLabeling(settings))
+    layer.setLabelsEnabled(True)
+
+
+def apply_osmag_style(layer, kind):
+    """Style a layer made by loadosmag: ``kind`` 'areas' (categorized by osmAG:areatype, labels on
+    name) or 'passages' (bold red lines, labels on name). Works on QGIS 3.22+."""
+    if kind == "areas":
+        cats = []
+        for value, (fill, outline) in AREA_COLOURS.items():
+            if value == "structure":
+                sym = QgsFillSymbol.createSimple({"style": "no", "outline_color": outline, "outline_width": "0.8",
+                                                  "outline_style": "dash"})
+            else:
+                sym = QgsFillSymbol.createSimple({"color": fill, "outline_color": outline, "outline_width": "0.3"})
+            cats.append(QgsRendererCategory(value, sym, value))
+        other = QgsFillSymbol.createSimple({"color": "220,220,220,160", "outline_color": "100,100,100"})
+        cats.append(QgsRendererCategory("", other, "other"))  # "" = all other values
+        layer.setRenderer(QgsCategorizedSymbolRenderer("osmAG:areatype", cats))
+        _labels(layer)
+    else:
+        sym = QgsLineSymbol.createSimple({"color": "220,20,20", "width": "1.2", "capstyle": "round"})
+        from qgis.core import QgsSingleSymbolRenderer
+
+        layer.setRenderer(QgsSingleSymbolRenderer(sym))
+        _labels(layer, 8.0, "160,0,0")
+    layer.triggerRepaint()
+
+
+class OsmagStyler(QgsProcessingLayerPostProcessorInterface):
+    def __init__(self, kind):
+        super().__init__()
+        self.kind = kind
+
+    def postProcessLayer(self, layer, context, feedback):  # noqa: N802
+        if layer is not None and layer.isValid():
+            apply_osmag_style(layer, self.kind)
+
+
+def _keys(objs):
+    keys = []
+    for o in objs:
+        for k in o.tags:
+            if k not in keys:
+                keys.append(k)
+    first = [k for k in FIRST_KEYS if k in keys]
+    return first + sorted(k for k in keys if k not in first)
+
+
+class LoadOsmagAlgorithm(Cad2OsmagAlgorithm):
+    NAME = "loadosmag"
+    DISPLAY_NAME = "Load osmAG (.osm)"
+    GROUP = "Tools"
+    GROUP_ID = "tools"
+    HELP = ("Opens an osmAG file (semantic or fix-id variant; written by this plugin, JOSM or other osmAG "
+            "tools) as an AREAS polygon layer and a PASSAGES line layer with every tag as a field (plus osm_id, "
+            "and from_id / to_id resolving each passage's areas to their way ids). Areas are coloured by "
+            "osmAG:areatype, passages drawn as bold red lines, both labelled with their name. Dangling "
+            "references (missing nodes, passages naming unknown areas) and unclosed area ways are reported and "
+            "skipped. A file without any osmAG area is rejected.")
+
+    INPUT = "INPUT"
+    TARGET_CRS = "TARGET_CRS"
+    OUTPUT_AREAS = "OUTPUT_AREAS"
+    OUTPUT_PASSAGES = "OUTPUT_PASSAGES"
+
+    def initAlgorithm(self, config=None):  # noqa: N802
+        self.addParameter(QgsProcessingParameterFile(self.INPUT, self.tr("osmAG file"), extension="osm"))
+        self.addParameter(QgsProcessingParameterCrs(self.TARGET_CRS, self.tr("Output CRS"), "EPSG:4326", optional=True))
+        self.addParameter(QgsProcessingParameterFeatureSink(
+            self.OUTPUT_AREAS, self.tr("osmAG areas"), QgsProcessing.TypeVectorPolygon))
+        self.addParameter(QgsProcessingParameterFeatureSink(
+            self.OUTPUT_PASSAGES, self.tr("osmAG passages"), QgsProcessing.TypeVectorLine))
+        for name, label in (("AREA_COUNT", "Areas loaded"), ("PASSAGE_COUNT", "Passages loaded"),
+                            ("UNCLOSED", "Unclosed area ways (skipped)"),
+                            ("DANGLING", "Dangling references (skipped)"),
+                            ("ROOT_LON", "Root node longitude"), ("ROOT_LAT", "Root node latitude")):
+            self.addOutput(QgsProcessingOutputNumber(name, self.tr(label)))
+        self.addOutput(QgsProcessingOutputString("VARIANT", self.tr("Variant detected")))
+
+    def processAlgorithm(self, parameters, context, feedback):  # noqa: N802
+        from ..algorithms.georef import transform_geometry
+        from ..algorithms.osmag import read_osmag
+
+        path = self.parameterAsFile(parameters, self.INPUT, context)
+        tcrs = self.parameterAsCrs(parameters, self.TARGET_CRS, context)
+        if not tcrs.isValid():  # not given (qgis_process does not apply CRS defaults): WGS84
+            tcrs = QgsCoordinateReferenceSystem("EPSG:4326")
+        areas, passages, root, report = self.call(feedback, read_osmag, path)
+        target = qgs_crs_to_pyproj(tcrs)
+        convert = tcrs.authid() != "EPSG:4326"
+        try:
+            agoms = [transform_geometry(a.polygon, "EPSG:4326", target) if convert else a.polygon for a in areas]
+            pgoms = [transform_geometry(p.line, "EPSG:4326", target) if convert else p.line for p in passages]
+        except Exception as exc:
+            raise QgsProcessingException(self.tr("cannot convert to {}: {}").format(tcrs.authid(), exc))
+        # everything computed: create the outputs
+        akeys = _keys(areas)
+        afields = QgsFields()
+        afields.append(QgsField("osm_id", QVariant.LongLong))
+        for k in akeys:
+            afields.append(QgsField(k, QVariant.String))
+        pkeys = _keys(passages)
+        pfields = QgsFields()
+        for n in ("osm_id", "from_id", "to_id"):
+            pfields.append(QgsField(n, QVariant.LongLong))
+        for k in pkeys:
+            pfields.append(QgsField(k, QVariant.String))
+        sink, adest = self.parameterAsSink(parameters, self.OUTPUT_AREAS, context, afields, QgsWkbTypes.Polygon,
+                                           tcrs)
+        for a, g in zip(areas, agoms):
+            f = QgsFeature(afields)
+            f.setGeometry(to_qgs(g))
+            f["osm_id"] = int(a.id)
+            for k in akeys:
+                if k in a.tags:
+                    f[k] = a.tags[k]
+            sink.addFeature(f, QgsFeatureSink.FastInsert)
+        psink, pdest = self.parameterAsSink(parameters, self.OUTPUT_PASSAGES, context, pfields,
+                                            QgsWkbTypes.LineString, tcrs)
+        for p, g in zip(passages, pgoms):
+            f = QgsFeature(pfields)
+            f.setGeometry(to_qgs(g))
+            f["osm_id"] = int(p.id)
+            f["from_id"] = int(p.from_id)
+            f["to_id"] = int(p.to_id)
+            for k in pkeys:
+                if k in p.tags:
+                    f[k] = p.tags[k]
+            psink.addFeature(f, QgsFeatureSink.FastInsert)
+        dangling = len(report["dangling_nodes"]) + len(report["dangling_refs"])
+        if report["unclosed"]:
+            feedback.pushWarning(self.tr("unclosed area ways (skipped): {}").format(report["unclosed"]))
+        if dangling:
+            feedback.pushWarning(self.tr("dangling references (skipped): nodes {} refs {}").format(
+                report["dangling_nodes"], report["dangling_refs"]))
+        # style the layers when they are loaded into the project (GUI runs)
+        self._stylers = []
+        for dest, kind in ((adest, "areas"), (pdest, "passages")):
+            if context.willLoadLayerOnCompletion(dest):
+                styler = OsmagStyler(kind)
+                self._stylers.append(styler)  # keep a reference: QGIS does not own Python post-processors
+                context.layerToLoadOnCompletionDetails(dest).setPostProcessor(styler)
+        return {self.OUTPUT_AREAS: adest, self.OUTPUT_PASSAGES: pdest, "AREA_COUNT": len(areas),
+                "PASSAGE_COUNT": len(passages), "UNCLOSED": len(report["unclosed"]), "DANGLING": dangling,
+                "ROOT_LON": root[0] if root else None, "ROOT_LAT": root[1] if root else None,
+                "VARIANT": report["variant"]}
