@@ -17,7 +17,7 @@ def run_alg(alg, params, timeout=600, check=True):
     for key, value in params.items():
         for v in (value if isinstance(value, (list, tuple)) else [value]):
             args.append(f"{key}={v}")
-    proc = subprocess.run(args, capture_output=True, text=True, timeout=timeout)
+    proc = subprocess.run(args, capture_output=True, text=True, timeout=timeout, stdin=subprocess.DEVNULL)
     output = proc.stdout + proc.stderr
     results = None
     start = proc.stdout.find("{")
