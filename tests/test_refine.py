@@ -193,3 +193,65 @@ def test_thin_wall_fallback_keeps_polygons_valid():
     assert p1.is_valid and p2.is_valid
     assert p1.intersection(p2).area < 1e-9
     assert stats["max_deviation_m"] <= 1.2 * RES + 1e-9
+
+
+# ----------------------------------------------------------------------------- real data
+@pytest.fixture(scope="module")
+def sist_graph(shared_data):
+    from algorithms.cad_import import import_dxf
+    from algorithms.rasterize import rasterize
+    from algorithms.segmentation import segment
+
+    drawing = import_dxf(str(shared_data / "dxf" / "sist" / "SIST-F5.dxf"))
+    return segment(rasterize(drawing.geometries))
+
+
+@pytest.mark.slow
+def test_sist_floor_refine_and_export(sist_graph, tmp_path):
+    import subprocess
+    import time
+
+    from osgeo import gdal, ogr
+
+    from algorithms.georef import LocalFrame
+    from algorithms.osmag import read_osmag, write_osmag
+
+    g = sist_graph
+    res = g.grid.resolution
+    t0 = time.perf_counter()
+    out, st = refine(g, res)
+    path = tmp_path / "sist5.osm"
+    written = write_osmag(str(path), out.areas, out.passages, frame=LocalFrame(121.5906, 31.179), level="5")
+    wall = time.perf_counter() - t0
+    assert wall < 3.0  # target 1 s on an idle machine (the benchmark reports it); shared CPUs here
+    assert st["vertex_reduction"] >= 0.85
+    assert st["max_deviation_dp_m"] <= 1.2 * res + 1e-9
+    # measured independently on the areas that were not merged
+    src = g.area_by_id()
+    merged_targets = set(st["merged_into"].values())
+    devs = [shapely.hausdorff_distance(src[a.id].polygon.boundary, a.polygon.boundary, densify=0.25)
+            for a in out.areas if a.id not in merged_targets]
+    assert max(devs) <= st["max_deviation_m"] + 1e-9
+    polys = [a.polygon for a in out.areas]
+    assert all(p.is_valid for p in polys)
+    assert shapely.union_all(polys).area == pytest.approx(sum(p.area for p in polys), abs=1e-6)
+    amap = out.area_by_id()
+    for p in out.passages:
+        for aid in (p.from_id, p.to_id):
+            verts = {tuple(c) for c in amap[aid].polygon.exterior.coords}
+            assert all(tuple(c) in verts for c in p.line.coords), (p.id, aid)
+    # real clients
+    r = subprocess.run(["osmium", "fileinfo", "-e", str(path)], capture_output=True, text=True, timeout=60)
+    assert r.returncode == 0 and f"Number of ways: {len(out.areas) + len(out.passages)}" in r.stdout
+    gdal.SetConfigOption("OSM_USE_CUSTOM_INDEXING", "NO")
+    try:
+        ds = ogr.Open(str(path))
+        polys_gdal = [f for f in ds.GetLayerByName("multipolygons")]
+        assert len(polys_gdal) == len(out.areas)
+        assert all('"osmAG:type"=>"area"' in f.GetField("other_tags") for f in polys_gdal)
+        ds = None
+    finally:
+        gdal.SetConfigOption("OSM_USE_CUSTOM_INDEXING", None)
+    areas, passages, root, rep = read_osmag(str(path))
+    assert len(areas) == len(out.areas) and len(passages) == len(out.passages) == written["passages"]
+    assert not rep["unclosed"] and not rep["dangling_refs"] and not rep["dangling_nodes"]
