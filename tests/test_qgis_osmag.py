@@ -131,6 +131,30 @@ def test_refine_georeference_export_load_headless(refined_layers, tmp_path):
     pf, _ = read_gpkg(lres["OUTPUT_PASSAGES"])
     ids = {f[0]["osm_id"] for f in lf}
     assert all(f[0]["from_id"] in ids and f[0]["to_id"] in ids and f[0]["osmAG:type"] == "passage" for f in pf)
+    # round trip: export the loaded layers again -> same areas, passages, tags and coordinates (<= 1 mm)
+    osm3 = tmp_path / "again.osm"
+    run_alg("exportosmag", {"AREAS": lres["OUTPUT_AREAS"], "PASSAGES": lres["OUTPUT_PASSAGES"], "LEVEL": "2",
+                            "ANCHOR_LON": lres["ROOT_LON"], "ANCHOR_LAT": lres["ROOT_LAT"], "OUTPUT": str(osm3)},
+            timeout=120)
+    a3, p3, root3, _ = read_osmag(str(osm3))
+    assert root3 == pytest.approx(root, abs=1e-10)
+    m1 = {x.name: x for x in a}
+    assert {x.name for x in a3} == set(m1)
+    for x in a3:
+        assert x.tags == m1[x.name].tags
+        c1, c3 = np.asarray(m1[x.name].polygon.exterior.coords), np.asarray(x.polygon.exterior.coords)
+        assert c1.shape == c3.shape
+        assert np.max(geodesic_distance(c1[:, 0], c1[:, 1], c3[:, 0], c3[:, 1])) <= 1e-3
+    q1 = {x.name: (x.tags, np.asarray(x.line.coords)) for x in p}
+    assert {x.name for x in p3} == set(q1)
+    for x in p3:
+        assert x.tags == q1[x.name][0] and np.abs(np.asarray(x.line.coords) - q1[x.name][1]).max() < 1e-8
+    # loading into a projected CRS
+    _, ures, _ = run_alg("loadosmag", {"INPUT": str(osm), "TARGET_CRS": "EPSG:32651",
+                                       "OUTPUT_AREAS": str(tmp_path / "utm_a.gpkg"),
+                                       "OUTPUT_PASSAGES": str(tmp_path / "utm_p.gpkg")}, timeout=120)
+    uf, code = read_gpkg(ures["OUTPUT_AREAS"])
+    assert code == "32651" and "POLYGON ((36" in uf[0][1]
 
 
 @pytest.mark.qgis_process
@@ -182,6 +206,10 @@ def test_bad_input_headless(cad_layers, tmp_path):
     code, _, log = run_alg("refine", {"AREAS": areas, "PASSAGES": bad_p, "RESOLUTION": RES,
                                       "OUTPUT_AREAS": str(tmp_path / "r.gpkg")}, timeout=120, check=False)
     assert code != 0 and "41 (1->99)" in log and not (tmp_path / "r.gpkg").exists()
+    # an anchor outside valid lat/lon
+    code, _, log = run_alg("georeference", {"AREAS": areas, "MODE": 0, "ANCHOR": "31.18,121.59 [EPSG:4326]",
+                                            "OUTPUT_AREAS": str(tmp_path / "g.gpkg")}, timeout=120, check=False)
+    assert code != 0 and "latitude 121.59" in log and not (tmp_path / "g.gpkg").exists()
     # a plain OSM file is not osmAG
     code, _, log = run_alg("loadosmag", {"INPUT": str(DATA / "not_osmag.osm"),
                                          "OUTPUT_AREAS": str(tmp_path / "l.gpkg"),
@@ -251,3 +279,31 @@ def test_load_styles(qgis_app, qgis_new_project):
     assert isinstance(pr, QgsSingleSymbolRenderer)
     assert pr.symbol().width() >= 1.0 and pr.symbol().color().red() > 200 and pr.symbol().color().green() < 50
     assert passages.labelsEnabled()
+
+
+def test_gdal_osm_driver_in_qgis(qgis_app, qgis_new_project, tmp_path):
+    """QgsVectorLayer(path|layername=multipolygons) opens what we write and sees every area with its tags."""
+    from osgeo import gdal
+    from qgis.core import QgsVectorLayer
+
+    from algorithms.osmag import write_osmag
+    from algorithms.refine import refine
+
+    g = graph_from_labels(synthetic_labels(), 0.0, 20.0, RES, types={3: "corridor"})
+    out, _ = refine(g, RES)
+    path = tmp_path / "f.osm"
+    write_osmag(str(path), out.areas, out.passages, frame=LocalFrame(121.5906, 31.179), level="1")
+    # new objects carry negative ids (JOSM convention); GDAL's default node index rejects them
+    gdal.SetConfigOption("OSM_USE_CUSTOM_INDEXING", "NO")
+    try:
+        lyr = QgsVectorLayer(f"{path}|layername=multipolygons", "m", "ogr")
+        assert lyr.isValid()
+        feats = list(lyr.getFeatures())
+        assert len(feats) == len(out.areas)
+        for f in feats:
+            assert f.geometry().area() > 0 and f["name"].startswith("L1-A")
+            assert '"osmAG:areatype"=>' in f["other_tags"] and '"indoor"=>' in f["other_tags"]
+        lines = QgsVectorLayer(f"{path}|layername=lines", "l", "ogr")
+        assert len(list(lines.getFeatures())) == len(out.passages)
+    finally:
+        gdal.SetConfigOption("OSM_USE_CUSTOM_INDEXING", None)
