@@ -15,6 +15,7 @@ from shapely.geometry import Polygon
 from shapely.ops import unary_union
 
 from . import cad_import, osmag, rasterize, refine, segmentation
+from .area_types import classify_vertical_areas
 from .georef import LocalFrame
 from .model import Area, AreaGraph, CadDrawing, OccupancyGrid
 from .progress import ensure
@@ -35,20 +36,22 @@ class FloorResult:
 
 
 def floor_outline(areas: Sequence[Area], wall_gap: float = 0.8) -> Optional[Polygon]:
-    """The floor's outline: the union of its areas with the walls between them closed (gaps up to
-    ``wall_gap`` metres), without holes. Every area lies strictly inside it, so it can be their
-    ``osmAG:parent`` structure area."""
+    """The floor's outline: one polygon without holes that contains every area, made of the union of
+    the areas with the walls between them closed (gaps up to ``wall_gap`` metres; doubled until the
+    floor is one piece, up to 8 m, else the convex hull). It is the ``osmAG:parent`` of the areas."""
     polys = [a.polygon for a in areas if a.polygon is not None and not a.polygon.is_empty]
     if not polys:
         return None
-    half = wall_gap / 2.0
-    merged = unary_union([p.buffer(half, join_style=2) for p in polys]).buffer(-half * 0.5, join_style=2)
-    parts = list(getattr(merged, "geoms", [merged]))
-    outline = Polygon(max(parts, key=lambda p: p.area).exterior)
-    for extra in parts:  # outlying parts (a detached wing) still have to contain their areas
-        if extra.area < outline.area:
-            outline = unary_union([outline, Polygon(extra.exterior)]).convex_hull if not outline.contains(extra) else outline
-    return outline
+    gap = wall_gap
+    while True:
+        half = gap / 2.0
+        merged = unary_union([p.buffer(half, join_style=2) for p in polys]).buffer(-half / 2.0, join_style=2)
+        merged = unary_union([merged] + polys)  # containment is exact, whatever the buffers rounded
+        if merged.geom_type == "Polygon":
+            return Polygon(merged.exterior)
+        if gap >= 8.0:
+            return Polygon(merged.convex_hull.exterior)
+        gap *= 2.0
 
 
 def process_floor(dxf_path: str, *, rules=None, layers=None, units=None, include_doors: bool = False,
@@ -74,6 +77,9 @@ def process_floor(dxf_path: str, *, rules=None, layers=None, units=None, include
                  extent=extent)
     seg = timed("segment", 35, 80, segmentation.segment, grid, door_width=door_width,
                 corridor_width=corridor_width, delta=delta, prune=prune)
+    vertical = classify_vertical_areas(seg.areas, drawing.geometries)
+    if vertical:
+        progress.info(f"{len(vertical)} stair/lift areas recognised from their symbols")
     refined, rstats = timed("refine", 80, 95, refine.refine, seg, grid.resolution, epsilon_px=epsilon_px,
                             min_area=min_area)
     outline = floor_outline(refined.areas)

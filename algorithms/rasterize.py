@@ -64,6 +64,7 @@ DEFAULT_PADDING = 0.03
 DEFAULT_PERCENTILES = (0.5, 99.5)
 DEFAULT_KERNEL = 5
 DEFAULT_MAX_PIXELS = 60e6
+DEFAULT_FREE_KINDS = ("stair", "elevator")  # symbols inside stair and lift areas, not obstacles
 DEFAULT_STROKE = 0.15  # metres: drawn width of a hairline
 SHIFT = 4  # cv2 sub-pixel bits
 _ONE = 1 << SHIFT
@@ -264,8 +265,13 @@ def repair(img: np.ndarray, kernel: int) -> np.ndarray:
 def rasterize(geometries: Sequence[CadGeometry], resolution: float = DEFAULT_RESOLUTION,
               padding: float = DEFAULT_PADDING, percentiles=DEFAULT_PERCENTILES, kernel: int = DEFAULT_KERNEL,
               extent: Optional[Sequence[float]] = None, max_pixels: float = DEFAULT_MAX_PIXELS,
-              stroke: float = DEFAULT_STROKE, progress=None) -> OccupancyGrid:
+              stroke: float = DEFAULT_STROKE, free_kinds: Sequence[str] = DEFAULT_FREE_KINDS,
+              progress=None) -> OccupancyGrid:
     """Rasterize geometries (metres) into an occupancy grid.
+
+    Geometries whose kind is in ``free_kinds`` (by default stair treads and lift symbols) count for
+    the extent but are not drawn: a stair run or a lift car is the area a robot's map needs, its
+    enclosure is drawn on wall layers. Pass ``free_kinds=()`` to draw them as obstacles.
 
     ``extent`` (xmin, ymin, xmax, ymax), when given, is used as is (no percentiles, no padding),
     snapped outward to the resolution: use it with ``common_extent`` for multi-floor sets.
@@ -289,7 +295,9 @@ def rasterize(geometries: Sequence[CadGeometry], resolution: float = DEFAULT_RES
     progress.step(5, f"raster {cols} x {rows} px at {resolution} m/px")
     img = np.zeros((rows, cols), dtype=np.uint8)
     hair = cv_thickness(stroke / resolution)
-    draw_geometries(img, geometries, ox, oy, resolution, hair, progress.sub(5, 70))
+    free_kinds = set(free_kinds or ())
+    draw_geometries(img, [g for g in geometries if g.kind not in free_kinds], ox, oy, resolution, hair,
+                    progress.sub(5, 70))
     progress.step(70, "closing gaps and removing specks")
     img = repair(img, int(kernel))
     progress.step(100)

@@ -1,6 +1,7 @@
 """cad2osmag:rasterize — structure lines -> occupancy GeoTIFF (0 free / 255 occupied)."""
 import numpy as np
 from qgis.core import (
+    QgsProcessingParameterBoolean,
     QgsCoordinateReferenceSystem,
     QgsCoordinateTransform,
     QgsProcessing,
@@ -145,6 +146,8 @@ class RasterizeAlgorithm(Cad2OsmagAlgorithm):
             self.ALIGN_FLOORS, self.tr("Register the floors (translation) before building the common grid"),
             options=[self.tr("automatic (only when the floors do not overlap)"), self.tr("yes"), self.tr("no")],
             defaultValue=0))
+        self.addParameter(QgsProcessingParameterBoolean(
+            "STAIRS_AS_OBSTACLES", self.tr("Draw stair and lift symbols as obstacles"), False))
         self.addParameter(QgsProcessingParameterRasterDestination(self.OCCUPANCY, self.tr("Occupancy raster")))
         self.addOutput(QgsProcessingOutputNumber("WIDTH", self.tr("Raster width (pixels)")))
         self.addOutput(QgsProcessingOutputNumber("HEIGHT", self.tr("Raster height (pixels)")))
@@ -200,7 +203,9 @@ class RasterizeAlgorithm(Cad2OsmagAlgorithm):
                                               "layer").format(*offset))
                 extent = ras.floor_extent(common, offset)
         grid = self.call(feedback, ras.rasterize, geoms, resolution=res, padding=padding, percentiles=pct,
-                         kernel=kernel, extent=extent, max_pixels=max_px, stroke=stroke)
+                         kernel=kernel, extent=extent, max_pixels=max_px, stroke=stroke,
+                         free_kinds=() if self.parameterAsBool(parameters, "STAIRS_AS_OBSTACLES", context)
+                         else ras.DEFAULT_FREE_KINDS)
         out = self.parameterAsOutputLayer(parameters, self.OCCUPANCY, context)
         wkt = crs.toWkt(QgsCoordinateReferenceSystem.WKT_PREFERRED_GDAL) if crs.isValid() else ""
         try:

@@ -75,8 +75,9 @@ def test_sample_building_rooms_and_doors(sample_floor):
 
     for grid, ag, gt in sample_floor:
         feats = gt["features"]
-        rooms = [f for f in feats if f["properties"]["kind"] == "room"
-                 and f["properties"]["areatype"] in ("room", "corridor")]
+        # every ground-truth space, stair core and lift shaft included (their symbols are not obstacles)
+        rooms = [f for f in feats if f["properties"]["kind"] == "room"]
+        assert {"stairs", "elevator", "corridor", "room"} <= {f["properties"]["areatype"] for f in rooms}
         area_of = {}
         for f in rooms:
             g = shape(f["geometry"])
