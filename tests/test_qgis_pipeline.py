@@ -1,0 +1,74 @@
+"""The whole-pipeline algorithms headless (qgis_process): dxftoosmag and mergefloors, and make demo."""
+import subprocess
+
+import pytest
+from pyproj import Transformer
+
+from algorithms import osmag
+from algorithms.sample_building import generate_building
+
+from .conftest import REPO
+from .qgis_process import run_alg
+
+ANCHOR = (121.5906, 31.1790)
+
+
+@pytest.fixture(scope="module")
+def sample(tmp_path_factory):
+    return generate_building(str(tmp_path_factory.mktemp("sample")), floors=2, seed=1)
+
+
+@pytest.mark.qgis_process
+def test_dxftoosmag_and_mergefloors_headless(sample, tmp_path):
+    # the anchor picked on a web-mercator basemap: the algorithm converts it to WGS84
+    x, y = Transformer.from_crs("EPSG:4326", "EPSG:3857", always_xy=True).transform(*ANCHOR)
+    files = []
+    for k, dxf in enumerate(sample["dxf"], 1):
+        out = tmp_path / f"floor-{k}.osm"
+        params = {"INPUT": dxf, "OUTPUT": str(out), "LEVEL": k, "ANCHOR": f"{x},{y} [EPSG:3857]", "ROTATION": 30}
+        if k == 1:
+            params["PREVIEW"] = str(tmp_path / "preview.png")
+        _, res, log = run_alg("dxftoosmag", params)
+        assert res["AREA_COUNT"] >= 15 and res["PASSAGE_COUNT"] >= 15
+        assert "Stage times" in log
+        areas, passages, root, report = osmag.read_osmag(str(out))
+        assert root == pytest.approx(ANCHOR, abs=1e-8)
+        assert len([a for a in areas if a.type != "structure"]) == res["AREA_COUNT"]
+        assert {"stairs", "elevator", "corridor", "room", "structure"} == {a.type for a in areas}
+        files.append(str(out))
+    assert (tmp_path / "preview.png").stat().st_size > 10000
+    _, res, _ = run_alg("mergefloors", {"FLOORS": files, "NAME": "Block B", "OUTPUT": str(tmp_path / "b.osm")})
+    assert res["FLOOR_COUNT"] == 2
+    areas, _, _, report = osmag.read_osmag(str(tmp_path / "b.osm"))
+    assert [a.tags["level"] for a in areas if a.name == "Block B"] == ["1;2"]
+    assert report["dangling_refs"] == []
+
+
+@pytest.mark.qgis_process
+def test_dxftoosmag_bad_input_writes_nothing(tmp_path):
+    bad = tmp_path / "broken.dxf"
+    bad.write_bytes(b"\x00\x01 definitely not DXF")
+    out = tmp_path / "out.osm"
+    code, _, log = run_alg("dxftoosmag", {"INPUT": str(bad), "OUTPUT": str(out)}, check=False)
+    assert code != 0 and "broken.dxf" in log
+    assert not out.exists()
+
+
+@pytest.mark.slow
+@pytest.mark.qgis_process
+def test_make_demo_writes_building_and_preview():
+    proc = subprocess.run(["bash", str(REPO / "scripts" / "demo.sh")], capture_output=True, text=True,
+                          timeout=900, stdin=subprocess.DEVNULL)
+    assert proc.returncode == 0, proc.stdout[-3000:] + proc.stderr[-3000:]
+    demo = REPO / "out" / "demo"
+    assert "Results in" in proc.stdout
+    areas, passages, root, report = osmag.read_osmag(str(demo / "building.osm"))
+    levels = {a.tags.get("level") for a in areas}
+    assert {"1", "2", "3"} <= levels
+    assert len(areas) > 50 and len(passages) > 45 and report["dangling_refs"] == []
+    import cv2
+
+    img = cv2.imread(str(demo / "preview.png"))
+    assert img is not None and img.shape[1] > 500
+    for name in ("layers.csv", "walls.gpkg", "occupancy.tif", "areas.gpkg", "refined_areas.gpkg", "floor-1.osm"):
+        assert (demo / "stages" / name).exists(), name
