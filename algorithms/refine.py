@@ -82,6 +82,24 @@ def validate_graph(areas: Sequence[Area], passages: Sequence[Passage]) -> None:
                          "delete these passages or add the areas they connect")
 
 
+def _overlapping_pairs(arr, valid, resolution: float):
+    """Index pairs (i, j, overlap m²) of valid polygons whose interiors overlap by more than a sliver
+    (including duplicates and polygons lying inside others)."""
+    import shapely
+
+    tree = shapely.STRtree(arr)
+    o1, o2 = tree.query(arr, predicate="overlaps")
+    c1, c2 = tree.query(arr, predicate="contains")  # also catches duplicates and areas inside areas
+    i1 = np.concatenate([o1, np.minimum(c1, c2)])
+    i2 = np.concatenate([o2, np.maximum(c1, c2)])
+    keep = (i1 < i2) & valid[i1] & valid[i2]
+    pairs = sorted(set(zip(i1[keep].tolist(), i2[keep].tolist())))
+    if not pairs:
+        return []
+    a = shapely.area(shapely.intersection(arr[[x for x, _ in pairs]], arr[[y for _, y in pairs]]))
+    return [(x, y, float(v)) for (x, y), v in zip(pairs, a.tolist()) if v > (resolution ** 2) * 0.01]
+
+
 # =========================================================================== 1. small areas
 def merge_small_areas(areas: List[Area], passages: List[Passage], min_area: float,
                       keep_types=KEEP_TYPES, progress=None):
@@ -378,10 +396,11 @@ def refine(graph: AreaGraph, resolution: float, epsilon_px: float = EPSILON_PX,
     einv, lens, left, right, eu, ev, bad = _edge_tables(part)
     if len(bad):
         e = bad[0]
-        fa = sorted({int(x) for x in (left[e], right[e]) if x >= 0})
-        raise InputError(f"areas overlap near ({part.V[eu[e], 0]:.3f}, {part.V[eu[e], 1]:.3f}) "
-                         f"(areas {', '.join(str(areas[f].id) for f in fa)} and another); "
-                         "areas of a partition must not overlap")
+        faces = np.repeat(part.ring_face, lens)[einv == e]
+        ids = sorted({areas[int(f)].id for f in faces})
+        raise InputError(f"areas overlap: {' and '.join(str(i) for i in ids)} share the same side of the edge at "
+                         f"({part.V[eu[e], 0]:.3f}, {part.V[eu[e], 1]:.3f}); the areas of a floor must not overlap "
+                         "(fix them, or run segmentation again)")
     nv = len(part.V)
     deg = np.bincount(np.concatenate([eu, ev]), minlength=nv)
     nf = len(areas) + 1
@@ -492,13 +511,11 @@ def refine(graph: AreaGraph, resolution: float, epsilon_px: float = EPSILON_PX,
         valid = np.zeros(len(polys), bool)
         valid[ok] = shapely.is_valid(arr[ok])
         offenders = {fi for fi in range(len(polys)) if not valid[fi] and areas[fi].id not in input_invalid}
+        overlapping = []
         if ok.all():
-            tree = shapely.STRtree(arr)
-            i1, i2 = tree.query(arr, predicate="overlaps")
-            for x, y in zip(i1.tolist(), i2.tolist()):
-                if x != y and valid[x] and valid[y]:
-                    if shapely.area(shapely.intersection(arr[x], arr[y])) > (q * q):
-                        offenders.update((x, y))
+            overlapping = _overlapping_pairs(arr, valid, resolution)
+            for x, y, _ in overlapping:
+                offenders.update((x, y))
         if not offenders:
             break
         next_todo = set()
@@ -515,6 +532,14 @@ def refine(graph: AreaGraph, resolution: float, epsilon_px: float = EPSILON_PX,
         dirty = set()
         for aid in todo.tolist():
             dirty |= arc_faces[aid]
+    if overlapping:
+        # still overlapping with the unsimplified borders: the input areas overlap
+        pairs = ", ".join(f"{areas[x].id} and {areas[y].id} ({a:.3f} m²)" for x, y, a in overlapping[:5])
+        raise InputError(f"areas overlap: {pairs}{' ...' if len(overlapping) > 5 else ''}; the areas of a floor "
+                         "must not overlap (fix them, or run segmentation again)")
+    if offenders:
+        progress.warning(f"areas {sorted(areas[fi].id for fi in offenders)} stay invalid or overlapping after "
+                         "refinement even without simplification; check their input geometry")
     still_bad = [areas[fi].id for fi in range(len(polys)) if polys[fi] is None]
     if still_bad:
         raise InputError(f"areas {still_bad} collapsed during refinement; check their geometry")
