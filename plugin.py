@@ -23,6 +23,17 @@ def add_local_venv_to_path():
         sys.path.append(venv_lib)
 
 
+def let_gdal_read_negative_osm_ids():
+    """osmAG files use negative ids (new objects, JOSM convention). GDAL's OSM driver refuses them
+    with its default custom indexing; without it, QGIS opens them like any OSM file."""
+    try:
+        from osgeo import gdal
+    except ImportError:  # pragma: no cover - GDAL always ships with QGIS
+        return
+    if gdal.GetConfigOption("OSM_USE_CUSTOM_INDEXING") is None:
+        gdal.SetConfigOption("OSM_USE_CUSTOM_INDEXING", "NO")
+
+
 class Cad2OsmagPlugin:
     def __init__(self, iface):
         self.iface = iface
@@ -30,6 +41,7 @@ class Cad2OsmagPlugin:
         self.actions = []
         self.translator = None
         add_local_venv_to_path()
+        let_gdal_read_negative_osm_ids()
         self._install_translator()
 
     def _install_translator(self):

@@ -61,6 +61,28 @@ def test_plugin_loads_and_unloads(qgis_iface, qgis_app):
     assert plugin.actions == []
 
 
+def test_qgis_opens_osmag_polygons_once_the_plugin_is_loaded(qgis_iface, qgis_app, tmp_path):
+    from osgeo import gdal
+    from qgis.core import QgsVectorLayer
+    from shapely.geometry import LineString, box
+
+    from algorithms.georef import LocalFrame
+    from algorithms.model import Area, Passage
+    from algorithms.osmag import write_osmag
+
+    gdal.SetConfigOption("OSM_USE_CUSTOM_INDEXING", None)
+    _plugin_module().classFactory(qgis_iface)
+    assert gdal.GetConfigOption("OSM_USE_CUSTOM_INDEXING") == "NO"
+    path = tmp_path / "two_rooms.osm"
+    areas = [Area(1, box(0, 0, 5, 4), name="Office 1"), Area(2, box(5, 0, 9, 4), type="corridor", name="Hall")]
+    write_osmag(str(path), areas, [Passage(1, 1, 2, LineString([(5, 1), (5, 2)]))], frame=LocalFrame(121.5, 31.2))
+    layer = QgsVectorLayer(f"{path}|layername=multipolygons", "areas", "ogr")
+    assert layer.isValid()
+    feats = list(layer.getFeatures())
+    assert sorted(f["name"] for f in feats) == ["Hall", "Office 1"]
+    assert all(f.geometry().area() > 0 for f in feats)
+
+
 @pytest.mark.qgis_process
 def test_qgis_process_lists_provider_algorithms():
     out = subprocess.run([str(REPO / "scripts" / "qgis-process"), "list"], capture_output=True, text=True,
