@@ -171,7 +171,7 @@ def test_bad_input_names_features():
     with pytest.raises(InputError, match="areas overlap: 1 and 2"):
         refine(AreaGraph([Area(1, ok), Area(2, Polygon([(0, 0), (5, 0), (5, 5), (0, 5)]))], []), RES)
     with pytest.raises(InputError, match="areas overlap: 1 and 3"):
-        refine(AreaGraph([Area(1, ok), Area(3, Polygon([(1, 1), (2, 1), (2, 2), (1, 2)]))], []), RES)
+        refine(AreaGraph([Area(1, ok), Area(3, Polygon([(1, 1), (2, 1), (2, 2), (1, 2)]))], []), RES, min_area=0.5)
     over = Polygon([(4, 0), (9, 0), (9, 5), (4, 5)])
     with pytest.raises(InputError, match=r"areas overlap: 1 and 8 \(5.000 m²\)"):
         refine(AreaGraph([Area(1, ok), Area(8, over)], []), RES)
