@@ -173,7 +173,7 @@ def test_bad_input_names_features():
     with pytest.raises(InputError, match="areas overlap: 1 and 3"):
         refine(AreaGraph([Area(1, ok), Area(3, Polygon([(1, 1), (2, 1), (2, 2), (1, 2)]))], []), RES, min_area=0.5)
     over = Polygon([(4, 0), (9, 0), (9, 5), (4, 5)])
-    with pytest.raises(InputError, match=r"areas overlap: 1 and 8 \(5.000 m²\)"):
+    with pytest.raises(InputError, match=r"areas overlap: 1 and 8"):
         refine(AreaGraph([Area(1, ok), Area(8, over)], []), RES)
 
 
