@@ -1,7 +1,8 @@
 """osmAG export and import (pipeline stage 7), see ../shared/docs/osmag-format.md.
 
 Writing (:func:`write_osmag`)
-- ``<osm version="0.6" generator="cad2osmag">``; new objects carry negative ids (JOSM convention),
+- ``<osm version="0.6" generator="cad2osmag">``; new objects carry negative ids and
+  ``action="modify" visible="true"`` (how JOSM writes new objects; older osmAG parsers require them),
   unique per element type: node -1 is the root node, then the area/passage nodes; ways -1.. are the
   structure areas, the areas, then the passages.
 - One ``name=root`` node at the frame's anchor (or at ``root=(lon, lat)``).
@@ -9,7 +10,8 @@ Writing (:func:`write_osmag`)
   the same position (and vertices lying on a neighbour's edge, which are inserted there) become one
   node, so a passage's two nodes are nodes of both areas it joins. Holes (pillars) cannot be expressed
   by a single closed way: they are left out and counted in the returned stats (``holes_dropped``).
-- Area tags: ``osmAG:type=area``, ``osmAG:areatype``, ``indoor=room`` (``corridor`` for corridors),
+- Area tags: ``osmAG:type=area``, ``osmAG:areatype`` (repeated as ``osmAG:areaType``, the key the
+  published osmAG parsers and the paper use), ``indoor=room`` (``corridor`` for corridors),
   ``level``, ``height``, ``name`` (the area's name, else a stable generated id ``L<level>-A<id>``,
   structure areas ``L<level>-S<id>``; duplicate names get the generated id appended so names stay
   unique), ``osmAG:parent`` (the smallest structure area containing the area, or the one named in the
@@ -236,11 +238,12 @@ def write_osmag(path: str, areas: Sequence[Area], passages: Sequence[Passage] = 
     hstr = _fmt_num(float(height))
     lines: List[str] = ['<?xml version="1.0" encoding="UTF-8"?>',
                         f'<osm version="0.6" generator="{GENERATOR}">']
-    lines.append(f'  <node id="-1" lat="{root[1]:.10f}" lon="{root[0]:.10f}">')
+    new = 'action="modify" visible="true"'  # how JOSM writes new objects; older osmAG parsers need both
+    lines.append(f'  <node id="-1" {new} lat="{root[1]:.10f}" lon="{root[0]:.10f}">')
     lines.append('    <tag k="name" v="root"/>')
     lines.append('  </node>')
     for i in order.tolist():
-        lines.append(f'  <node id="{node_id[i]}" lat="{lat[i]:.10f}" lon="{lon[i]:.10f}"/>')
+        lines.append(f'  <node id="{node_id[i]}" {new} lat="{lat[i]:.10f}" lon="{lon[i]:.10f}"/>')
 
     def tag(k, v):
         return f"    <tag k={quoteattr(str(k))} v={quoteattr(str(v))}/>"
@@ -250,7 +253,7 @@ def write_osmag(path: str, areas: Sequence[Area], passages: Sequence[Passage] = 
         ring = ext_rings[k]
         shared[np.unique(ring)] += 1
         refs = np.append(ring, ring[0])
-        lines.append(f'  <way id="{way_id[a.id]}">')
+        lines.append(f'  <way id="{way_id[a.id]}" {new}>')
         lines.extend(f'    <nd ref="{node_id[v]}"/>' for v in refs.tolist())
         atype = a.type if a.type in AREA_TYPES else "room"
         if a.type not in AREA_TYPES:
@@ -259,6 +262,7 @@ def write_osmag(path: str, areas: Sequence[Area], passages: Sequence[Passage] = 
             atype = "structure"
         lines.append(tag("osmAG:type", "area"))
         lines.append(tag("osmAG:areatype", atype))
+        lines.append(tag("osmAG:areaType", atype))  # the spelling of the published osmAG parsers
         lines.append(tag("indoor", "corridor" if atype == "corridor" else "room"))
         lines.append(tag("level", level))
         lines.append(tag("height", hstr))
@@ -273,7 +277,7 @@ def write_osmag(path: str, areas: Sequence[Area], passages: Sequence[Passage] = 
     wid = -1 - len(all_areas)
     for k, p in enumerate(passages):
         a0, a1 = int(pe[k, 0]), int(pe[k, 1])
-        lines.append(f'  <way id="{wid - k}">')
+        lines.append(f'  <way id="{wid - k}" {new}>')
         lines.append(f'    <nd ref="{node_id[a0]}"/>')
         lines.append(f'    <nd ref="{node_id[a1]}"/>')
         lines.append(tag("osmAG:type", "passage"))

@@ -86,11 +86,26 @@ class OsmagStyler(QgsProcessingLayerPostProcessorInterface):
             apply_osmag_style(layer, self.kind)
 
 
+def _tag(tags, key):
+    if key in tags:
+        return tags[key]
+    low = key.lower()
+    for k, v in tags.items():
+        if k.lower() == low:
+            return v
+    return None
+
+
 def _keys(objs):
-    keys = []
+    """Tag keys as field names, in a stable order. Keys equal but for case (osmAG:areatype and
+    osmAG:areaType) become one field: most formats (GeoPackage, Shapefile) ignore case in field names."""
+    keys, seen = [], {"osm_id", "from_id", "to_id"}
     for o in objs:
         for k in o.tags:
-            if k not in keys:
+            if k.lower() == "osmag:areatype":
+                k = "osmAG:areatype"  # the styles categorize on this spelling
+            if k.lower() not in seen:
+                seen.add(k.lower())
                 keys.append(k)
     first = [k for k in FIRST_KEYS if k in keys]
     return first + sorted(k for k in keys if k not in first)
@@ -162,8 +177,9 @@ class LoadOsmagAlgorithm(Cad2OsmagAlgorithm):
             f.setGeometry(to_qgs(g))
             f["osm_id"] = int(a.id)
             for k in akeys:
-                if k in a.tags:
-                    f[k] = a.tags[k]
+                v = _tag(a.tags, k)
+                if v is not None:
+                    f[k] = v
             sink.addFeature(f, QgsFeatureSink.FastInsert)
         psink, pdest = self.parameterAsSink(parameters, self.OUTPUT_PASSAGES, context, pfields,
                                             QgsWkbTypes.LineString, tcrs)
@@ -174,8 +190,9 @@ class LoadOsmagAlgorithm(Cad2OsmagAlgorithm):
             f["from_id"] = int(p.from_id)
             f["to_id"] = int(p.to_id)
             for k in pkeys:
-                if k in p.tags:
-                    f[k] = p.tags[k]
+                v = _tag(p.tags, k)
+                if v is not None:
+                    f[k] = v
             psink.addFeature(f, QgsFeatureSink.FastInsert)
         dangling = len(report["dangling_nodes"]) + len(report["dangling_refs"])
         if report["unclosed"]:
