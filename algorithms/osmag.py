@@ -146,8 +146,8 @@ def write_osmag(path: str, areas: Sequence[Area], passages: Sequence[Passage] = 
     part = _Partition(polys, pxy, q)
     n_ins = part.node()
     holes = int(part.ring_hole.sum())
-    if holes:
-        warnings.append(f"{holes} holes (pillars) left out: an osmAG area is one closed way")
+    if holes:  # by design, so an info line rather than a warning
+        progress.info(f"osmAG: {holes} holes (pillars) left out: an osmAG area is one closed way")
     ext_rings: Dict[int, np.ndarray] = {}
     for ri, (f, h) in enumerate(zip(part.ring_face, part.ring_hole)):
         if not h:

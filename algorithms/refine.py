@@ -462,7 +462,8 @@ def refine(graph: AreaGraph, resolution: float, epsilon_px: float = EPSILON_PX,
 
     # 3. simplify + despike, rebuild, validate, fall back --------------------------------------------
     levels = np.zeros(len(arc_v), np.int64)
-    tols = [tol, tol / 2.0, 0.0]
+    # GEOS drops vertices within the tolerance; shave it by 1e-9 so rounding never exceeds the bound
+    tols = [tol * (1 - 1e-9), tol / 2.0, 0.0]
     arc_dp: List[np.ndarray] = [None] * len(arc_v)  # type: ignore
     arc_fin: List[np.ndarray] = [None] * len(arc_v)  # type: ignore
     todo = np.arange(len(arc_v))
