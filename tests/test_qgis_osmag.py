@@ -178,6 +178,17 @@ def test_georeference_gcps_headless(refined_layers, tmp_path):
     assert res["RESIDUALS"].startswith("a=")
     feats, code = read_gpkg(res["OUTPUT_AREAS"])
     assert code == "32651" and len(feats) == 4
+    # anchor mode with both points picked on a Web Mercator canvas: rotation from the two points
+    merc = pyproj.Transformer.from_crs(4326, 3857, always_xy=True)
+    ax, ay = merc.transform(lon[0], lat[0])  # CAD (0, 0)
+    bx, by = merc.transform(lon[1], lat[1])  # CAD (30, 0)
+    out3 = tmp_path / "a.gpkg"
+    _, res3, _ = run_alg("georeference", {"AREAS": areas, "MODE": 0, "ANCHOR": f"{ax!r},{ay!r} [EPSG:3857]",
+                                          "ROTATION_POINT": f"{bx!r},{by!r} [EPSG:3857]", "CAD_ROTATION_X": 30,
+                                          "CAD_ROTATION_Y": 0, "OUTPUT_AREAS": str(out3)}, timeout=120)
+    assert res3["ANCHOR_LON"] == pytest.approx(121.5906, abs=1e-9)
+    assert res3["ANCHOR_LAT"] == pytest.approx(31.179, abs=1e-9)
+    assert (res3["ROTATION_DEG"] - truth.rotation_deg + 180) % 360 - 180 == pytest.approx(0.0, abs=1e-4)
     # collinear control points: clear error naming them, no output
     bad = write_gpkg(tmp_path / "gcp_bad.gpkg", "gcp", [Point(X[i], Y[i]) for i in range(3)],
                      {"name": ["p", "q", "r"], "cad_x": [0.0, 10.0, 20.0], "cad_y": [0.0, 10.0, 20.0]},
