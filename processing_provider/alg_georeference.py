@@ -2,6 +2,7 @@
 from qgis.core import (
     QgsCoordinateReferenceSystem,
     QgsCoordinateTransform,
+    QgsCsException,
     QgsFeature,
     QgsFeatureSink,
     QgsProcessing,
@@ -52,7 +53,11 @@ def point_to_lonlat(point, point_crs, context):
         point_crs = wgs
     if point_crs != wgs:
         tr = QgsCoordinateTransform(point_crs, wgs, context.transformContext() if context else QgsProject.instance())
-        point = tr.transform(point)
+        try:
+            point = tr.transform(point)
+        except QgsCsException as exc:
+            raise QgsProcessingException(f"the point {point.x()}, {point.y()} [{point_crs.authid()}] cannot be "
+                                         f"converted to longitude/latitude: {exc}")
     return float(point.x()), float(point.y())
 
 
