@@ -4,8 +4,8 @@ The CAD frame is metric (x right, y up). A :class:`LocalFrame` places it with a 
 (rotation, uniform scale, translation) into a *local transverse Mercator* projection centred on the
 anchor (``+proj=tmerc +lat_0=<anchor lat> +lon_0=<anchor lon> +k=1``, WGS84 ellipsoid). Every
 conversion to WGS84 or any other CRS goes through PROJ (pyproj; GDAL osr inside QGIS executables) from
-that projection, never through a flat-earth (degrees-per-metre) shortcut. At the anchor the projection's scale is exactly 1 and grid
-north is true north; at 1 km from the anchor the scale error is ~1e-8, far below a millimetre per
+that projection, never through a flat-earth (degrees-per-metre) shortcut. At the anchor the projection's
+scale is exactly 1 and grid north is true north; at 1 km from the anchor the scale error is ~1e-8, far below a millimetre per
 100 m.
 
 Conventions
@@ -172,7 +172,8 @@ def _vincenty_inverse(lon1, lat1, lon2, lat2):
     u2 = c2a * (a * a - b * b) / (b * b)
     A = 1 + u2 / 16384 * (4096 + u2 * (-768 + u2 * (320 - 175 * u2)))
     B = u2 / 1024 * (256 + u2 * (-128 + u2 * (74 - 47 * u2)))
-    ds = B * ss * (c2sm + B / 4 * (cs * (-1 + 2 * c2sm ** 2) - B / 6 * c2sm * (-3 + 4 * ss ** 2) * (-3 + 4 * c2sm ** 2)))
+    ds = B * ss * (c2sm + B / 4 * (cs * (-1 + 2 * c2sm ** 2)
+                                   - B / 6 * c2sm * (-3 + 4 * ss ** 2) * (-3 + 4 * c2sm ** 2)))
     dist = b * A * (sig - ds)
     az = np.degrees(np.arctan2(cU2 * np.sin(lam), cU1 * sU2 - sU1 * cU2 * np.cos(lam)))
     return az, dist
@@ -447,5 +448,6 @@ def ellipsoidal_length_of_line(coords_lonlat: Iterable[Tuple[float, float]]) -> 
     return float(np.sum(d))
 
 
-__all__: List[str] = ["LocalFrame", "backend", "crs_is_geographic", "fit_gcps", "transform_geometry", "to_wgs84_points", "geodesic_distance",
+__all__: List[str] = ["LocalFrame", "backend", "crs_is_geographic", "fit_gcps", "transform_geometry",
+                      "to_wgs84_points", "geodesic_distance",
                       "azimuth", "rotation_from_two_points", "check_lonlat", "frame_from_params", "WGS84"]

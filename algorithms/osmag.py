@@ -30,7 +30,6 @@ references and unclosed ways instead of failing on them.
 """
 from __future__ import annotations
 
-import math
 import os
 import xml.etree.ElementTree as ET
 from typing import Dict, List, Optional, Sequence, Tuple
@@ -455,7 +454,8 @@ def read_osmag(path: str, progress=None):
         f = resolve(wid, "osmAG:from", _get(t, "osmAG:from"))
         to = resolve(wid, "osmAG:to", _get(t, "osmAG:to"))
         if f is None or to is None:
-            warnings.append(f"passage way {wid}: osmAG:from='{_get(t, 'osmAG:from')}' / osmAG:to='{_get(t, 'osmAG:to')}' "
+            warnings.append(f"passage way {wid}: osmAG:from='{_get(t, 'osmAG:from')}' / "
+                            f"osmAG:to='{_get(t, 'osmAG:to')}' "
                             "does not name an area of this file; passage skipped")
             continue
         passages.append(Passage(id=wid, from_id=f, to_id=to, line=LineString([nodes[refs[0]], nodes[refs[-1]]]),

@@ -592,7 +592,8 @@ def refine(graph: AreaGraph, resolution: float, epsilon_px: float = EPSILON_PX,
     return out, stats
 
 
-__all__ = ["refine", "graph_from_labels", "merge_small_areas", "validate_graph", "EPSILON_PX", "SPIKE_ANGLE_DEG", "SPIKE_LENGTH_M",
+__all__ = ["refine", "graph_from_labels", "merge_small_areas", "validate_graph", "EPSILON_PX", "SPIKE_ANGLE_DEG",
+           "SPIKE_LENGTH_M",
            "MIN_AREA_M2"]
 
 

@@ -121,7 +121,8 @@ class ExportOsmagAlgorithm(Cad2OsmagAlgorithm):
             kwargs["crs"] = qgs_crs_to_pyproj(crs)
             if has_anchor:
                 kwargs["root"] = (lon, lat)
-            feedback.pushInfo(self.tr("layers are in {}: converting to WGS84").format(crs.authid() or crs.description()))
+            feedback.pushInfo(self.tr("layers are in {}: converting to WGS84").format(
+                crs.authid() or crs.description()))
         else:
             if not has_anchor:
                 raise QgsProcessingException(self.tr(

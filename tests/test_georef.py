@@ -113,3 +113,25 @@ def test_bad_gcps_and_anchor():
     # exactly two points are enough (no redundancy: residuals are ~0)
     frame, res, rms = fit_gcps(CAD_GCP[:2], w[:2])
     assert rms < 1e-6 and frame.rotation_deg == pytest.approx(33.5, abs=1e-3)
+
+
+def test_osr_backend_matches_pyproj(monkeypatch):
+    """Inside QGIS executables the transforms run through GDAL's osr (same PROJ as QGIS) and geodesics
+    through Vincenty's formulae: both agree with pyproj to well below a millimetre."""
+    import algorithms.georef as G
+
+    pts = np.array([[0.0, 0.0], [120.0, 0.0], [37.5, -80.0], [1500.0, 900.0]])
+    lon_p, lat_p = TRUTH.to_wgs84(pts[:, 0] + 1000, pts[:, 1] + 2000)
+    g = pyproj.Geod(ellps="WGS84")
+    _, _, d_p = g.inv(lon_p[:-1], lat_p[:-1], lon_p[1:], lat_p[1:])
+    monkeypatch.setattr(G, "_BACKEND", "osr")
+    frame = LocalFrame(121.5906, 31.1790, rotation_deg=33.5, cad_anchor=(1000.0, 2000.0))
+    lon_o, lat_o = frame.to_wgs84(pts[:, 0] + 1000, pts[:, 1] + 2000)
+    assert np.max(np.abs(lon_o - lon_p)) < 1e-11 and np.max(np.abs(lat_o - lat_p)) < 1e-11
+    d_o = G.geodesic_distance(lon_p[:-1], lat_p[:-1], lon_p[1:], lat_p[1:])
+    assert np.max(np.abs(d_o - d_p)) < 1e-4
+    x, y = frame.from_crs(*frame.to_crs(pts[:, 0], pts[:, 1], UTM), UTM)
+    assert np.allclose(x, pts[:, 0], atol=1e-6) and np.allclose(y, pts[:, 1], atol=1e-6)
+    assert G.crs_is_geographic("EPSG:4326") and not G.crs_is_geographic(UTM)
+    with pytest.raises(InputError, match="unknown coordinate reference system"):
+        G.transform_geometry(LineString([(0, 0), (1, 1)]), "EPSG:999999", UTM)

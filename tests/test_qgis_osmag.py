@@ -31,7 +31,8 @@ def write_gpkg(path, layer, geoms, fields, srs_epsg=None):
     lyr = ds.CreateLayer(layer, srs, gt)
     for name, values in fields.items():
         v = values[0]
-        t = ogr.OFTInteger64 if isinstance(v, (int, np.integer)) else ogr.OFTReal if isinstance(v, float) else ogr.OFTString
+        t = (ogr.OFTInteger64 if isinstance(v, (int, np.integer)) else ogr.OFTReal if isinstance(v, float)
+             else ogr.OFTString)
         lyr.CreateField(ogr.FieldDefn(name, t))
     for i, g in enumerate(geoms):
         f = ogr.Feature(lyr.GetLayerDefn())
