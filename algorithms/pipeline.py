@@ -118,7 +118,5 @@ def convert_dxf(dxf_path: str, out_osm: str, *, preview_png: Optional[str] = Non
         render_preview(floor.grid, floor.refined, preview_png)
     progress.step(100)
     out = dict(floor.stats)
-    out["osm"] = {k: v for k, v in written.items() if k != "warnings"}
-    for w in written.get("warnings", []):
-        progress.warning(w)
+    out["osm"] = {k: v for k, v in written.items() if k != "warnings"}  # write_osmag logged its warnings
     return out
