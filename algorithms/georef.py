@@ -3,8 +3,8 @@
 The CAD frame is metric (x right, y up). A :class:`LocalFrame` places it with a similarity transform
 (rotation, uniform scale, translation) into a *local transverse Mercator* projection centred on the
 anchor (``+proj=tmerc +lat_0=<anchor lat> +lon_0=<anchor lon> +k=1``, WGS84 ellipsoid). Every
-conversion to WGS84 or any other CRS goes through PROJ (pyproj; GDAL osr inside QGIS executables) from
-that projection, never through a flat-earth (degrees-per-metre) shortcut. At the anchor the projection's
+conversion to WGS84 or any other CRS goes through PROJ (pyproj; GDAL's osr only where an incompatible
+pyproj wheel cannot load, see ``backend``) from that projection, never through a flat-earth (degrees-per-metre) shortcut. At the anchor the projection's
 scale is exactly 1 and grid north is true north; at 1 km from the anchor the scale error is ~1e-8, far below a millimetre per
 100 m.
 
@@ -33,11 +33,12 @@ WGS84 = "EPSG:4326"
 
 
 # =========================================================================== PROJ backends
-# pyproj's wheels bundle their own PROJ. Inside the QGIS executables (qgis, qgis_process) the system
-# PROJ that QGIS links is loaded into the global symbol namespace and shadows pyproj's copy, which then
-# fails (TypeError / bad_alloc). There, the same PROJ is reached through GDAL's osr bindings, which are
-# built against the system PROJ. Both backends do real projections; set CAD2OSMAG_PROJ_BACKEND=pyproj|osr
-# to force one.
+# pyproj is the backend. `make install` builds it against the system PROJ that QGIS links (as Debian's
+# python3-pyproj is). A pyproj *wheel*, however, bundles its own PROJ, and inside the QGIS executables
+# (qgis, qgis_process) the system PROJ is loaded into the global symbol namespace and shadows the bundled
+# copy, which then aborts (bad_alloc / TypeError). Only in that case is the same system PROJ reached
+# through GDAL's osr bindings instead. Both do real projections (a test checks they agree); set
+# CAD2OSMAG_PROJ_BACKEND=pyproj|osr to force one.
 _BACKEND = None
 
 
@@ -50,6 +51,18 @@ def _proj_loaded_globally() -> bool:
         return False
 
 
+def _pyproj_bundles_proj() -> bool:
+    """True when the importable pyproj is a wheel with its own PROJ (``pyproj.libs/libproj*``)."""
+    import glob
+    import importlib.util
+
+    spec = importlib.util.find_spec("pyproj")
+    if spec is None or not spec.origin:
+        return False
+    site = os.path.dirname(os.path.dirname(spec.origin))
+    return bool(glob.glob(os.path.join(site, "pyproj.libs", "libproj*")))
+
+
 def backend() -> str:
     """'pyproj' or 'osr' (see above)."""
     global _BACKEND
@@ -58,7 +71,7 @@ def backend() -> str:
         if forced in ("pyproj", "osr"):
             _BACKEND = forced
         else:
-            _BACKEND = "osr" if _proj_loaded_globally() else "pyproj"
+            _BACKEND = "osr" if _proj_loaded_globally() and _pyproj_bundles_proj() else "pyproj"
     return _BACKEND
 
 

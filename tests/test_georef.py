@@ -1,4 +1,5 @@
 """Georeferencing (stage 6): LocalFrame through pyproj, Helmert fit from GCPs, bad input."""
+import os
 import math
 
 import numpy as np
@@ -135,3 +136,15 @@ def test_osr_backend_matches_pyproj(monkeypatch):
     assert G.crs_is_geographic("EPSG:4326") and not G.crs_is_geographic(UTM)
     with pytest.raises(InputError, match="unknown coordinate reference system"):
         G.transform_geometry(LineString([(0, 0), (1, 1)]), "EPSG:999999", UTM)
+
+
+def test_installed_pyproj_uses_the_system_proj_so_it_is_the_backend_inside_qgis_too():
+    """make install builds pyproj against Debian's PROJ (the one QGIS links): no bundled copy, so the
+    pyproj backend is safe inside qgis_process and is the one chosen."""
+    import pyproj
+
+    from algorithms import georef
+
+    assert not georef._pyproj_bundles_proj()
+    assert pyproj.proj_version_str.startswith("9.1")
+    assert georef.backend() == "pyproj" or os.environ.get("CAD2OSMAG_PROJ_BACKEND") == "osr"
