@@ -15,8 +15,8 @@ from .base import Cad2OsmagAlgorithm
 class MergeFloorsAlgorithm(Cad2OsmagAlgorithm):
     NAME = "mergefloors"
     DISPLAY_NAME = "Merge osmAG floors into a building"
-    GROUP = "osmAG"
-    GROUP_ID = "osmag"
+    GROUP = "Tools"
+    GROUP_ID = "tools"
     HELP = ("Combines osmAG files of single floors, converted with the same anchor, into one building file: "
             "ids are renumbered, one root node is kept, and a building structure area becomes the parent of "
             "every floor outline. Floors are not moved and no vertical passages are added.")
