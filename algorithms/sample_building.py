@@ -932,11 +932,22 @@ def _save_deterministic(doc, path: str) -> None:
     opts = ezdxf.options
     old = opts.write_fixed_meta_data_for_testing
     opts.write_fixed_meta_data_for_testing = True
+    # ezdxf registers some CLASS entries while iterating a set of entity types, so their order follows
+    # the process's string hashing; saving once registers them all, then a sorted table is stable.
+    classes = doc.classes
+    original_export = classes.export_dxf
+
+    def export_sorted(tagwriter):
+        classes.classes = dict(sorted(classes.classes.items()))
+        original_export(tagwriter)
+
+    classes.export_dxf = export_sorted
     try:
         with atomic_path(path, suffix=".dxf") as tmp:
             doc.saveas(tmp)
     finally:
         opts.write_fixed_meta_data_for_testing = old
+        del classes.export_dxf
 
 
 # --------------------------------------------------------------------------- public API

@@ -364,3 +364,21 @@ def test_progress_and_cancel(tmp_path):
     with pytest.raises(Canceled):
         generate_building(str(tmp_path / "stop"), floors=3, seed=0, progress=RecordingProgress(cancel_after=1))
     assert not os.path.exists(tmp_path / "stop" / "sample-F2.dxf")
+
+
+def test_identical_bytes_across_processes_with_different_string_hashing(tmp_path):
+    """The same seed gives the same bytes in another process too (qgis_process, CI), whatever its
+    PYTHONHASHSEED: nothing in the file may follow set or dict-of-hash order."""
+    import os
+    import subprocess
+    import sys
+
+    repo = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+    digests = []
+    for hashseed in ("1", "7"):
+        out = tmp_path / hashseed
+        code = ("import sys; sys.path.insert(0, %r); from algorithms.sample_building import generate_building; "
+                "generate_building(%r, floors=1, seed=3)") % (repo, str(out))
+        subprocess.run([sys.executable, "-c", code], check=True, env=dict(os.environ, PYTHONHASHSEED=hashseed))
+        digests.append((out / "sample-F1.dxf").read_bytes())
+    assert digests[0] == digests[1]
