@@ -22,11 +22,12 @@ import time
 from pathlib import Path
 
 ROOT = Path(__file__).resolve().parents[1]
-ORDER = ["bench_cad", "bench_segment", "bench_refine_export"]  # pipeline order; others follow
+ORDER = ["bench_cad", "bench_segment", "bench_refine_export", "bench_pipeline"]  # pipeline order; others follow
 TARGETS = {  # stage name -> (max wall s, max peak MB) from the issues
     "cad_import+rasterize": (3.0, 1024),
     "segment": (5.0, 1536),
     "refine+export": (1.0, None),
+    "whole floor DXF -> osmAG": (35.0, None),  # the reference tool per floor
 }
 
 
