@@ -4,7 +4,7 @@
 # plugin linked into a project-local QGIS profile with the plugin enabled.
 set -euo pipefail
 ROOT="$(cd "$(dirname "$0")/.." && pwd)"
-APT_PACKAGES="${1:-qgis python3-qgis qgis-providers python3-venv python3-gdal gdal-bin osmium-tool xvfb python3-dev build-essential libproj-dev libgeos-dev}"
+APT_PACKAGES="${1:-qgis python3-qgis qgis-providers python3-venv python3-gdal gdal-bin osmium-tool xvfb python3-dev build-essential libproj-dev libgeos-dev proj-bin}"
 
 missing=()
 for p in $APT_PACKAGES; do
