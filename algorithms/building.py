@@ -11,7 +11,7 @@ from __future__ import annotations
 import math
 import os
 import xml.etree.ElementTree as ET
-from typing import Dict, List, Optional, Sequence
+from typing import Dict, List, Sequence
 
 from shapely.geometry import Polygon
 from shapely.ops import unary_union

@@ -304,7 +304,8 @@ def write_osmag(path: str, areas: Sequence[Area], passages: Sequence[Passage] = 
 
 
 # =========================================================================== reading
-def _get(tags: Dict[str, str], key: str, default=None):
+def get_tag(tags: Dict[str, str], key: str, default=None):
+    """``tags[key]``, or the value of a key that differs only in case (osmAG:areaType vs areatype)."""
     if key in tags:
         return tags[key]
     low = key.lower()
@@ -378,8 +379,8 @@ def read_osmag(path: str, progress=None):
             warnings.append(f"{len(roots)} root nodes ({roots}); used node {roots[0]}")
     else:
         warnings.append("no root node (name=root)")
-    area_ways = [w for w in ways if str(_get(w[2], "osmAG:type", "")).lower() == "area"]
-    passage_ways = [w for w in ways if str(_get(w[2], "osmAG:type", "")).lower() == "passage"]
+    area_ways = [w for w in ways if str(get_tag(w[2], "osmAG:type", "")).lower() == "area"]
+    passage_ways = [w for w in ways if str(get_tag(w[2], "osmAG:type", "")).lower() == "passage"]
     if not area_ways:
         raise InputError(f"'{os.path.basename(path)}' is not an osmAG file: none of its {len(ways)} ways is tagged "
                          "osmAG:type=area (plain OSM data? export it with osmAG tags first)")
@@ -400,7 +401,7 @@ def read_osmag(path: str, progress=None):
         poly = Polygon([nodes[r] for r in refs])
         if not poly.is_valid:
             warnings.append(f"area way {wid} is not a valid polygon (self-intersecting?)")
-        atype = str(_get(t, "osmAG:areatype", "room") or "room")
+        atype = str(get_tag(t, "osmAG:areatype", "room") or "room")
         areas.append(Area(id=wid, polygon=poly, type=atype, name=t.get("name", ""), tags=dict(t)))
     by_name: Dict[str, List[int]] = {}
     for a in areas:
@@ -432,7 +433,7 @@ def read_osmag(path: str, progress=None):
 
     parents: Dict[int, int] = {}
     for a in areas:
-        pv = _get(a.tags, "osmAG:parent")
+        pv = get_tag(a.tags, "osmAG:parent")
         if pv not in (None, ""):
             pid = resolve(a.id, "osmAG:parent", pv)
             if pid is not None:
@@ -451,11 +452,11 @@ def read_osmag(path: str, progress=None):
             continue
         if len(refs) > 2:
             warnings.append(f"passage way {wid} has {len(refs)} nodes; used its first and last")
-        f = resolve(wid, "osmAG:from", _get(t, "osmAG:from"))
-        to = resolve(wid, "osmAG:to", _get(t, "osmAG:to"))
+        f = resolve(wid, "osmAG:from", get_tag(t, "osmAG:from"))
+        to = resolve(wid, "osmAG:to", get_tag(t, "osmAG:to"))
         if f is None or to is None:
-            warnings.append(f"passage way {wid}: osmAG:from='{_get(t, 'osmAG:from')}' / "
-                            f"osmAG:to='{_get(t, 'osmAG:to')}' "
+            warnings.append(f"passage way {wid}: osmAG:from='{get_tag(t, 'osmAG:from')}' / "
+                            f"osmAG:to='{get_tag(t, 'osmAG:to')}' "
                             "does not name an area of this file; passage skipped")
             continue
         passages.append(Passage(id=wid, from_id=f, to_id=to, line=LineString([nodes[refs[0]], nodes[refs[-1]]]),

@@ -121,7 +121,7 @@ def merge_small_areas(areas: List[Area], passages: List[Passage], min_area: floa
             break
         s = min(smalls, key=lambda a: (a.polygon.area, a.id))
         others = [a for a in areas if a.id != s.id]
-        best, best_len = None, 0.0
+        best = None
         if others:
             polys = np.array([a.polygon for a in others], dtype=object)
             touching = np.flatnonzero(shapely.intersects(s.polygon, polys))
@@ -130,7 +130,7 @@ def merge_small_areas(areas: List[Area], passages: List[Passage], min_area: floa
                                                            shapely.boundary(polys[touching])))
                 k = int(np.argmax(lens))
                 if lens[k] > 1e-9:
-                    best, best_len = others[int(touching[k])], float(lens[k])
+                    best = others[int(touching[k])]
         areas.remove(s)
         del by_id[s.id]
         if best is None:
@@ -606,28 +606,13 @@ def graph_from_labels(labels: np.ndarray, origin_x: float, origin_y: float, reso
     split into several pieces keeps its largest piece.
     """
     import shapely
-    from osgeo import gdal, ogr
     from shapely.geometry import LineString
 
-    gdal.UseExceptions()
+    from .model import OccupancyGrid
+    from .segmentation import label_polygons
+
     labels = np.ascontiguousarray(labels, dtype=np.int32)
-    rows, cols = labels.shape
-    ds = gdal.GetDriverByName("MEM").Create("", cols, rows, 1, gdal.GDT_Int32)
-    ds.SetGeoTransform((origin_x, resolution, 0.0, origin_y, 0.0, -resolution))
-    band = ds.GetRasterBand(1)
-    band.WriteArray(labels)
-    mds = gdal.GetDriverByName("MEM").Create("", cols, rows, 1, gdal.GDT_Byte)
-    mds.GetRasterBand(1).WriteArray((labels > 0).astype(np.uint8))
-    ods = ogr.GetDriverByName("Memory").CreateDataSource("")
-    lyr = ods.CreateLayer("areas")
-    lyr.CreateField(ogr.FieldDefn("label", ogr.OFTInteger))
-    gdal.Polygonize(band, mds.GetRasterBand(1), lyr, 0, [])
-    polys: Dict[int, object] = {}
-    for feat in lyr:
-        lab = int(feat.GetField(0))
-        g = shapely.from_wkb(bytes(feat.GetGeometryRef().ExportToWkb()))
-        if lab not in polys or g.area > polys[lab].area:
-            polys[lab] = g
+    polys = label_polygons(labels, OccupancyGrid(labels, origin_x, origin_y, resolution))
     types = types or {}
     areas = [Area(id=lab, polygon=polys[lab], type=types.get(lab, "room")) for lab in sorted(polys)]
     passages = []

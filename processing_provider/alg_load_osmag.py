@@ -25,6 +25,7 @@ from qgis.core import (
 from qgis.PyQt.QtCore import QVariant
 from qgis.PyQt.QtGui import QColor
 
+from ..algorithms.osmag import get_tag
 from .alg_georeference import qgs_crs_to_pyproj
 from .base import Cad2OsmagAlgorithm, to_qgs
 
@@ -84,16 +85,6 @@ class OsmagStyler(QgsProcessingLayerPostProcessorInterface):
     def postProcessLayer(self, layer, context, feedback):  # noqa: N802
         if layer is not None and layer.isValid():
             apply_osmag_style(layer, self.kind)
-
-
-def _tag(tags, key):
-    if key in tags:
-        return tags[key]
-    low = key.lower()
-    for k, v in tags.items():
-        if k.lower() == low:
-            return v
-    return None
 
 
 def _keys(objs):
@@ -177,7 +168,7 @@ class LoadOsmagAlgorithm(Cad2OsmagAlgorithm):
             f.setGeometry(to_qgs(g))
             f["osm_id"] = int(a.id)
             for k in akeys:
-                v = _tag(a.tags, k)
+                v = get_tag(a.tags, k)
                 if v is not None:
                     f[k] = v
             sink.addFeature(f, QgsFeatureSink.FastInsert)
@@ -190,7 +181,7 @@ class LoadOsmagAlgorithm(Cad2OsmagAlgorithm):
             f["from_id"] = int(p.from_id)
             f["to_id"] = int(p.to_id)
             for k in pkeys:
-                v = _tag(p.tags, k)
+                v = get_tag(p.tags, k)
                 if v is not None:
                     f[k] = v
             psink.addFeature(f, QgsFeatureSink.FastInsert)

@@ -6,7 +6,6 @@ from qgis.core import (
     QgsFeature,
     QgsFeatureSink,
     QgsField,
-    QgsFields,
     QgsProcessing,
     QgsProcessingException,
     QgsProcessingOutputNumber,
@@ -20,29 +19,16 @@ from qgis.PyQt.QtCore import QVariant
 
 from ..algorithms import segmentation
 from ..algorithms.errors import InputError
+from .alg_refine import area_fields, passage_fields
 from .base import Cad2OsmagAlgorithm, to_qgs
 
 ROS_EXTENSIONS = (".yaml", ".yml")
 
 
 def _area_fields():
-    fields = QgsFields()
-    fields.append(QgsField("id", QVariant.LongLong))
-    fields.append(QgsField("type", QVariant.String))
-    fields.append(QgsField("name", QVariant.String))
-    fields.append(QgsField("max_clearance", QVariant.Double))
-    fields.append(QgsField("area_m2", QVariant.Double))
+    """The shared AREAS fields (see alg_refine) plus the perimeter segmentation reports."""
+    fields = area_fields()
     fields.append(QgsField("perimeter_m", QVariant.Double))
-    return fields
-
-
-def _passage_fields():
-    fields = QgsFields()
-    fields.append(QgsField("id", QVariant.LongLong))
-    fields.append(QgsField("from_id", QVariant.LongLong))
-    fields.append(QgsField("to_id", QVariant.LongLong))
-    fields.append(QgsField("name", QVariant.String))
-    fields.append(QgsField("width_m", QVariant.Double))
     return fields
 
 
@@ -162,7 +148,7 @@ class SegmentAlgorithm(Cad2OsmagAlgorithm):
         labels_path = self.parameterAsOutputLayer(parameters, self.LABELS, context)
         if not labels_path.lower().endswith((".tif", ".tiff")):
             labels_path = os.path.splitext(labels_path)[0] + ".tif"
-        afields, pfields = _area_fields(), _passage_fields()
+        afields, pfields = _area_fields(), passage_fields()
         sink_a, dest_a = self.parameterAsSink(parameters, self.AREAS, context, afields, QgsWkbTypes.Polygon, crs)
         if sink_a is None:
             raise QgsProcessingException(self.invalidSinkError(parameters, self.AREAS))

@@ -216,7 +216,7 @@ def test_hatch_solid_trace_3dface_widths(tmp_path):
     msp.add_solid([(5, 5), (6, 5), (5, 6), (6, 6)], dxfattribs={"layer": "A-COLS"})
     msp.add_3dface([(7, 7, 0), (8, 7, 0), (8, 8, 0), (7, 8, 0)], dxfattribs={"layer": "A-WALL"})
     msp.add_lwpolyline([(0, 9), (10, 9)], dxfattribs={"layer": "A-WALL", "const_width": 0.3})
-    pl = msp.add_polyline2d([(0, 8), (5, 8), (5, 7)], dxfattribs={"layer": "A-WALL"})
+    msp.add_polyline2d([(0, 8), (5, 8), (5, 7)], dxfattribs={"layer": "A-WALL"})
     d = import_dxf(save(doc, tmp_path))
     hat = [g for g in d.geometries if g.entity == "HATCH"]
     solid = [g for g in hat if g.filled]

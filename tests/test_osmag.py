@@ -11,7 +11,7 @@ from shapely.geometry import LineString, Polygon
 
 from algorithms.errors import InputError
 from algorithms.georef import LocalFrame, geodesic_distance
-from algorithms.model import Area, AreaGraph, Passage
+from algorithms.model import Area, Passage
 from algorithms.osmag import read_osmag, to_frame, write_osmag
 from algorithms.refine import graph_from_labels, refine
 from tests.test_refine import RES, synthetic_labels

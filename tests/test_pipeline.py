@@ -3,7 +3,7 @@ import xml.etree.ElementTree as ET
 
 import numpy as np
 import pytest
-from shapely.geometry import LineString, Polygon, box
+from shapely.geometry import box
 
 from algorithms import building, osmag, pipeline
 from algorithms.area_types import classify_vertical_areas
