@@ -38,22 +38,22 @@ class DxfToOsmagAlgorithm(Cad2OsmagAlgorithm):
                                                      extension="json", optional=True))
         self.addParameter(QgsProcessingParameterEnum("UNITS", self.tr("Drawing units"), UNITS, defaultValue=0))
         self.addParameter(QgsProcessingParameterNumber("RESOLUTION", self.tr("Raster resolution (m/px)"),
-                                                       QgsProcessingParameterNumber.Double, 0.044, False, 0.005, 1.0))
+                                                       QgsProcessingParameterNumber.Type.Double, 0.044, False, 0.005, 1.0))
         self.addParameter(QgsProcessingParameterNumber("DOOR_WIDTH", self.tr("Widest door (m)"),
-                                                       QgsProcessingParameterNumber.Double, 2.8, False, 0.3, 20))
+                                                       QgsProcessingParameterNumber.Type.Double, 2.8, False, 0.3, 20))
         self.addParameter(QgsProcessingParameterNumber("CORRIDOR_WIDTH", self.tr("Corridor width (m)"),
-                                                       QgsProcessingParameterNumber.Double, 8.0, False, 0.3, 50))
+                                                       QgsProcessingParameterNumber.Type.Double, 8.0, False, 0.3, 50))
         self.addParameter(QgsProcessingParameterNumber("MIN_AREA", self.tr("Merge areas smaller than (m²)"),
-                                                       QgsProcessingParameterNumber.Double, 10.0, False, 0, 1000))
+                                                       QgsProcessingParameterNumber.Type.Double, 10.0, False, 0, 1000))
         self.addParameter(QgsProcessingParameterBoolean("INCLUDE_DOORS",
                                                         self.tr("Close doorways (rasterize door layers)"), False))
         self.addParameter(QgsProcessingParameterString("LEVEL", self.tr("Level"), "1"))
         self.addParameter(QgsProcessingParameterNumber("HEIGHT", self.tr("Floor height (m)"),
-                                                       QgsProcessingParameterNumber.Double, 3.2, False, 0.1, 100))
+                                                       QgsProcessingParameterNumber.Type.Double, 3.2, False, 0.1, 100))
         self.addParameter(QgsProcessingParameterPoint("ANCHOR", self.tr("Position of the drawing origin"),
                                                       optional=True))
         self.addParameter(QgsProcessingParameterNumber("ROTATION", self.tr("Rotation (degrees clockwise from north)"),
-                                                       QgsProcessingParameterNumber.Double, 0.0, False, -360, 360))
+                                                       QgsProcessingParameterNumber.Type.Double, 0.0, False, -360, 360))
         self.addParameter(QgsProcessingParameterEnum("VARIANT", self.tr("osmAG variant"), VARIANTS, defaultValue=0))
         self.addParameter(QgsProcessingParameterFileDestination("OUTPUT", self.tr("osmAG file"),
                                                                 self.tr("OpenStreetMap XML (*.osm)")))

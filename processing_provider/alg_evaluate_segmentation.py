@@ -40,7 +40,7 @@ class EvaluateSegmentationAlgorithm(Cad2OsmagAlgorithm):
             self.GROUND_TRUTH, self.tr("Ground-truth colour image"), fileFilter="Images (*.png *.bmp *.tif *.tiff)"))
         self.addParameter(QgsProcessingParameterNumber(
             self.MIN_ROOM_PX, self.tr("Ignore ground-truth colours covering fewer pixels than"),
-            QgsProcessingParameterNumber.Integer, ev.MIN_ROOM_PX, False, 1))
+            QgsProcessingParameterNumber.Type.Integer, ev.MIN_ROOM_PX, False, 1))
         self.addParameter(QgsProcessingParameterFileDestination(
             self.REPORT, self.tr("Per-room report"), "CSV files (*.csv)", optional=True, createByDefault=False))
         for name, label in (("MCC", "MCC (area-weighted)"), ("F1", "F1 at IoU >= 0.5"), ("RECALL", "Mean recall"),

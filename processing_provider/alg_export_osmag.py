@@ -47,29 +47,29 @@ class ExportOsmagAlgorithm(Cad2OsmagAlgorithm):
 
     def initAlgorithm(self, config=None):  # noqa: N802
         self.addParameter(QgsProcessingParameterFeatureSource(
-            self.AREAS, self.tr("Areas"), [QgsProcessing.TypeVectorPolygon]))
+            self.AREAS, self.tr("Areas"), [QgsProcessing.SourceType.TypeVectorPolygon]))
         self.addParameter(QgsProcessingParameterFeatureSource(
-            self.PASSAGES, self.tr("Passages"), [QgsProcessing.TypeVectorLine], optional=True))
+            self.PASSAGES, self.tr("Passages"), [QgsProcessing.SourceType.TypeVectorLine], optional=True))
         self.addParameter(QgsProcessingParameterFeatureSource(
             self.STRUCTURE, self.tr("Floor / building outlines (structure areas)"),
-            [QgsProcessing.TypeVectorPolygon], optional=True))
+            [QgsProcessing.SourceType.TypeVectorPolygon], optional=True))
         self.addParameter(QgsProcessingParameterString(self.LEVEL, self.tr("Level"), "1"))
         self.addParameter(QgsProcessingParameterNumber(
-            self.HEIGHT, self.tr("Height per level (m)"), QgsProcessingParameterNumber.Double, 3.2, False, 0.01,
+            self.HEIGHT, self.tr("Height per level (m)"), QgsProcessingParameterNumber.Type.Double, 3.2, False, 0.01,
             1000.0))
         self.addParameter(QgsProcessingParameterEnum(
             self.VARIANT, self.tr("Variant"), ["semantic (names)", "fix-id (way ids)"], defaultValue=0))
         self.addParameter(QgsProcessingParameterNumber(
             self.ANCHOR_LON, self.tr("Anchor / root longitude (CAD-frame layers: where the CAD origin lies)"),
-            QgsProcessingParameterNumber.Double, None, True, -180.0, 180.0))
+            QgsProcessingParameterNumber.Type.Double, None, True, -180.0, 180.0))
         self.addParameter(QgsProcessingParameterNumber(
-            self.ANCHOR_LAT, self.tr("Anchor / root latitude"), QgsProcessingParameterNumber.Double, None, True,
+            self.ANCHOR_LAT, self.tr("Anchor / root latitude"), QgsProcessingParameterNumber.Type.Double, None, True,
             -90.0, 90.0))
         self.addParameter(QgsProcessingParameterNumber(
             self.ROTATION, self.tr("Rotation of CAD-frame layers (degrees clockwise from north)"),
-            QgsProcessingParameterNumber.Double, 0.0, False, -360.0, 360.0))
+            QgsProcessingParameterNumber.Type.Double, 0.0, False, -360.0, 360.0))
         self.addParameter(QgsProcessingParameterNumber(
-            self.SCALE, self.tr("Scale of CAD-frame layers"), QgsProcessingParameterNumber.Double, 1.0, False,
+            self.SCALE, self.tr("Scale of CAD-frame layers"), QgsProcessingParameterNumber.Type.Double, 1.0, False,
             1e-6, 1e6))
         self.addParameter(QgsProcessingParameterFileDestination(
             self.OUTPUT, self.tr("osmAG file"), self.tr("OpenStreetMap XML (*.osm)")))

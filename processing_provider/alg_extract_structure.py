@@ -20,12 +20,11 @@ from qgis.core import (
     QgsProcessingParameterString,
     QgsWkbTypes,
 )
-from qgis.PyQt.QtCore import QVariant
 
 from ..algorithms import cad_import
 from ..algorithms.layer_rules import load_rules
 from ..algorithms.rasterize import LOCAL_FRAME_WKT
-from .base import Cad2OsmagAlgorithm
+from .base import Cad2OsmagAlgorithm, FIELD_BOOL, FIELD_DOUBLE, FIELD_STRING
 
 UNIT_OPTIONS = ["", "mm", "cm", "m", "inch", "feet"]
 
@@ -38,22 +37,22 @@ def local_frame_crs():
 
 def wall_fields():
     fields = QgsFields()
-    fields.append(QgsField("layer", QVariant.String))
-    fields.append(QgsField("kind", QVariant.String))
-    fields.append(QgsField("entity", QVariant.String))
-    fields.append(QgsField("closed", QVariant.Bool))
-    fields.append(QgsField("filled", QVariant.Bool))
-    fields.append(QgsField("width", QVariant.Double))
+    fields.append(QgsField("layer", FIELD_STRING))
+    fields.append(QgsField("kind", FIELD_STRING))
+    fields.append(QgsField("entity", FIELD_STRING))
+    fields.append(QgsField("closed", FIELD_BOOL))
+    fields.append(QgsField("filled", FIELD_BOOL))
+    fields.append(QgsField("width", FIELD_DOUBLE))
     return fields
 
 
 def text_fields():
     fields = QgsFields()
-    fields.append(QgsField("text", QVariant.String))
-    fields.append(QgsField("height", QVariant.Double))
-    fields.append(QgsField("rotation", QVariant.Double))
-    fields.append(QgsField("layer", QVariant.String))
-    fields.append(QgsField("entity", QVariant.String))
+    fields.append(QgsField("text", FIELD_STRING))
+    fields.append(QgsField("height", FIELD_DOUBLE))
+    fields.append(QgsField("rotation", FIELD_DOUBLE))
+    fields.append(QgsField("layer", FIELD_STRING))
+    fields.append(QgsField("entity", FIELD_STRING))
     return fields
 
 
@@ -116,9 +115,9 @@ class ExtractStructureAlgorithm(Cad2OsmagAlgorithm):
         self.addParameter(QgsProcessingParameterBoolean(
             self.INCLUDE_DOORS, self.tr("Include doors (rasterize doorways as closed)"), defaultValue=False))
         self.addParameter(QgsProcessingParameterFeatureSink(
-            self.WALLS, self.tr("Structure lines"), QgsProcessing.TypeVectorLine))
+            self.WALLS, self.tr("Structure lines"), QgsProcessing.SourceType.TypeVectorLine))
         self.addParameter(QgsProcessingParameterFeatureSink(
-            self.TEXTS, self.tr("Texts"), QgsProcessing.TypeVectorPoint))
+            self.TEXTS, self.tr("Texts"), QgsProcessing.SourceType.TypeVectorPoint))
         self.addOutput(QgsProcessingOutputString("UNIT", self.tr("Unit used")))
         self.addOutput(QgsProcessingOutputNumber("UNIT_SCALE", self.tr("Drawing units to metres")))
         self.addOutput(QgsProcessingOutputNumber("GEOMETRY_COUNT", self.tr("Number of structure features")))
@@ -157,12 +156,12 @@ class ExtractStructureAlgorithm(Cad2OsmagAlgorithm):
             texts.append(f)
 
         crs = local_frame_crs()
-        (wsink, wdest) = self.parameterAsSink(parameters, self.WALLS, context, wf, QgsWkbTypes.MultiLineString, crs)
+        (wsink, wdest) = self.parameterAsSink(parameters, self.WALLS, context, wf, QgsWkbTypes.Type.MultiLineString, crs)
         for f in walls:
-            wsink.addFeature(f, QgsFeatureSink.FastInsert)
-        (tsink, tdest) = self.parameterAsSink(parameters, self.TEXTS, context, tf, QgsWkbTypes.Point, crs)
+            wsink.addFeature(f, QgsFeatureSink.Flag.FastInsert)
+        (tsink, tdest) = self.parameterAsSink(parameters, self.TEXTS, context, tf, QgsWkbTypes.Type.Point, crs)
         for f in texts:
-            tsink.addFeature(f, QgsFeatureSink.FastInsert)
+            tsink.addFeature(f, QgsFeatureSink.Flag.FastInsert)
         kept = sorted({g.layer for g in drawing.geometries})
         feedback.pushInfo(self.tr("Kept {} features on layers: {}; {} texts; unit {} (header: {})").format(
             len(walls), ", ".join(kept), len(texts), drawing.unit_name, drawing.header_unit))

@@ -30,7 +30,7 @@ def qgs_crs_to_pyproj(crs):
     auth = crs.authid()
     if auth and ":" in auth and not auth.upper().startswith("USER"):
         return auth
-    return crs.toWkt(QgsCoordinateReferenceSystem.WKT_PREFERRED) if hasattr(
+    return crs.toWkt(QgsCoordinateReferenceSystem.WktVariant.WKT_PREFERRED) if hasattr(
         QgsCoordinateReferenceSystem, "WKT_PREFERRED") else crs.toWkt()
 
 
@@ -99,34 +99,34 @@ class GeoreferenceAlgorithm(Cad2OsmagAlgorithm):
 
     def initAlgorithm(self, config=None):  # noqa: N802
         self.addParameter(QgsProcessingParameterFeatureSource(
-            self.AREAS, self.tr("Layer in the CAD frame (areas or any)"), [QgsProcessing.TypeVectorAnyGeometry]))
+            self.AREAS, self.tr("Layer in the CAD frame (areas or any)"), [QgsProcessing.SourceType.TypeVectorAnyGeometry]))
         self.addParameter(QgsProcessingParameterFeatureSource(
             self.PASSAGES, self.tr("Second layer in the CAD frame (passages)"),
-            [QgsProcessing.TypeVectorAnyGeometry], optional=True))
+            [QgsProcessing.SourceType.TypeVectorAnyGeometry], optional=True))
         self.addParameter(QgsProcessingParameterEnum(
             self.MODE, self.tr("Mode"), [self.tr(m) for m in self.MODES], defaultValue=0))
         self.addParameter(QgsProcessingParameterPoint(
             self.ANCHOR, self.tr("Anchor: where the CAD anchor point lies on the map"), optional=True))
         self.addParameter(QgsProcessingParameterNumber(
-            self.CAD_ANCHOR_X, self.tr("CAD anchor point x (m)"), QgsProcessingParameterNumber.Double, 0.0))
+            self.CAD_ANCHOR_X, self.tr("CAD anchor point x (m)"), QgsProcessingParameterNumber.Type.Double, 0.0))
         self.addParameter(QgsProcessingParameterNumber(
-            self.CAD_ANCHOR_Y, self.tr("CAD anchor point y (m)"), QgsProcessingParameterNumber.Double, 0.0))
+            self.CAD_ANCHOR_Y, self.tr("CAD anchor point y (m)"), QgsProcessingParameterNumber.Type.Double, 0.0))
         self.addParameter(QgsProcessingParameterNumber(
             self.ROTATION, self.tr("Rotation of the plan's +y axis (degrees clockwise from north)"),
-            QgsProcessingParameterNumber.Double, 0.0, False, -360.0, 360.0))
+            QgsProcessingParameterNumber.Type.Double, 0.0, False, -360.0, 360.0))
         self.addParameter(QgsProcessingParameterPoint(
             self.ROTATION_POINT, self.tr("Or: second map point (defines the rotation)"), optional=True))
         self.addParameter(QgsProcessingParameterNumber(
-            self.CAD_ROTATION_X, self.tr("CAD x of the second point (m)"), QgsProcessingParameterNumber.Double,
+            self.CAD_ROTATION_X, self.tr("CAD x of the second point (m)"), QgsProcessingParameterNumber.Type.Double,
             0.0))
         self.addParameter(QgsProcessingParameterNumber(
-            self.CAD_ROTATION_Y, self.tr("CAD y of the second point (m)"), QgsProcessingParameterNumber.Double,
+            self.CAD_ROTATION_Y, self.tr("CAD y of the second point (m)"), QgsProcessingParameterNumber.Type.Double,
             10.0))
         self.addParameter(QgsProcessingParameterNumber(
-            self.SCALE, self.tr("Scale (ground metres per CAD metre)"), QgsProcessingParameterNumber.Double,
+            self.SCALE, self.tr("Scale (ground metres per CAD metre)"), QgsProcessingParameterNumber.Type.Double,
             1.0, False, 1e-6, 1e6))
         self.addParameter(QgsProcessingParameterFeatureSource(
-            self.GCPS, self.tr("Control points (fields cad_x, cad_y)"), [QgsProcessing.TypeVectorPoint],
+            self.GCPS, self.tr("Control points (fields cad_x, cad_y)"), [QgsProcessing.SourceType.TypeVectorPoint],
             optional=True))
         self.addParameter(QgsProcessingParameterBoolean(
             self.FIX_SCALE, self.tr("Control points: keep the scale at SCALE (solve rotation and shift only)"),
@@ -258,14 +258,14 @@ class GeoreferenceAlgorithm(Cad2OsmagAlgorithm):
         # everything computed: create the outputs
         sink, dest = self.parameterAsSink(parameters, self.OUTPUT_AREAS, context, src.fields(), src.wkbType(), tcrs)
         for f in feats:
-            sink.addFeature(f, QgsFeatureSink.FastInsert)
+            sink.addFeature(f, QgsFeatureSink.Flag.FastInsert)
         result = {self.OUTPUT_AREAS: dest}
         if pfeats is not None:
             psink, pdest = self.parameterAsSink(parameters, self.OUTPUT_PASSAGES, context, psrc.fields(),
                                                 psrc.wkbType(), tcrs)
             if psink is not None:
                 for f in pfeats:
-                    psink.addFeature(f, QgsFeatureSink.FastInsert)
+                    psink.addFeature(f, QgsFeatureSink.Flag.FastInsert)
                 result[self.OUTPUT_PASSAGES] = pdest
         result.update({"RMS": rms, "RESIDUALS": residuals, "FRAME": repr(frame),
                        "ANCHOR_LON": frame.anchor_lon, "ANCHOR_LAT": frame.anchor_lat,

@@ -12,11 +12,10 @@ from qgis.core import (
     QgsWkbTypes,
     QgsCoordinateReferenceSystem,
 )
-from qgis.PyQt.QtCore import QVariant
 
 from ..algorithms import cad_import
 from ..algorithms.layer_rules import load_rules
-from .base import Cad2OsmagAlgorithm
+from .base import Cad2OsmagAlgorithm, FIELD_BOOL, FIELD_INT, FIELD_STRING
 
 # DXF types that get their own count column; everything else is summed in n_other
 COUNT_COLUMNS = ("LINE", "LWPOLYLINE", "POLYLINE", "ARC", "CIRCLE", "ELLIPSE", "SPLINE", "HATCH", "SOLID",
@@ -45,7 +44,7 @@ class ListLayersAlgorithm(Cad2OsmagAlgorithm):
             self.LAYER_RULES, self.tr("Layer rules (JSON, empty = built-in defaults)"), extension="json",
             optional=True))
         self.addParameter(QgsProcessingParameterFeatureSink(
-            self.OUTPUT, self.tr("Layer report"), QgsProcessing.TypeVector))
+            self.OUTPUT, self.tr("Layer report"), QgsProcessing.SourceType.TypeVector))
         self.addOutput(QgsProcessingOutputNumber("LAYER_COUNT", self.tr("Number of layers")))
         self.addOutput(QgsProcessingOutputString("KEPT_LAYERS", self.tr("Layers the rules keep (semicolon separated)")))
         self.addOutput(QgsProcessingOutputString("HEADER_UNIT", self.tr("Unit written in the header ($INSUNITS)")))
@@ -60,17 +59,17 @@ class ListLayersAlgorithm(Cad2OsmagAlgorithm):
         infos = sorted(drawing.layers.values(), key=lambda i: i.name.lower())
 
         fields = QgsFields()
-        fields.append(QgsField("layer", QVariant.String))
-        fields.append(QgsField("kind", QVariant.String))
-        fields.append(QgsField("kept", QVariant.Bool))
-        fields.append(QgsField("rule", QVariant.String))
-        fields.append(QgsField("frozen", QVariant.Bool))
-        fields.append(QgsField("off", QVariant.Bool))
-        fields.append(QgsField("total", QVariant.Int))
+        fields.append(QgsField("layer", FIELD_STRING))
+        fields.append(QgsField("kind", FIELD_STRING))
+        fields.append(QgsField("kept", FIELD_BOOL))
+        fields.append(QgsField("rule", FIELD_STRING))
+        fields.append(QgsField("frozen", FIELD_BOOL))
+        fields.append(QgsField("off", FIELD_BOOL))
+        fields.append(QgsField("total", FIELD_INT))
         for col in COUNT_COLUMNS:
-            fields.append(QgsField("n_" + col.lower(), QVariant.Int))
-        fields.append(QgsField("n_other", QVariant.Int))
-        fields.append(QgsField("counts", QVariant.String))
+            fields.append(QgsField("n_" + col.lower(), FIELD_INT))
+        fields.append(QgsField("n_other", FIELD_INT))
+        fields.append(QgsField("counts", FIELD_STRING))
 
         feats = []
         for info in infos:
@@ -83,10 +82,10 @@ class ListLayersAlgorithm(Cad2OsmagAlgorithm):
             attrs += [int(other), "; ".join(f"{k}={v}" for k, v in sorted(counts.items()))]
             f.setAttributes(attrs)
             feats.append(f)
-        (sink, dest) = self.parameterAsSink(parameters, self.OUTPUT, context, fields, QgsWkbTypes.NoGeometry,
+        (sink, dest) = self.parameterAsSink(parameters, self.OUTPUT, context, fields, QgsWkbTypes.Type.NoGeometry,
                                             QgsCoordinateReferenceSystem())
         for f in feats:
-            sink.addFeature(f, QgsFeatureSink.FastInsert)
+            sink.addFeature(f, QgsFeatureSink.Flag.FastInsert)
         kept = [i.name for i in infos if cad_import.layer_kept(i, rules)]
         feedback.pushInfo(self.tr("{} layers, {} kept by the rules: {}").format(len(infos), len(kept), ", ".join(kept)))
         return {self.OUTPUT: dest, "LAYER_COUNT": len(infos), "KEPT_LAYERS": ";".join(kept),

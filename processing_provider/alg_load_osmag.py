@@ -22,12 +22,11 @@ from qgis.core import (
     QgsVectorLayerSimpleLabeling,
     QgsWkbTypes,
 )
-from qgis.PyQt.QtCore import QVariant
 from qgis.PyQt.QtGui import QColor
 
 from ..algorithms.osmag import get_tag
 from .alg_georeference import qgs_crs_to_pyproj
-from .base import Cad2OsmagAlgorithm, to_qgs
+from .base import Cad2OsmagAlgorithm, FIELD_LONG, FIELD_STRING, to_qgs
 
 AREA_COLOURS = {  # osmAG:areatype -> (fill RGBA, outline)
     "room": ("255,235,160,180", "120,100,40"),
@@ -123,9 +122,9 @@ class LoadOsmagAlgorithm(Cad2OsmagAlgorithm):
         self.addParameter(QgsProcessingParameterFile(self.INPUT, self.tr("osmAG file"), extension="osm"))
         self.addParameter(QgsProcessingParameterCrs(self.TARGET_CRS, self.tr("Output CRS"), "EPSG:4326", optional=True))
         self.addParameter(QgsProcessingParameterFeatureSink(
-            self.OUTPUT_AREAS, self.tr("osmAG areas"), QgsProcessing.TypeVectorPolygon))
+            self.OUTPUT_AREAS, self.tr("osmAG areas"), QgsProcessing.SourceType.TypeVectorPolygon))
         self.addParameter(QgsProcessingParameterFeatureSink(
-            self.OUTPUT_PASSAGES, self.tr("osmAG passages"), QgsProcessing.TypeVectorLine))
+            self.OUTPUT_PASSAGES, self.tr("osmAG passages"), QgsProcessing.SourceType.TypeVectorLine))
         for name, label in (("AREA_COUNT", "Areas loaded"), ("PASSAGE_COUNT", "Passages loaded"),
                             ("UNCLOSED", "Unclosed area ways (skipped)"),
                             ("DANGLING", "Dangling references (skipped)"),
@@ -152,16 +151,16 @@ class LoadOsmagAlgorithm(Cad2OsmagAlgorithm):
         # everything computed: create the outputs
         akeys = _keys(areas)
         afields = QgsFields()
-        afields.append(QgsField("osm_id", QVariant.LongLong))
+        afields.append(QgsField("osm_id", FIELD_LONG))
         for k in akeys:
-            afields.append(QgsField(k, QVariant.String))
+            afields.append(QgsField(k, FIELD_STRING))
         pkeys = _keys(passages)
         pfields = QgsFields()
         for n in ("osm_id", "from_id", "to_id"):
-            pfields.append(QgsField(n, QVariant.LongLong))
+            pfields.append(QgsField(n, FIELD_LONG))
         for k in pkeys:
-            pfields.append(QgsField(k, QVariant.String))
-        sink, adest = self.parameterAsSink(parameters, self.OUTPUT_AREAS, context, afields, QgsWkbTypes.Polygon,
+            pfields.append(QgsField(k, FIELD_STRING))
+        sink, adest = self.parameterAsSink(parameters, self.OUTPUT_AREAS, context, afields, QgsWkbTypes.Type.Polygon,
                                            tcrs)
         for a, g in zip(areas, agoms):
             f = QgsFeature(afields)
@@ -171,9 +170,9 @@ class LoadOsmagAlgorithm(Cad2OsmagAlgorithm):
                 v = get_tag(a.tags, k)
                 if v is not None:
                     f[k] = v
-            sink.addFeature(f, QgsFeatureSink.FastInsert)
+            sink.addFeature(f, QgsFeatureSink.Flag.FastInsert)
         psink, pdest = self.parameterAsSink(parameters, self.OUTPUT_PASSAGES, context, pfields,
-                                            QgsWkbTypes.LineString, tcrs)
+                                            QgsWkbTypes.Type.LineString, tcrs)
         for p, g in zip(passages, pgoms):
             f = QgsFeature(pfields)
             f.setGeometry(to_qgs(g))
@@ -184,7 +183,7 @@ class LoadOsmagAlgorithm(Cad2OsmagAlgorithm):
                 v = get_tag(p.tags, k)
                 if v is not None:
                     f[k] = v
-            psink.addFeature(f, QgsFeatureSink.FastInsert)
+            psink.addFeature(f, QgsFeatureSink.Flag.FastInsert)
         dangling = len(report["dangling_nodes"]) + len(report["dangling_refs"])
         if report["unclosed"]:
             feedback.pushWarning(self.tr("unclosed area ways (skipped): {}").format(report["unclosed"]))

@@ -23,7 +23,7 @@ class MergeFloorsAlgorithm(Cad2OsmagAlgorithm):
 
     def initAlgorithm(self, config=None):  # noqa: N802
         self.addParameter(QgsProcessingParameterMultipleLayers("FLOORS", self.tr("osmAG floor files"),
-                                                               QgsProcessing.TypeFile))
+                                                               QgsProcessing.SourceType.TypeFile))
         self.addParameter(QgsProcessingParameterString("NAME", self.tr("Building name"), "Building"))
         self.addParameter(QgsProcessingParameterFileDestination("OUTPUT", self.tr("Building osmAG file"),
                                                                 self.tr("OpenStreetMap XML (*.osm)")))

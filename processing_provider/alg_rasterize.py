@@ -30,12 +30,12 @@ def _parts(geom):
     if geom is None or geom.isNull() or geom.isEmpty():
         return out
     gtype = QgsWkbTypes.geometryType(geom.wkbType())
-    if gtype == QgsWkbTypes.LineGeometry:
+    if gtype == QgsWkbTypes.GeometryType.LineGeometry:
         lines = geom.asMultiPolyline() if geom.isMultipart() else [geom.asPolyline()]
         for ln in lines:
             if ln:
                 out.append(np.array([(p.x(), p.y()) for p in ln], dtype=np.float64))
-    elif gtype == QgsWkbTypes.PolygonGeometry:
+    elif gtype == QgsWkbTypes.GeometryType.PolygonGeometry:
         polys = geom.asMultiPolygon() if geom.isMultipart() else [geom.asPolygon()]
         for poly in polys:
             for ring in poly:
@@ -59,7 +59,7 @@ def features_to_geometries(source, feedback=None, transform=None):
         parts = _parts(g)
         if not parts:
             continue
-        is_poly = QgsWkbTypes.geometryType(g.wkbType()) == QgsWkbTypes.PolygonGeometry
+        is_poly = QgsWkbTypes.geometryType(g.wkbType()) == QgsWkbTypes.GeometryType.PolygonGeometry
 
         def attr(name, default):
             if name not in names:
@@ -119,29 +119,29 @@ class RasterizeAlgorithm(Cad2OsmagAlgorithm):
 
     def initAlgorithm(self, config=None):  # noqa: N802
         self.addParameter(QgsProcessingParameterFeatureSource(
-            self.WALLS, self.tr("Structure lines"), [QgsProcessing.TypeVectorLine, QgsProcessing.TypeVectorPolygon]))
+            self.WALLS, self.tr("Structure lines"), [QgsProcessing.SourceType.TypeVectorLine, QgsProcessing.SourceType.TypeVectorPolygon]))
         self.addParameter(QgsProcessingParameterNumber(
-            self.RESOLUTION, self.tr("Resolution (m/pixel)"), QgsProcessingParameterNumber.Double,
+            self.RESOLUTION, self.tr("Resolution (m/pixel)"), QgsProcessingParameterNumber.Type.Double,
             ras.DEFAULT_RESOLUTION, False, 0.001, 10.0))
         self.addParameter(QgsProcessingParameterNumber(
-            self.PADDING, self.tr("Padding (fraction of the building size)"), QgsProcessingParameterNumber.Double,
+            self.PADDING, self.tr("Padding (fraction of the building size)"), QgsProcessingParameterNumber.Type.Double,
             ras.DEFAULT_PADDING, False, 0.0, 1.0))
         self.addParameter(QgsProcessingParameterString(
             self.PERCENTILES, self.tr("Vertex percentiles for the extent (low, high)"), "0.5, 99.5"))
         self.addParameter(QgsProcessingParameterNumber(
-            self.KERNEL, self.tr("Repair kernel (pixels, 0 = no repair)"), QgsProcessingParameterNumber.Integer,
+            self.KERNEL, self.tr("Repair kernel (pixels, 0 = no repair)"), QgsProcessingParameterNumber.Type.Integer,
             ras.DEFAULT_KERNEL, False, 0, 51))
         self.addParameter(QgsProcessingParameterNumber(
-            self.STROKE, self.tr("Width of hairlines (m)"), QgsProcessingParameterNumber.Double,
+            self.STROKE, self.tr("Width of hairlines (m)"), QgsProcessingParameterNumber.Type.Double,
             ras.DEFAULT_STROKE, False, 0.0, 5.0))
         self.addParameter(QgsProcessingParameterNumber(
-            self.MAX_MPX, self.tr("Pixel budget (megapixels)"), QgsProcessingParameterNumber.Double,
+            self.MAX_MPX, self.tr("Pixel budget (megapixels)"), QgsProcessingParameterNumber.Type.Double,
             ras.DEFAULT_MAX_PIXELS / 1e6, False, 0.01, 2000.0))
         self.addParameter(QgsProcessingParameterExtent(
             self.COMMON_EXTENT, self.tr("Common extent for multi-floor sets (optional)"), optional=True))
         self.addParameter(QgsProcessingParameterMultipleLayers(
             self.FLOOR_LAYERS, self.tr("Structure layers of all floors: rasterize on their common extent (optional)"),
-            QgsProcessing.TypeVectorAnyGeometry, optional=True))
+            QgsProcessing.SourceType.TypeVectorAnyGeometry, optional=True))
         self.addParameter(QgsProcessingParameterEnum(
             self.ALIGN_FLOORS, self.tr("Register the floors (translation) before building the common grid"),
             options=[self.tr("automatic (only when the floors do not overlap)"), self.tr("yes"), self.tr("no")],
@@ -207,7 +207,7 @@ class RasterizeAlgorithm(Cad2OsmagAlgorithm):
                          free_kinds=() if self.parameterAsBool(parameters, "STAIRS_AS_OBSTACLES", context)
                          else ras.DEFAULT_FREE_KINDS)
         out = self.parameterAsOutputLayer(parameters, self.OCCUPANCY, context)
-        wkt = crs.toWkt(QgsCoordinateReferenceSystem.WKT_PREFERRED_GDAL) if crs.isValid() else ""
+        wkt = crs.toWkt(QgsCoordinateReferenceSystem.WktVariant.WKT_PREFERRED_GDAL) if crs.isValid() else ""
         try:
             write_geotiff(out, grid.data, grid.origin_x, grid.origin_y, grid.resolution, wkt)
         except (InputError, RuntimeError) as exc:

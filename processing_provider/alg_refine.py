@@ -23,10 +23,9 @@ from qgis.core import (
     QgsProcessingParameterNumber,
     QgsWkbTypes,
 )
-from qgis.PyQt.QtCore import QVariant
 
 from ..algorithms.model import Area, AreaGraph, Passage
-from .base import Cad2OsmagAlgorithm, from_qgs, to_qgs
+from .base import Cad2OsmagAlgorithm, FIELD_DOUBLE, FIELD_LONG, FIELD_STRING, from_qgs, to_qgs
 
 AREA_ID_FIELDS = ("id", "osm_id", "area_id", "fid")
 AREA_TYPE_FIELDS = ("type", "osmAG:areatype", "osmAG:areaType", "areatype")
@@ -118,25 +117,25 @@ def read_passages(source, areas):
 
 def area_fields(extra_keys=()):
     fields = QgsFields()
-    fields.append(QgsField("id", QVariant.LongLong))
-    fields.append(QgsField("type", QVariant.String))
-    fields.append(QgsField("name", QVariant.String))
-    fields.append(QgsField("max_clearance", QVariant.Double))
-    fields.append(QgsField("area_m2", QVariant.Double))
+    fields.append(QgsField("id", FIELD_LONG))
+    fields.append(QgsField("type", FIELD_STRING))
+    fields.append(QgsField("name", FIELD_STRING))
+    fields.append(QgsField("max_clearance", FIELD_DOUBLE))
+    fields.append(QgsField("area_m2", FIELD_DOUBLE))
     for k in extra_keys:
-        fields.append(QgsField(k, QVariant.String))
+        fields.append(QgsField(k, FIELD_STRING))
     return fields
 
 
 def passage_fields(extra_keys=()):
     fields = QgsFields()
-    fields.append(QgsField("id", QVariant.LongLong))
-    fields.append(QgsField("from_id", QVariant.LongLong))
-    fields.append(QgsField("to_id", QVariant.LongLong))
-    fields.append(QgsField("name", QVariant.String))
-    fields.append(QgsField("width_m", QVariant.Double))
+    fields.append(QgsField("id", FIELD_LONG))
+    fields.append(QgsField("from_id", FIELD_LONG))
+    fields.append(QgsField("to_id", FIELD_LONG))
+    fields.append(QgsField("name", FIELD_STRING))
+    fields.append(QgsField("width_m", FIELD_DOUBLE))
     for k in extra_keys:
-        fields.append(QgsField(k, QVariant.String))
+        fields.append(QgsField(k, FIELD_STRING))
     return fields
 
 
@@ -161,7 +160,7 @@ def write_areas(sink, fields, areas, metric=True):
         for k, v in (a.tags or {}).items():
             if fields.indexOf(k) >= 0 and k not in ("id", "type", "name", "max_clearance", "area_m2"):
                 f[k] = str(v)
-        if not sink.addFeature(f, QgsFeatureSink.FastInsert):
+        if not sink.addFeature(f, QgsFeatureSink.Flag.FastInsert):
             raise QgsProcessingException(f"cannot write area {a.id} to the output layer")
 
 
@@ -177,7 +176,7 @@ def write_passages(sink, fields, passages, metric=True):
         for k, v in (p.tags or {}).items():
             if fields.indexOf(k) >= 0 and k not in ("id", "from_id", "to_id", "name", "width_m"):
                 f[k] = str(v)
-        if not sink.addFeature(f, QgsFeatureSink.FastInsert):
+        if not sink.addFeature(f, QgsFeatureSink.Flag.FastInsert):
             raise QgsProcessingException(f"cannot write passage {p.id} to the output layer")
 
 
@@ -212,28 +211,28 @@ class RefineAlgorithm(Cad2OsmagAlgorithm):
 
     def initAlgorithm(self, config=None):  # noqa: N802
         self.addParameter(QgsProcessingParameterFeatureSource(
-            self.AREAS, self.tr("Areas"), [QgsProcessing.TypeVectorPolygon]))
+            self.AREAS, self.tr("Areas"), [QgsProcessing.SourceType.TypeVectorPolygon]))
         self.addParameter(QgsProcessingParameterFeatureSource(
-            self.PASSAGES, self.tr("Passages"), [QgsProcessing.TypeVectorLine], optional=True))
+            self.PASSAGES, self.tr("Passages"), [QgsProcessing.SourceType.TypeVectorLine], optional=True))
         self.addParameter(QgsProcessingParameterNumber(
             self.RESOLUTION, self.tr("Raster resolution r the areas were traced at (m/px)"),
-            QgsProcessingParameterNumber.Double, 0.044, False, 0.0001, 10.0))
+            QgsProcessingParameterNumber.Type.Double, 0.044, False, 0.0001, 10.0))
         self.addParameter(QgsProcessingParameterNumber(
             self.EPSILON_PX, self.tr("Douglas-Peucker tolerance ε (pixels)"),
-            QgsProcessingParameterNumber.Double, 1.2, False, 0.0, 100.0))
+            QgsProcessingParameterNumber.Type.Double, 1.2, False, 0.0, 100.0))
         self.addParameter(QgsProcessingParameterNumber(
             self.SPIKE_ANGLE, self.tr("Spike angle below (degrees)"),
-            QgsProcessingParameterNumber.Double, 15.0, False, 0.0, 90.0))
+            QgsProcessingParameterNumber.Type.Double, 15.0, False, 0.0, 90.0))
         self.addParameter(QgsProcessingParameterNumber(
             self.SPIKE_LENGTH, self.tr("Spike protrusion below (m)"),
-            QgsProcessingParameterNumber.Double, 0.3, False, 0.0, 100.0))
+            QgsProcessingParameterNumber.Type.Double, 0.3, False, 0.0, 100.0))
         self.addParameter(QgsProcessingParameterNumber(
             self.MIN_AREA, self.tr("Merge areas smaller than (m²)"),
-            QgsProcessingParameterNumber.Double, 10.0, False, 0.0, 1e6))
+            QgsProcessingParameterNumber.Type.Double, 10.0, False, 0.0, 1e6))
         self.addParameter(QgsProcessingParameterFeatureSink(
-            self.OUTPUT_AREAS, self.tr("Refined areas"), QgsProcessing.TypeVectorPolygon))
+            self.OUTPUT_AREAS, self.tr("Refined areas"), QgsProcessing.SourceType.TypeVectorPolygon))
         self.addParameter(QgsProcessingParameterFeatureSink(
-            self.OUTPUT_PASSAGES, self.tr("Refined passages"), QgsProcessing.TypeVectorLine, optional=True))
+            self.OUTPUT_PASSAGES, self.tr("Refined passages"), QgsProcessing.SourceType.TypeVectorLine, optional=True))
         for name, label in (("VERTICES_BEFORE", "Vertices before"), ("VERTICES_AFTER", "Vertices after"),
                             ("VERTEX_REDUCTION", "Vertex reduction (%)"),
                             ("MAX_DEVIATION", "Maximum deviation from the unsimplified areas (m)"),
@@ -269,11 +268,11 @@ class RefineAlgorithm(Cad2OsmagAlgorithm):
         # everything computed: now create the outputs
         afields, pfields = area_and_passage_fields(out.areas, out.passages)
         sink, dest = self.parameterAsSink(parameters, self.OUTPUT_AREAS, context, afields,
-                                          QgsWkbTypes.Polygon, crs)
+                                          QgsWkbTypes.Type.Polygon, crs)
         write_areas(sink, afields, out.areas)
         result = {self.OUTPUT_AREAS: dest}
         psink, pdest = self.parameterAsSink(parameters, self.OUTPUT_PASSAGES, context, pfields,
-                                            QgsWkbTypes.LineString, crs)
+                                            QgsWkbTypes.Type.LineString, crs)
         if psink is not None:
             write_passages(psink, pfields, out.passages)
             result[self.OUTPUT_PASSAGES] = pdest

@@ -30,9 +30,9 @@ class SampleBuildingAlgorithm(Cad2OsmagAlgorithm):
 
     def initAlgorithm(self, config=None):  # noqa: N802
         self.addParameter(QgsProcessingParameterNumber(
-            self.FLOORS, self.tr("Number of floors"), QgsProcessingParameterNumber.Integer, 3, False, 1, 20))
+            self.FLOORS, self.tr("Number of floors"), QgsProcessingParameterNumber.Type.Integer, 3, False, 1, 20))
         self.addParameter(QgsProcessingParameterNumber(
-            self.SEED, self.tr("Random seed (layout variations)"), QgsProcessingParameterNumber.Integer, 0,
+            self.SEED, self.tr("Random seed (layout variations)"), QgsProcessingParameterNumber.Type.Integer, 0,
             False, 0))
         self.addParameter(QgsProcessingParameterString(self.PREFIX, self.tr("File name prefix"), "sample"))
         self.addParameter(QgsProcessingParameterFolderDestination(self.OUTPUT_FOLDER, self.tr("Output folder")))

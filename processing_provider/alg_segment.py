@@ -15,12 +15,11 @@ from qgis.core import (
     QgsProcessingParameterRasterLayer,
     QgsWkbTypes,
 )
-from qgis.PyQt.QtCore import QVariant
 
 from ..algorithms import segmentation
 from ..algorithms.errors import InputError
 from .alg_refine import area_fields, passage_fields
-from .base import Cad2OsmagAlgorithm, to_qgs
+from .base import Cad2OsmagAlgorithm, FIELD_DOUBLE, to_qgs
 
 ROS_EXTENSIONS = (".yaml", ".yml")
 
@@ -28,7 +27,7 @@ ROS_EXTENSIONS = (".yaml", ".yml")
 def _area_fields():
     """The shared AREAS fields (see alg_refine) plus the perimeter segmentation reports."""
     fields = area_fields()
-    fields.append(QgsField("perimeter_m", QVariant.Double))
+    fields.append(QgsField("perimeter_m", FIELD_DOUBLE))
     return fields
 
 
@@ -67,26 +66,26 @@ class SegmentAlgorithm(Cad2OsmagAlgorithm):
             self.INPUT, self.tr("Occupancy grid (GeoTIFF, PNG/PGM, or ROS map.yaml)")))
         self.addParameter(QgsProcessingParameterNumber(
             self.RESOLUTION, self.tr("Resolution of a plain image (m/px; 0 = from the raster)"),
-            QgsProcessingParameterNumber.Double, 0.0, True, 0.0, 100.0))
+            QgsProcessingParameterNumber.Type.Double, 0.0, True, 0.0, 100.0))
         self.addParameter(QgsProcessingParameterNumber(
-            self.DOOR_WIDTH, self.tr("Widest door (m)"), QgsProcessingParameterNumber.Double,
+            self.DOOR_WIDTH, self.tr("Widest door (m)"), QgsProcessingParameterNumber.Type.Double,
             segmentation.DEFAULT_DOOR_WIDTH, False, 0.01, 1000.0))
         self.addParameter(QgsProcessingParameterNumber(
-            self.CORRIDOR_WIDTH, self.tr("Narrowest corridor (m)"), QgsProcessingParameterNumber.Double,
+            self.CORRIDOR_WIDTH, self.tr("Narrowest corridor (m)"), QgsProcessingParameterNumber.Type.Double,
             segmentation.DEFAULT_CORRIDOR_WIDTH, False, 0.01, 1000.0))
         self.addParameter(QgsProcessingParameterNumber(
-            self.DELTA, self.tr("Delta δ added to the width (m)"), QgsProcessingParameterNumber.Double,
+            self.DELTA, self.tr("Delta δ added to the width (m)"), QgsProcessingParameterNumber.Type.Double,
             segmentation.DEFAULT_DELTA, False, 0.0, 100.0))
         self.addParameter(QgsProcessingParameterNumber(
-            self.PRUNE, self.tr("Prune Voronoi branches shorter than (m)"), QgsProcessingParameterNumber.Double,
+            self.PRUNE, self.tr("Prune Voronoi branches shorter than (m)"), QgsProcessingParameterNumber.Type.Double,
             segmentation.DEFAULT_PRUNE, False, 0.0, 100.0))
         self.addParameter(QgsProcessingParameterNumber(
-            self.ENVELOPE_GAP, self.tr("Bridge facade openings up to (m)"), QgsProcessingParameterNumber.Double,
+            self.ENVELOPE_GAP, self.tr("Bridge facade openings up to (m)"), QgsProcessingParameterNumber.Type.Double,
             segmentation.DEFAULT_ENVELOPE_GAP, False, 0.1, 1000.0))
         self.addParameter(QgsProcessingParameterFeatureSink(
-            self.AREAS, self.tr("Areas"), QgsProcessing.TypeVectorPolygon))
+            self.AREAS, self.tr("Areas"), QgsProcessing.SourceType.TypeVectorPolygon))
         self.addParameter(QgsProcessingParameterFeatureSink(
-            self.PASSAGES, self.tr("Passages"), QgsProcessing.TypeVectorLine))
+            self.PASSAGES, self.tr("Passages"), QgsProcessing.SourceType.TypeVectorLine))
         self.addParameter(QgsProcessingParameterRasterDestination(self.LABELS, self.tr("Area id raster")))
         for name, label in (("AREA_COUNT", "Areas"), ("ROOM_COUNT", "Rooms"), ("CORRIDOR_COUNT", "Corridors"),
                             ("PASSAGE_COUNT", "Passages"), ("INTERIOR_AREA_M2", "Free area inside the building (m²)"),
@@ -149,10 +148,10 @@ class SegmentAlgorithm(Cad2OsmagAlgorithm):
         if not labels_path.lower().endswith((".tif", ".tiff")):
             labels_path = os.path.splitext(labels_path)[0] + ".tif"
         afields, pfields = _area_fields(), passage_fields()
-        sink_a, dest_a = self.parameterAsSink(parameters, self.AREAS, context, afields, QgsWkbTypes.Polygon, crs)
+        sink_a, dest_a = self.parameterAsSink(parameters, self.AREAS, context, afields, QgsWkbTypes.Type.Polygon, crs)
         if sink_a is None:
             raise QgsProcessingException(self.invalidSinkError(parameters, self.AREAS))
-        sink_p, dest_p = self.parameterAsSink(parameters, self.PASSAGES, context, pfields, QgsWkbTypes.LineString,
+        sink_p, dest_p = self.parameterAsSink(parameters, self.PASSAGES, context, pfields, QgsWkbTypes.Type.LineString,
                                               crs)
         if sink_p is None:
             raise QgsProcessingException(self.invalidSinkError(parameters, self.PASSAGES))
@@ -165,7 +164,7 @@ class SegmentAlgorithm(Cad2OsmagAlgorithm):
             f["max_clearance"] = round(float(a.max_clearance), 4)
             f["area_m2"] = float(a.area)
             f["perimeter_m"] = float(a.perimeter)
-            if not sink_a.addFeature(f, QgsFeatureSink.FastInsert):
+            if not sink_a.addFeature(f, QgsFeatureSink.Flag.FastInsert):
                 raise QgsProcessingException(self.tr("cannot write area {}").format(a.id))
         for p in ag.passages:
             f = QgsFeature(pfields)
@@ -175,7 +174,7 @@ class SegmentAlgorithm(Cad2OsmagAlgorithm):
             f["to_id"] = int(p.to_id)
             f["name"] = p.name or None
             f["width_m"] = float(p.width)
-            if not sink_p.addFeature(f, QgsFeatureSink.FastInsert):
+            if not sink_p.addFeature(f, QgsFeatureSink.Flag.FastInsert):
                 raise QgsProcessingException(self.tr("cannot write passage {}").format(p.id))
         write_geotiff(labels_path, ag.labels, grid.origin_x, grid.origin_y, grid.resolution,
                       crs.toWkt() if crs.isValid() else grid.crs_wkt, nodata=None)

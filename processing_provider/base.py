@@ -11,7 +11,7 @@ parameters, layers and feedback onto them:
 """
 import os
 
-from qgis.core import QgsGeometry, QgsProcessingAlgorithm, QgsProcessingException
+from qgis.core import Qgis, QgsGeometry, QgsProcessingAlgorithm, QgsProcessingException
 from qgis.PyQt.QtCore import QCoreApplication
 from qgis.PyQt.QtGui import QIcon
 
@@ -19,6 +19,20 @@ from ..algorithms.errors import Canceled, InputError
 from ..algorithms.progress import Progress
 
 ICON_PATH = os.path.join(os.path.dirname(os.path.dirname(__file__)), "icons", "icon.svg")
+
+# Field types for QgsField: QVariant types up to QGIS 3.36, QMetaType types from 3.38 on (the only ones
+# Qt6 / QGIS 4 accept).
+if Qgis.QGIS_VERSION_INT >= 33800:
+    from qgis.PyQt.QtCore import QMetaType
+
+    FIELD_STRING, FIELD_DOUBLE, FIELD_INT, FIELD_LONG, FIELD_BOOL = (
+        QMetaType.Type.QString, QMetaType.Type.Double, QMetaType.Type.Int, QMetaType.Type.LongLong,
+        QMetaType.Type.Bool)
+else:
+    from qgis.PyQt.QtCore import QVariant
+
+    FIELD_STRING, FIELD_DOUBLE, FIELD_INT, FIELD_LONG, FIELD_BOOL = (
+        QVariant.Type.String, QVariant.Type.Double, QVariant.Type.Int, QVariant.Type.LongLong, QVariant.Type.Bool)
 
 
 class FeedbackProgress(Progress):

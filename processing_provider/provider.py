@@ -28,7 +28,7 @@ def algorithm_classes():
         try:
             module = importlib.import_module(f"{__package__}.{info.name}")
         except Exception as exc:  # a broken module must not hide the others
-            QgsMessageLog.logMessage(f"cannot load {info.name}: {exc!r}", "cad2osmag", Qgis.Critical)
+            QgsMessageLog.logMessage(f"cannot load {info.name}: {exc!r}", "cad2osmag", Qgis.MessageLevel.Critical)
             continue
         for _, obj in inspect.getmembers(module, inspect.isclass):
             if issubclass(obj, Cad2OsmagAlgorithm) and obj is not Cad2OsmagAlgorithm and obj.__module__ == module.__name__:
