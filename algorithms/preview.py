@@ -17,6 +17,9 @@ def _palette(n: int) -> np.ndarray:
     return cols
 
 
+TYPE_SUFFIX = {"corridor": "c", "stairs": " stairs", "elevator": " lift"}  # appended to the area id label
+
+
 def render_image(grid: OccupancyGrid, area_graph: AreaGraph, max_size: int = 2000) -> np.ndarray:
     """The overlay as a BGR uint8 image, scaled so its longer side is at most ``max_size``."""
     import cv2
@@ -50,7 +53,7 @@ def render_image(grid: OccupancyGrid, area_graph: AreaGraph, max_size: int = 200
     for a in area_graph.areas:
         pt = a.polygon.representative_point()
         c, r = to_px(pt.x, pt.y)
-        txt = f"{a.id}{'c' if a.type == 'corridor' else ''}"
+        txt = f"{a.id}{TYPE_SUFFIX.get(a.type, '')}"
         cv2.putText(img, txt, (c - 6, r + 4), cv2.FONT_HERSHEY_SIMPLEX, font_scale, (40, 40, 40), 1, cv2.LINE_AA)
     return img
 
