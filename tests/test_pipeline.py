@@ -175,3 +175,15 @@ def test_merge_renumbers_fix_id_references(sample, tmp_path):
     by_id = {a.id: a for a in areas}
     for p in passages:  # every passage joins two areas of its own level
         assert by_id[p.from_id].tags["level"] == by_id[p.to_id].tags["level"] == p.tags["level"]
+
+
+@pytest.mark.parametrize("cancel_after", [1, 5, 12])
+def test_cancel_at_any_stage_stops_and_writes_nothing(sample, tmp_path, cancel_after):
+    from algorithms.errors import Canceled
+
+    out, png = tmp_path / "f.osm", tmp_path / "f.png"
+    with pytest.raises(Canceled):
+        pipeline.convert_dxf(sample["dxf"][0], str(out), preview_png=str(png), anchor_lon=ANCHOR[0],
+                             anchor_lat=ANCHOR[1], progress=RecordingProgress(cancel_after=cancel_after))
+    assert not out.exists() and not png.exists()
+    assert list(tmp_path.iterdir()) == []

@@ -102,3 +102,32 @@ def expected_algorithm_ids():
         assert match, f"{path.name} declares no NAME"
         ids.add("cad2osmag:" + match.group(1))
     return ids
+
+
+def test_feedback_adapter_reports_progress_and_turns_cancel_into_a_processing_exception(qgis_app):
+    from qgis.core import QgsProcessingException, QgsProcessingFeedback
+
+    _plugin_module()
+    from cad2osmag.processing_provider.base import Cad2OsmagAlgorithm, FeedbackProgress
+
+    feedback = QgsProcessingFeedback()
+    progress = FeedbackProgress(feedback)
+    progress.sub(50, 100).set_percent(50)
+    assert feedback.progress() == pytest.approx(75.0)
+
+    def long_stage(progress=None):
+        progress.step(10)
+        feedback.cancel()
+        progress.step(20)  # raises Canceled
+        raise AssertionError("not reached")
+
+    with pytest.raises(QgsProcessingException, match="Canceled"):
+        Cad2OsmagAlgorithm().call(feedback, long_stage)
+
+    def bad_input(progress=None):
+        from cad2osmag.algorithms.errors import InputError
+
+        raise InputError("layer 'A-WALL' is empty: pick another layer")
+
+    with pytest.raises(QgsProcessingException, match="A-WALL"):
+        Cad2OsmagAlgorithm().call(QgsProcessingFeedback(), bad_input)
