@@ -1,5 +1,7 @@
 """cad2osmag:dxftoosmag — the whole pipeline for one floor: DXF -> osmAG (+ preview)."""
 from qgis.core import (
+    QgsProcessing,
+    QgsProcessingParameterFeatureSink,
     QgsCoordinateReferenceSystem,
     QgsCoordinateTransform,
     QgsProcessingException,
@@ -14,6 +16,7 @@ from qgis.core import (
 )
 
 from ..algorithms import pipeline
+from .alg_load_osmag import osmag_to_sinks
 from .base import Cad2OsmagAlgorithm
 
 UNITS = ["auto", "mm", "cm", "m", "inch", "feet"]
@@ -57,6 +60,12 @@ class DxfToOsmagAlgorithm(Cad2OsmagAlgorithm):
         self.addParameter(QgsProcessingParameterEnum("VARIANT", self.tr("osmAG variant"), VARIANTS, defaultValue=0))
         self.addParameter(QgsProcessingParameterFileDestination("OUTPUT", self.tr("osmAG file"),
                                                                 self.tr("OpenStreetMap XML (*.osm)")))
+        self.addParameter(QgsProcessingParameterFeatureSink(
+            "OUTPUT_AREAS", self.tr("Areas (to show on the map)"), QgsProcessing.SourceType.TypeVectorPolygon,
+            optional=True, createByDefault=True))
+        self.addParameter(QgsProcessingParameterFeatureSink(
+            "OUTPUT_PASSAGES", self.tr("Passages (to show on the map)"), QgsProcessing.SourceType.TypeVectorLine,
+            optional=True, createByDefault=True))
         self.addParameter(QgsProcessingParameterFileDestination("PREVIEW", self.tr("Preview image"),
                                                                 self.tr("PNG image (*.png)"), optional=True,
                                                                 createByDefault=False))
@@ -97,9 +106,14 @@ class DxfToOsmagAlgorithm(Cad2OsmagAlgorithm):
             rotation_deg=self.parameterAsDouble(parameters, "ROTATION", context),
             variant=VARIANTS[self.parameterAsEnum(parameters, "VARIANT", context)],
         )
+        # the written file, as styled layers in WGS84 (GUI runs load them into the project)
+        adest, pdest, _, _, _, _ = osmag_to_sinks(self, parameters, context, feedback, out,
+                                                 QgsCoordinateReferenceSystem("EPSG:4326"),
+                                                 "OUTPUT_AREAS", "OUTPUT_PASSAGES")
         timing = ", ".join(f"{k} {v:.2f} s" for k, v in stats["timings"].items())
         feedback.pushInfo(self.tr("Stage times: {}").format(timing))
-        result = {"OUTPUT": out, "AREA_COUNT": stats["areas"], "PASSAGE_COUNT": stats["passages"]}
+        result = {"OUTPUT": out, "AREA_COUNT": stats["areas"], "PASSAGE_COUNT": stats["passages"],
+                  "OUTPUT_AREAS": adest, "OUTPUT_PASSAGES": pdest}
         if preview:
             result["PREVIEW"] = preview
         return result

@@ -101,6 +101,74 @@ def _keys(objs):
     return first + sorted(k for k in keys if k not in first)
 
 
+def osmag_to_sinks(alg, parameters, context, feedback, path, tcrs, areas_key, passages_key):
+    """Read an osmAG file and write its areas and passages into the feature sinks ``areas_key`` and
+    ``passages_key`` of ``alg`` (in ``tcrs``), styled when QGIS loads them. Used by loadosmag and by
+    dxftoosmag to show the converted floor. Returns (areas dest, passages dest, areas, passages, root,
+    read report)."""
+    from ..algorithms.georef import transform_geometry
+    from ..algorithms.osmag import read_osmag
+
+    areas, passages, root, report = alg.call(feedback, read_osmag, path)
+    target = qgs_crs_to_pyproj(tcrs)
+    convert = tcrs.authid() != "EPSG:4326"
+    try:
+        agoms = [transform_geometry(a.polygon, "EPSG:4326", target) if convert else a.polygon for a in areas]
+        pgoms = [transform_geometry(p.line, "EPSG:4326", target) if convert else p.line for p in passages]
+    except Exception as exc:
+        raise QgsProcessingException(alg.tr("cannot convert to {}: {}").format(tcrs.authid(), exc))
+    # everything computed: create the outputs
+    akeys = _keys(areas)
+    afields = QgsFields()
+    afields.append(QgsField("osm_id", FIELD_LONG))
+    for k in akeys:
+        afields.append(QgsField(k, FIELD_STRING))
+    pkeys = _keys(passages)
+    pfields = QgsFields()
+    for n in ("osm_id", "from_id", "to_id"):
+        pfields.append(QgsField(n, FIELD_LONG))
+    for k in pkeys:
+        pfields.append(QgsField(k, FIELD_STRING))
+    sink, adest = alg.parameterAsSink(parameters, areas_key, context, afields, QgsWkbTypes.Type.Polygon,
+                                       tcrs)
+    for a, g in zip(areas, agoms if sink is not None else []):  # an optional output may be skipped
+        f = QgsFeature(afields)
+        f.setGeometry(to_qgs(g))
+        f["osm_id"] = int(a.id)
+        for k in akeys:
+            v = get_tag(a.tags, k)
+            if v is not None:
+                f[k] = v
+        sink.addFeature(f, QgsFeatureSink.Flag.FastInsert)
+    psink, pdest = alg.parameterAsSink(parameters, passages_key, context, pfields,
+                                        QgsWkbTypes.Type.LineString, tcrs)
+    for p, g in zip(passages, pgoms if psink is not None else []):
+        f = QgsFeature(pfields)
+        f.setGeometry(to_qgs(g))
+        f["osm_id"] = int(p.id)
+        f["from_id"] = int(p.from_id)
+        f["to_id"] = int(p.to_id)
+        for k in pkeys:
+            v = get_tag(p.tags, k)
+            if v is not None:
+                f[k] = v
+        psink.addFeature(f, QgsFeatureSink.Flag.FastInsert)
+    dangling = len(report["dangling_nodes"]) + len(report["dangling_refs"])
+    if report["unclosed"]:
+        feedback.pushWarning(alg.tr("unclosed area ways (skipped): {}").format(report["unclosed"]))
+    if dangling:
+        feedback.pushWarning(alg.tr("dangling references (skipped): nodes {} refs {}").format(
+            report["dangling_nodes"], report["dangling_refs"]))
+    # style the layers when they are loaded into the project (GUI runs)
+    alg._stylers = []
+    for dest, kind in ((adest, "areas"), (pdest, "passages")):
+        if dest and context.willLoadLayerOnCompletion(dest):
+            styler = OsmagStyler(kind)
+            alg._stylers.append(styler)  # keep a reference: QGIS does not own Python post-processors
+            context.layerToLoadOnCompletionDetails(dest).setPostProcessor(styler)
+    return adest, pdest, areas, passages, root, report
+
+
 class LoadOsmagAlgorithm(Cad2OsmagAlgorithm):
     NAME = "loadosmag"
     DISPLAY_NAME = "Load osmAG (.osm)"
@@ -133,70 +201,13 @@ class LoadOsmagAlgorithm(Cad2OsmagAlgorithm):
         self.addOutput(QgsProcessingOutputString("VARIANT", self.tr("Variant detected")))
 
     def processAlgorithm(self, parameters, context, feedback):  # noqa: N802
-        from ..algorithms.georef import transform_geometry
-        from ..algorithms.osmag import read_osmag
-
         path = self.parameterAsFile(parameters, self.INPUT, context)
         tcrs = self.parameterAsCrs(parameters, self.TARGET_CRS, context)
         if not tcrs.isValid():  # not given (qgis_process does not apply CRS defaults): WGS84
             tcrs = QgsCoordinateReferenceSystem("EPSG:4326")
-        areas, passages, root, report = self.call(feedback, read_osmag, path)
-        target = qgs_crs_to_pyproj(tcrs)
-        convert = tcrs.authid() != "EPSG:4326"
-        try:
-            agoms = [transform_geometry(a.polygon, "EPSG:4326", target) if convert else a.polygon for a in areas]
-            pgoms = [transform_geometry(p.line, "EPSG:4326", target) if convert else p.line for p in passages]
-        except Exception as exc:
-            raise QgsProcessingException(self.tr("cannot convert to {}: {}").format(tcrs.authid(), exc))
-        # everything computed: create the outputs
-        akeys = _keys(areas)
-        afields = QgsFields()
-        afields.append(QgsField("osm_id", FIELD_LONG))
-        for k in akeys:
-            afields.append(QgsField(k, FIELD_STRING))
-        pkeys = _keys(passages)
-        pfields = QgsFields()
-        for n in ("osm_id", "from_id", "to_id"):
-            pfields.append(QgsField(n, FIELD_LONG))
-        for k in pkeys:
-            pfields.append(QgsField(k, FIELD_STRING))
-        sink, adest = self.parameterAsSink(parameters, self.OUTPUT_AREAS, context, afields, QgsWkbTypes.Type.Polygon,
-                                           tcrs)
-        for a, g in zip(areas, agoms):
-            f = QgsFeature(afields)
-            f.setGeometry(to_qgs(g))
-            f["osm_id"] = int(a.id)
-            for k in akeys:
-                v = get_tag(a.tags, k)
-                if v is not None:
-                    f[k] = v
-            sink.addFeature(f, QgsFeatureSink.Flag.FastInsert)
-        psink, pdest = self.parameterAsSink(parameters, self.OUTPUT_PASSAGES, context, pfields,
-                                            QgsWkbTypes.Type.LineString, tcrs)
-        for p, g in zip(passages, pgoms):
-            f = QgsFeature(pfields)
-            f.setGeometry(to_qgs(g))
-            f["osm_id"] = int(p.id)
-            f["from_id"] = int(p.from_id)
-            f["to_id"] = int(p.to_id)
-            for k in pkeys:
-                v = get_tag(p.tags, k)
-                if v is not None:
-                    f[k] = v
-            psink.addFeature(f, QgsFeatureSink.Flag.FastInsert)
+        adest, pdest, areas, passages, root, report = osmag_to_sinks(
+            self, parameters, context, feedback, path, tcrs, self.OUTPUT_AREAS, self.OUTPUT_PASSAGES)
         dangling = len(report["dangling_nodes"]) + len(report["dangling_refs"])
-        if report["unclosed"]:
-            feedback.pushWarning(self.tr("unclosed area ways (skipped): {}").format(report["unclosed"]))
-        if dangling:
-            feedback.pushWarning(self.tr("dangling references (skipped): nodes {} refs {}").format(
-                report["dangling_nodes"], report["dangling_refs"]))
-        # style the layers when they are loaded into the project (GUI runs)
-        self._stylers = []
-        for dest, kind in ((adest, "areas"), (pdest, "passages")):
-            if context.willLoadLayerOnCompletion(dest):
-                styler = OsmagStyler(kind)
-                self._stylers.append(styler)  # keep a reference: QGIS does not own Python post-processors
-                context.layerToLoadOnCompletionDetails(dest).setPostProcessor(styler)
         return {self.OUTPUT_AREAS: adest, self.OUTPUT_PASSAGES: pdest, "AREA_COUNT": len(areas),
                 "PASSAGE_COUNT": len(passages), "UNCLOSED": len(report["unclosed"]), "DANGLING": dangling,
                 "ROOT_LON": root[0] if root else None, "ROOT_LAT": root[1] if root else None,

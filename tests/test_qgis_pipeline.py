@@ -28,6 +28,8 @@ def test_dxftoosmag_and_mergefloors_headless(sample, tmp_path):
         params = {"INPUT": dxf, "OUTPUT": str(out), "LEVEL": k, "ANCHOR": f"{x},{y} [EPSG:3857]", "ROTATION": 30}
         if k == 1:
             params["PREVIEW"] = str(tmp_path / "preview.png")
+            params["OUTPUT_AREAS"] = str(tmp_path / "areas.gpkg")
+            params["OUTPUT_PASSAGES"] = str(tmp_path / "passages.gpkg")
         _, res, log = run_alg("dxftoosmag", params)
         assert res["AREA_COUNT"] >= 15 and res["PASSAGE_COUNT"] >= 15
         assert "Stage times" in log
@@ -37,6 +39,15 @@ def test_dxftoosmag_and_mergefloors_headless(sample, tmp_path):
         assert {"stairs", "elevator", "corridor", "room", "structure"} == {a.type for a in areas}
         files.append(str(out))
     assert (tmp_path / "preview.png").stat().st_size > 10000
+    # the converted floor as map layers (what a GUI run shows): every area + the floor outline, in WGS84
+    from osgeo import ogr
+
+    ds = ogr.Open(str(tmp_path / "areas.gpkg"))
+    layer = ds.GetLayer(0)
+    assert layer.GetFeatureCount() == len(osmag.read_osmag(files[0])[0])
+    assert layer.GetSpatialRef().GetAuthorityCode(None) == "4326"
+    assert {f.GetField("osmAG:areatype") for f in layer} >= {"room", "corridor", "stairs", "elevator", "structure"}
+    assert ogr.Open(str(tmp_path / "passages.gpkg")).GetLayer(0).GetFeatureCount() > 10
     _, res, _ = run_alg("mergefloors", {"FLOORS": files, "NAME": "Block B", "OUTPUT": str(tmp_path / "b.osm")})
     assert res["FLOOR_COUNT"] == 2
     areas, _, _, report = osmag.read_osmag(str(tmp_path / "b.osm"))
