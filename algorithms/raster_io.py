@@ -2,8 +2,13 @@
 
 Formats: GeoTIFF (our own output, any single-band GDAL raster), PNG/PGM images with an explicit
 resolution, and ROS ``map_server`` maps (``map.yaml`` + image, honouring resolution, origin,
-negate, occupied_thresh and free_thresh). Everything comes back as an ``OccupancyGrid`` with the
-0 free / 255 occupied / 128 unknown convention.
+negate, occupied_thresh, free_thresh and mode). Everything comes back as an ``OccupancyGrid`` with
+the 0 free / 255 occupied / 128 unknown convention.
+
+Our occupancy GeoTIFFs carry the metadata item ``CAD2OSMAG_OCCUPANCY`` and are read as they are.
+Any other raster (a GeoTIFF from another tool, a PNG, a ROS image) follows the image convention of
+robot maps: dark = occupied, light = free, mid grey = unknown; there the same 0/255 values mean the
+opposite, so the tag, not the values, decides.
 """
 from __future__ import annotations
 
@@ -17,6 +22,9 @@ from .errors import InputError
 from .io_utils import atomic_path
 from .model import FREE, OCCUPIED, UNKNOWN, OccupancyGrid
 
+OCCUPANCY_TAG = "CAD2OSMAG_OCCUPANCY"
+OCCUPANCY_METADATA = {OCCUPANCY_TAG: f"{FREE}=free {OCCUPIED}=occupied {UNKNOWN}=unknown"}
+
 
 def _gdal():
     from osgeo import gdal  # Debian's python3-gdal (a dependency of QGIS)
@@ -26,8 +34,9 @@ def _gdal():
 
 
 def write_geotiff(path: str, data: np.ndarray, origin_x: float, origin_y: float, resolution: float,
-                  crs_wkt: str = "", nodata: Optional[float] = None) -> str:
-    """Write a single-band north-up GeoTIFF atomically (temp file + rename). Returns ``path``."""
+                  crs_wkt: str = "", nodata: Optional[float] = None, metadata: Optional[dict] = None) -> str:
+    """Write a single-band north-up GeoTIFF atomically (temp file + rename). Returns ``path``.
+    ``metadata``: GDAL metadata items (``OCCUPANCY_METADATA`` marks an occupancy grid)."""
     gdal = _gdal()
     if data.ndim != 2:
         raise InputError(f"expected a single-band 2-D array, got shape {data.shape}")
@@ -40,6 +49,8 @@ def write_geotiff(path: str, data: np.ndarray, origin_x: float, origin_y: float,
         ds = drv.Create(tmp, int(data.shape[1]), int(data.shape[0]), 1, dtype_map[data.dtype],
                         options=["COMPRESS=DEFLATE", "TILED=YES"])
         ds.SetGeoTransform((float(origin_x), float(resolution), 0.0, float(origin_y), 0.0, -float(resolution)))
+        if metadata:
+            ds.SetMetadata({str(k): str(v) for k, v in metadata.items()})
         if crs_wkt:
             ds.SetProjection(crs_wkt)
         band = ds.GetRasterBand(1)
@@ -52,7 +63,8 @@ def write_geotiff(path: str, data: np.ndarray, origin_x: float, origin_y: float,
 
 
 def write_grid(path: str, grid: OccupancyGrid) -> str:
-    return write_geotiff(path, grid.data, grid.origin_x, grid.origin_y, grid.resolution, grid.crs_wkt)
+    return write_geotiff(path, grid.data, grid.origin_x, grid.origin_y, grid.resolution, grid.crs_wkt,
+                         metadata=OCCUPANCY_METADATA)
 
 
 def _classify(img: np.ndarray, negate: bool = False, occupied_thresh: float = 0.65,
@@ -102,11 +114,19 @@ def read_ros_yaml(path: str) -> OccupancyGrid:
     if not res > 0:
         raise InputError(f"'{path}': resolution must be positive, got {meta['resolution']}")
     origin = meta.get("origin", [0.0, 0.0, 0.0]) or [0.0, 0.0, 0.0]
-    mode = str(meta.get("mode", "trinary"))
-    data = _classify(img, bool(int(meta.get("negate", 0))), float(meta.get("occupied_thresh", 0.65)),
-                     float(meta.get("free_thresh", 0.196)))
-    if mode == "scale" or mode == "raw":
-        pass  # trinary interpretation is what segmentation needs
+    mode = str(meta.get("mode", "trinary")).strip().lower()
+    occ_t, free_t = float(meta.get("occupied_thresh", 0.65)), float(meta.get("free_thresh", 0.196))
+    if mode == "raw":
+        # pixel values are occupancy percentages (0 free .. 100 occupied); anything above 100 is unknown
+        v = img.astype(np.float64)
+        data = np.full(img.shape, UNKNOWN, np.uint8)
+        data[(v <= 100) & (v >= occ_t * 100)] = OCCUPIED
+        data[v <= free_t * 100] = FREE
+    elif mode in ("trinary", "scale"):
+        # scale keeps intermediate probabilities, which segmentation treats as unknown like trinary
+        data = _classify(img, bool(int(meta.get("negate", 0))), occ_t, free_t)
+    else:
+        raise InputError(f"'{path}': unknown map mode '{mode}' (ROS map_server knows trinary, scale and raw)")
     # ROS origin is the bottom-left pixel corner; image row 0 is the top.
     ox, oy = float(origin[0]), float(origin[1])
     if len(origin) > 2 and abs(float(origin[2])) > 1e-9:
@@ -150,9 +170,9 @@ def read_grid(path: str, resolution: Optional[float] = None, origin=(0.0, 0.0)) 
     if gt[5] > 0:
         arr = arr[::-1]
         gt = (gt[0], gt[1], 0.0, gt[3] + arr.shape[0] * gt[5], 0.0, -gt[5])
-    vals = np.unique(arr)
-    if set(vals.tolist()) <= {FREE, OCCUPIED, UNKNOWN}:
+    ours = OCCUPANCY_TAG in (ds.GetMetadata() or {})
+    if ours:
         data = arr.astype(np.uint8)
-    else:
+    else:  # a raster from another tool: image convention (dark = occupied), like PNG and ROS maps
         data = _classify(arr)
     return OccupancyGrid(data, float(gt[0]), float(gt[3]), float(gt[1]), ds.GetProjection() or "")

@@ -111,7 +111,8 @@ def _check_inputs(grid: OccupancyGrid, door_width: float, corridor_width: float,
                          "(is it in metres per pixel?) or DOOR_WIDTH / CORRIDOR_WIDTH")
     if not np.any(data == FREE):
         raise InputError("the occupancy grid has no free cell (it is all occupied or unknown); "
-                         "free space must be 0 (white in images)")
+                         "free space must be 0 in cad2osmag rasters, and light (white) in images, ROS maps "
+                         "and other tools' GeoTIFFs; invert the raster if its free space is dark")
     return data, alpha
 
 

@@ -20,7 +20,7 @@ from qgis.core import (
 from ..algorithms import rasterize as ras
 from ..algorithms.errors import InputError
 from ..algorithms.model import CadGeometry
-from ..algorithms.raster_io import write_geotiff
+from ..algorithms.raster_io import OCCUPANCY_METADATA, write_geotiff
 from .base import Cad2OsmagAlgorithm
 
 
@@ -209,7 +209,8 @@ class RasterizeAlgorithm(Cad2OsmagAlgorithm):
         out = self.parameterAsOutputLayer(parameters, self.OCCUPANCY, context)
         wkt = crs.toWkt(QgsCoordinateReferenceSystem.WktVariant.WKT_PREFERRED_GDAL) if crs.isValid() else ""
         try:
-            write_geotiff(out, grid.data, grid.origin_x, grid.origin_y, grid.resolution, wkt)
+            write_geotiff(out, grid.data, grid.origin_x, grid.origin_y, grid.resolution, wkt,
+                          metadata=OCCUPANCY_METADATA)
         except (InputError, RuntimeError) as exc:
             raise QgsProcessingException(self.tr("Cannot write the raster '{}': {}").format(out, exc))
         rows, cols = grid.shape

@@ -134,3 +134,36 @@ def test_failed_geotiff_write_leaves_no_file(tmp_path):
     with pytest.raises(InputError):
         raster_io.write_geotiff(str(path), np.zeros((2, 2, 2), np.uint8), 0, 0, 1)
     assert not path.exists()
+
+
+def test_only_our_tagged_geotiffs_use_0_free_other_geotiffs_follow_the_image_convention(tmp_path):
+    from osgeo import gdal
+
+    data = np.zeros((20, 20), np.uint8)
+    data[:2, :] = OCCUPIED  # a wall along the top, free below (our convention)
+    ours = str(tmp_path / "ours.tif")
+    raster_io.write_grid(ours, OccupancyGrid(data, 0.0, 1.0, 0.05))
+    assert raster_io.OCCUPANCY_TAG in gdal.Open(ours).GetMetadata()
+    g = raster_io.read_grid(ours)
+    assert g.data[0, 0] == OCCUPIED and g.data[10, 10] == FREE
+    # the same picture from another tool, ROS style: 0 = occupied (black), 255 = free (white)
+    foreign = str(tmp_path / "foreign.tif")
+    raster_io.write_geotiff(foreign, np.where(data == OCCUPIED, 0, 255).astype(np.uint8), 0.0, 1.0, 0.05)
+    f = raster_io.read_grid(foreign)
+    assert f.data[0, 0] == OCCUPIED and f.data[10, 10] == FREE
+    assert np.array_equal(f.data, g.data)
+
+
+def test_ros_raw_mode_reads_occupancy_percentages(tmp_path):
+    img = np.zeros((6, 8), np.uint8)  # raw: 0 = free
+    img[0, :] = 100  # occupied
+    img[5, :] = 255  # unknown (-1 stored as 255)
+    img[3, 3] = 50  # between the thresholds: unknown
+    cv2.imwrite(str(tmp_path / "raw.pgm"), img)
+    (tmp_path / "raw.yaml").write_text("image: raw.pgm\nresolution: 0.05\norigin: [0, 0, 0]\nmode: raw\n"
+                                       "occupied_thresh: 0.65\nfree_thresh: 0.196\n")
+    g = raster_io.read_grid(str(tmp_path / "raw.yaml"))
+    assert g.data[0, 0] == OCCUPIED and g.data[2, 2] == FREE and g.data[5, 0] == UNKNOWN and g.data[3, 3] == UNKNOWN
+    (tmp_path / "bad.yaml").write_text("image: raw.pgm\nresolution: 0.05\nmode: fancy\n")
+    with pytest.raises(InputError, match="mode"):
+        raster_io.read_grid(str(tmp_path / "bad.yaml"))
