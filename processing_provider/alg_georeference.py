@@ -19,6 +19,7 @@ from qgis.core import (
     QgsProject,
 )
 
+from ..algorithms.rasterize import is_local_frame
 from .base import Cad2OsmagAlgorithm, from_qgs, to_qgs
 
 GCP_CAD_X = ("cad_x", "x_cad", "cadx", "sourceX", "source_x", "src_x")
@@ -35,13 +36,17 @@ def qgs_crs_to_pyproj(crs):
 
 
 def is_cad_frame(crs):
-    """True when a layer CRS means "no CRS" (the CAD frame): invalid, or the placeholder GeoPackage writes
-    for layers without one ("Undefined geographic SRS" / "Undefined Cartesian SRS", srs_id 0 / -1)."""
+    """True when a layer is in the CAD frame: no CRS, the local engineering CRS this plugin gives its
+    CAD-frame layers ("CAD drawing frame (local, metres)", any local/engineering CRS), or the placeholder
+    GeoPackage writes for layers without one ("Undefined geographic SRS" / "Undefined Cartesian SRS")."""
     if crs is None or not crs.isValid():
         return True
     if crs.authid():
         return False
-    text = (crs.description() + " " + crs.toWkt()).lower()
+    wkt = crs.toWkt()
+    if is_local_frame(wkt) or is_local_frame(crs.toWkt(QgsCoordinateReferenceSystem.WktVariant.WKT_PREFERRED)):
+        return True
+    text = (crs.description() + " " + wkt).lower()
     return "undefined geographic srs" in text or "undefined cartesian srs" in text
 
 
@@ -222,10 +227,11 @@ class GeoreferenceAlgorithm(Cad2OsmagAlgorithm):
         from ..algorithms.errors import InputError
 
         crs = source.sourceCrs()
-        if not is_cad_frame(crs) and crs.isGeographic():
+        if not is_cad_frame(crs):
             raise QgsProcessingException(self.tr(
-                "{} is already in a geographic CRS ({}); georeference layers in the CAD frame (no CRS, metres)"
-            ).format(what, crs.authid()))
+                "{} is already georeferenced ({}); this algorithm places layers in the CAD frame (the outputs of "
+                "the segment and refine algorithms). Use 'Reproject layer' to change the CRS of a placed layer."
+            ).format(what, crs.authid() or crs.description()))
         feats = []
         total = max(source.featureCount(), 1)
         for i, f in enumerate(source.getFeatures()):

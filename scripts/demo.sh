@@ -36,7 +36,8 @@ run refine AREAS="$S/areas.gpkg" PASSAGES="$S/passages.gpkg" RESOLUTION=0.044 \
 run georeference AREAS="$S/refined_areas.gpkg" PASSAGES="$S/refined_passages.gpkg" MODE=0 \
     ANCHOR="$ANCHOR" ROTATION=$ROTATION TARGET_CRS=EPSG:4326 \
     OUTPUT_AREAS="$S/areas_wgs84.gpkg" OUTPUT_PASSAGES="$S/passages_wgs84.gpkg"
-run exportosmag AREAS="$S/areas_wgs84.gpkg" PASSAGES="$S/passages_wgs84.gpkg" LEVEL=1 OUTPUT="$S/floor-1.osm"
+run exportosmag AREAS="$S/areas_wgs84.gpkg" PASSAGES="$S/passages_wgs84.gpkg" LEVEL=1 \
+    ANCHOR_LON=121.5906 ANCHOR_LAT=31.1790 OUTPUT="$S/floor-1.osm"   # the root node at the anchor
 
 # 3. every floor in one step each, then the building file and the preview image
 floors=()

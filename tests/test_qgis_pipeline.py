@@ -83,3 +83,34 @@ def test_make_demo_writes_building_and_preview():
     assert img is not None and img.shape[1] > 500
     for name in ("layers.csv", "walls.gpkg", "occupancy.tif", "areas.gpkg", "refined_areas.gpkg", "floor-1.osm"):
         assert (demo / "stages" / name).exists(), name
+    # stage by stage and in one step give the same floor, with the root node at the anchor
+    staged, _, staged_root, _ = osmag.read_osmag(str(demo / "stages" / "floor-1.osm"))
+    direct, _, direct_root, _ = osmag.read_osmag(str(demo / "floor-1.osm"))
+    assert staged_root == pytest.approx(direct_root, abs=1e-9) == pytest.approx(ANCHOR, abs=1e-9)
+    assert len([a for a in staged if a.type != "structure"]) == len([a for a in direct if a.type != "structure"])
+
+
+@pytest.mark.qgis_process
+def test_stage_chain_layers_in_the_cad_frame_export_and_georeference(sample, tmp_path):
+    """Layers written by the stages carry the plugin's local CAD-frame CRS; export and georeference
+    must treat them as the CAD frame (they once handed that CRS to PROJ and crashed)."""
+    s = tmp_path
+    run_alg("extractstructure", {"INPUT": sample["dxf"][0], "WALLS": str(s / "walls.gpkg"), "TEXTS": str(s / "t.gpkg")})
+    run_alg("rasterize", {"WALLS": str(s / "walls.gpkg"), "OCCUPANCY": str(s / "occ.tif")})
+    run_alg("segment", {"INPUT": str(s / "occ.tif"), "AREAS": str(s / "a.gpkg"), "PASSAGES": str(s / "p.gpkg"),
+                        "LABELS": str(s / "l.tif")})
+    run_alg("refine", {"AREAS": str(s / "a.gpkg"), "PASSAGES": str(s / "p.gpkg"), "RESOLUTION": 0.044,
+                       "OUTPUT_AREAS": str(s / "ra.gpkg"), "OUTPUT_PASSAGES": str(s / "rp.gpkg")})
+    _, res, _ = run_alg("exportosmag", {"AREAS": str(s / "ra.gpkg"), "PASSAGES": str(s / "rp.gpkg"), "LEVEL": 1,
+                                        "ANCHOR_LON": ANCHOR[0], "ANCHOR_LAT": ANCHOR[1], "OUTPUT": str(s / "f.osm")})
+    areas, passages, root, report = osmag.read_osmag(str(s / "f.osm"))
+    assert root == pytest.approx(ANCHOR, abs=1e-9)
+    assert len(areas) == res["AREA_COUNT"] >= 15 and len(passages) == res["PASSAGE_COUNT"] >= 15
+    # georeference places CAD-frame layers, and refuses layers that are already placed
+    run_alg("georeference", {"AREAS": str(s / "ra.gpkg"), "MODE": 0, "ANCHOR": f"{ANCHOR[0]},{ANCHOR[1]} [EPSG:4326]",
+                             "TARGET_CRS": "EPSG:32651", "OUTPUT_AREAS": str(s / "utm.gpkg")})
+    code, _, log = run_alg("georeference", {"AREAS": str(s / "utm.gpkg"), "MODE": 0,
+                                            "ANCHOR": f"{ANCHOR[0]},{ANCHOR[1]} [EPSG:4326]",
+                                            "OUTPUT_AREAS": str(s / "twice.gpkg")}, check=False)
+    assert code != 0 and "already georeferenced" in log and "32651" in log
+    assert not (s / "twice.gpkg").exists()
