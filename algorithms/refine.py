@@ -63,6 +63,16 @@ def _single_polygon(area: Area, progress):
         if not reason.startswith("Ring Self-intersection"):
             raise InputError(f"area {area.id} has an invalid polygon: {reason}; fix the geometry "
                              "(e.g. with QGIS 'Fix geometries') and run again")
+        # a ring touching itself at a vertex (pixel outlines pinch a hole against the shell there):
+        # restructure the rings with the same vertices, so shared borders are unaffected
+        fixed = shapely.make_valid(g)
+        polys = [p for p in getattr(fixed, "geoms", [fixed]) if isinstance(p, Polygon) and p.area > 0]
+        if not polys:
+            raise InputError(f"area {area.id} has an invalid polygon: {reason}; fix the geometry and run again")
+        g = max(polys, key=lambda p: p.area)
+        if len(polys) > 1:
+            progress.warning(f"area {area.id} touches itself ({reason}); kept its largest part "
+                             f"({g.area:.2f} m²), dropped {sum(p.area for p in polys) - g.area:.2f} m²")
     if g.area <= 0:
         raise InputError(f"area {area.id} has zero area (degenerate polygon)")
     return g

@@ -35,6 +35,10 @@ def qgs_crs_to_pyproj(crs):
         QgsCoordinateReferenceSystem, "WKT_PREFERRED") else crs.toWkt()
 
 
+GCP_RMS_WARNING_M = 0.5  # a fit worse than this is worth a look: a point picked in the wrong place
+GCP_SCALE_WARNING = 0.02  # a correct drawing in metres has scale 1; 2 % points at units or bad points
+
+
 def is_cad_frame(crs):
     """True when a layer is in the CAD frame: no CRS, the local engineering CRS this plugin gives its
     CAD-frame layers ("CAD drawing frame (local, metres)", any local/engineering CRS), or the placeholder
@@ -81,7 +85,7 @@ class GeoreferenceAlgorithm(Cad2OsmagAlgorithm):
             "2 points, not all on one line. A least-squares similarity (Helmert) is solved and the "
             "residual of every point and their RMS are reported in metres.\n"
             "All conversions go through a transverse Mercator projection centred on the anchor (pyproj/PROJ), "
-            "never a flat-earth approximation. Add a basemap (Plugins menu > cad2osmag > basemaps) to pick "
+            "never a flat-earth approximation. Add a basemap (Vector ▸ CAD to osmAG ▸ Add … basemap) to pick "
             "points against real imagery.")
 
     AREAS = "AREAS"
@@ -191,6 +195,16 @@ class GeoreferenceAlgorithm(Cad2OsmagAlgorithm):
             for gid, r in zip(ids, res):
                 feedback.pushInfo(self.tr("control point {}: residual {:.4f} m").format(gid, float(r)))
             feedback.pushInfo(self.tr("RMS of residuals: {:.4f} m ({} points)").format(rms, len(ids)))
+            worst = max(range(len(ids)), key=lambda i: float(res[i])) if len(ids) else None
+            if rms > GCP_RMS_WARNING_M and worst is not None:
+                feedback.pushWarning(self.tr(
+                    "The control points do not fit a similarity transform well (RMS {:.2f} m, worst point {} off by "
+                    "{:.2f} m): check that each point's CAD x/y match where it was picked").format(
+                        rms, ids[worst], float(res[worst])))
+            if fixed is None and abs(frame.scale - 1.0) > GCP_SCALE_WARNING:
+                feedback.pushWarning(self.tr(
+                    "The fitted scale is {:.4f} (the plan would be stretched by {:+.1%}): check the drawing units "
+                    "or the control points, or set FIX_SCALE").format(frame.scale, frame.scale - 1.0))
             residuals = "; ".join(f"{gid}={float(r):.4f}" for gid, r in zip(ids, res))
         else:
             anchor_crs = self.parameterAsPointCrs(parameters, self.ANCHOR, context)

@@ -258,3 +258,21 @@ def test_sist_floor_refine_and_export(sist_graph, tmp_path):
     areas, passages, root, rep = read_osmag(str(path))
     assert len(areas) == len(out.areas) and len(passages) == len(out.passages) == written["passages"]
     assert not rep["unclosed"] and not rep["dangling_refs"] and not rep["dangling_nodes"]
+
+
+def test_self_touching_ring_is_repaired_not_passed_on():
+    """A ring touching itself (invalid for OGC/GEOS) comes out of refine valid, with a warning."""
+    from shapely.geometry import LineString, Polygon, box
+
+    from algorithms.model import Area, AreaGraph, Passage
+    from algorithms.progress import RecordingProgress
+    from algorithms.refine import refine
+
+    pinched = Polygon([(20, 0), (30, 0), (30, 10), (25, 0), (20, 10)])
+    assert not pinched.is_valid
+    areas = [Area(1, box(0, 0, 20, 10)), Area(2, pinched)]
+    graph = AreaGraph(areas, [Passage(1, 1, 2, LineString([(20, 2), (20, 8)]))])
+    rec = RecordingProgress()
+    out, _ = refine(graph, 0.05, min_area=0, progress=rec)
+    assert all(a.polygon.is_valid for a in out.areas)
+    assert any(kind == "warning" and "area 2 touches itself" in msg for kind, msg in rec.messages)
