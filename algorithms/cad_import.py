@@ -588,7 +588,8 @@ def _circle_from_3(p0, p1, p2):
 
 def find_door_swings(geoms: Sequence[CadGeometry]) -> List[int]:
     """Indices of door swing arcs (quarter arcs of 0.5-1.6 m radius) and of the door leaves hinged at
-    their centre (a line or thin rectangle from the centre to an end of the arc)."""
+    their centre (a line or thin rectangle from the centre to an end of the arc). On wall layers an arc
+    counts as a swing only together with its leaf: a rounded wall corner is a wall."""
     arcs = []  # (index, cx, cy, r, end points)
     for i, g in enumerate(geoms):
         if g.entity not in ("ARC", "LWPOLYLINE", "POLYLINE") or g.kind == "column" or g.closed or len(g.coords) < 5:
@@ -612,8 +613,9 @@ def find_door_swings(geoms: Sequence[CadGeometry]) -> List[int]:
 
     centres = np.array([(a[1], a[2]) for a in arcs])
     tree = cKDTree(centres)
-    drop = {a[0] for a in arcs}
-    arc_set = set(drop)
+    arc_set = {a[0] for a in arcs}
+    with_leaf = set()
+    drop = set()
     for i, g in enumerate(geoms):
         if i in arc_set or g.kind == "column" or g.filled:
             continue
@@ -628,7 +630,9 @@ def find_door_swings(geoms: Sequence[CadGeometry]) -> List[int]:
             far = c[int(np.argmax(d))]
             if min(math.hypot(*(far - e0)), math.hypot(*(far - e1))) <= 0.15 * r:
                 drop.add(i)
+                with_leaf.add(arcs[k][0])
                 break
+    drop |= {i for i in arc_set if i in with_leaf or geoms[i].kind != "wall"}
     return sorted(drop)
 
 
@@ -870,6 +874,9 @@ def _layer_infos(raw: _Raw, rules: LayerRules, selected: Optional[Dict[str, str]
     return infos
 
 
+UNIT_SIZE_PERCENTILES = (2.0, 98.0)  # a few stray entities far away must not change the unit
+
+
 def _percentile_size(coords: Sequence[np.ndarray], pct=(0.5, 99.5)) -> float:
     if not coords:
         return 0.0
@@ -1068,7 +1075,8 @@ def import_dxf(path: str, rules=None, layers: Optional[Sequence[str]] = None, un
     if forced:
         unit, msg = forced, None
     else:
-        unit, msg = choose_unit(_percentile_size(coords), header)
+        # the unit only has to make the size plausible (5-500 m): a coarse, outlier-proof estimate
+        unit, msg = choose_unit(_percentile_size(coords, UNIT_SIZE_PERCENTILES), header)
     if msg:
         warnings.append(msg)
         progress.warning(msg)

@@ -64,6 +64,7 @@ DEFAULT_PADDING = 0.03
 DEFAULT_PERCENTILES = (0.5, 99.5)
 DEFAULT_KERNEL = 5
 DEFAULT_MAX_PIXELS = 60e6
+MIN_OCCUPIED_SHARE = 0.0005  # a floor plan's walls cover a few percent of its raster, never 0.05 %
 DEFAULT_FREE_KINDS = ("stair", "elevator")  # symbols inside stair and lift areas, not obstacles
 DEFAULT_STROKE = 0.15  # metres: drawn width of a hairline
 SHIFT = 4  # cv2 sub-pixel bits
@@ -300,6 +301,12 @@ def rasterize(geometries: Sequence[CadGeometry], resolution: float = DEFAULT_RES
                     progress.sub(5, 70))
     progress.step(70, "closing gaps and removing specks")
     img = repair(img, int(kernel))
+    share = float(np.count_nonzero(img)) / img.size
+    if share < MIN_OCCUPIED_SHARE:
+        raise InputError(
+            f"the raster is practically empty ({share:.3%} occupied over {cols * resolution:.0f} m x "
+            f"{rows * resolution:.0f} m): the extent is stretched by entities far from the building or by a "
+            "wrong unit; check UNITS, remove stray entities, or give an explicit extent")
     progress.step(100)
     return OccupancyGrid(img, ox, oy, float(resolution))
 

@@ -134,8 +134,7 @@ class ExtractStructureAlgorithm(Cad2OsmagAlgorithm):
         rules = self.call(feedback, _load_rules, rules_path)
         drawing = self.call(feedback, cad_import.import_dxf, path, rules=rules, layers=layers, units=units or None,
                             include_doors=include_doors)
-        for msg in drawing.repairs:
-            feedback.pushWarning(msg) if hasattr(feedback, "pushWarning") else feedback.reportError(msg)
+        # import_dxf already reported every repair through the feedback
 
         # build every feature before creating the sinks, so a failure leaves no half-written output
         wf = wall_fields()

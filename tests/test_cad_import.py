@@ -48,6 +48,8 @@ def bounds(geoms):
     ("Türen", "door"), ("0", "reference"), ("Defpoints", "reference"), ("DEFPOINTS", "reference"),
     ("A-ANNO-TEXT", None), ("QUOTE - dimension", None), ("ARREDI attrezzature - furniture", None),
     ("J-WINDOW_TEXT门窗编号", None), ("A-WALL-DIMS", None), ("mobiliario", None), ("Pluma 8", None),
+    ("PARETI", "wall"), ("STRUTTURA PORTANTE", "wall"), ("Cerramientos", "wall"), ("A-COLU", "column"),
+    ("S-COLU", "column"), ("A-ANNO-SCALE", None),
 ])
 def test_default_rules_classify(name, kind):
     assert default_rules().classify(name)[0] == kind
@@ -544,3 +546,46 @@ def test_entity_with_unreadable_number_is_dropped_and_reported(tmp_path):
     assert len(d.geometries) == 7
     assert any("dropped 1 entities with unreadable numbers" in r for r in d.repairs)
     assert any(kind == "warning" and "recover mode" in m for kind, m in prog.messages)
+
+
+def test_rounded_wall_corners_are_walls_not_door_swings(tmp_path):
+    """Quarter arcs of door-swing size on a wall layer, with no leaf hinged at their centre, stay walls."""
+    from algorithms.rasterize import rasterize
+    from scipy import ndimage
+
+    doc = ezdxf.new("R2013")
+    doc.header["$INSUNITS"] = 6
+    msp = doc.modelspace()
+    r, w, h = 1.0, 20.0, 10.0
+    for (x0, y0), (x1, y1) in (((r, 0), (w - r, 0)), ((w, r), (w, h - r)), ((w - r, h), (r, h)), ((0, h - r), (0, r))):
+        msp.add_line((x0, y0), (x1, y1), dxfattribs={"layer": "A-WALL"})
+    for (cx, cy), start in (((w - r, r), 270), ((w - r, h - r), 0), ((r, h - r), 90), ((r, r), 180)):
+        msp.add_arc((cx, cy), r, start, start + 90, dxfattribs={"layer": "A-WALL"})
+    d = import_dxf(save(doc, tmp_path))
+    assert sum(g.entity == "ARC" for g in d.geometries) == 4
+    grid = rasterize(d.geometries)
+    _, n = ndimage.label(grid.data == 0)
+    assert n == 2  # the room is closed: inside and outside are two free components
+
+
+def test_a_few_far_stray_entities_do_not_change_the_unit(tmp_path):
+    doc = ezdxf.new("R2013")
+    doc.header["$INSUNITS"] = 6  # metres, and drawn in metres
+    msp = doc.modelspace()
+    for i in range(40):  # a 40 x 15 m building of many wall pieces
+        msp.add_line((i, 0), (i + 1, 0), dxfattribs={"layer": "A-WALL"})
+        msp.add_line((i, 15), (i + 1, 15), dxfattribs={"layer": "A-WALL"})
+    msp.add_line((9000, 9000), (9001, 9000), dxfattribs={"layer": "A-WALL"})  # 1 m of debris 9 km away
+    d = import_dxf(save(doc, tmp_path))
+    assert d.unit_name == "m" and not any("instead" in w for w in d.warnings)
+
+
+def test_practically_empty_raster_is_an_error_not_a_silent_output():
+    from algorithms.errors import InputError
+    from algorithms.model import CadGeometry
+    from algorithms.rasterize import rasterize
+
+    far = [CadGeometry("A-WALL", "wall", np.array([[0.0, 0.0], [1.0, 0.0]])),
+           CadGeometry("A-WALL", "wall", np.array([[300.0, 300.0], [301.0, 300.0]]))]
+    with pytest.raises(InputError, match="practically empty"):
+        rasterize(far, percentiles=(0, 100))
