@@ -998,8 +998,17 @@ def inspect_dxf(path: str, rules=None, progress=None) -> CadDrawing:
     infos = _layer_infos(raw, rules)
     warnings = list(raw.warnings)
     xrefs = sorted(set(raw.pieces.xrefs))
+    base = os.path.basename(path)
+    if not raw.pieces.layer and not raw.pieces.texts:
+        raise InputError(f"'{base}' has no geometry and no text in model space"
+                         + (f": {_xref_message(xrefs)}" if xrefs else
+                            " (the plan may be in a paper-space layout, or the file is damaged)"))
     if xrefs:
         warnings.append(_xref_message(xrefs))
+    fallback = _fallback_walls(infos, raw)  # the same choice import_dxf makes, so 'kept' tells the truth
+    if fallback:
+        warnings.append(fallback)
+        progress.warning(fallback)
     progress.step(100)
     return CadDrawing(path=path, geometries=[], texts=[], layers=infos, unit_name=raw.header_unit,
                       unit_scale=UNIT_SCALES.get(raw.header_unit, 1.0), header_unit=raw.header_unit,

@@ -589,3 +589,22 @@ def test_practically_empty_raster_is_an_error_not_a_silent_output():
            CadGeometry("A-WALL", "wall", np.array([[300.0, 300.0], [301.0, 300.0]]))]
     with pytest.raises(InputError, match="practically empty"):
         rasterize(far, percentiles=(0, 100))
+
+
+def test_list_layers_tells_the_same_story_as_the_import(tmp_path):
+    """The wall fallback (no layer name looks like a wall) shows in the layer report, and a drawing with
+    nothing in model space is an error there too, not a report of two empty layers."""
+    from algorithms.cad_import import layer_kept
+
+    doc = ezdxf.new("R2013")
+    doc.header["$INSUNITS"] = 6
+    msp = doc.modelspace()
+    for k in range(4):
+        msp.add_lwpolyline([(0, 0), (20, 0), (20, 10), (0, 10)], close=True, dxfattribs={"layer": "Pluma 8"})
+    msp.add_text("Aula 1", dxfattribs={"layer": "testo", "insert": (5, 5)})
+    infos = {i.name: i for i in list_layers(save(doc, tmp_path))}
+    assert layer_kept(infos["Pluma 8"]) and not layer_kept(infos["testo"])
+    assert {g.layer for g in import_dxf(save(doc, tmp_path, "b.dxf")).geometries} == {"Pluma 8"}
+    empty = ezdxf.new("R2013")
+    with pytest.raises(InputError, match="no geometry and no text"):
+        list_layers(save(empty, tmp_path, "empty.dxf"))
