@@ -84,7 +84,7 @@ def main(argv=None):
     mccs = [r["mcc"] for r in results]
     ok = sum(mccs) / len(mccs) >= 0.85 and min(mccs) >= 0.60
     print(f"target (mean MCC >= 0.85, every map >= 0.60): {'met' if ok else 'NOT met'}")
-    return 0
+    return 0 if ok else 1
 
 
 if __name__ == "__main__":

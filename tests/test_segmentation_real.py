@@ -38,9 +38,44 @@ def grid_scores(shared_data):
 def test_grid_gt_mcc(grid_scores):
     mccs = {k: v[0]["mcc"] for k, v in grid_scores.items()}
     assert len(mccs) == 10
-    mean = sum(mccs.values()) / len(mccs)
-    assert mean >= MCC_MEAN_TARGET, mccs
+    for setting in ("csv", "default"):  # the target holds for each width setting on its own
+        mean = np.mean([v for (name, s), v in mccs.items() if s == setting])
+        assert mean >= MCC_MEAN_TARGET, (setting, mccs)
     assert min(mccs.values()) >= MCC_MAP_TARGET, mccs
+
+
+def _largest_inside_free_component(grid):
+    """The largest 4-connected free component inside the building (on these maps the outside is free
+    space too, reached through open doors, so "inside" is the building interior segmentation found)."""
+    from scipy import ndimage
+
+    free = grid.data == 0
+    interior_free, _ = seg.building_interior(free, grid.resolution)
+    comp, n = ndimage.label(interior_free)
+    sizes = ndimage.sum_labels(np.ones_like(comp), comp, index=np.arange(1, n + 1))
+    return comp == 1 + int(np.argmax(sizes))
+
+
+def test_grid_gt_coverage_and_connectivity(grid_scores):
+    """Areas cover >= 97 % of the free pixels of the largest free component inside the building, and the
+    areas in that component form one connected Area Graph (each passage an edge)."""
+    for (name, setting), (_, ag) in grid_scores.items():
+        inside = _largest_inside_free_component(ag.grid)
+        covered = float((ag.labels[inside] > 0).mean())
+        assert covered >= 0.97, (name, setting, covered)
+        ids = set(np.unique(ag.labels[inside]).tolist()) - {0}
+        adj = {i: set() for i in ids}
+        for p in ag.passages:
+            if p.from_id in ids and p.to_id in ids:
+                adj[p.from_id].add(p.to_id)
+                adj[p.to_id].add(p.from_id)
+        start = next(iter(ids))
+        seen, todo = {start}, [start]
+        while todo:
+            for j in adj[todo.pop()] - seen:
+                seen.add(j)
+                todo.append(j)
+        assert seen == ids, (name, setting, len(ids) - len(seen))
 
 
 def test_grid_gt_properties(grid_scores):
