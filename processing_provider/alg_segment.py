@@ -10,6 +10,7 @@ from qgis.core import (
     QgsProcessingException,
     QgsProcessingOutputNumber,
     QgsProcessingParameterFeatureSink,
+    QgsProcessingParameterFeatureSource,
     QgsProcessingParameterNumber,
     QgsProcessingParameterRasterDestination,
     QgsProcessingParameterRasterLayer,
@@ -82,6 +83,9 @@ class SegmentAlgorithm(Cad2OsmagAlgorithm):
         self.addParameter(QgsProcessingParameterNumber(
             self.ENVELOPE_GAP, self.tr("Bridge facade openings up to (m)"), QgsProcessingParameterNumber.Type.Double,
             segmentation.DEFAULT_ENVELOPE_GAP, False, 0.1, 1000.0))
+        self.addParameter(QgsProcessingParameterFeatureSource(
+            "STRUCTURE", self.tr("Structure lines of the drawing (WALLS of 'Extract structure'), to recognise "
+                                 "stairs and lifts"), [QgsProcessing.SourceType.TypeVectorLine], optional=True))
         self.addParameter(QgsProcessingParameterFeatureSink(
             self.AREAS, self.tr("Areas"), QgsProcessing.SourceType.TypeVectorPolygon))
         self.addParameter(QgsProcessingParameterFeatureSink(
@@ -131,6 +135,13 @@ class SegmentAlgorithm(Cad2OsmagAlgorithm):
                        delta=self.parameterAsDouble(parameters, self.DELTA, context),
                        prune=self.parameterAsDouble(parameters, self.PRUNE, context),
                        envelope_gap=self.parameterAsDouble(parameters, self.ENVELOPE_GAP, context))
+        structure = self.parameterAsSource(parameters, "STRUCTURE", context)
+        if structure is not None:
+            from ..algorithms.area_types import classify_vertical_areas
+            from .alg_rasterize import features_to_geometries
+
+            typed = classify_vertical_areas(ag.areas, features_to_geometries(structure, feedback))
+            feedback.pushInfo(self.tr("{} stair/lift areas recognised from their symbols").format(len(typed)))
         st = ag.stats
         feedback.pushInfo(self.tr("Interior free area: {:.1f} m² (of {:.1f} m² free in the raster)").format(
             st["interior_area_m2"], st["free_area_m2"]))
@@ -187,7 +198,7 @@ class SegmentAlgorithm(Cad2OsmagAlgorithm):
             self.LABELS: labels_path,
             "AREA_COUNT": len(ag.areas),
             "ROOM_COUNT": n_rooms,
-            "CORRIDOR_COUNT": len(ag.areas) - n_rooms,
+            "CORRIDOR_COUNT": sum(a.type == "corridor" for a in ag.areas),
             "PASSAGE_COUNT": len(ag.passages),
             "INTERIOR_AREA_M2": float(st["interior_area_m2"]),
             "ALPHA": float(st["alpha_px2"]),

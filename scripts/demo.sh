@@ -30,7 +30,7 @@ S="$OUT/stages"
 run listlayers INPUT="$OUT/dxf/sample-F1.dxf" OUTPUT="$S/layers.csv"
 run extractstructure INPUT="$OUT/dxf/sample-F1.dxf" WALLS="$S/walls.gpkg" TEXTS="$S/texts.gpkg"
 run rasterize WALLS="$S/walls.gpkg" OCCUPANCY="$S/occupancy.tif"
-run segment INPUT="$S/occupancy.tif" AREAS="$S/areas.gpkg" PASSAGES="$S/passages.gpkg" LABELS="$S/labels.tif"
+run segment INPUT="$S/occupancy.tif" STRUCTURE="$S/walls.gpkg" AREAS="$S/areas.gpkg" PASSAGES="$S/passages.gpkg" LABELS="$S/labels.tif"
 run refine AREAS="$S/areas.gpkg" PASSAGES="$S/passages.gpkg" RESOLUTION=0.044 \
     OUTPUT_AREAS="$S/refined_areas.gpkg" OUTPUT_PASSAGES="$S/refined_passages.gpkg"
 run georeference AREAS="$S/refined_areas.gpkg" PASSAGES="$S/refined_passages.gpkg" MODE=0 \

@@ -22,6 +22,19 @@ def pytest_configure(config):
     config.addinivalue_line("markers", "qgis_process: runs scripts/qgis-process in a subprocess")
 
 
+def plugin_package():
+    """The repository imported as the package 'cad2osmag', as QGIS imports the plugin folder."""
+    import importlib.util
+
+    if "cad2osmag" not in sys.modules:
+        spec = importlib.util.spec_from_file_location("cad2osmag", REPO / "__init__.py",
+                                                      submodule_search_locations=[str(REPO)])
+        module = importlib.util.module_from_spec(spec)
+        sys.modules["cad2osmag"] = module
+        spec.loader.exec_module(module)
+    return sys.modules["cad2osmag"]
+
+
 @pytest.fixture(scope="session")
 def shared_data() -> Path:
     if not SHARED_DATA.is_dir():

@@ -1,14 +1,11 @@
 """The plugin as QGIS sees it: metadata, classFactory/initGui/unload, the provider and its algorithms."""
 import configparser
-import importlib
-import importlib.util
 import re
 import subprocess
-import sys
 
 import pytest
 
-from .conftest import REPO
+from .conftest import REPO, plugin_package
 
 REQUIRED_METADATA = ("name", "qgisMinimumVersion", "description", "about", "version", "author", "email",
                      "tracker", "repository", "tags", "category", "icon")
@@ -32,21 +29,10 @@ def test_algorithms_package_never_imports_qgis():
         assert "import qgis" not in text and "from qgis" not in text, f"{path.name} imports qgis"
 
 
-def _plugin_module():
-    """Import the repository as the package 'cad2osmag', as QGIS does with the plugin folder."""
-    if "cad2osmag" not in sys.modules:
-        spec = importlib.util.spec_from_file_location("cad2osmag", REPO / "__init__.py",
-                                                      submodule_search_locations=[str(REPO)])
-        module = importlib.util.module_from_spec(spec)
-        sys.modules["cad2osmag"] = module
-        spec.loader.exec_module(module)
-    return sys.modules["cad2osmag"]
-
-
 def test_plugin_loads_and_unloads(qgis_iface, qgis_app):
     from qgis.core import QgsApplication
 
-    plugin = _plugin_module().classFactory(qgis_iface)
+    plugin = plugin_package().classFactory(qgis_iface)
     plugin.initGui()
     try:
         provider = QgsApplication.processingRegistry().providerById("cad2osmag")
@@ -71,7 +57,7 @@ def test_qgis_opens_osmag_polygons_once_the_plugin_is_loaded(qgis_iface, qgis_ap
     from algorithms.osmag import write_osmag
 
     gdal.SetConfigOption("OSM_USE_CUSTOM_INDEXING", None)
-    _plugin_module().classFactory(qgis_iface)
+    plugin_package().classFactory(qgis_iface)
     assert gdal.GetConfigOption("OSM_USE_CUSTOM_INDEXING") == "NO"
     path = tmp_path / "two_rooms.osm"
     areas = [Area(1, box(0, 0, 5, 4), name="Office 1"), Area(2, box(5, 0, 9, 4), type="corridor", name="Hall")]
@@ -107,7 +93,7 @@ def expected_algorithm_ids():
 def test_feedback_adapter_reports_progress_and_turns_cancel_into_a_processing_exception(qgis_app):
     from qgis.core import QgsProcessingException, QgsProcessingFeedback
 
-    _plugin_module()
+    plugin_package()
     from cad2osmag.processing_provider.base import Cad2OsmagAlgorithm, FeedbackProgress
 
     feedback = QgsProcessingFeedback()

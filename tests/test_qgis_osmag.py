@@ -237,21 +237,13 @@ def test_bad_input_headless(cad_layers, tmp_path):
 
 # ----------------------------------------------------------------------------- in-process QGIS
 def _plugin_package():
-    """The repository imported as the package 'cad2osmag', as QGIS imports the plugin folder."""
     import importlib
-    import importlib.util
-    import sys
 
-    from .conftest import REPO
+    from .conftest import plugin_package
 
-    if "cad2osmag" not in sys.modules:
-        spec = importlib.util.spec_from_file_location("cad2osmag", REPO / "__init__.py",
-                                                      submodule_search_locations=[str(REPO)])
-        module = importlib.util.module_from_spec(spec)
-        sys.modules["cad2osmag"] = module
-        spec.loader.exec_module(module)
+    package = plugin_package()
     importlib.import_module("cad2osmag.processing_provider.alg_load_osmag")
-    return sys.modules["cad2osmag"]
+    return package
 
 
 def test_basemaps_added_without_fetching(qgis_app, qgis_new_project):
