@@ -53,7 +53,8 @@ class ExportOsmagAlgorithm(Cad2OsmagAlgorithm):
         self.addParameter(QgsProcessingParameterFeatureSource(
             self.STRUCTURE, self.tr("Floor / building outlines (structure areas)"),
             [QgsProcessing.SourceType.TypeVectorPolygon], optional=True))
-        self.addParameter(QgsProcessingParameterString(self.LEVEL, self.tr("Level"), "1"))
+        self.addParameter(QgsProcessingParameterString(
+            self.LEVEL, self.tr("Level (empty: the areas' own level field, else 1)"), "", optional=True))
         self.addParameter(QgsProcessingParameterNumber(
             self.HEIGHT, self.tr("Height per level (m)"), QgsProcessingParameterNumber.Type.Double, 3.2, False, 0.01,
             1000.0))
@@ -108,8 +109,22 @@ class ExportOsmagAlgorithm(Cad2OsmagAlgorithm):
                     s.id, nxt = nxt, nxt + 1
                 used.add(s.id)
         passages = read_passages(psrc, areas)
-        level = self.parameterAsString(parameters, self.LEVEL, context)
+        level = (self.parameterAsString(parameters, self.LEVEL, context) or "").strip()
+        if not level:  # re-exporting loaded or edited layers keeps their level
+            levels = sorted({str(a.tags.get("level", "")).strip() for a in areas} - {""})
+            if len(levels) > 1:
+                raise QgsProcessingException(self.tr(
+                    "AREAS holds several levels ({}): export one level at a time (filter the layer, or set LEVEL), "
+                    "then combine the files with 'Merge osmAG floors into a building'").format(", ".join(levels)))
+            level = levels[0] if levels else "1"
         height = self.parameterAsDouble(parameters, self.HEIGHT, context)
+        if parameters.get(self.HEIGHT) in (None, ""):
+            heights = {str(a.tags.get("height", "")).strip() for a in areas} - {""}
+            if len(heights) == 1:
+                try:
+                    height = float(heights.pop())
+                except ValueError:
+                    pass
         variant = VARIANTS[self.parameterAsEnum(parameters, self.VARIANT, context)]
         out = self.parameterAsFileOutput(parameters, self.OUTPUT, context)
         has_anchor = parameters.get(self.ANCHOR_LON) not in (None, "") and \

@@ -115,3 +115,26 @@ def test_stage_chain_layers_in_the_cad_frame_export_and_georeference(sample, tmp
                                             "OUTPUT_AREAS": str(s / "twice.gpkg")}, check=False)
     assert code != 0 and "already georeferenced" in log and "32651" in log
     assert not (s / "twice.gpkg").exists()
+
+
+@pytest.mark.qgis_process
+def test_reexport_of_loaded_layers_keeps_their_level(sample, tmp_path):
+    from algorithms import building, pipeline
+
+    files = []
+    for k, dxf in enumerate(sample["dxf"], 1):
+        files.append(str(tmp_path / f"f{k}.osm"))
+        pipeline.convert_dxf(dxf, files[-1], anchor_lon=ANCHOR[0], anchor_lat=ANCHOR[1], level=str(k))
+    run_alg("loadosmag", {"INPUT": files[1], "OUTPUT_AREAS": str(tmp_path / "a.gpkg"),
+                          "OUTPUT_PASSAGES": str(tmp_path / "p.gpkg")})
+    run_alg("exportosmag", {"AREAS": str(tmp_path / "a.gpkg"), "PASSAGES": str(tmp_path / "p.gpkg"),
+                            "OUTPUT": str(tmp_path / "re.osm")})
+    areas, passages, _, _ = osmag.read_osmag(str(tmp_path / "re.osm"))
+    assert {a.tags["level"] for a in areas} == {"2"} and {p.tags["level"] for p in passages} == {"2"}
+    # a layer holding two levels must be split, not silently flattened onto one
+    building.merge_floor_files(files, str(tmp_path / "b.osm"))
+    run_alg("loadosmag", {"INPUT": str(tmp_path / "b.osm"), "OUTPUT_AREAS": str(tmp_path / "ba.gpkg"),
+                          "OUTPUT_PASSAGES": str(tmp_path / "bp.gpkg")})
+    code, _, log = run_alg("exportosmag", {"AREAS": str(tmp_path / "ba.gpkg"), "OUTPUT": str(tmp_path / "x.osm")},
+                           check=False)
+    assert code != 0 and "several levels" in log and not (tmp_path / "x.osm").exists()
