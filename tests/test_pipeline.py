@@ -187,3 +187,38 @@ def test_cancel_at_any_stage_stops_and_writes_nothing(sample, tmp_path, cancel_a
                              anchor_lat=ANCHOR[1], progress=RecordingProgress(cancel_after=cancel_after))
     assert not out.exists() and not png.exists()
     assert list(tmp_path.iterdir()) == []
+
+
+@pytest.mark.slow
+def test_real_sist_floor_to_osmag_opens_in_real_clients(shared_data, tmp_path):
+    """SIST-F3 (real, millimetres) through the whole pipeline, rotated 30° onto the Earth: osmium and GDAL
+    open the file, every area is a polygon with its tags, and lengths survive georeferencing."""
+    import subprocess
+
+    from osgeo import gdal, ogr
+
+    from algorithms.georef import geodesic_distance
+
+    out = tmp_path / "sist3.osm"
+    stats = pipeline.convert_dxf(str(shared_data / "dxf" / "sist" / "SIST-F3.dxf"), str(out),
+                                 anchor_lon=ANCHOR[0], anchor_lat=ANCHOR[1], rotation_deg=30.0, level="3")
+    assert stats["unit"] == "mm" and stats["areas"] >= 80 and stats["passages"] >= 60
+    assert stats["refine"]["vertex_reduction"] >= 0.85
+    assert subprocess.run(["osmium", "fileinfo", "-e", str(out)], capture_output=True).returncode == 0
+    areas, passages, root, report = osmag.read_osmag(str(out))
+    assert root == pytest.approx(ANCHOR, abs=1e-9) and report["dangling_refs"] == []
+    assert len([a for a in areas if a.type != "structure"]) == stats["areas"]
+    gdal.SetConfigOption("OSM_USE_CUSTOM_INDEXING", "NO")
+    try:
+        ds = ogr.Open(str(out))
+        polys = ds.GetLayerByName("multipolygons")
+        names = {f.GetField("name") for f in polys}
+    finally:
+        gdal.SetConfigOption("OSM_USE_CUSTOM_INDEXING", None)
+    assert names >= {a.name for a in areas}
+    # a passage's width measured on the ellipsoid equals its width in the drawing (1 mm per 100 m)
+    frame = LocalFrame(*ANCHOR, rotation_deg=30.0)
+    cad_areas, cad_passages = osmag.to_frame(areas, passages, frame)
+    for p, q in zip(passages[:20], cad_passages[:20]):
+        (lon0, lat0), (lon1, lat1) = list(p.line.coords)
+        assert geodesic_distance(lon0, lat0, lon1, lat1) == pytest.approx(q.line.length, abs=1e-5 * max(q.line.length, 1))
