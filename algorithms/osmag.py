@@ -402,6 +402,10 @@ def read_osmag(path: str, progress=None):
         if not poly.is_valid:
             warnings.append(f"area way {wid} is not a valid polygon (self-intersecting?)")
         atype = str(get_tag(t, "osmAG:areatype", "room") or "room")
+        other = t.get("osmAG:areaType")
+        if other is not None and "osmAG:areatype" in t and other != t["osmAG:areatype"]:
+            warnings.append(f"area way {wid} has osmAG:areatype={t['osmAG:areatype']} but osmAG:areaType={other} "
+                            f"(one was edited); using {atype}: make both the same in your editor")
         areas.append(Area(id=wid, polygon=poly, type=atype, name=t.get("name", ""), tags=dict(t)))
     by_name: Dict[str, List[int]] = {}
     for a in areas:

@@ -254,3 +254,20 @@ def test_bad_input_on_write_leaves_nothing(refined, tmp_path):
         write_osmag(str(path), refined.areas, bad_p, frame=FRAME)
     assert path.read_text() == "previous"
     assert sorted(os.listdir(tmp_path)) == ["out.osm"]
+
+
+def test_conflicting_areatype_spellings_are_reported(tmp_path):
+    """Both spellings are written; if an editor changes only one, the reader says so instead of guessing."""
+    from shapely.geometry import box
+
+    from algorithms.georef import LocalFrame
+    from algorithms.model import Area
+    from algorithms.osmag import read_osmag, write_osmag
+
+    path = tmp_path / "a.osm"
+    write_osmag(str(path), [Area(1, box(0, 0, 4, 4), type="room", name="R1")], frame=LocalFrame(10.0, 50.0))
+    text = path.read_text().replace('k="osmAG:areaType" v="room"', 'k="osmAG:areaType" v="stairs"')
+    path.write_text(text)
+    areas, _, _, report = read_osmag(str(path))
+    assert areas[0].type == "room"
+    assert any("osmAG:areaType=stairs" in w and "edited" in w for w in report["warnings"])
