@@ -151,6 +151,7 @@ class AreaGraph:
     labels: Optional[np.ndarray] = None  # int32 raster of area ids on ``grid`` (0 = no area)
     grid: Optional[OccupancyGrid] = None
     stats: Dict[str, float] = field(default_factory=dict)  # timings (s) and figures for the log
+    skeleton: Optional[object] = None  # the skeleton graph segmentation used (skeleton.SkeletonGraph)
 
     def area_by_id(self) -> Dict[int, Area]:
         return {a.id: a for a in self.areas}

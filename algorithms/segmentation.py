@@ -12,28 +12,37 @@ Steps (``AreaGraph.stats`` keeps the wall time of each):
     ``envelope_gap`` (doors, glazing, drawing gaps) are therefore bridged and the interior is the
     rest of the free space. Outside space is never an area. Unknown cells are never free.
 ``skeleton``
-    Clearance (Euclidean distance to the nearest wall) and the generalised Voronoi diagram of the
-    free space, represented by its *cells*: every free pixel climbs the clearance by steepest
-    ascent to a local clearance maximum (a GVD vertex or ridge plateau); the pixels reaching the
-    same maximum form one cell. Cell borders are the clearance valleys, so they cross the GVD at
-    its clearance minima -- the narrowings where the Voronoi graph is split at doors -- and every
-    cell holds one stretch of skeleton. Obstacle specks up to ``SPECK_M2`` (sensor noise,
-    clutter) are ignored here so that they make no narrowings (they stay holes in the areas).
+    Clearance (Euclidean distance to the nearest wall) and the skeleton of the free space as a
+    graph (``skeleton.skeleton_graph``): the space is thinned to its one-pixel medial axis -- the
+    generalised Voronoi diagram of the walls -- peeling pixels in order of clearance with
+    topology-preserving (Guo-Hall) thinning; nodes are its junctions and dead ends (with their
+    clearance), edges the pixel chains between them (length, min / max clearance). Dead-end
+    branches shorter than ``prune`` metres are removed, round after round, merging the nodes left
+    with two branches. Obstacle specks up to ``SPECK_M2`` (sensor noise, clutter) are ignored here
+    so that they make no branches or narrowings (they stay holes in the areas).
+``regions``
+    Topology graph: one region per skeleton edge, split where a clearance valley crosses it. The
+    valleys are the borders of the clearance *basins*: every free pixel climbs the clearance by
+    steepest ascent to a local maximum and the pixels reaching the same maximum form a basin, so
+    basin borders cross the skeleton at its clearance minima -- the narrowings at doors. Every free
+    pixel joins the closest skeleton edge piece of its basin (Euclidean; where the closest piece lies
+    behind a wall the pixels are grown into from the neighbouring regions instead). A basin with no
+    skeleton left (its maximum lay only on pruned branches) is a region of its own.
 ``graph``
-    Topology graph: two cells are neighbours when they touch; the edge carries the *saddle*, the
-    largest clearance along the shared border (half the width of the opening between them).
+    Two regions are neighbours when they touch; the adjacency carries the *saddle*, the largest
+    clearance along the shared border (half the width of the opening between them).
 ``merge``
-    Merge tree over the cell graph, strongest connections (largest saddle) first:
+    Merge tree over the region graph, strongest connections (largest saddle) first:
 
-    1. what belongs together whatever the widths: a cell whose peak clearance rises less than
-       ``prune`` above the saddle is a skeleton branch shorter than PRUNE (GVD pruning); where
-       the opening is at least the alpha-disk radius ``R = sqrt(alpha)`` px,
-       alpha = ceil((min(door, corridor) + delta)^2 / (4 r^2)), the disk sweeps from one cell
-       into the other, so they are one room (alpha-shape room detection);
+    1. what belongs together whatever the widths: a region whose clearance peak rises less than
+       ``MIN_RISE_M`` above the saddle is no space of its own (a stretch of corridor between two
+       junctions, a wall bump); where the opening is at least the alpha-disk radius
+       ``R = sqrt(alpha)`` px, alpha = ceil((min(door, corridor) + delta)^2 / (4 r^2)), the disk
+       sweeps from one region into the other, so they are one room (alpha-shape room detection);
     2. doors: an opening no wider than ``door_width + delta`` that is clearly narrower than the
        space behind it (saddle < ``NARROWING`` x the larger peak of the two pass-1 groups) keeps
-       the split -- this also finds the rooms too narrow for the alpha disk. Anything else
-       (corridor cells split at junctions, bumps) merges: nothing justifies a split;
+       the split -- this also finds the rooms too narrow for the alpha disk. Anything else merges:
+       nothing justifies a split;
     3. corridors: long groups (length >= ``PASS3_ELONGATION`` x their mean width) join the
        corridor-shaped groups they touch even through narrowings (fire doors, clutter).
 
@@ -59,6 +68,7 @@ import numpy as np
 from .errors import InputError
 from .model import FREE, Area, AreaGraph, OccupancyGrid, Passage
 from .progress import Progress, ensure
+from .skeleton import SkeletonGraph, nearest_seed_regions, skeleton_graph  # noqa: F401  (re-exported)
 
 DEFAULT_DOOR_WIDTH = 2.8
 DEFAULT_CORRIDOR_WIDTH = 8.0
@@ -66,6 +76,7 @@ DEFAULT_DELTA = 0.1
 DEFAULT_PRUNE = 0.25
 DEFAULT_ENVELOPE_GAP = 4.0  # widest facade opening (m) bridged when looking for the building interior
 NARROWING = 0.6  # an opening narrower than this fraction of the space behind it is a door
+MIN_RISE_M = 0.25  # a region whose clearance peak rises less than this above the opening to a neighbour is a bump
 SPECK_M2 = 0.1  # m2: obstacle blobs up to this size inside the space (noise, clutter) make no narrowings
 CORRIDOR_MERGE = True
 MIN_CORRIDOR_OPENING_M = 0.15  # corridors do not join through slits narrower than this (x 2)
@@ -176,8 +187,8 @@ def _without_specks(interior: np.ndarray, resolution: float) -> np.ndarray:
     return interior | small[lab]
 
 
-def _cells(free: np.ndarray) -> Tuple[np.ndarray, np.ndarray, np.ndarray]:
-    """Clearance and its Voronoi cells. Returns (clearance px float32, cells int32, peak per cell).
+def _cells(free: np.ndarray, dist: Optional[np.ndarray] = None) -> Tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """Clearance and its basins. Returns (clearance px float32, basins int32, peak per basin).
 
     Every free pixel climbs the clearance by steepest ascent (8-neighbourhood) to a local maximum
     (a plateau of the GVD ridge); the pixels that reach the same maximum form one cell. Pointer
@@ -185,7 +196,8 @@ def _cells(free: np.ndarray) -> Tuple[np.ndarray, np.ndarray, np.ndarray]:
     """
     import cv2
 
-    dist = _edt(free)
+    if dist is None:
+        dist = _edt(free)
     rows, cols = free.shape
     local_max = cv2.dilate(dist, np.ones((3, 3), np.uint8))
     peaks = (dist >= local_max) & free
@@ -218,6 +230,36 @@ def _cells(free: np.ndarray) -> Tuple[np.ndarray, np.ndarray, np.ndarray]:
     cells = np.zeros(rows * cols, np.int32)
     cells[flat_free] = markers.ravel()[flat_free[parent]]
     return dist, cells.reshape(rows, cols), peak_val
+
+
+def _edge_regions(skel: SkeletonGraph, space: np.ndarray, dist: np.ndarray):
+    """The regions of the topology graph. Returns (regions int32, peak clearance px per region,
+    number of clearance basins).
+
+    The skeleton edges are split where a clearance valley crosses them -- the borders of the
+    basins of ``_cells``, i.e. the clearance minima along the edge, the narrowings at doors -- and
+    every free pixel joins the closest edge piece of its own basin (Euclidean, grown through free
+    space where the closest piece lies behind a wall). A basin that holds no skeleton (its clearance
+    maximum lies on no kept branch) is one region of its own.
+    """
+    _, basins, basin_peak = _cells(space, dist)
+    er = skel.edge_raster(lone_nodes=True).ravel()
+    skp = np.flatnonzero(er)
+    key = er[skp].astype(np.int64) * (len(basin_peak) + 1) + basins.ravel()[skp]
+    _, inv = np.unique(key, return_inverse=True)  # pieces in edge order, then basin order
+    seeds = np.zeros(space.shape, np.int32)
+    seeds.ravel()[skp] = inv + 1
+    del er, skp, key, inv
+    regions = nearest_seed_regions(seeds, space, zones=basins)
+    rest = (regions == 0) & (basins > 0)
+    if rest.any():
+        _, inv = np.unique(basins[rest], return_inverse=True)
+        regions[rest] = int(regions.max()) + 1 + inv.astype(np.int32)
+    n = int(regions.max())
+    peak = np.zeros(n + 1)
+    inside = regions > 0
+    np.maximum.at(peak, regions[inside], dist[inside].astype(np.float64))
+    return regions, peak, len(basin_peak) - 1
 
 
 def _neighbour_pairs(labels: np.ndarray, dist: Optional[np.ndarray] = None):
@@ -279,14 +321,14 @@ class _UnionFind:
 
 
 def _merge_cells(n: int, peak: np.ndarray, lo, hi, saddle, *, r_alpha: float, door_half: float,
-                 prune: float, cell_area: Optional[np.ndarray] = None, corridor_opening: float = 3.0
+                 min_rise: float, cell_area: Optional[np.ndarray] = None, corridor_opening: float = 3.0
                  ) -> np.ndarray:
-    """Merge tree over the cell graph (see the module doc). All values in px. Returns a lookup
-    table cell -> group representative.
+    """Merge tree over the region ("cell") graph (see the module doc). All values in px. Returns a
+    lookup table cell -> group representative.
 
     Pass 1 (strongest connections first) merges what belongs together whatever the widths: cells
-    whose peak rises less than ``prune`` above their saddle (GVD branches shorter than PRUNE) and
-    cells the alpha disk sweeps between (saddle >= R). Pass 2 then judges every remaining opening
+    whose peak rises less than ``min_rise`` above their saddle (no space of their own) and cells the
+    alpha disk sweeps between (saddle >= R). Pass 2 then judges every remaining opening
     against the significant spaces on both sides from pass 1: a door-sized opening clearly narrower
     than the space behind it keeps the split, anything else merges. Pass 3 joins touching
     corridor-shaped groups (``PASS3_ELONGATION``) through any opening wider than
@@ -300,7 +342,7 @@ def _merge_cells(n: int, peak: np.ndarray, lo, hi, saddle, *, r_alpha: float, do
         if a == b:
             continue
         pa, pb = gpeak[a], gpeak[b]
-        if s >= r_alpha or min(pa, pb) - s < prune:
+        if s >= r_alpha or min(pa, pb) - s < min_rise:
             keep, gone = (a, b) if a < b else (b, a)
             uf.parent[gone] = keep
             gpeak[keep] = max(pa, pb)
@@ -530,8 +572,10 @@ def segment(grid: OccupancyGrid, door_width: float = DEFAULT_DOOR_WIDTH,
 
     Returns an ``AreaGraph`` whose areas carry exact pixel-edge polygons (world metres), whose
     passages are 2-point lines across the openings between touching areas, ``labels`` (int32
-    raster of area ids on the grid, 0 outside areas) and ``stats`` (per-step seconds, alpha,
-    interior area...). Raises ``InputError`` for unusable input.
+    raster of area ids on the grid, 0 outside areas), ``skeleton`` (the pruned skeleton graph,
+    ``skeleton.SkeletonGraph``, on the grid) and ``stats`` (per-step seconds, alpha, interior
+    area, skeleton_nodes / _edges / _junctions / _dead_ends / _pruned, regions...). Raises
+    ``InputError`` for unusable input.
     """
     progress = ensure(progress)
     t_all = time.perf_counter()
@@ -559,17 +603,28 @@ def segment(grid: OccupancyGrid, door_width: float = DEFAULT_DOOR_WIDTH,
 
     t = time.perf_counter()
     space = _without_specks(interior, res) if SPECK_M2 > 0 else interior
-    dist, cells, peak = _cells(space)
+    dist = _edt(space)
+    skel = skeleton_graph(space, res, prune=prune, dist=dist)
+    stats["skeleton_s"] = time.perf_counter() - t
+    stats.update(skeleton_nodes=float(skel.n_nodes), skeleton_edges=float(skel.n_edges),
+                 skeleton_junctions=float(skel.junctions), skeleton_dead_ends=float(skel.dead_ends),
+                 skeleton_pruned=float(skel.pruned))
+    progress.step(30, f"skeleton: {skel.n_nodes} nodes ({skel.junctions} junctions, {skel.dead_ends} dead ends), "
+                      f"{skel.n_edges} edges, {skel.pruned} branches shorter than {prune:g} m pruned")
+
+    t = time.perf_counter()
+    cells, peak, n_basins = _edge_regions(skel, space, dist)
     if space is not interior:
         cells[~interior] = 0
-    stats["skeleton_s"] = time.perf_counter() - t
-    stats["cells"] = float(len(peak) - 1)
-    progress.step(40, f"Voronoi cells: {len(peak) - 1}")
+    stats["regions_s"] = time.perf_counter() - t
+    stats["basins"] = float(n_basins)
+    stats["regions"] = float(len(peak) - 1)
+    progress.step(40, f"skeleton edge regions: {len(peak) - 1} (in {n_basins} clearance basins)")
 
     t = time.perf_counter()
     lo, hi, saddle, border = _cell_graph(cells, dist)
     stats["graph_s"] = time.perf_counter() - t
-    progress.step(50, f"cell graph: {len(lo)} adjacencies")
+    progress.step(50, f"region graph: {len(lo)} adjacencies")
 
     t = time.perf_counter()
     # clearances in px measured from pixel centres: a pixel touching a wall has distance 1
@@ -577,7 +632,7 @@ def segment(grid: OccupancyGrid, door_width: float = DEFAULT_DOOR_WIDTH,
     cell_area[0] = 0
     rep = _merge_cells(len(peak), peak - 0.5, lo, hi, saddle - 0.5, r_alpha=r_alpha, cell_area=cell_area,
                        corridor_opening=MIN_CORRIDOR_OPENING_M / res,
-                       door_half=(door_width + delta) / 2.0 / res, prune=prune / res)
+                       door_half=(door_width + delta) / 2.0 / res, min_rise=MIN_RISE_M / res)
     # renumber groups deterministically: representatives are the smallest cell id of their group
     # and cell ids follow the raster order of the clearance maxima
     reps = np.unique(rep[1:])
@@ -622,4 +677,4 @@ def segment(grid: OccupancyGrid, door_width: float = DEFAULT_DOOR_WIDTH,
     progress.step(100, f"{len(areas)} areas ({sum(a.type == 'room' for a in areas)} rooms), "
                        f"{len(passages)} passages, interior {stats['interior_area_m2']:.1f} m2")
     return AreaGraph(areas=areas, passages=passages, labels=labels.astype(np.int32, copy=False), grid=grid,
-                     stats=stats)
+                     stats=stats, skeleton=skel)

@@ -32,12 +32,13 @@ def bench_segment(work: Path, shared: Path) -> dict:
         pickle.dump(ag, fh, protocol=pickle.HIGHEST_PROTOCOL)
     st = ag.stats
     steps = ", ".join(f"{k[:-2]} {st[k]:.2f}" for k in
-                      ("interior_s", "skeleton_s", "graph_s", "merge_s", "polygons_s", "passages_s") if k in st)
+                      ("interior_s", "skeleton_s", "regions_s", "graph_s", "merge_s", "polygons_s", "passages_s") if k in st)
     rows, cols = grid.shape
     detail = (f"SIST-F5 {cols}x{rows} px ({rows * cols / 1e6:.1f} Mpx) at {grid.resolution:g} m/px, "
               f"alpha {int(st['alpha_px2'])} px^2: {len(ag.areas)} areas, {len(ag.passages)} passages, "
               f"interior {st['interior_area_m2']:.0f} m2; steps (s): {steps} "
-              f"(skeleton = clearance + Voronoi cells, merge = alpha rooms + door narrowings)")
+              f"(skeleton = clearance + thinning + skeleton graph, {int(st['skeleton_edges'])} edges; "
+              f"regions = one per skeleton edge piece; merge = alpha rooms + door narrowings)")
     return {"wall_s": wall, "detail": detail}
 
 
