@@ -4,7 +4,7 @@
 # plugin linked into a project-local QGIS profile with the plugin enabled.
 set -euo pipefail
 ROOT="$(cd "$(dirname "$0")/.." && pwd)"
-APT_PACKAGES="${1:-qgis python3-qgis qgis-providers python3-venv python3-gdal gdal-bin osmium-tool xvfb python3-dev build-essential libproj-dev libgeos-dev proj-bin}"
+APT_PACKAGES="${1:-qgis python3-qgis qgis-providers python3-venv python3-gdal gdal-bin osmium-tool xvfb python3-dev build-essential libproj-dev proj-bin}"
 
 missing=()
 for p in $APT_PACKAGES; do
@@ -23,9 +23,14 @@ if [ ! -x "$ROOT/.venv/bin/python" ]; then
   echo "[install] creating .venv from $SYSPY --system-site-packages"
   "$SYSPY" -m venv --system-site-packages "$ROOT/.venv"
 fi
-# pyproj/shapely are compiled against the system PROJ/GEOS (see requirements.txt); pin their build tools.
+# pyproj is compiled against the system PROJ (see requirements.txt); pin its build tools.
 PIP_CONSTRAINT="$ROOT/constraints-build.txt" "$ROOT/.venv/bin/python" -m pip install -q --disable-pip-version-check \
   -r "$ROOT/requirements-dev.txt"
+# shapely must be the wheel (bundled GEOS >= 3.11.2): Debian's GEOS 3.11.1 gets Hausdorff distances wrong
+if ! "$ROOT/.venv/bin/python" -c "import shapely, sys; sys.exit(0 if shapely.geos_version >= (3, 11, 2) else 1)"; then
+  "$ROOT/.venv/bin/python" -m pip install -q --disable-pip-version-check --force-reinstall --no-deps \
+    --only-binary shapely "$(grep -E '^shapely==' "$ROOT/requirements.txt")"
+fi
 "$ROOT/.venv/bin/python" -c "import qgis.core, osgeo.gdal, numpy, cv2, shapely, ezdxf, pyproj, scipy; assert numpy.__version__ < '2'; assert pyproj.proj_version_str.startswith('9.1'), 'pyproj must use the system PROJ'" \
   || { echo "[install] the venv cannot import its dependencies" >&2; exit 1; }
 

@@ -167,3 +167,15 @@ def test_ros_raw_mode_reads_occupancy_percentages(tmp_path):
     (tmp_path / "bad.yaml").write_text("image: raw.pgm\nresolution: 0.05\nmode: fancy\n")
     with pytest.raises(InputError, match="mode"):
         raster_io.read_grid(str(tmp_path / "bad.yaml"))
+
+
+def test_geometry_library_measures_hausdorff_distance_correctly():
+    """Refinement reports its deviation with Hausdorff distances; Debian's GEOS 3.11.1 returns ~15 m for
+    two identical rings like this one, so the install keeps shapely's own GEOS (>= 3.11.2)."""
+    import shapely
+    from shapely.geometry import LinearRing
+
+    ring = LinearRing([(3, 9.9), (4, 9.9), (4, 10), (14.5, 10), (14.5, 19.5), (0.5, 19.5), (0.5, 10), (3, 10)])
+    moved = LinearRing([(x + 1e-6, y) for x, y in ring.coords])
+    assert shapely.geos_version >= (3, 11, 2)
+    assert ring.hausdorff_distance(moved) == pytest.approx(1e-6, abs=1e-9)
