@@ -208,25 +208,37 @@ class SkeletonGraph:
             src.append(np.nonzero(hit)[0])
             dst.append(k[hit])
         src, dst = np.concatenate(src), np.concatenate(dst)
+        def walk(graph, start, targets):
+            """pixel indices of a shortest path from ``start`` to the closest (fewest steps) of
+            ``targets`` (or to the farthest pixel when ``targets`` is None)"""
+            d, pred = shortest_path(graph, directed=False, unweighted=True, indices=start,
+                                    return_predecessors=True)
+            if targets is None:
+                ok = np.nonzero(np.isfinite(d))[0]
+                end = int(ok[np.argmax(d[ok])])
+            else:
+                reach = targets[np.isfinite(d[targets])]
+                end = int(reach[np.argmin(d[reach])]) if len(reach) else start
+            out = [end]
+            while out[-1] != start and pred[out[-1]] >= 0:
+                out.append(int(pred[out[-1]]))
+            return np.array(out[::-1], np.int64)
+
         if u == v:
             # a loop (through one node, or a ring with none): cut it open at the node (or at its first
             # pixel) and walk the chain from one side of the cut to the other
             on_node = np.isin(px, self.node_pixels[u] if u >= 0 else chain[:1])
             keep = ~on_node[src] & ~on_node[dst]
-            g = coo_matrix((np.ones(int(keep.sum())), (src[keep], dst[keep])), shape=(len(px),) * 2)
+            g = coo_matrix((np.ones(int(keep.sum())), (src[keep], dst[keep])), shape=(len(px),) * 2).tocsr()
             ends = np.unique(np.r_[src[on_node[dst] & ~on_node[src]], dst[on_node[src] & ~on_node[dst]]])
             start = int(ends[0]) if len(ends) else int(np.nonzero(~on_node)[0][0])
-            d = shortest_path(g, directed=False, unweighted=True, indices=start)
-            ok = np.isfinite(d) & ~on_node
-            order = np.nonzero(ok)[0][np.argsort(d[ok], kind="stable")]
             node = np.nonzero(on_node)[0][:1]
-            order = np.r_[node, order, node]
+            order = np.r_[node, walk(g, start, ends[1:] if len(ends) > 1 else None), node]
         else:
-            g = coo_matrix((np.ones(len(src)), (src, dst)), shape=(len(px),) * 2)
-            start_px = self.node_pixels[u][0] if u >= 0 else chain[0]
-            d = shortest_path(g, directed=False, unweighted=True, indices=int(np.searchsorted(px, start_px)))
-            ok = np.isfinite(d)
-            order = np.nonzero(ok)[0][np.argsort(d[ok], kind="stable")]
+            g = coo_matrix((np.ones(len(src)), (src, dst)), shape=(len(px),) * 2).tocsr()
+            start = int(np.searchsorted(px, self.node_pixels[u][0] if u >= 0 else chain[0]))
+            targets = np.searchsorted(px, self.node_pixels[v]) if v >= 0 else None
+            order = walk(g, start, targets)
         path = px[order]
         return np.stack([path // cols, path % cols], axis=1).astype(np.float64)
 

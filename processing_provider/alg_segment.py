@@ -6,6 +6,7 @@ from qgis.core import (
     QgsFeature,
     QgsFeatureSink,
     QgsField,
+    QgsFields,
     QgsProcessing,
     QgsProcessingException,
     QgsProcessingOutputNumber,
@@ -20,7 +21,7 @@ from qgis.core import (
 from ..algorithms import segmentation
 from ..algorithms.errors import InputError
 from .alg_refine import area_fields, passage_fields
-from .base import Cad2OsmagAlgorithm, FIELD_DOUBLE, to_qgs
+from .base import Cad2OsmagAlgorithm, FIELD_DOUBLE, FIELD_INT, to_qgs
 
 ROS_EXTENSIONS = (".yaml", ".yml")
 
@@ -46,10 +47,13 @@ class SegmentAlgorithm(Cad2OsmagAlgorithm):
             "(4 r^2)) px^2 is the probe disk: spaces it sweeps through an opening are one room; door-sized "
             "narrowings that are clearly narrower than the space behind them separate rooms (this also "
             "finds rooms too narrow for the disk); corridor cells merge where nothing justifies a split; "
-            "clearance bumps lower than PRUNE are noise. Outputs: AREAS (exact pixel-edge polygons: id, "
+            "the free space is thinned to its skeleton (generalised Voronoi diagram), dead-end branches shorter "
+            "than PRUNE are removed, and every skeleton edge (split at the narrowings) starts as one region. "
+            "Outputs: AREAS (exact pixel-edge polygons: id, "
             "type room/corridor, area, perimeter, max clearance), PASSAGES (a segment across every "
-            "opening between two areas, ends on the walls: from, to, width) and LABELS (area ids on the "
-            "input grid, 0 outside areas).")
+            "opening between two areas, ends on the walls: from, to, width), LABELS (area ids on the "
+            "input grid, 0 outside areas) and, when asked for, SKELETON (one line per skeleton edge: id, "
+            "length, min and max clearance).")
 
     INPUT = "INPUT"
     RESOLUTION = "RESOLUTION"
@@ -61,6 +65,7 @@ class SegmentAlgorithm(Cad2OsmagAlgorithm):
     AREAS = "AREAS"
     PASSAGES = "PASSAGES"
     LABELS = "LABELS"
+    SKELETON = "SKELETON"
 
     def initAlgorithm(self, config=None):  # noqa: N802
         self.addParameter(QgsProcessingParameterRasterLayer(
@@ -91,6 +96,9 @@ class SegmentAlgorithm(Cad2OsmagAlgorithm):
         self.addParameter(QgsProcessingParameterFeatureSink(
             self.PASSAGES, self.tr("Passages"), QgsProcessing.SourceType.TypeVectorLine))
         self.addParameter(QgsProcessingParameterRasterDestination(self.LABELS, self.tr("Area id raster")))
+        self.addParameter(QgsProcessingParameterFeatureSink(
+            self.SKELETON, self.tr("Skeleton (Voronoi graph edges)"), QgsProcessing.SourceType.TypeVectorLine,
+            optional=True, createByDefault=False))
         for name, label in (("AREA_COUNT", "Areas"), ("ROOM_COUNT", "Rooms"), ("CORRIDOR_COUNT", "Corridors"),
                             ("PASSAGE_COUNT", "Passages"), ("INTERIOR_AREA_M2", "Free area inside the building (m²)"),
                             ("ALPHA", "alpha (px²)"), ("SECONDS", "Segmentation time (s)")):
@@ -148,6 +156,12 @@ class SegmentAlgorithm(Cad2OsmagAlgorithm):
         feedback.pushInfo(self.tr("Timing (s): ") + ", ".join(
             f"{k[:-2]} {v:.2f}" for k, v in st.items() if k.endswith("_s")))
 
+        skeleton_lines, extra = None, {}
+        if parameters.get(self.SKELETON) not in (None, "") and ag.skeleton is not None:
+            skeleton_lines = ag.skeleton.edge_lines(grid.geotransform)
+        feedback.pushInfo(self.tr("Skeleton: {} nodes, {} edges, {} branches shorter than PRUNE pruned").format(
+            int(st["skeleton_nodes"]), int(st["skeleton_edges"]), int(st["skeleton_pruned"])))
+
         # everything computed: now create the outputs
         if grid.crs_wkt:
             crs = QgsCoordinateReferenceSystem.fromWkt(grid.crs_wkt)
@@ -187,12 +201,32 @@ class SegmentAlgorithm(Cad2OsmagAlgorithm):
             f["width_m"] = float(p.width)
             if not sink_p.addFeature(f, QgsFeatureSink.Flag.FastInsert):
                 raise QgsProcessingException(self.tr("cannot write passage {}").format(p.id))
+        if skeleton_lines is not None:
+            sfields = QgsFields()
+            for name, ftype in (("id", FIELD_INT), ("length_m", FIELD_DOUBLE), ("min_clearance_m", FIELD_DOUBLE),
+                                ("max_clearance_m", FIELD_DOUBLE)):
+                sfields.append(QgsField(name, ftype))
+            sink_s, dest_s = self.parameterAsSink(parameters, self.SKELETON, context, sfields,
+                                                  QgsWkbTypes.Type.LineString, crs)
+            if sink_s is not None:
+                sk = ag.skeleton
+                for j, line in enumerate(skeleton_lines):
+                    f = QgsFeature(sfields)
+                    f.setGeometry(to_qgs(line))
+                    f["id"] = j + 1
+                    f["length_m"] = round(float(sk.edge_length_m[j]), 4)
+                    f["min_clearance_m"] = round(float(sk.edge_min_clearance_m[j]), 4)
+                    f["max_clearance_m"] = round(float(sk.edge_max_clearance_m[j]), 4)
+                    if not sink_s.addFeature(f, QgsFeatureSink.Flag.FastInsert):
+                        raise QgsProcessingException(self.tr("cannot write skeleton edge {}").format(j + 1))
+                extra[self.SKELETON] = dest_s
         write_geotiff(labels_path, ag.labels, grid.origin_x, grid.origin_y, grid.resolution,
                       crs.toWkt() if crs.isValid() else grid.crs_wkt, nodata=None)
         n_rooms = sum(a.type == "room" for a in ag.areas)
         feedback.pushInfo(self.tr("{} areas ({} rooms, {} corridors), {} passages").format(
             len(ag.areas), n_rooms, len(ag.areas) - n_rooms, len(ag.passages)))
         return {
+            **extra,
             self.AREAS: dest_a,
             self.PASSAGES: dest_p,
             self.LABELS: labels_path,

@@ -166,3 +166,14 @@ def test_segment_reports_the_skeleton():
     assert st["skeleton_pruned"] == 0
     assert st["regions"] >= 4  # at least one region per skeleton edge
     assert seg.skeleton_graph is skeleton_graph
+
+
+def test_edge_lines_follow_the_edges():
+    res = 0.05
+    g = skeleton_graph(plus(res), res)
+    gt = (100.0, res, 0.0, 50.0, 0.0, -res)
+    lines = g.edge_lines(gt)
+    assert len(lines) == g.n_edges
+    for line, length in zip(lines, g.edge_length_m):
+        assert line.is_simple
+        assert line.length == pytest.approx(length, abs=3 * res)
