@@ -477,9 +477,9 @@ def nearest_seed_regions(seeds: np.ndarray, space: np.ndarray, zones: Optional[n
     out = np.zeros(space.shape, np.int32)
     if not (seeds > 0).any():
         return out
-    rr, cc = np.nonzero(space)
-    r0, r1, c0, c1 = rr.min(), rr.max() + 1, cc.min(), cc.max() + 1
-    del rr, cc
+    rr = np.nonzero(space.any(axis=1))[0]
+    cc = np.nonzero(space.any(axis=0))[0]
+    r0, r1, c0, c1 = int(rr[0]), int(rr[-1]) + 1, int(cc[0]), int(cc[-1]) + 1
     sp = space[r0:r1, c0:c1]
     sd = np.where(sp, seeds[r0:r1, c0:c1], 0).astype(np.int32)
     zn = None if zones is None else zones[r0:r1, c0:c1]
