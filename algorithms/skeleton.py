@@ -1,20 +1,23 @@
-"""Skeleton (generalised Voronoi diagram) of the free space as a graph, and its edge regions.
+"""Skeleton (generalised Voronoi diagram) of the free space as a graph, and the regions of its edges.
 
-``skeleton_graph`` thins the free space to a one-pixel skeleton that follows the ridge of the
-clearance (distance to the nearest wall): the pixels are peeled off in order of their Euclidean
-clearance, one-pixel layer after layer, with the parallel thinning of Guo and Hall (1989, algorithm
-A1: only pixels whose removal keeps the topology and that are not line ends are removed), so what
-is left is the medial axis of the space, homotopic to it (one loop around every pillar). The
-skeleton becomes a graph: nodes are its junctions (3 or more branches) and dead ends, edges the
-pixel chains between them. Dead-end branches shorter than ``prune`` metres are removed,
-iteratively, and nodes left with two branches are merged away, so a small bump or recess of a
-wall makes no branch.
+``thin`` reduces the free space to a one-pixel, 8-connected skeleton that keeps its topology (one
+loop around every pillar): the pixels are peeled off in order of their Euclidean clearance
+(distance to the nearest wall), one-pixel layer after layer, with the parallel thinning of Guo and
+Hall (1989, algorithm A1: a pixel goes only if its removal keeps the topology and it is not a line
+end). What is left runs along the ridge of the clearance, midway between the walls: a raster
+approximation of the medial axis / generalised Voronoi diagram (the short branches the exact medial
+axis sends into every room corner mostly do not appear).
 
-``edge_regions`` gives every free pixel the edge (or edge piece) closest to it, walking through
-free space only: the regions of the topology graph.
+``skeleton_graph`` turns it into a graph: nodes are the junctions (3 or more branches) and dead
+ends, with their clearance; edges the pixel chains between them, with length and min / max
+clearance. Dead-end branches shorter than ``prune`` metres are removed round after round, and the
+nodes left with two branches are merged away, so a small recess in a wall makes no branch.
+
+``nearest_seed_regions`` gives every free pixel the label of the closest skeleton pixel (edge, or
+edge piece) without crossing walls, optionally only within a zone: the regions of the topology graph.
 
 Everything is vectorised over pixels (numpy / OpenCV / scipy); Python loops run per clearance layer,
-per node or per edge.
+per node, per edge or per zone.
 """
 from __future__ import annotations
 
