@@ -26,8 +26,9 @@ Steps (``AreaGraph.stats`` keeps the wall time of each):
     steepest ascent to a local maximum and the pixels reaching the same maximum form a basin, so
     basin borders cross the skeleton at its clearance minima -- the narrowings at doors. Every free
     pixel joins the closest skeleton edge piece of its basin (Euclidean; where the closest piece lies
-    behind a wall the pixels are grown into from the neighbouring regions instead). A basin with no
-    skeleton left (its maximum lay only on pruned branches) is a region of its own.
+    behind a wall the pixels are grown into from the neighbouring regions instead). A basin no kept
+    skeleton edge runs through (its maximum lay only on pruned branches, or on none) has no region
+    of its own: its pixels join the neighbouring regions.
 ``graph``
     Two regions are neighbours when they touch; the adjacency carries the *saddle*, the largest
     clearance along the shared border (half the width of the opening between them).
@@ -239,8 +240,9 @@ def _edge_regions(skel: SkeletonGraph, space: np.ndarray, dist: np.ndarray):
     The skeleton edges are split where a clearance valley crosses them -- the borders of the
     basins of ``_cells``, i.e. the clearance minima along the edge, the narrowings at doors -- and
     every free pixel joins the closest edge piece of its own basin (Euclidean, grown through free
-    space where the closest piece lies behind a wall). A basin that holds no skeleton (its clearance
-    maximum lies on no kept branch) is one region of its own.
+    space where the closest piece lies behind a wall). A basin no kept skeleton edge runs through
+    (its clearance maximum lay only on pruned branches, or on none) has no region of its own: its
+    pixels join the neighbouring regions.
     """
     _, basins, basin_peak = _cells(space, dist)
     er = skel.edge_raster(lone_nodes=True).ravel()

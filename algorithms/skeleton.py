@@ -469,12 +469,14 @@ def skeleton_graph(free_mask: np.ndarray, resolution: float, prune: float = 0.25
 
 
 # --------------------------------------------------------------------------- regions
-def nearest_seed_regions(seeds: np.ndarray, space: np.ndarray, zones: Optional[np.ndarray] = None) -> np.ndarray:
+def nearest_seed_regions(seeds: np.ndarray, space: np.ndarray, zones: Optional[np.ndarray] = None,
+                         fill_zones: bool = True) -> np.ndarray:
     """Give every pixel of ``space`` the label of the closest pixel of ``seeds`` (int32, 0 = no
     seed), through free space: the Euclidean nearest seed, except where that seed is only reached
     across a wall (a piece of a label that holds none of its seeds), whose pixels are grown into
     from the neighbouring labels. With ``zones`` (int raster, 0 = none; the seeds of one label lie
-    in one zone) a label only takes pixels of its own zone. Pixels no seed reaches stay 0."""
+    in one zone) a label only takes pixels of its own zone; the zones that hold no seed are then
+    grown into from their neighbours (``fill_zones``) or stay 0. Pixels no seed reaches stay 0."""
     import cv2
 
     out = np.zeros(space.shape, np.int32)
@@ -522,6 +524,9 @@ def nearest_seed_regions(seeds: np.ndarray, space: np.ndarray, zones: Optional[n
             lab[sl][inside] = sub_lab[inside]
         lab[~sp] = 0
     lab = _regrow_orphans(lab, sd, sp, zn, label_zone)
+    if zn is not None and fill_zones and (sp & (lab == 0)).any():
+        # the zones holding no seed: their pixels join the neighbouring labels
+        lab = _regrow_orphans(lab, sd, sp)
     out[r0:r1, c0:c1] = lab
     return out
 

@@ -177,3 +177,24 @@ def test_edge_lines_follow_the_edges():
     for line, length in zip(lines, g.edge_length_m):
         assert line.is_simple
         assert line.length == pytest.approx(length, abs=3 * res)
+
+
+def test_segmentation_regions_are_skeleton_edge_pieces():
+    """segment's initial partition: one region per skeleton edge piece (edges split at the clearance
+    valleys), every free pixel in exactly one; a branch PRUNE removes takes its region with it."""
+    res = 0.05
+    m = notched(res, 0.4, 0.4, 0.25)
+    dist = seg._edt(m)
+    counts = {}
+    for prune in (0.0, 0.25):
+        g = skeleton_graph(m, res, prune=prune, dist=dist)
+        regions, peak, _ = seg._edge_regions(g, m, dist)
+        assert (regions[m] > 0).all() and (regions[~m] == 0).all()
+        assert len(peak) == regions.max() + 1
+        er = g.edge_raster()
+        for lab in range(1, regions.max() + 1):
+            edges = set(np.unique(er[(regions == lab) & (er > 0)]).tolist())
+            assert len(edges) == 1, (prune, lab, edges)  # a region holds a piece of one edge
+        counts[prune] = (g.n_edges, int(regions.max()))
+    assert counts[0.0][0] == 3 and counts[0.25][0] == 1
+    assert counts[0.0][1] > counts[0.25][1]
