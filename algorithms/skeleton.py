@@ -526,21 +526,22 @@ def nearest_seed_regions(seeds: np.ndarray, space: np.ndarray, zones: Optional[n
     lab = _regrow_orphans(lab, sd, sp, zn, label_zone)
     if zn is not None and fill_zones and (sp & (lab == 0)).any():
         # the zones holding no seed: their pixels join the neighbouring labels
-        lab = _regrow_orphans(lab, sd, sp)
+        lab = _regrow_orphans(lab, sd, sp, check_pieces=False)
     out[r0:r1, c0:c1] = lab
     return out
 
 
-def _regrow_orphans(lab: np.ndarray, seeds: np.ndarray, space: np.ndarray, zones=None, label_zone=None
-                    ) -> np.ndarray:
-    """Clear the pieces (4-connected) of every label that hold none of its seed pixels and grow the
-    labels into them and into the other unlabelled pixels of ``space`` again, one pixel ring per
-    round, through ``space`` only (and inside the label's zone when ``zones`` is given)."""
+def _regrow_orphans(lab: np.ndarray, seeds: np.ndarray, space: np.ndarray, zones=None, label_zone=None,
+                    check_pieces: bool = True) -> np.ndarray:
+    """Clear the pieces (4-connected) of every label that hold none of its seed pixels (with
+    ``check_pieces``) and grow the labels into them and into the other unlabelled pixels of
+    ``space``, one pixel ring per round, through ``space`` only (and inside the label's zone when
+    ``zones`` is given)."""
     import cv2
     from scipy import ndimage as ndi
 
     orphan = space & (lab == 0)
-    for lab_id, sl in enumerate(ndi.find_objects(lab), start=1):
+    for lab_id, sl in enumerate(ndi.find_objects(lab) if check_pieces else [], start=1):
         if sl is None:
             continue
         sub = lab[sl] == lab_id
