@@ -47,7 +47,8 @@ def test_dxftoosmag_and_mergefloors_headless(sample, tmp_path):
     assert layer.GetFeatureCount() == len(osmag.read_osmag(files[0])[0])
     assert layer.GetSpatialRef().GetAuthorityCode(None) == "4326"
     assert {f.GetField("osmAG:areatype") for f in layer} >= {"room", "corridor", "stairs", "elevator", "structure"}
-    assert ogr.Open(str(tmp_path / "passages.gpkg")).GetLayer(0).GetFeatureCount() > 10
+    pds = ogr.Open(str(tmp_path / "passages.gpkg"))
+    assert pds.GetLayer(0).GetFeatureCount() > 10
     _, res, _ = run_alg("mergefloors", {"FLOORS": files, "NAME": "Block B", "OUTPUT": str(tmp_path / "b.osm")})
     assert res["FLOOR_COUNT"] == 2
     areas, _, _, report = osmag.read_osmag(str(tmp_path / "b.osm"))
@@ -138,3 +139,26 @@ def test_reexport_of_loaded_layers_keeps_their_level(sample, tmp_path):
     code, _, log = run_alg("exportosmag", {"AREAS": str(tmp_path / "ba.gpkg"), "OUTPUT": str(tmp_path / "x.osm")},
                            check=False)
     assert code != 0 and "several levels" in log and not (tmp_path / "x.osm").exists()
+
+
+@pytest.mark.qgis_process
+def test_segment_writes_the_skeleton_graph(sample, tmp_path):
+    """The optional SKELETON output: one line per skeleton edge, with length and clearance, inside free space."""
+    from osgeo import ogr
+
+    from algorithms.cad_import import import_dxf
+    from algorithms.raster_io import write_grid
+    from algorithms.rasterize import rasterize
+
+    grid = rasterize(import_dxf(sample["dxf"][0]).geometries)
+    write_grid(str(tmp_path / "occ.tif"), grid)
+    run_alg("segment", {"INPUT": str(tmp_path / "occ.tif"), "AREAS": str(tmp_path / "a.gpkg"),
+                        "PASSAGES": str(tmp_path / "p.gpkg"), "LABELS": str(tmp_path / "l.tif"),
+                        "SKELETON": str(tmp_path / "s.gpkg")})
+    ds = ogr.Open(str(tmp_path / "s.gpkg"))  # keep the datasource alive while its layer is read
+    feats = list(ds.GetLayer(0))
+    assert len(feats) >= 20
+    for f in feats:
+        g = f.GetGeometryRef()
+        assert f.GetField("length_m") == pytest.approx(g.Length(), rel=0.2, abs=0.1)
+        assert 0 < f.GetField("min_clearance_m") <= f.GetField("max_clearance_m") < 8
