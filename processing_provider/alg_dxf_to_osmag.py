@@ -107,9 +107,11 @@ class DxfToOsmagAlgorithm(Cad2OsmagAlgorithm):
             variant=VARIANTS[self.parameterAsEnum(parameters, "VARIANT", context)],
         )
         # the written file, as styled layers in WGS84 (GUI runs load them into the project)
-        adest, pdest, _, _, _, _ = osmag_to_sinks(self, parameters, context, feedback, out,
-                                                 QgsCoordinateReferenceSystem("EPSG:4326"),
-                                                 "OUTPUT_AREAS", "OUTPUT_PASSAGES")
+        adest = pdest = None
+        if any(parameters.get(k) not in (None, "") for k in ("OUTPUT_AREAS", "OUTPUT_PASSAGES")):
+            adest, pdest, _, _, _, _ = osmag_to_sinks(self, parameters, context, feedback, out,
+                                                     QgsCoordinateReferenceSystem("EPSG:4326"),
+                                                     "OUTPUT_AREAS", "OUTPUT_PASSAGES")
         timing = ", ".join(f"{k} {v:.2f} s" for k, v in stats["timings"].items())
         feedback.pushInfo(self.tr("Stage times: {}").format(timing))
         result = {"OUTPUT": out, "AREA_COUNT": stats["areas"], "PASSAGE_COUNT": stats["passages"],
