@@ -84,6 +84,18 @@ class OsmagStyler(QgsProcessingLayerPostProcessorInterface):
     def postProcessLayer(self, layer, context, feedback):  # noqa: N802
         if layer is not None and layer.isValid():
             apply_osmag_style(layer, self.kind)
+            save_default_style(layer, feedback)
+
+
+def save_default_style(layer, feedback=None):
+    """Store the style in the layer's GeoPackage as its default, so reopening the file shows it styled.
+    Other formats keep the style for this session only. Returns True when stored."""
+    if layer.providerType() != "ogr" or ".gpkg" not in layer.source().lower():
+        return False
+    error = layer.saveStyleToDatabase("cad2osmag", "osmAG style (cad2osmag)", True, "")
+    if error and feedback is not None:
+        feedback.pushInfo(f"style not stored in {layer.source()}: {error}")
+    return not error
 
 
 def _keys(objs):

@@ -311,3 +311,30 @@ def test_gdal_osm_driver_in_qgis(qgis_app, qgis_new_project, tmp_path):
         assert len(list(lines.getFeatures())) == len(out.passages)
     finally:
         gdal.SetConfigOption("OSM_USE_CUSTOM_INDEXING", None)
+
+
+def test_style_is_stored_in_the_geopackage(qgis_app, qgis_new_project, tmp_path):
+    """A styled GeoPackage output reopens styled (the style is its default style in the file)."""
+    from osgeo import ogr, osr
+    from qgis.core import QgsCategorizedSymbolRenderer, QgsVectorLayer
+
+    module = _plugin_package().processing_provider.alg_load_osmag
+    path = str(tmp_path / "areas.gpkg")
+    ds = ogr.GetDriverByName("GPKG").CreateDataSource(path)
+    srs = osr.SpatialReference()
+    srs.ImportFromEPSG(4326)
+    lyr = ds.CreateLayer("areas", srs, ogr.wkbPolygon)
+    lyr.CreateField(ogr.FieldDefn("osmAG:areatype", ogr.OFTString))
+    f = ogr.Feature(lyr.GetLayerDefn())
+    f.SetField("osmAG:areatype", "room")
+    f.SetGeometry(ogr.CreateGeometryFromWkt("POLYGON ((0 0, 1 0, 1 1, 0 0))"))
+    lyr.CreateFeature(f)
+    ds = None
+    layer = QgsVectorLayer(path, "areas", "ogr")
+    module.apply_osmag_style(layer, "areas")
+    assert module.save_default_style(layer)
+    again = QgsVectorLayer(path, "again", "ogr")
+    assert isinstance(again.renderer(), QgsCategorizedSymbolRenderer)
+    assert again.renderer().classAttribute() == "osmAG:areatype"
+    memory = QgsVectorLayer("Polygon?crs=EPSG:4326", "m", "memory")
+    assert not module.save_default_style(memory)
