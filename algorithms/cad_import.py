@@ -1008,7 +1008,8 @@ def inspect_dxf(path: str, rules=None, progress=None) -> CadDrawing:
     fallback = _fallback_walls(infos, raw)  # the same choice import_dxf makes, so 'kept' tells the truth
     if fallback:
         warnings.append(fallback)
-        progress.warning(fallback)
+    for msg in raw.repairs + warnings:  # reported once, here, like import_dxf does
+        progress.warning(msg)
     progress.step(100)
     return CadDrawing(path=path, geometries=[], texts=[], layers=infos, unit_name=raw.header_unit,
                       unit_scale=UNIT_SCALES.get(raw.header_unit, 1.0), header_unit=raw.header_unit,

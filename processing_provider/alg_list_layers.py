@@ -53,9 +53,7 @@ class ListLayersAlgorithm(Cad2OsmagAlgorithm):
         path = self.parameterAsFile(parameters, self.INPUT, context)
         rules_path = self.parameterAsFile(parameters, self.LAYER_RULES, context) or None
         rules = self.call(feedback, _load_rules, rules_path)
-        drawing = self.call(feedback, cad_import.inspect_dxf, path, rules)
-        for msg in drawing.repairs + drawing.warnings:
-            feedback.pushWarning(msg) if hasattr(feedback, "pushWarning") else feedback.reportError(msg)
+        drawing = self.call(feedback, cad_import.inspect_dxf, path, rules)  # reports repairs and warnings
         infos = sorted(drawing.layers.values(), key=lambda i: i.name.lower())
 
         fields = QgsFields()

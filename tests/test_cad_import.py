@@ -608,3 +608,14 @@ def test_list_layers_tells_the_same_story_as_the_import(tmp_path):
     empty = ezdxf.new("R2013")
     with pytest.raises(InputError, match="no geometry and no text"):
         list_layers(save(empty, tmp_path, "empty.dxf"))
+
+
+def test_inspect_reports_each_warning_once(tmp_path):
+    doc = ezdxf.new("R2013")
+    doc.header["$INSUNITS"] = 6
+    doc.modelspace().add_lwpolyline([(0, 0), (20, 0), (20, 10), (0, 10)], close=True, dxfattribs={"layer": "Pluma 8"})
+    rec = RecordingProgress()
+    drawing = inspect_dxf(save(doc, tmp_path), progress=rec)
+    warned = [m for kind, m in rec.messages if kind == "warning"]
+    assert any("no layer name matched a wall keyword" in m for m in warned)
+    assert sorted(warned) == sorted(set(warned)) == sorted(drawing.repairs + drawing.warnings)
