@@ -3,8 +3,6 @@ from qgis.core import (
     QgsCoordinateReferenceSystem,
     QgsFeature,
     QgsFeatureSink,
-    QgsField,
-    QgsFields,
     QgsGeometry,
     QgsLineString,
     QgsMultiLineString,
@@ -24,7 +22,7 @@ from qgis.core import (
 from ..algorithms import cad_import
 from ..algorithms.layer_rules import load_rules
 from ..algorithms.rasterize import LOCAL_FRAME_WKT
-from .base import Cad2OsmagAlgorithm, FIELD_BOOL, FIELD_DOUBLE, FIELD_STRING
+from .base import Cad2OsmagAlgorithm, FIELD_BOOL, FIELD_DOUBLE, FIELD_STRING, make_fields
 
 UNIT_OPTIONS = ["", "mm", "cm", "m", "inch", "feet"]
 
@@ -36,24 +34,13 @@ def local_frame_crs():
 
 
 def wall_fields():
-    fields = QgsFields()
-    fields.append(QgsField("layer", FIELD_STRING))
-    fields.append(QgsField("kind", FIELD_STRING))
-    fields.append(QgsField("entity", FIELD_STRING))
-    fields.append(QgsField("closed", FIELD_BOOL))
-    fields.append(QgsField("filled", FIELD_BOOL))
-    fields.append(QgsField("width", FIELD_DOUBLE))
-    return fields
+    return make_fields(("layer", FIELD_STRING), ("kind", FIELD_STRING), ("entity", FIELD_STRING),
+                       ("closed", FIELD_BOOL), ("filled", FIELD_BOOL), ("width", FIELD_DOUBLE))
 
 
 def text_fields():
-    fields = QgsFields()
-    fields.append(QgsField("text", FIELD_STRING))
-    fields.append(QgsField("height", FIELD_DOUBLE))
-    fields.append(QgsField("rotation", FIELD_DOUBLE))
-    fields.append(QgsField("layer", FIELD_STRING))
-    fields.append(QgsField("entity", FIELD_STRING))
-    return fields
+    return make_fields(("text", FIELD_STRING), ("height", FIELD_DOUBLE), ("rotation", FIELD_DOUBLE),
+                       ("layer", FIELD_STRING), ("entity", FIELD_STRING))
 
 
 def geometry_to_qgs(coords, closed):

@@ -3,7 +3,6 @@ from qgis.core import (
     QgsFeature,
     QgsFeatureSink,
     QgsField,
-    QgsFields,
     QgsProcessing,
     QgsProcessingOutputNumber,
     QgsProcessingOutputString,
@@ -15,7 +14,7 @@ from qgis.core import (
 
 from ..algorithms import cad_import
 from ..algorithms.layer_rules import load_rules
-from .base import Cad2OsmagAlgorithm, FIELD_BOOL, FIELD_INT, FIELD_STRING
+from .base import Cad2OsmagAlgorithm, FIELD_BOOL, FIELD_INT, FIELD_STRING, make_fields
 
 # DXF types that get their own count column; everything else is summed in n_other
 COUNT_COLUMNS = ("LINE", "LWPOLYLINE", "POLYLINE", "ARC", "CIRCLE", "ELLIPSE", "SPLINE", "HATCH", "SOLID",
@@ -56,16 +55,9 @@ class ListLayersAlgorithm(Cad2OsmagAlgorithm):
         drawing = self.call(feedback, cad_import.inspect_dxf, path, rules)  # reports repairs and warnings
         infos = sorted(drawing.layers.values(), key=lambda i: i.name.lower())
 
-        fields = QgsFields()
-        fields.append(QgsField("layer", FIELD_STRING))
-        fields.append(QgsField("kind", FIELD_STRING))
-        fields.append(QgsField("kept", FIELD_BOOL))
-        fields.append(QgsField("rule", FIELD_STRING))
-        fields.append(QgsField("frozen", FIELD_BOOL))
-        fields.append(QgsField("off", FIELD_BOOL))
-        fields.append(QgsField("total", FIELD_INT))
-        for col in COUNT_COLUMNS:
-            fields.append(QgsField("n_" + col.lower(), FIELD_INT))
+        fields = make_fields(("layer", FIELD_STRING), ("kind", FIELD_STRING), ("kept", FIELD_BOOL),
+                             ("rule", FIELD_STRING), ("frozen", FIELD_BOOL), ("off", FIELD_BOOL),
+                             ("total", FIELD_INT), *(("n_" + col.lower(), FIELD_INT) for col in COUNT_COLUMNS))
         fields.append(QgsField("n_other", FIELD_INT))
         fields.append(QgsField("counts", FIELD_STRING))
 

@@ -4,8 +4,6 @@ from qgis.core import (
     QgsCategorizedSymbolRenderer,
     QgsFeature,
     QgsFeatureSink,
-    QgsField,
-    QgsFields,
     QgsFillSymbol,
     QgsLineSymbol,
     QgsPalLayerSettings,
@@ -26,7 +24,7 @@ from qgis.PyQt.QtGui import QColor
 
 from ..algorithms.osmag import get_tag
 from .alg_georeference import qgs_crs_to_pyproj
-from .base import Cad2OsmagAlgorithm, FIELD_LONG, FIELD_STRING, to_qgs
+from .base import Cad2OsmagAlgorithm, FIELD_LONG, FIELD_STRING, make_fields, to_qgs
 
 AREA_COLOURS = {  # osmAG:areatype -> (fill RGBA, outline)
     "room": ("255,235,160,180", "120,100,40"),
@@ -131,16 +129,10 @@ def osmag_to_sinks(alg, parameters, context, feedback, path, tcrs, areas_key, pa
         raise QgsProcessingException(alg.tr("cannot convert to {}: {}").format(tcrs.authid(), exc))
     # everything computed: create the outputs
     akeys = _keys(areas)
-    afields = QgsFields()
-    afields.append(QgsField("osm_id", FIELD_LONG))
-    for k in akeys:
-        afields.append(QgsField(k, FIELD_STRING))
+    afields = make_fields(("osm_id", FIELD_LONG), *((k, FIELD_STRING) for k in akeys))
     pkeys = _keys(passages)
-    pfields = QgsFields()
-    for n in ("osm_id", "from_id", "to_id"):
-        pfields.append(QgsField(n, FIELD_LONG))
-    for k in pkeys:
-        pfields.append(QgsField(k, FIELD_STRING))
+    pfields = make_fields(("osm_id", FIELD_LONG), ("from_id", FIELD_LONG), ("to_id", FIELD_LONG),
+                          *((k, FIELD_STRING) for k in pkeys))
     sink, adest = alg.parameterAsSink(parameters, areas_key, context, afields, QgsWkbTypes.Type.Polygon,
                                        tcrs)
     for a, g in zip(areas, agoms if sink is not None else []):  # an optional output may be skipped

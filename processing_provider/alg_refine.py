@@ -13,8 +13,6 @@ algorithms. Layer conventions (what these algorithms read and write):
 from qgis.core import (
     QgsFeature,
     QgsFeatureSink,
-    QgsField,
-    QgsFields,
     QgsProcessing,
     QgsProcessingException,
     QgsProcessingOutputNumber,
@@ -25,7 +23,7 @@ from qgis.core import (
 )
 
 from ..algorithms.model import Area, AreaGraph, Passage
-from .base import Cad2OsmagAlgorithm, FIELD_DOUBLE, FIELD_LONG, FIELD_STRING, from_qgs, to_qgs
+from .base import Cad2OsmagAlgorithm, FIELD_DOUBLE, FIELD_LONG, FIELD_STRING, from_qgs, make_fields, to_qgs
 
 AREA_ID_FIELDS = ("id", "osm_id", "area_id", "fid")
 AREA_TYPE_FIELDS = ("type", "osmAG:areatype", "osmAG:areaType", "areatype")
@@ -116,27 +114,14 @@ def read_passages(source, areas):
 
 
 def area_fields(extra_keys=()):
-    fields = QgsFields()
-    fields.append(QgsField("id", FIELD_LONG))
-    fields.append(QgsField("type", FIELD_STRING))
-    fields.append(QgsField("name", FIELD_STRING))
-    fields.append(QgsField("max_clearance", FIELD_DOUBLE))
-    fields.append(QgsField("area_m2", FIELD_DOUBLE))
-    for k in extra_keys:
-        fields.append(QgsField(k, FIELD_STRING))
-    return fields
+    return make_fields(("id", FIELD_LONG), ("type", FIELD_STRING), ("name", FIELD_STRING),
+                       ("max_clearance", FIELD_DOUBLE), ("area_m2", FIELD_DOUBLE),
+                       *((k, FIELD_STRING) for k in extra_keys))
 
 
 def passage_fields(extra_keys=()):
-    fields = QgsFields()
-    fields.append(QgsField("id", FIELD_LONG))
-    fields.append(QgsField("from_id", FIELD_LONG))
-    fields.append(QgsField("to_id", FIELD_LONG))
-    fields.append(QgsField("name", FIELD_STRING))
-    fields.append(QgsField("width_m", FIELD_DOUBLE))
-    for k in extra_keys:
-        fields.append(QgsField(k, FIELD_STRING))
-    return fields
+    return make_fields(("id", FIELD_LONG), ("from_id", FIELD_LONG), ("to_id", FIELD_LONG), ("name", FIELD_STRING),
+                       ("width_m", FIELD_DOUBLE), *((k, FIELD_STRING) for k in extra_keys))
 
 
 def _extra_keys(objs, core):

@@ -6,7 +6,6 @@ from qgis.core import (
     QgsFeature,
     QgsFeatureSink,
     QgsField,
-    QgsFields,
     QgsProcessing,
     QgsProcessingException,
     QgsProcessingOutputNumber,
@@ -21,7 +20,7 @@ from qgis.core import (
 from ..algorithms import segmentation
 from ..algorithms.errors import InputError
 from .alg_refine import area_fields, passage_fields
-from .base import Cad2OsmagAlgorithm, FIELD_DOUBLE, FIELD_INT, to_qgs
+from .base import Cad2OsmagAlgorithm, FIELD_DOUBLE, FIELD_INT, make_fields, to_qgs
 
 ROS_EXTENSIONS = (".yaml", ".yml")
 
@@ -202,10 +201,8 @@ class SegmentAlgorithm(Cad2OsmagAlgorithm):
             if not sink_p.addFeature(f, QgsFeatureSink.Flag.FastInsert):
                 raise QgsProcessingException(self.tr("cannot write passage {}").format(p.id))
         if skeleton_lines is not None:
-            sfields = QgsFields()
-            for name, ftype in (("id", FIELD_INT), ("length_m", FIELD_DOUBLE), ("min_clearance_m", FIELD_DOUBLE),
-                                ("max_clearance_m", FIELD_DOUBLE)):
-                sfields.append(QgsField(name, ftype))
+            sfields = make_fields(("id", FIELD_INT), ("length_m", FIELD_DOUBLE), ("min_clearance_m", FIELD_DOUBLE),
+                                  ("max_clearance_m", FIELD_DOUBLE))
             sink_s, dest_s = self.parameterAsSink(parameters, self.SKELETON, context, sfields,
                                                   QgsWkbTypes.Type.LineString, crs)
             if sink_s is not None:

@@ -11,7 +11,7 @@ parameters, layers and feedback onto them:
 """
 import os
 
-from qgis.core import Qgis, QgsGeometry, QgsProcessingAlgorithm, QgsProcessingException
+from qgis.core import Qgis, QgsField, QgsFields, QgsGeometry, QgsProcessingAlgorithm, QgsProcessingException
 from qgis.PyQt.QtCore import QCoreApplication
 from qgis.PyQt.QtGui import QIcon
 
@@ -108,6 +108,14 @@ class Cad2OsmagAlgorithm(QgsProcessingAlgorithm):
             raise QgsProcessingException(self.tr("Canceled by the user."))
         except InputError as exc:
             raise QgsProcessingException(str(exc))
+
+
+def make_fields(*specs):
+    """QgsFields from (name, FIELD_* type) pairs, in order."""
+    fields = QgsFields()
+    for name, ftype in specs:
+        fields.append(QgsField(name, ftype))
+    return fields
 
 
 def to_qgs(geom):
