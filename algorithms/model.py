@@ -43,6 +43,38 @@ class CadText:
     rotation: float  # degrees, counter-clockwise
     layer: str
     entity: str = "TEXT"  # TEXT | MTEXT | ATTRIB
+    block: str = ""  # name of the (innermost) block the text was exploded from, "" in model space
+    tag: str = ""  # ATTRIB tag (e.g. "ROOMNAME"), "" for TEXT/MTEXT
+    id: int = -1  # index in CadDrawing.texts, set by the import; stable across reruns of one file
+
+
+@dataclass
+class DoorHint:
+    """A doorway found in the drawing (door block or swing arc + leaf): the opening as a segment from
+    jamb to jamb, CAD frame metres. Segmentation keeps it open and turns it into a passage when the
+    areas on both sides would otherwise not be connected."""
+
+    x0: float
+    y0: float
+    x1: float
+    y1: float
+    source: str = ""  # "block:<name>" | "swing" | "layer:<name>"
+
+    @property
+    def width(self) -> float:
+        return float(np.hypot(self.x1 - self.x0, self.y1 - self.y0))
+
+
+@dataclass
+class PlanInfo:
+    """One spatially separate group of structural geometry on a sheet (a plan, half plan or detail)."""
+
+    index: int  # 0 = the plan taken by default (largest wall mass)
+    extent: Tuple[float, float, float, float]  # xmin, ymin, xmax, ymax in metres (CAD frame)
+    wall_length: float  # metres of wall geometry in the group
+    title: str = ""  # the text that titles it, e.g. "三层平面图" or "楼梯放大详图"
+    kind: str = "plan"  # plan | detail | legend | other
+    selected: bool = False
 
 
 @dataclass
@@ -70,6 +102,10 @@ class CadDrawing:
     header_unit: str  # what $INSUNITS said
     warnings: List[str] = field(default_factory=list)
     repairs: List[str] = field(default_factory=list)  # what recover mode fixed
+    doors: List["DoorHint"] = field(default_factory=list)  # doorways found (blocks, swings)
+    plans: List["PlanInfo"] = field(default_factory=list)  # groups found on the sheet; selected one kept
+    classes: Dict[str, int] = field(default_factory=dict)  # entity class counts (wall, door, furniture..)
+    undecoded: Dict[str, int] = field(default_factory=dict)  # entity types the reader could not decode
 
 
 # --------------------------------------------------------------------------- stage 2: raster
@@ -120,6 +156,8 @@ class Area:
     name: str = ""
     max_clearance: float = 0.0  # metres
     tags: Dict[str, str] = field(default_factory=dict)  # extra osmAG/OSM tags
+    ref: str = ""  # room number from the drawing ("A007", "E1-ST-03"), "" when none
+    component: int = 0  # connected component of the floor's area graph (0 = the largest)
 
     @property
     def area(self) -> float:
