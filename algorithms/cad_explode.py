@@ -182,11 +182,15 @@ class _Pieces:
     closed: List[bool] = field(default_factory=list)
     filled: List[bool] = field(default_factory=list)
     width: List[float] = field(default_factory=list)
-    texts: List[tuple] = field(default_factory=list)  # (x, y, text, height, rotation_deg, layer, etype)
+    # texts: (x, y, text, height, rotation_deg, layer, etype, blocks, tag); ``blocks`` as for ``block`` below
+    texts: List[tuple] = field(default_factory=list)
+    # the chain of block names a piece was exploded from, outermost first, joined by BLOCK_SEP ("" = model space)
+    block: List[str] = field(default_factory=list)
     counts: List[tuple] = field(default_factory=list)  # (layer, etype, n) for entities without geometry
     xrefs: List[str] = field(default_factory=list)
 
-    def add(self, coords, layer, etype, closed=False, filled=False, width=0.0):
+    def add(self, coords, layer, etype, closed=False, filled=False, width=0.0, block=""):
+        self.block.append(block)
         self.coords.append(coords)
         self.layer.append(layer)
         self.etype.append(etype)
@@ -198,8 +202,24 @@ class _Pieces:
         return len(self.coords)
 
 
+BLOCK_SEP = "\x1f"
+
+
+def _chain_name(name: str, inner: str) -> str:
+    return f"{name}{BLOCK_SEP}{inner}" if inner else name
+
+
+def innermost_block(chain: str) -> str:
+    """The innermost named block of a chain (anonymous blocks such as ``*U12`` only when nothing else)."""
+    if not chain:
+        return ""
+    parts = chain.split(BLOCK_SEP)
+    named = [p for p in parts if not p.startswith("*")]
+    return named[-1] if named else parts[-1]
+
+
 def _transform_pieces(src: _Pieces, A: np.ndarray, t: np.ndarray, layer: str, dst: _Pieces,
-                      layer_ok) -> None:
+                      layer_ok, name: str = "") -> None:
     """Append ``src`` transformed by x' = A @ x + t to ``dst``; layer "0" takes ``layer``."""
     n = len(src.coords)
     if n:
@@ -214,17 +234,19 @@ def _transform_pieces(src: _Pieces, A: np.ndarray, t: np.ndarray, layer: str, ds
             if not layer_ok(lay, src.etype[i]):
                 continue
             w = src.width[i]
-            dst.add(splits[i], lay, src.etype[i], src.closed[i], src.filled[i], w * s if w else 0.0)
+            dst.add(splits[i], lay, src.etype[i], src.closed[i], src.filled[i], w * s if w else 0.0,
+                    _chain_name(name, src.block[i]))
     if src.texts:
         s = math.sqrt(abs(float(np.linalg.det(A))))
         rot = math.degrees(math.atan2(A[1, 0], A[0, 0]))
-        for (x, y, text, h, r, lay, et) in src.texts:
+        for (x, y, text, h, r, lay, et, blocks, tag) in src.texts:
             if lay == "0":
                 lay = layer
             if not layer_ok(lay, et):
                 continue
             p = A @ np.array((x, y)) + t
-            dst.texts.append((float(p[0]), float(p[1]), text, h * s, (r + rot) % 360.0, lay, et))
+            dst.texts.append((float(p[0]), float(p[1]), text, h * s, (r + rot) % 360.0, lay, et,
+                              _chain_name(name, blocks), tag))
     for (lay, et, k) in src.counts:
         dst.counts.append((layer if lay == "0" else lay, et, k))
     dst.xrefs.extend(src.xrefs)
@@ -386,7 +408,7 @@ class _Exploder:
                     p = e.dxf.align_point
                 xy = _ocs_to_wcs(np.array([[p[0], p[1]]]), _extrusion(e))[0]
                 out.texts.append((float(xy[0]), float(xy[1]), txt, float(e.dxf.get("height", 1.0)),
-                                  float(e.dxf.get("rotation", 0.0)), layer, et))
+                                  float(e.dxf.get("rotation", 0.0)), layer, et, "", ""))
         elif et == "MTEXT":
             txt = _mtext_plain(e)
             if txt:
@@ -395,7 +417,8 @@ class _Exploder:
                     rot = float(e.get_rotation())
                 except Exception:
                     rot = float(e.dxf.get("rotation", 0.0))
-                out.texts.append((float(p[0]), float(p[1]), txt, float(e.dxf.get("char_height", 1.0)), rot, layer, et))
+                out.texts.append((float(p[0]), float(p[1]), txt, float(e.dxf.get("char_height", 1.0)), rot,
+                                  layer, et, "", ""))
         elif et in SKIP_TYPES:
             out.counts.append((layer, et, 1))
         elif et in ("MLINE",):
@@ -495,7 +518,7 @@ class _Exploder:
                 s = float(np.linalg.norm(A, 2))
                 tol = self.tol / (2.0 ** math.ceil(math.log2(s))) if s > 1.0 + 1e-9 else self.tol
                 blk = self.block(name, tol)
-            _transform_pieces(blk, A, t, layer, out, self._inherited_ok)
+            _transform_pieces(blk, A, t, layer, out, self._inherited_ok, name)
             # attributes are stored in the parent's coordinates already
             for a in ins.attribs:
                 if a.is_invisible if hasattr(a, "is_invisible") else False:
@@ -511,7 +534,8 @@ class _Exploder:
                     if (a.dxf.get("halign", 0) or a.dxf.get("valign", 0)) and a.dxf.hasattr("align_point"):
                         p = a.dxf.align_point
                     out.texts.append((float(p[0]), float(p[1]), txt, float(a.dxf.get("height", 1.0)),
-                                      float(a.dxf.get("rotation", 0.0)), alay, "ATTRIB"))
+                                      float(a.dxf.get("rotation", 0.0)), alay, "ATTRIB", name,
+                                      str(a.dxf.get("tag", "") or "")))
 
     def _inherited_ok(self, layer, etype) -> bool:
         return self._keep_layer(layer)
@@ -554,6 +578,7 @@ def _explode(path: str, tol_du: float, progress, doc=None, repairs=None) -> _Raw
         out = _Pieces(coords=[out.coords[i] for i in keep], layer=[out.layer[i] for i in keep],
                       etype=[out.etype[i] for i in keep], closed=[out.closed[i] for i in keep],
                       filled=[out.filled[i] for i in keep], width=[out.width[i] for i in keep],
+                      block=[out.block[i] for i in keep],
                       texts=[t for t in out.texts if visible(t[5])], counts=out.counts, xrefs=out.xrefs)
     else:
         out.texts = [t for t in out.texts if visible(t[5])]

@@ -41,12 +41,13 @@ import numpy as np
 from .cad_classify import DOOR_RADIUS, DOOR_SWEEP, _circle_from_3, find_door_swings  # noqa: F401
 from .cad_explode import (MAX_SEGMENTS_PER_TURN, SKIP_TYPES, TEXT_TYPES, _arc_points, _boundary_rings,  # noqa: F401
                           _bulge_polyline, _chain, _edge_points, _Exploder, _explode, _extrusion, _mtext_plain,
-                          _n_segments, _ocs_to_wcs, _Pieces, _Raw, _text_plain, _transform_pieces)
+                          _n_segments, _ocs_to_wcs, _Pieces, _Raw, _text_plain, _transform_pieces,
+                          BLOCK_SEP, innermost_block)
 from .cad_read import _code_kind, _is_truncated, _layer_states, _read_doc, _salvage  # noqa: F401
 from .cad_units import (CHORD_TOL, PLAUSIBLE_SIZE, TYPICAL_SIZE, UNIT_SCALES, UNIT_SIZE_PERCENTILES,  # noqa: F401
                         _header_unit, _INSUNITS, _percentile_size, _UNIT_ALIASES, choose_unit, normalize_unit)
 from .errors import InputError
-from .layer_rules import LayerRules, default_rules, load_rules
+from .layer_rules import LayerRules, default_rules, load_rules, meaningful_part
 from .model import CadDrawing, CadGeometry, CadText, LayerInfo
 from .progress import ensure
 
@@ -72,6 +73,7 @@ def _layer_infos(raw: _Raw, rules: LayerRules, selected: Optional[Dict[str, str]
         c = get(lay).counts
         c[et] = c.get(et, 0) + k
     for name, info in infos.items():
+        info.matched = meaningful_part(name)
         if selected is not None:
             key = name.lower()
             if key in selected:
@@ -270,7 +272,7 @@ def import_dxf(path: str, rules=None, layers: Optional[Sequence[str]] = None, un
             continue
         geoms.append(CadGeometry(layer=p.layer[i], kind=infos[p.layer[i]].kind, coords=c * scale,
                                  closed=p.closed[i], filled=p.filled[i], width=p.width[i] * scale,
-                                 entity=p.etype[i]))
+                                 entity=p.etype[i], block=innermost_block(p.block[i])))
     if not include_doors and drop_door_swings:
         swings = find_door_swings(geoms)
         if swings:
@@ -279,7 +281,8 @@ def import_dxf(path: str, rules=None, layers: Optional[Sequence[str]] = None, un
             progress.info(f"left out {len(swings)} door swing arcs and leaves drawn on non-door layers "
                           "(doorways stay open; set include_doors to close them)")
     texts = [CadText(x=t[0] * scale, y=t[1] * scale, text=t[2], height=t[3] * scale, rotation=t[4],
-                     layer=t[5], entity=t[6]) for t in p.texts]
+                     layer=t[5], entity=t[6], block=innermost_block(t[7]), tag=t[8], id=k)
+             for k, t in enumerate(p.texts)]
     kept_layers = sorted({g.layer for g in geoms})
     progress.step(100, f"{len(geoms)} geometries on {len(kept_layers)} layers, {len(texts)} texts, unit {unit}")
     return CadDrawing(path=path, geometries=geoms, texts=texts, layers=infos, unit_name=unit, unit_scale=scale,

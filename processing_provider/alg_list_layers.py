@@ -55,7 +55,7 @@ class ListLayersAlgorithm(Cad2OsmagAlgorithm):
         drawing = self.call(feedback, cad_import.inspect_dxf, path, rules)  # reports repairs and warnings
         infos = sorted(drawing.layers.values(), key=lambda i: i.name.lower())
 
-        fields = make_fields(("layer", FIELD_STRING), ("kind", FIELD_STRING), ("kept", FIELD_BOOL),
+        fields = make_fields(("layer", FIELD_STRING), ("matched", FIELD_STRING), ("kind", FIELD_STRING), ("kept", FIELD_BOOL),
                              ("rule", FIELD_STRING), ("frozen", FIELD_BOOL), ("off", FIELD_BOOL),
                              ("total", FIELD_INT), *(("n_" + col.lower(), FIELD_INT) for col in COUNT_COLUMNS))
         fields.append(QgsField("n_other", FIELD_INT))
@@ -66,7 +66,7 @@ class ListLayersAlgorithm(Cad2OsmagAlgorithm):
             f = QgsFeature(fields)
             counts = info.counts
             other = sum(v for k, v in counts.items() if k not in COUNT_COLUMNS)
-            attrs = [info.name, info.kind or "", cad_import.layer_kept(info, rules), info.rule, bool(info.frozen), bool(info.off),
+            attrs = [info.name, info.matched or info.name, info.kind or "", cad_import.layer_kept(info, rules), info.rule, bool(info.frozen), bool(info.off),
                      int(sum(counts.values()))]
             attrs += [int(counts.get(c, 0)) for c in COUNT_COLUMNS]
             attrs += [int(other), "; ".join(f"{k}={v}" for k, v in sorted(counts.items()))]
