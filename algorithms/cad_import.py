@@ -38,7 +38,8 @@ from typing import Dict, List, Optional, Sequence, Tuple
 
 import numpy as np
 
-from .cad_classify import DOOR_RADIUS, DOOR_SWEEP, _circle_from_3, find_door_swings  # noqa: F401
+from .cad_classify import DOOR_RADIUS, DOOR_SWEEP, _circle_from_3, classify_entities, find_door_swings  # noqa: F401
+from .cad_sheet import describe_plans, find_plans
 from .cad_explode import (MAX_SEGMENTS_PER_TURN, SKIP_TYPES, TEXT_TYPES, _arc_points, _boundary_rings,  # noqa: F401
                           _bulge_polyline, _chain, _edge_points, _Exploder, _explode, _extrusion, _mtext_plain,
                           _n_segments, _ocs_to_wcs, _Pieces, _Raw, _text_plain, _transform_pieces,
@@ -48,7 +49,7 @@ from .cad_units import (CHORD_TOL, PLAUSIBLE_SIZE, TYPICAL_SIZE, UNIT_SCALES, UN
                         _header_unit, _INSUNITS, _percentile_size, _UNIT_ALIASES, choose_unit, normalize_unit)
 from .errors import InputError
 from .layer_rules import LayerRules, default_rules, load_rules, meaningful_part
-from .model import CadDrawing, CadGeometry, CadText, LayerInfo
+from .model import CadDrawing, CadGeometry, CadText, DoorHint, LayerInfo
 from .progress import ensure
 
 
@@ -188,7 +189,7 @@ def _xref_message(xrefs: List[str]) -> str:
 
 def import_dxf(path: str, rules=None, layers: Optional[Sequence[str]] = None, units: Optional[str] = None,
                include_doors: bool = False, fallback_walls: bool = True, drop_door_swings: bool = True,
-               progress=None) -> CadDrawing:
+               plan=None, classify: bool = True, progress=None) -> CadDrawing:
     """Read a DXF and return the structural geometry (metres, CAD frame) and every visible text.
 
     ``rules``: LayerRules, a JSON path, or None for the defaults. ``layers``: explicit layer names
@@ -198,6 +199,11 @@ def import_dxf(path: str, rules=None, layers: Optional[Sequence[str]] = None, un
     (generic names such as "Pluma 8" or "4") as walls, with a warning. ``drop_door_swings``: unless
     doors are included, also leave out door swings drawn on other layers (a quarter arc of 0.5-1.6 m
     radius and the leaf hinged at its centre), as found in mixed "doors windows" layers and blocks.
+    ``plan``: which group of a whole sheet to keep (cad_sheet): None = the main plan (largest wall
+    mass), an index into ``CadDrawing.plans``, or an extent (xmin, ymin, xmax, ymax) in metres (also as
+    a string "xmin,ymin,xmax,ymax"). ``classify``: classify entities by block names and geometry
+    (cad_classify: door and furniture blocks, door swings -> ``CadDrawing.doors``, pattern hatches,
+    free-standing furniture on layer "0"); ``CadDrawing.classes`` counts the classes.
     Raises InputError for anything the user can fix.
     """
     progress = ensure(progress)
@@ -263,9 +269,12 @@ def import_dxf(path: str, rules=None, layers: Optional[Sequence[str]] = None, un
         if selected is None and fallback_walls:
             _fallback_walls(infos, raw)
         idx = _kept_mask(raw, infos, rules, include_doors, selected is not None)
+    if classify and not include_doors:  # door layers too: their swings become door hints, then they go
+        idx = _kept_mask(raw, infos, rules, True, selected is not None)
     progress.step(85, "converting to metres")
     p = raw.pieces
     geoms = []
+    chains = []
     for i in idx:
         c = p.coords[i]
         if len(c) < 2 and not p.filled[i]:
@@ -273,17 +282,48 @@ def import_dxf(path: str, rules=None, layers: Optional[Sequence[str]] = None, un
         geoms.append(CadGeometry(layer=p.layer[i], kind=infos[p.layer[i]].kind, coords=c * scale,
                                  closed=p.closed[i], filled=p.filled[i], width=p.width[i] * scale,
                                  entity=p.etype[i], block=innermost_block(p.block[i])))
-    if not include_doors and drop_door_swings:
-        swings = find_door_swings(geoms)
-        if swings:
-            gone = set(swings)
-            geoms = [g for k, g in enumerate(geoms) if k not in gone]
-            progress.info(f"left out {len(swings)} door swing arcs and leaves drawn on non-door layers "
-                          "(doorways stay open; set include_doors to close them)")
+        chains.append(p.block[i])
     texts = [CadText(x=t[0] * scale, y=t[1] * scale, text=t[2], height=t[3] * scale, rotation=t[4],
-                     layer=t[5], entity=t[6], block=innermost_block(t[7]), tag=t[8], id=k)
-             for k, t in enumerate(p.texts)]
+                     layer=t[5], entity=t[6], block=innermost_block(t[7]), tag=t[8])
+             for t in p.texts]
+    doors: List[DoorHint] = []
+    classes: Dict[str, int] = {}
+    if classify:
+        progress.step(88, "classifying entities (door and furniture blocks, door swings, hatches)")
+        weak = {name for name, info in infos.items()
+                if info.kind is not None and (info.rule.startswith("fallback") or info.rule.startswith("preserve"))}
+        keep, classes, doors = classify_entities(geoms, chains, rules, include_doors, weak, drop_door_swings)
+        gone = len(geoms) - int(keep.sum())
+        geoms = [g for g, k in zip(geoms, keep) if k]
+        if gone:
+            progress.info("left out " + ", ".join(f"{v} {k}" for k, v in sorted(classes.items())
+                                                  if k in ("door", "furniture", "hatch") and v)
+                          + " entities found by block name or shape (doorways stay open; set include_doors "
+                          f"to close them); {len(doors)} doorways found")
+    elif not include_doors and drop_door_swings:
+        swings = set(find_door_swings(geoms))
+        geoms = [g for k, g in enumerate(geoms) if k not in swings]
+    progress.step(93, "finding the plan(s) on the sheet")
+    plans, gkeep, tkeep, n_frames = find_plans(geoms, texts, rules, plan)
+    if n_frames:
+        classes["frame"] = n_frames
+    sel = next(pl for pl in plans if pl.selected) if any(pl.selected for pl in plans) else None
+    real = [pl for pl in plans if pl.kind != "other"]
+    if len(real) > 1 or plan is not None:
+        msg = (f"the sheet holds {len(real)} plan-like group(s); kept "
+               + (f"[{sel.index}] {sel.kind}{' ' + repr(sel.title) if sel.title else ''}" if sel else "the PLAN extent")
+               + ". " + describe_plans(plans) + " Give PLAN=<index> or an extent to take another")
+        progress.info(msg)
+    geoms = [g for g, k in zip(geoms, gkeep) if k]
+    texts = [t for t, k in zip(texts, tkeep) if k]
+    for k, t in enumerate(texts):
+        t.id = k
+    if sel is not None:
+        x0, y0, x1, y1 = sel.extent
+        doors = [d for d in doors if x0 - 1 <= (d.x0 + d.x1) / 2 <= x1 + 1 and y0 - 1 <= (d.y0 + d.y1) / 2 <= y1 + 1]
     kept_layers = sorted({g.layer for g in geoms})
-    progress.step(100, f"{len(geoms)} geometries on {len(kept_layers)} layers, {len(texts)} texts, unit {unit}")
+    progress.step(100, f"{len(geoms)} geometries on {len(kept_layers)} layers, {len(texts)} texts, unit {unit}"
+                  + (f", {len(doors)} doorways" if doors else ""))
     return CadDrawing(path=path, geometries=geoms, texts=texts, layers=infos, unit_name=unit, unit_scale=scale,
-                      header_unit=header, warnings=warnings, repairs=list(repairs))
+                      header_unit=header, warnings=warnings, repairs=list(repairs), doors=doors, plans=plans,
+                      classes=classes)
