@@ -1037,3 +1037,140 @@ def ground_truth_envelope(path: str) -> Polygon:
         if f["properties"].get("kind") == "envelope":
             return shape(f["geometry"])
     raise InputError(f"{path}: no envelope feature")
+
+
+# --------------------------------------------------------------------------- drawings as delivered
+SHEET_GAP = 12000  # mm between the plan and the views beside it on the sheet variant
+DETAIL_SCALE = 2.0  # the enlarged stair detail is drawn at twice the plan's scale (1:50 beside 1:100)
+
+
+def _to_layer_zero(doc) -> None:
+    """Spaghetti: every entity of model space and of every block on layer "0"; the grid axes go (a
+    spaghetti plan has no axis layer to leave out, and axes on "0" are not what is being tested)."""
+    msp = doc.modelspace()
+    for e in list(msp):
+        if e.dxf.get("layer", "0") == "S-GRID":
+            msp.delete_entity(e)
+    for blk in doc.blocks:
+        if blk.name.lower().startswith(("*model_space", "*paper_space")):
+            continue
+        for e in blk:
+            e.dxf.layer = "0"
+    for e in msp:
+        e.dxf.layer = "0"
+        if e.dxftype() == "INSERT":
+            for a in e.attribs:
+                a.dxf.layer = "0"
+
+
+def _explode_doors(doc) -> None:
+    """Door blocks replaced by their loose arcs and leaves (no block name left to tell they are doors)."""
+    msp = doc.modelspace()
+    for blk in [doc.blocks.get("OFFICE_MODULE")]:
+        if blk is None:
+            continue
+        for e in list(blk):
+            if e.dxftype() == "INSERT" and e.dxf.name.upper().startswith("DOOR"):
+                for v in e.virtual_entities():
+                    blk.add_entity(v)
+                blk.delete_entity(e)
+    for e in list(msp):
+        if e.dxftype() == "INSERT" and e.dxf.name.upper().startswith("DOOR"):
+            e.explode()
+
+
+def _draw_sheet_views(doc, level: int) -> dict:
+    """Title frame with title block, an enlarged stair detail and a legend beside the plan (mm)."""
+    msp = doc.modelspace()
+    sx0, sy0, sx1, sy1 = STAIR
+    # enlarged detail of the stair core: its enclosure walls and treads at DETAIL_SCALE, right of the plan
+    dx0, dy0 = WIDTH + SHEET_GAP, 2000
+    k = DETAIL_SCALE
+    t = T_CORE
+    outer = [(sx0 - t, sy0 - t), (sx1 + t, sy0 - t), (sx1 + t, sy1 + t), (sx0 - t, sy1 + t)]
+    inner = [(sx0, sy0), (sx1, sy0), (sx1, sy1), (sx0, sy1)]
+
+    def place(p):
+        return (dx0 + (p[0] - sx0 + t) * k, dy0 + (p[1] - sy0 + t) * k)
+
+    for ring in (outer, inner):
+        pts = [place(p) for p in ring]
+        # the door side (south) is open between 1/3 and 2/3 of the width
+        msp.add_lwpolyline(pts, close=True, dxfattribs={"layer": "A-WALL"})
+    for j in range(1, 16):
+        y = sy0 + 1500 + j * 275
+        msp.add_line(place((sx0, y)), place((sx1, y)), dxfattribs={"layer": "A-STAIR"})
+    det = (dx0, dy0, dx0 + (sx1 - sx0 + 2 * t) * k, dy0 + (sy1 - sy0 + 2 * t) * k)
+    msp.add_text("楼梯放大详图 STAIR A ENLARGED DETAIL 1:50", height=500,
+                 dxfattribs={"layer": "A-ANNO-TITL", "style": "ARIAL"}).set_placement((det[0], det[1] - 1500))
+    # legend: wall and glazing swatches with labels, titled, on their own layer
+    lx0, ly0 = det[0], det[3] + 6000
+    msp.add_text("LEGEND", height=500, dxfattribs={"layer": "A-ANNO-TITL", "style": "ARIAL"}).set_placement(
+        (lx0, ly0 + 3200))
+    for j, (lab, lay) in enumerate((("WALL", "LEGEND-A-WALL"), ("GLAZING", "LEGEND-A-GLAZ"))):
+        y = ly0 + 1600 * j
+        msp.add_lwpolyline([(lx0, y), (lx0 + 1500, y), (lx0 + 1500, y + 600), (lx0, y + 600)], close=True,
+                           dxfattribs={"layer": lay})
+        msp.add_text(lab, height=300, dxfattribs={"layer": "A-ANNO-TEXT", "style": "ARIAL"}).set_placement(
+            (lx0 + 2000, y + 100))
+    # plan title below the plan
+    msp.add_text(f"{level}层平面图 LEVEL {level} FLOOR PLAN 1:100", height=800,
+                 dxfattribs={"layer": "A-ANNO-TITL", "style": "ARIAL"}).set_placement((0, -5000))
+    # the sheet frame (a bare rectangle on layer 0) and the title block (on the frame layer 图框)
+    fx0, fy0 = -8000, -14000
+    fx1, fy1 = det[2] + 8000, DEPTH + 8000
+    msp.add_lwpolyline([(fx0, fy0), (fx1, fy0), (fx1, fy1), (fx0, fy1)], close=True, dxfattribs={"layer": "0"})
+    tb = (fx1 - 18000, fy0, fx1, fy0 + 5000)
+    if "图框" not in doc.layers:
+        doc.layers.add("图框", color=7)
+    msp.add_lwpolyline([(tb[0], tb[1]), (tb[2], tb[1]), (tb[2], tb[3]), (tb[0], tb[3])], close=True,
+                       dxfattribs={"layer": "图框"})
+    for j in range(1, 3):
+        msp.add_line((tb[0], tb[1] + j * 1600), (tb[2], tb[1] + j * 1600), dxfattribs={"layer": "图框"})
+    msp.add_text("cad2osmag sample sheet", height=600, dxfattribs={"layer": "图框", "style": "ARIAL"}).set_placement(
+        (tb[0] + 500, tb[1] + 3500))
+    return {"plan_extent": (0.0, 0.0, WIDTH / 1000.0, DEPTH / 1000.0),
+            "detail_extent": tuple(v / 1000.0 for v in det),
+            "frame": (fx0 / 1000.0, fy0 / 1000.0, fx1 / 1000.0, fy1 / 1000.0)}
+
+
+def generate_delivered(out_dir: str, seed: int = 0, level: int = 1, spaghetti: bool = False,
+                       explode_doors: bool = False, sheet: bool = False, name: str = "delivered") -> dict:
+    """One floor of the sample building drawn the way drawings are delivered, for the sheet and
+    spaghetti rules of the CAD import (the regular ``generate_building`` output is unchanged):
+
+    * ``spaghetti``: every entity on layer "0" (walls, door blocks, furniture blocks, sanitary fittings,
+      floor hatches, texts); grid axes left out;
+    * ``explode_doors``: door blocks replaced by loose swing arcs and leaves;
+    * ``sheet``: a title frame (bare rectangle on layer 0) with a title block (layer 图框), an enlarged
+      stair detail (1:50, walls on A-WALL, titled "楼梯放大详图 …") and a legend (swatches on
+      LEGEND-* layers) beside the plan, and a plan title "<n>层平面图 …" below it.
+
+    Writes ``<out_dir>/<name>.dxf`` and its ground truth; returns ``{"dxf", "ground_truth", "rooms",
+    "doors", "names", "plan_extent", "detail_extent", "frame"}`` (extents in metres, CAD frame)."""
+    try:
+        seed, level = int(seed), int(level)
+    except (TypeError, ValueError):
+        raise InputError("seed and level must be integers")
+    if not name or any(ch in name for ch in "/\\:*?\"<>|"):
+        raise InputError(f"invalid file name prefix {name!r}")
+    out_dir = os.path.abspath(out_dir)
+    os.makedirs(out_dir, exist_ok=True)
+    plan = _plan_floor(level, seed)
+    rooms, doors = _gt_features(plan)
+    doc = _new_doc()
+    _define_blocks(doc)
+    _draw_floor(doc, plan, rooms, random.Random(seed * 31 + level))
+    info = {"plan_extent": (0.0, 0.0, WIDTH / 1000.0, DEPTH / 1000.0)}
+    if sheet:
+        info = _draw_sheet_views(doc, level)
+    if explode_doors:
+        _explode_doors(doc)
+    if spaghetti:
+        _to_layer_zero(doc)
+    dxf_path = os.path.join(out_dir, f"{name}.dxf")
+    gt_path = os.path.join(out_dir, f"{name}.gt.geojson")
+    _save_deterministic(doc, dxf_path)
+    _write_ground_truth(gt_path, plan, rooms, doors)
+    return {"dxf": dxf_path, "ground_truth": gt_path, "rooms": len(rooms), "doors": len(doors),
+            "names": [r.name for r, _ in rooms], **info}
