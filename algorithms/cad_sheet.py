@@ -15,9 +15,11 @@ side by side. ``find_plans`` works on the imported structural geometry (metres, 
    floor drawn side by side with a clear gap stay two groups.
 3. **Titles and kinds**: the tallest text in or just below a group that holds a title keyword titles
    it (``平面图``/plan/pianta/planta -> plan; ``详图``/``大样``/detail/dettaglio/enlarged/section -> detail;
-   legend/``图例`` -> legend). Without a title keyword the size decides: a group with less than 15 % of the
-   largest wall mass and less than a third of its extent is a detail; a group under ``MIN_WALL`` metres of
-   geometry or ``MIN_SIZE`` metres across is ``other`` (stray symbols, north arrows, scale bars).
+   legend/``图例`` -> legend). Without a title keyword the wall mass decides: a group with less than
+   15 % of the largest wall mass is a detail when it is less than a third of the largest extent, and
+   ``other`` when larger (site outlines, glazing diagrams); a group under ``MIN_WALL`` metres of geometry
+   or ``MIN_SIZE`` metres across is ``other`` (stray symbols, north arrows, scale bars). Islands inside a
+   larger group's box (free-standing columns in a hall) belong to it unless titled as a detail.
 4. **Selection**: the plan with the largest wall mass is index 0 and is taken by default; the others
    follow by decreasing wall mass. ``plan`` picks another (an index, or an extent
    ``(xmin, ymin, xmax, ymax)`` in metres of the CAD frame). A sheet whose groups are all details, or
@@ -111,6 +113,13 @@ def _length(coords: np.ndarray) -> float:
     return float(np.hypot(*np.diff(c, axis=0).T).sum())
 
 
+def _straight_run(coords: np.ndarray) -> float:
+    c = coords[np.isfinite(coords).all(axis=1)]
+    if len(c) < 2:
+        return 0.0
+    return float(np.hypot(*np.diff(c, axis=0).T).max())
+
+
 def _is_straightish(g: CadGeometry) -> bool:
     """A line, or a polyline of at most 5 vertices (a rectangle): the shapes of frames."""
     return g.entity in ("LINE", "LWPOLYLINE", "POLYLINE") and len(g.coords) <= 5 and not g.filled
@@ -147,12 +156,22 @@ def frame_mask(geoms: Sequence[CadGeometry], rules: LayerRules) -> np.ndarray:
     own = np.concatenate(owner)
     tree = cKDTree(allp)
     free_ids = []
+    cset = set(cands)  # frame lines touch each other (corners) and are often drawn twice
     for i in cands:
         s = _samples(geoms[i].coords, 0.5)
         hits = tree.query_ball_point(s, FRAME_FREE_DIST)
-        free = sum(1 for h in hits if all(own[j] == i for j in h))
+        free = sum(1 for h in hits if all(own[j] in cset for j in h))
         if free >= FRAME_FREE_SHARE * len(s):
             free_ids.append(i)
+    if not free_ids:
+        return out
+    # free lines far longer than the drawing itself (sheet borders, leaders across the sheet) go anyway
+    lo, hi = np.percentile(allp, [2, 98], axis=0)
+    robust = float(np.max(hi - lo))
+    for i in free_ids:
+        if _length(geoms[i].coords) > 2.0 * robust and _straight_run(geoms[i].coords) > 2.0 * robust:
+            out[i] = True
+    free_ids = [i for i in free_ids if not out[i]]
     if not free_ids:
         return out
     # the free lines are a frame only when they enclose the drawing: most other geometry lies inside
@@ -306,8 +325,10 @@ def find_plans(geoms: Sequence[CadGeometry], texts: Sequence[CadText], rules: La
             kind = "other"
         elif tkind:
             kind = tkind
-        elif mass[k] < DETAIL_WALL_SHARE * biggest and diag < DETAIL_SIZE_SHARE * big_diag:
-            kind = "detail"
+        elif mass[k] < DETAIL_WALL_SHARE * biggest:
+            # little wall mass: a small view is a detail; a large one (a site outline, glazing or
+            # annotation diagrams) is no plan either
+            kind = "detail" if diag < DETAIL_SIZE_SHARE * big_diag else "other"
         else:
             kind = "plan"
         infos.append([k, PlanInfo(index=-1, extent=e, wall_length=round(float(mass[k]), 2), title=title, kind=kind)])

@@ -54,7 +54,7 @@ def floor_outline(areas: Sequence[Area], wall_gap: float = 0.8) -> Optional[Poly
         gap *= 2.0
 
 
-def process_floor(dxf_path: str, *, rules=None, layers=None, units=None, include_doors: bool = False,
+def process_floor(dxf_path: str, *, rules=None, layers=None, units=None, include_doors: bool = False, plan=None,
                   resolution: float = rasterize.DEFAULT_RESOLUTION, extent=None,
                   door_width: float = segmentation.DEFAULT_DOOR_WIDTH,
                   corridor_width: float = segmentation.DEFAULT_CORRIDOR_WIDTH,
@@ -72,7 +72,7 @@ def process_floor(dxf_path: str, *, rules=None, layers=None, units=None, include
         return out
 
     drawing = timed("cad_import", 0, 25, cad_import.import_dxf, dxf_path, rules=rules, layers=layers,
-                    units=units, include_doors=include_doors)
+                    units=units, include_doors=include_doors, plan=plan)
     grid = timed("rasterize", 25, 35, rasterize.rasterize, drawing.geometries, resolution=resolution,
                  extent=extent)
     seg = timed("segment", 35, 80, segmentation.segment, grid, door_width=door_width,

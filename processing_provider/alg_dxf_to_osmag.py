@@ -16,6 +16,7 @@ from qgis.core import (
 )
 
 from ..algorithms import pipeline
+from .alg_extract_structure import add_plan_parameters, plan_argument
 from .alg_load_osmag import osmag_to_sinks
 from .base import Cad2OsmagAlgorithm
 
@@ -50,6 +51,7 @@ class DxfToOsmagAlgorithm(Cad2OsmagAlgorithm):
                                                        QgsProcessingParameterNumber.Type.Double, 10.0, False, 0, 1000))
         self.addParameter(QgsProcessingParameterBoolean("INCLUDE_DOORS",
                                                         self.tr("Close doorways (rasterize door layers)"), False))
+        add_plan_parameters(self)  # PLAN / PLAN_EXTENT: which plan of a whole sheet (cad_sheet)
         self.addParameter(QgsProcessingParameterString("LEVEL", self.tr("Level"), "1"))
         self.addParameter(QgsProcessingParameterNumber("HEIGHT", self.tr("Floor height (m)"),
                                                        QgsProcessingParameterNumber.Type.Double, 3.2, False, 0.1, 100))
@@ -96,6 +98,7 @@ class DxfToOsmagAlgorithm(Cad2OsmagAlgorithm):
             rules=self.parameterAsFile(parameters, "LAYER_RULES", context) or None,
             units=None if units == "auto" else units,
             include_doors=self.parameterAsBool(parameters, "INCLUDE_DOORS", context),
+            plan=plan_argument(self, parameters, context),
             resolution=self.parameterAsDouble(parameters, "RESOLUTION", context),
             door_width=self.parameterAsDouble(parameters, "DOOR_WIDTH", context),
             corridor_width=self.parameterAsDouble(parameters, "CORRIDOR_WIDTH", context),
