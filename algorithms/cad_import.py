@@ -34,6 +34,7 @@ Conventions
 from __future__ import annotations
 
 import os
+import time
 from typing import Dict, List, Optional, Sequence, Tuple
 
 import numpy as np
@@ -211,7 +212,10 @@ def import_dxf(path: str, rules=None, layers: Optional[Sequence[str]] = None, un
     forced = normalize_unit(units)
     base = os.path.basename(path)
     progress.step(0, f"reading {base}")
+    t0 = time.perf_counter()
+    timings: Dict[str, float] = {}
     doc, repairs = _read_doc(path, progress)
+    timings["read"] = time.perf_counter() - t0
     for r in repairs:
         progress.warning(r)
     header = _header_unit(doc)
@@ -271,6 +275,7 @@ def import_dxf(path: str, rules=None, layers: Optional[Sequence[str]] = None, un
         idx = _kept_mask(raw, infos, rules, include_doors, selected is not None)
     if classify and not include_doors:  # door layers too: their swings become door hints, then they go
         idx = _kept_mask(raw, infos, rules, True, selected is not None)
+    timings["explode"] = time.perf_counter() - t0 - timings["read"]
     progress.step(85, "converting to metres")
     p = raw.pieces
     geoms = []
@@ -288,6 +293,7 @@ def import_dxf(path: str, rules=None, layers: Optional[Sequence[str]] = None, un
              for t in p.texts]
     doors: List[DoorHint] = []
     classes: Dict[str, int] = {}
+    t1 = time.perf_counter()
     if classify:
         progress.step(88, "classifying entities (door and furniture blocks, door swings, hatches)")
         weak = {name for name, info in infos.items()
@@ -303,8 +309,11 @@ def import_dxf(path: str, rules=None, layers: Optional[Sequence[str]] = None, un
     elif not include_doors and drop_door_swings:
         swings = set(find_door_swings(geoms))
         geoms = [g for k, g in enumerate(geoms) if k not in swings]
+    timings["classify"] = time.perf_counter() - t1
+    t1 = time.perf_counter()
     progress.step(93, "finding the plan(s) on the sheet")
     plans, gkeep, tkeep, n_frames = find_plans(geoms, texts, rules, plan)
+    timings["plans"] = time.perf_counter() - t1
     if n_frames:
         classes["frame"] = n_frames
     sel = next(pl for pl in plans if pl.selected) if any(pl.selected for pl in plans) else None
@@ -322,8 +331,9 @@ def import_dxf(path: str, rules=None, layers: Optional[Sequence[str]] = None, un
         x0, y0, x1, y1 = sel.extent
         doors = [d for d in doors if x0 - 1 <= (d.x0 + d.x1) / 2 <= x1 + 1 and y0 - 1 <= (d.y0 + d.y1) / 2 <= y1 + 1]
     kept_layers = sorted({g.layer for g in geoms})
+    progress.info("CAD import stages: " + ", ".join(f"{k} {v:.1f} s" for k, v in timings.items()))
     progress.step(100, f"{len(geoms)} geometries on {len(kept_layers)} layers, {len(texts)} texts, unit {unit}"
                   + (f", {len(doors)} doorways" if doors else ""))
     return CadDrawing(path=path, geometries=geoms, texts=texts, layers=infos, unit_name=unit, unit_scale=scale,
                       header_unit=header, warnings=warnings, repairs=list(repairs), doors=doors, plans=plans,
-                      classes=classes)
+                      classes=classes, timings=timings)

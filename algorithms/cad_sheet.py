@@ -106,6 +106,33 @@ def _samples(coords: np.ndarray, step: float) -> np.ndarray:
     return np.vstack((pts, c[-1:]))
 
 
+def _sample_all(geoms: Sequence[CadGeometry], idx, step: float):
+    """Samples of many geometries at once: ``(points, owner index, length per owner)``; every vertex
+    is a sample and segments are cut to at most ``step``."""
+    idx = np.asarray(list(idx), dtype=np.int64)
+    if not len(idx):
+        return np.zeros((0, 2)), np.zeros(0, dtype=np.int64), np.zeros(0)
+    coords = [geoms[i].coords for i in idx]
+    lens = np.fromiter((len(c) for c in coords), dtype=np.int64, count=len(coords))
+    allc = np.concatenate(coords, axis=0)
+    own = np.repeat(idx, lens)
+    ok = np.isfinite(allc).all(axis=1)
+    # segments between consecutive rows of one geometry, both ends finite
+    same = own[1:] == own[:-1]
+    segok = same & ok[1:] & ok[:-1]
+    a = allc[:-1][segok]
+    seg = allc[1:][segok] - a
+    sown = own[:-1][segok]
+    ln = np.hypot(seg[:, 0], seg[:, 1])
+    n = np.maximum(1, np.ceil(ln / step).astype(np.int64))
+    rep_i = np.repeat(np.arange(len(seg)), n)
+    t = (np.arange(n.sum()) - np.repeat(np.cumsum(n) - n, n)) / np.repeat(n, n)
+    pts = np.vstack((a[rep_i] + seg[rep_i] * t[:, None], allc[ok]))
+    owner = np.concatenate((sown[rep_i], own[ok]))
+    length = np.bincount(np.searchsorted(idx, sown), weights=ln, minlength=len(idx))
+    return pts, owner, length
+
+
 def _length(coords: np.ndarray) -> float:
     c = coords[np.isfinite(coords).all(axis=1)]
     if len(c) < 2:
@@ -140,20 +167,12 @@ def frame_mask(geoms: Sequence[CadGeometry], rules: LayerRules) -> np.ndarray:
             hit = layer_hit[g.layer] = rules.layer_is(g.layer, "frame") or rules.layer_is(g.layer, "legend")
         out[i] = hit
     cands = [i for i, g in enumerate(geoms) if not out[i] and _is_straightish(g)
-             and _length(g.coords) >= FRAME_MIN_LENGTH]
+             and np.ptp(g.coords, axis=0).max() >= FRAME_MIN_LENGTH / 4 and _length(g.coords) >= FRAME_MIN_LENGTH]
     if not cands:
         return out
-    pts, owner = [], []
-    for i, g in enumerate(geoms):
-        if out[i]:
-            continue
-        s = _samples(g.coords, 0.5)
-        pts.append(s)
-        owner.append(np.full(len(s), i, dtype=np.int64))
-    if not pts:
+    allp, own, _ = _sample_all(geoms, np.flatnonzero(~out), FRAME_FREE_DIST)
+    if not len(allp):
         return out
-    allp = np.concatenate(pts)
-    own = np.concatenate(owner)
     tree = cKDTree(allp)
     free_ids = []
     cset = set(cands)  # frame lines touch each other (corners) and are often drawn twice
@@ -194,22 +213,31 @@ def frame_mask(geoms: Sequence[CadGeometry], rules: LayerRules) -> np.ndarray:
 
 
 # ------------------------------------------------------------------------------------------ groups
-def _title_of(ext, texts: Sequence[CadText], rules: LayerRules) -> Tuple[str, str]:
-    """(title text, kind from the title: plan | detail | legend | "")."""
+def _title_kinds(texts: Sequence[CadText], rules: LayerRules) -> List[Tuple[CadText, str]]:
+    """The texts that hold a title keyword, with the kind they say (detail | legend | plan)."""
+    out = []
+    words = [(k, rules.sheet_words(key)) for key, k in
+             (("detail_titles", "detail"), ("legend_titles", "legend"), ("plan_titles", "plan"))]
+    for t in texts:
+        low = t.text.lower()
+        for k, ws in words:
+            if any(keyword_in(w, low) for w in ws):
+                out.append((t, k))
+                break
+    return out
+
+
+def _title_of(ext, texts, rules: LayerRules) -> Tuple[str, str]:
+    """(title text, kind from the title: plan | detail | legend | ""). ``texts``: CadTexts or the
+    output of ``_title_kinds``."""
+    if texts and not isinstance(texts[0], tuple):
+        texts = _title_kinds(texts, rules)
     x0, y0, x1, y1 = ext
     size = max(x1 - x0, y1 - y0)
     m = max(3.0, 0.15 * size)
     best = None
-    for t in texts:
+    for t, kind in texts:
         if not (x0 - m <= t.x <= x1 + m and y0 - m <= t.y <= y1 + m):
-            continue
-        low = t.text.lower()
-        kind = ""
-        for key, k in (("detail_titles", "detail"), ("legend_titles", "legend"), ("plan_titles", "plan")):
-            if any(keyword_in(w, low) for w in rules.sheet_words(key)):
-                kind = k
-                break
-        if not kind:
             continue
         inside = x0 <= t.x <= x1 and y0 <= t.y <= y1
         # titles sit below or beside the view in large letters; a room name inside says "plan" rarely
@@ -236,24 +264,24 @@ def find_plans(geoms: Sequence[CadGeometry], texts: Sequence[CadText], rules: La
     n = len(geoms)
     frames = frame_mask(geoms, rules)
     struct = np.array([(g.kind in STRUCT_KINDS) and not frames[i] for i, g in enumerate(geoms)], dtype=bool)
-    pts, owner = [], []
-    for i in np.flatnonzero(struct):
-        s = _samples(geoms[i].coords, SAMPLE)
-        if len(s):
-            pts.append(s)
-            owner.append(np.full(len(s), i, dtype=np.int64))
-    if not pts:
+    sidx = np.flatnonzero(struct)
+    allp, own, glen = _sample_all(geoms, sidx, SAMPLE)
+    length_of = np.zeros(n)
+    length_of[sidx] = glen
+    if not len(allp):
         raise InputError("the sheet has no plan-like geometry: after leaving out title frames and legends, no wall, "
                          "column, window or stair geometry is left. Check the layer rules (listlayers) or pick the "
                          "wall layers with LAYERS")
-    allp = np.concatenate(pts)
-    own = np.concatenate(owner)
     # single linkage on cells of gap/5: cells whose centres are within the gap are connected (so the
     # separating gap is resolved to +-30 %)
     cell = gap / 5.0
     keys = np.floor(allp / cell).astype(np.int64)
-    uniq, inv = np.unique(keys, axis=0, return_inverse=True)
+    keys -= keys.min(axis=0)
+    flat = keys[:, 0] * (int(keys[:, 1].max()) + 1) + keys[:, 1]
+    ukeys, inv = np.unique(flat, return_inverse=True)
     inv = inv.ravel()
+    uniq = np.zeros((len(ukeys), 2), dtype=np.int64)
+    uniq[inv] = keys
     ctree = cKDTree(uniq.astype(np.float64))
     pairs = ctree.query_pairs(r=5.0 + 1e-9, output_type="ndarray")
     m = len(uniq)
@@ -261,32 +289,25 @@ def find_plans(geoms: Sequence[CadGeometry], texts: Sequence[CadText], rules: La
         coo_matrix((m, m))
     ncomp, clab = connected_components(graph, directed=False)
     plab = clab[inv]
-    # each geometry goes to the group holding most of its samples
+    # a geometry's samples are at most SAMPLE apart, so all of them fall in one group
     geom_group = np.full(n, -1, dtype=np.int64)
-    order = np.argsort(own, kind="stable")
-    own_s, plab_s = own[order], plab[order]
-    bounds = np.flatnonzero(np.diff(own_s)) + 1
-    for gi, labs in zip(own_s[np.r_[0, bounds]], np.split(plab_s, bounds)):
-        geom_group[gi] = np.bincount(labs).argmax()
-    wall = np.zeros(ncomp)
-    total = np.zeros(ncomp)
+    geom_group[own] = plab
+    gsel = np.flatnonzero(geom_group >= 0)
+    is_wall = np.array([geoms[i].kind in WALL_KINDS for i in gsel], dtype=bool)
+    total = np.bincount(geom_group[gsel], weights=length_of[gsel], minlength=ncomp)
+    wall = np.bincount(geom_group[gsel[is_wall]], weights=length_of[gsel[is_wall]], minlength=ncomp)
     ext = np.tile(np.array([np.inf, np.inf, -np.inf, -np.inf]), (ncomp, 1))
-    for i in np.flatnonzero(geom_group >= 0):
-        g = geoms[i]
-        k = geom_group[i]
-        ln = _length(g.coords)
-        total[k] += ln
-        if g.kind in WALL_KINDS:
-            wall[k] += ln
-        c = g.coords[np.isfinite(g.coords).all(axis=1)]
-        ext[k, :2] = np.minimum(ext[k, :2], c.min(axis=0))
-        ext[k, 2:] = np.maximum(ext[k, 2:], c.max(axis=0))
+    np.minimum.at(ext[:, 0], plab, allp[:, 0])
+    np.minimum.at(ext[:, 1], plab, allp[:, 1])
+    np.maximum.at(ext[:, 2], plab, allp[:, 0])
+    np.maximum.at(ext[:, 3], plab, allp[:, 1])
     mass = np.where(wall > 0, wall, 0.0)
     if mass.max() <= 0:  # no wall layer at all (spaghetti drawings on reference layers): all structure counts
         mass = total.copy()
     # islands inside a larger group's box (free-standing columns in a hall, a kiosk in an atrium) belong
     # to it, unless a title says they are a detail view
-    titles = [_title_of(tuple(ext[k]), texts, rules) for k in range(ncomp)]
+    tk = _title_kinds(texts, rules)
+    titles = [_title_of(tuple(ext[k]), tk, rules) for k in range(ncomp)]
     parent = np.arange(ncomp)
     for k in np.argsort(-mass):
         if titles[k][1] in ("detail", "legend"):
@@ -320,9 +341,11 @@ def find_plans(geoms: Sequence[CadGeometry], texts: Sequence[CadText], rules: La
     for k in range(ncomp):
         e = tuple(float(v) for v in ext[k])
         diag = math.hypot(e[2] - e[0], e[3] - e[1])
-        title, tkind = _title_of(e, texts, rules)
+        title, tkind = _title_of(e, tk, rules)
         if total[k] < MIN_WALL or diag < MIN_SIZE:
             kind = "other"
+        elif tkind == "plan" and mass[k] < DETAIL_WALL_SHARE * biggest and diag < DETAIL_SIZE_SHARE * big_diag:
+            kind = "detail"  # a key plan / site plan thumbnail: titled "plan", but a small view
         elif tkind:
             kind = tkind
         elif mass[k] < DETAIL_WALL_SHARE * biggest:

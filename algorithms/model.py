@@ -109,6 +109,7 @@ class CadDrawing:
     plans: List["PlanInfo"] = field(default_factory=list)  # groups found on the sheet; selected one kept
     classes: Dict[str, int] = field(default_factory=dict)  # entity class counts (wall, door, furniture..)
     undecoded: Dict[str, int] = field(default_factory=dict)  # entity types the reader could not decode
+    timings: Dict[str, float] = field(default_factory=dict)  # import stages (read, explode, classify, plans), s
 
 
 # --------------------------------------------------------------------------- stage 2: raster
