@@ -436,9 +436,9 @@ class DwgDocument:
 def _guard(base: str, what: str, fn, *args):
     try:
         return fn(*args)
-    except InputError:
+    except (InputError, KeyboardInterrupt, SystemExit):
         raise
-    except Exception as exc:  # the native decoder raises ValueError/RuntimeError/OSError on broken files
+    except BaseException as exc:  # ValueError/OSError on broken files; a Rust panic is a BaseException
         raise InputError(f"'{base}' is a damaged or truncated DWG: its {what} cannot be decoded "
                          f"({type(exc).__name__}: {exc}). Open it in a CAD program (AUDIT / RECOVER) and save it "
                          "again, or export it as DXF") from None
@@ -447,7 +447,9 @@ def _guard(base: str, what: str, fn, *args):
 def _soft(fn, *args, default=None):
     try:
         return fn(*args)
-    except Exception:
+    except (KeyboardInterrupt, SystemExit):
+        raise
+    except BaseException:  # an optional table: the drawing reads without it
         return default
 
 

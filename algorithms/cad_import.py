@@ -1017,7 +1017,7 @@ def inspect_dxf(path: str, rules=None, progress=None) -> CadDrawing:
     progress.step(100)
     return CadDrawing(path=path, geometries=[], texts=[], layers=infos, unit_name=raw.header_unit,
                       unit_scale=UNIT_SCALES.get(raw.header_unit, 1.0), header_unit=raw.header_unit,
-                      warnings=warnings, repairs=raw.repairs)
+                      warnings=warnings, repairs=raw.repairs, undecoded=dict(getattr(raw.doc, "undecoded", {})))
 
 
 def _xref_message(xrefs: List[str]) -> str:
@@ -1124,4 +1124,5 @@ def import_dxf(path: str, rules=None, layers: Optional[Sequence[str]] = None, un
     kept_layers = sorted({g.layer for g in geoms})
     progress.step(100, f"{len(geoms)} geometries on {len(kept_layers)} layers, {len(texts)} texts, unit {unit}")
     return CadDrawing(path=path, geometries=geoms, texts=texts, layers=infos, unit_name=unit, unit_scale=scale,
-                      header_unit=header, warnings=warnings, repairs=list(repairs))
+                      header_unit=header, warnings=warnings, repairs=list(repairs),
+                      undecoded=dict(getattr(doc, "undecoded", {})))  # DWG: types the reader cannot decode
