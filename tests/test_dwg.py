@@ -21,7 +21,7 @@ class _Both:
     """Write the same drawing to an ezdxf document and an ezdwg drawing."""
 
     def __init__(self, insunits=4):
-        self.dxf = ezdxf.new("R2000", setup=False)
+        self.dxf = ezdxf.new("R2010", setup=False)  # UTF-8 (R2000 DXF stores CJK as \\U+ escapes)
         self.dxf.header["$INSUNITS"] = insunits
         self.dwg = ezdwg.new()
         self.dwg.header["insunits"] = insunits
