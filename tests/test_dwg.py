@@ -285,7 +285,9 @@ def test_every_shared_sheet_reads(shared_data, rel):
     dt = time.perf_counter() - t0
     kinds = collections.Counter(g.kind for g in d.geometries)
     ents = collections.Counter(g.entity for g in d.geometries)
-    assert kinds["wall"] > 300 and ents["LINE"] > 500, (kinds, ents)
+    assert len(d.geometries) > 400 and ents["LINE"] > 300, (kinds, ents)
+    # floor plans are mostly walls; A-A3-10-08 is the library's roof plan (skylights, slopes): few walls
+    assert kinds["wall"] > (50 if rel.endswith("10-08.dwg") else 1000), kinds
     # bound external references keep their full names
     assert any("$0$" in name for name in d.layers)
     # metres after scaling: a floor (or sheet) of plausible size
