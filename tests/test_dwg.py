@@ -112,6 +112,71 @@ def _plan_pair(tmp_path):
     return b.save(tmp_path, "plan")
 
 
+def dwg_copy_of(dxf_path, dwg_path):
+    """Write an R2000 DWG (with ezdwg) holding what a DXF holds: layers with their states, $INSUNITS,
+    blocks with base points, LINE, LWPOLYLINE, ARC, CIRCLE, ELLIPSE, SOLID, TEXT, MTEXT, INSERT with
+    ATTRIBs and HATCH (boundaries as polylines). Used to run whole pipelines on a DWG of a known drawing."""
+    src = ezdxf.readfile(str(dxf_path))
+    out = ezdwg.new()
+    out.header["insunits"] = int(src.header.get("$INSUNITS", 0) or 0)
+    for lay in src.layers:
+        if lay.dxf.name != "0":
+            out.layers[lay.dxf.name] = {"color_index": 7, "frozen": lay.is_frozen(), "off": lay.is_off()}
+
+    def copy(e, dst):
+        t, d = e.dxftype(), e.dxf
+        common = {"layer": d.get("layer", "0")}
+        if t == "LINE":
+            dst.add_line(tuple(d.start), tuple(d.end), **common)
+        elif t == "LWPOLYLINE":
+            pts = list(e.get_points("xyseb"))
+            dst.add_lwpolyline([(p[0], p[1]) for p in pts], bulges=[p[4] for p in pts], closed=bool(e.closed),
+                               const_width=float(d.get("const_width", 0.0) or 0.0), **common)
+        elif t == "ARC":
+            dst.add_arc(tuple(d.center), d.radius, d.start_angle, d.end_angle, **common)
+        elif t == "CIRCLE":
+            dst.add_circle(tuple(d.center), d.radius, **common)
+        elif t == "ELLIPSE":
+            dst.add_ellipse(tuple(d.center), tuple(d.major_axis), d.ratio, d.start_param, d.end_param, **common)
+        elif t == "SOLID":
+            dst.add_solid([tuple(d.get(f"vtx{i}")) for i in range(4)], **common)
+        elif t == "TEXT":
+            dst.add_text(d.text, tuple(d.insert), d.get("height", 1.0), rotation=d.get("rotation", 0.0), **common)
+        elif t == "MTEXT":
+            dst.add_mtext(e.text, tuple(d.insert), d.get("char_height", 1.0), **common)
+        elif t == "INSERT":
+            ref = dst.add_blockref(d.name, tuple(d.insert), rotation=d.get("rotation", 0.0),
+                                   scale=(d.get("xscale", 1.0), d.get("yscale", 1.0), d.get("zscale", 1.0)), **common)
+            for a in e.attribs:
+                dst.add_attrib(ref, a.dxf.tag, a.dxf.text, tuple(a.dxf.insert), a.dxf.get("height", 1.0),
+                               layer=a.dxf.get("layer", "0"))
+        elif t == "HATCH":
+            from ezdxf import path as ezpath
+
+            rings = []
+            for bp in e.paths:
+                pts = [(v.x, v.y) for v in ezpath.from_hatch_boundary_path(bp).flattening(0.5)]
+                if len(pts) >= 3:
+                    rings.append(pts)
+            if rings:
+                if e.dxf.solid_fill:
+                    dst.add_hatch(rings, **common)
+                else:
+                    dst.add_hatch(rings, pattern="ANSI31", **common)
+
+    for blk in src.blocks:
+        if blk.name.lower().startswith(("*model_space", "*paper_space")):
+            continue
+        bp = blk.block.dxf.base_point
+        nb = out.blocks.new(blk.name, base_point=(bp[0], bp[1], 0.0))
+        for e in blk:
+            copy(e, nb)
+    for e in src.modelspace():
+        copy(e, out.modelspace())
+    out.save(str(dwg_path))
+    return str(dwg_path)
+
+
 def _key(g):
     return (g.layer, g.entity, round(float(np.nanmin(g.coords[:, 0])), 3), round(float(np.nanmin(g.coords[:, 1])), 3),
             round(float(np.nanmax(g.coords[:, 0])), 3), round(float(np.nanmax(g.coords[:, 1])), 3))
@@ -173,6 +238,26 @@ def test_dwg_read_honours_cancel(tmp_path):
     _, dwg_path = _plan_pair(tmp_path)
     with pytest.raises(Canceled):
         import_dxf(dwg_path, progress=RecordingProgress(cancel_after=2))
+
+
+def test_sample_building_as_dwg_converts_like_the_dxf(tmp_path):
+    """The whole pipeline on a DWG copy of the sample building gives the same Area Graph as on the DXF."""
+    from algorithms import osmag
+    from algorithms.pipeline import convert_dxf
+    from algorithms.sample_building import generate_building
+
+    dxf = generate_building(str(tmp_path), floors=1, seed=3)["dxf"][0]
+    dwg = dwg_copy_of(dxf, tmp_path / "sample-F1.dwg")
+    a, b = import_dxf(dxf), import_dxf(dwg)
+    assert sorted(map(_key, b.geometries)) == sorted(map(_key, a.geometries))
+    assert sorted(t.text for t in b.texts) == sorted(t.text for t in a.texts)
+    ra = convert_dxf(dxf, str(tmp_path / "a.osm"))
+    rb = convert_dxf(dwg, str(tmp_path / "b.osm"))
+    assert (rb["areas"], rb["passages"]) == (ra["areas"], ra["passages"]) and ra["areas"] >= 10
+    aa, pa, _, _ = osmag.read_osmag(str(tmp_path / "a.osm"))
+    ab, pb, _, _ = osmag.read_osmag(str(tmp_path / "b.osm"))
+    assert sorted((x.type, x.name) for x in ab) == sorted((x.type, x.name) for x in aa)
+    assert sorted(round(x.polygon.area, 1) for x in ab) == sorted(round(x.polygon.area, 1) for x in aa)
 
 
 # ------------------------------------------------------------------------------------------ bad input
