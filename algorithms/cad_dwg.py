@@ -455,7 +455,7 @@ def _soft(fn, *args, default=None):
 
 def read_dwg(path: str, progress=None):
     """Read a DWG into a ``DwgDocument``. Returns ``(doc, repairs)`` like ``cad_import._read_doc``."""
-    import ezdwg  # noqa: F401  (the pinned reader; its native core does the decoding)
+    import ezdwg  # the pinned reader (requirements.txt); its native core does the decoding
     from ezdwg import raw
 
     progress = ensure(progress)
@@ -705,6 +705,9 @@ def read_dwg(path: str, progress=None):
                 blk.append(e)
             elif owner in inserts or owner == 0:
                 doc._msp.append(e)  # placement unknown: keep it visible, as ezdwg does
+    # ezdwg keeps decoded tables per path in module caches; the document holds what we need, so release
+    # them (a QGIS session reading many sheets must not keep every file's rows alive)
+    _soft(ezdwg.clear_decode_caches)
     doc.undecoded = dict(undecoded)
     doc.counts = dict(counts)
     doc.codepage = _soft(_codepage, path)
