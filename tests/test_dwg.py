@@ -209,6 +209,26 @@ def test_synthetic_dwg_reads_like_the_same_dxf(tmp_path):
     assert b.undecoded == {}
 
 
+def test_mirrored_by_extrusion_like_dxf(tmp_path):
+    """Entities mirrored with an extrusion of -Z (CAD MIRROR on arcs, blocks) land where the DXF puts them."""
+    b = _Both()
+    b.layer("A-WALL")
+    xm, wm = b.dxf.modelspace(), b.dwg.modelspace()
+    xm.add_arc((1000, 2000), 900, 0, 90, dxfattribs={"layer": "A-WALL", "extrusion": (0, 0, -1)})
+    wm.add_arc((1000, 2000, 0), 900, 0, 90, layer="A-WALL", extrusion=(0, 0, -1))
+    xb, wb = b.block("LEAF", base=(100.0, 0.0))
+    for p, q in (((100, 0), (1100, 0)), ((100, 0), (100, 500))):
+        xb.add_line(p, q)
+        wb.add_line(p, q)
+    xm.add_blockref("LEAF", (5000, 5000), dxfattribs={"layer": "A-WALL", "extrusion": (0, 0, -1), "rotation": 30})
+    wm.add_blockref("LEAF", (5000, 5000, 0), layer="A-WALL", extrusion=(0, 0, -1), rotation=30)
+    dxf_path, dwg_path = b.save(tmp_path, "mirror")
+    a, d = import_dxf(dxf_path, units="mm"), import_dxf(dwg_path, units="mm")
+    assert sorted(map(_key, d.geometries)) == sorted(map(_key, a.geometries))
+    arc = [g for g in d.geometries if g.entity == "ARC"][0]
+    assert arc.coords[0] == pytest.approx((-1.9, 2.0), abs=1e-3)  # x mirrored: centre at x = -1 m
+
+
 def test_dwg_layers_states_and_bound_xref_names(tmp_path):
     _, dwg_path = _plan_pair(tmp_path)
     infos = {i.name: i for i in list_layers(dwg_path)}
