@@ -38,7 +38,7 @@ import math
 import os
 import struct
 import time
-from collections import Counter, defaultdict
+from collections import Counter
 from typing import Dict, Iterator, List, Optional, Tuple
 
 import numpy as np
@@ -488,7 +488,9 @@ def read_dwg(path: str, progress=None):
 
         for lay in build_layer_table(p, None):
             states[int(lay.handle)] = (bool(lay.frozen), not bool(lay.on))
-    except Exception:
+    except (KeyboardInterrupt, SystemExit):
+        raise
+    except BaseException:  # no states: every layer counts as visible
         pass
     seen_names = set()
     for h, name in layer_names.items():
