@@ -457,3 +457,19 @@ def test_agrees_with_ezdwg_high_level_api(shared_data):
     lo, hi = np.percentile(xy, 0.5, axis=0), np.percentile(xy, 99.5, axis=0)
     assert lo[0] >= hv["extmin"][0] - 1 and lo[1] >= hv["extmin"][1] - 1
     assert hi[0] <= hv["extmax"][0] + 1 and hi[1] <= hv["extmax"][1] + 1
+
+
+@pytest.mark.parametrize("extrusion", [(0, 0, 1), (0, 0, -1), (0.6, 0, 0.8)])
+def test_insert_matrix_equals_ezdxf(extrusion):
+    """The INSERT transform (base point, scale, rotation, OCS) is ezdxf's, also for tilted extrusions."""
+    doc = ezdxf.new()
+    doc.blocks.new("B", base_point=(100, 50, 0))
+    attribs = {"extrusion": extrusion, "rotation": 30, "xscale": 2, "yscale": -1.5}
+    ref = doc.modelspace().add_blockref("B", (500, 700, 0), dxfattribs=attribs).matrix44()
+    ref = np.array([list(ref.get_row(i)) for i in range(4)])
+
+    class _Doc:
+        _base_points = {"b": (100.0, 50.0, 0.0)}
+
+    ours = cad_dwg._Insert(1, {"name": "B", "insert": (500, 700, 0), "zscale": 1, **attribs}, _Doc()).matrix44()
+    assert np.allclose(ours[[0, 1, 3], :2], ref[[0, 1, 3], :2], atol=1e-9)
