@@ -29,7 +29,7 @@ CAD_FILTER = "CAD drawings (*.dxf *.DXF *.dwg *.DWG);;DXF (*.dxf *.DXF);;DWG (*.
 
 class DxfToOsmagAlgorithm(Cad2OsmagAlgorithm):
     NAME = "dxftoosmag"
-    DISPLAY_NAME = "Convert DXF floor plan to osmAG"
+    DISPLAY_NAME = "Convert DXF/DWG floor plan to osmAG"
     GROUP = "Pipeline"
     GROUP_ID = "pipeline"
     HELP = ("Runs the whole pipeline on one floor (a DXF, or a DWG of AutoCAD R13-2018 read directly): "

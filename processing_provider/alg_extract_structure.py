@@ -68,7 +68,7 @@ CAD_FILTER = "CAD drawings (*.dxf *.DXF *.dwg *.DWG);;DXF (*.dxf *.DXF);;DWG (*.
 
 class ExtractStructureAlgorithm(Cad2OsmagAlgorithm):
     NAME = "extractstructure"
-    DISPLAY_NAME = "Extract structure from DXF"
+    DISPLAY_NAME = "Extract structure from DXF/DWG"
     GROUP = "Pipeline"
     GROUP_ID = "pipeline"
     HELP = ("Reads a DXF floor plan, or a DWG (AutoCAD R13-2018, read directly: no converter needed), "

@@ -27,7 +27,7 @@ CAD_FILTER = "CAD drawings (*.dxf *.DXF *.dwg *.DWG);;DXF (*.dxf *.DXF);;DWG (*.
 
 class ListLayersAlgorithm(Cad2OsmagAlgorithm):
     NAME = "listlayers"
-    DISPLAY_NAME = "List DXF layers"
+    DISPLAY_NAME = "List DXF/DWG layers"
     GROUP = "Pipeline"
     GROUP_ID = "pipeline"
     HELP = ("Reports every layer of a DXF or DWG drawing (DWG: AutoCAD R13-2018, read directly) with its "
@@ -35,7 +35,7 @@ class ListLayersAlgorithm(Cad2OsmagAlgorithm):
             "entities on layer 0 inside a block count on the INSERT's layer), whether it is frozen or off, "
             "and whether the layer rules keep it (kind and matching keyword; door layers are listed with kind "
             "'door' but not kept, since doorways stay open unless doors are included). Use the table to choose the "
-            "LAYERS of 'Extract structure from DXF' or to write your own LAYER_RULES JSON file.\n"
+            "LAYERS of 'Extract structure from DXF/DWG' or to write your own LAYER_RULES JSON file.\n"
             "Output: a table without geometry (save it as CSV, or keep it as a memory layer).")
 
     INPUT = "INPUT"
