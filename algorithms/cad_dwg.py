@@ -74,15 +74,25 @@ _DECODED = {"LINE", "ARC", "CIRCLE", "LWPOLYLINE", "POLYLINE_2D", "POLYLINE_3D",
 _XY_TOL = 1e-9
 
 
+def _looks_like_dxf(head: bytes) -> bool:
+    h = head.lstrip()
+    return h.startswith(b"AutoCAD Binary DXF") or h.startswith(b"0") or h.startswith(b"999") \
+        or b"SECTION" in head[:200].upper()
+
+
 def is_dwg(path: str) -> bool:
-    if str(path).lower().endswith(".dwg"):
-        return True
+    """A DWG version string at the start of the file, or a ``.dwg`` name on anything that is not a DXF
+    (a DXF saved with a .dwg name is read as the DXF it is)."""
     try:
         with open(path, "rb") as fh:
-            head = fh.read(6)
+            head = fh.read(256)
     except OSError:
-        return False
-    return head[:4] == b"AC10" or head[:4] == b"AC1." or head[:4] == b"AC2."
+        head = b""
+    if head[:2] == b"AC" and (head[2:6].isdigit() or head[2:3] in (b"1", b"2")):
+        return True
+    if str(path).lower().endswith(".dwg"):
+        return not (head and _looks_like_dxf(head))
+    return False
 
 
 def check_dwg(path: str) -> str:
@@ -100,8 +110,6 @@ def check_dwg(path: str) -> str:
                          "program")
     code = head[:6].rstrip(b"\x00").decode("latin-1", "replace")
     if not (head[:2] == b"AC" and (code in DWG_VERSIONS or (len(code) == 6 and code[2:].isdigit()))):
-        if b"SECTION" in head.upper() or head.lstrip().startswith(b"0"):
-            raise InputError(f"'{base}' is a DXF file with a .dwg name; rename it to .dxf")
         raise InputError(f"'{base}' is not a DWG file (it does not start with a DWG version code such as "
                          "'AC1018'); choose a drawing saved as .dwg or .dxf by a CAD program")
     release = DWG_VERSIONS.get(code)

@@ -298,7 +298,6 @@ def _write(tmp_path, name, data):
     ("empty", "is empty"),
     ("blank", "is empty"),
     ("random", "is not a DWG file"),
-    ("dxf_named_dwg", "is a DXF file with a .dwg name"),
     ("too_new", "newer than AutoCAD 2018"),
     ("r12", "older than the oldest version"),
     ("unknown_code", "version the reader does not know"),
@@ -311,7 +310,6 @@ def test_bad_dwg_gives_a_clear_error(tmp_path, small_dwg, case, expect):
         "empty": b"",
         "blank": b"\x00" * 4096,
         "random": rng.integers(0, 256, 60000, dtype=np.uint8).tobytes(),
-        "dxf_named_dwg": b"  0\nSECTION\n  2\nHEADER\n  0\nENDSEC\n  0\nEOF\n",
         "too_new": b"AC1036" + small_dwg[6:],
         "r12": b"AC1009" + small_dwg[6:],
         "unknown_code": b"AC1030" + small_dwg[6:],
@@ -351,13 +349,21 @@ def test_damaged_dwg_never_escapes_as_a_raw_error(tmp_path, small_dwg):
             assert d.geometries
 
 
+def test_dxf_saved_with_a_dwg_name_reads_as_dxf(tmp_path):
+    dxf_path, _ = _plan_pair(tmp_path)
+    renamed = tmp_path / "really-a-dxf.dwg"
+    renamed.write_bytes(open(dxf_path, "rb").read())
+    assert not cad_dwg.is_dwg(str(renamed))
+    assert len(import_dxf(str(renamed)).geometries) == len(import_dxf(dxf_path).geometries)
+
+
 def test_missing_dwg(tmp_path):
     with pytest.raises(InputError, match="does not exist"):
         import_dxf(str(tmp_path / "nope.dwg"))
 
 
 def test_is_dwg_by_extension_or_signature(tmp_path, small_dwg):
-    assert cad_dwg.is_dwg("a/b/PLAN.DWG")
+    assert cad_dwg.is_dwg(str(tmp_path / "missing.DWG"))
     p = _write(tmp_path, "plan.bin", small_dwg)
     assert cad_dwg.is_dwg(p)
     assert not cad_dwg.is_dwg(_write(tmp_path, "x.dxf", b"  0\nSECTION\n"))
