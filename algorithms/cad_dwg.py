@@ -157,16 +157,21 @@ class _Dxf:
 class _Entity(_Dxf):
     """An entity is its own ``dxf`` namespace (one object per entity keeps a 77k-entity sheet fast)."""
 
-    __slots__ = ("_type", "handle")
+    __slots__ = ("_type", "_h")
 
     def __init__(self, etype: str, handle: int, d: dict):
         self._d = d
         self._type = etype
-        self.handle = handle
+        self._h = handle
 
     @property
     def dxf(self):
         return self
+
+    @property
+    def handle(self) -> str:
+        """The DWG handle as ezdxf spells ``dxf.handle``: upper-case hex."""
+        return f"{self._h:X}"
 
     def dxftype(self) -> str:
         return self._type
@@ -356,7 +361,7 @@ class _Insert(_Entity):
                 dd = dict(d)
                 dd["insert"] = (ins[0] + c * ox - s * oy, ins[1] + s * ox + c * oy, ins[2])
                 dd["row_count"] = dd["column_count"] = 1
-                one = _Insert(self.handle, dd, self._doc)
+                one = _Insert(self._h, dd, self._doc)
                 one.attribs = self.attribs if (r, k) == (0, 0) else []
                 yield one
 
@@ -560,7 +565,7 @@ def read_dwg(path: str, progress=None):
     def add(e: _Entity, kind: str):
         ents.append(e)
         counts[kind] += 1
-        got.add(e.handle)
+        got.add(e._h)
 
     # LINE / ARC / CIRCLE
     lines, arcs, circles = _guard(base, "lines, arcs and circles", raw.decode_line_arc_circle_entities, p)
@@ -702,9 +707,9 @@ def read_dwg(path: str, progress=None):
         undecoded[tname] += 1
         ents.append(_Entity(tname, h, common(h)))  # the import counts and reports it as unsupported
     # ---- membership
-    ents.sort(key=lambda e: e.handle)
+    ents.sort(key=lambda e: e._h)
     for e in ents:
-        mode, owner = placements.get(int(e.handle), (2, 0))
+        mode, owner = placements.get(e._h, (2, 0))
         if owner in model_owners or (mode == 2):
             doc._msp.append(e)
         elif owner in paper_owners or mode == 1:

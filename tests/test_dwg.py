@@ -250,6 +250,12 @@ def test_dwg_read_reports_progress_and_counts(tmp_path):
     assert "DWG R2000 (AC1015)" in rec.text()
     assert [b.name for b in doc.blocks if b.name in ("DOOR", "DOUBLE", "ROOMTAG")]
     assert doc.blocks.get("door").block.dxf.base_point[:2] == (500.0, 0.0)
+    # the ezdxf-like entity interface the import's exploder relies on
+    e = next(x for x in doc.modelspace() if x.dxftype() == "LINE")
+    assert e.dxf.layer == "E1-RI-1F$0$A-WALL" and e.dxf.get("nothing", 7) == 7 and not e.dxf.hasattr("nothing")
+    assert isinstance(e.dxf.handle, str) and int(e.dxf.handle, 16) > 0
+    tag = next(x for x in doc.modelspace() if x.dxftype() == "INSERT" and x.dxf.name == "ROOMTAG")
+    assert sorted(a.dxf.tag for a in tag.attribs) == ["ROOMNAME", "ROOMNO"]
 
 
 def test_dwg_read_honours_cancel(tmp_path):
