@@ -180,7 +180,7 @@ def inspect_dxf(path: str, rules=None, progress=None) -> CadDrawing:
     progress.step(100)
     return CadDrawing(path=path, geometries=[], texts=[], layers=infos, unit_name=raw.header_unit,
                       unit_scale=UNIT_SCALES.get(raw.header_unit, 1.0), header_unit=raw.header_unit,
-                      warnings=warnings, repairs=raw.repairs)
+                      warnings=warnings, repairs=raw.repairs, undecoded=dict(getattr(raw.doc, "undecoded", {})))
 
 
 def _xref_message(xrefs: List[str]) -> str:
@@ -336,4 +336,5 @@ def import_dxf(path: str, rules=None, layers: Optional[Sequence[str]] = None, un
                   + (f", {len(doors)} doorways" if doors else ""))
     return CadDrawing(path=path, geometries=geoms, texts=texts, layers=infos, unit_name=unit, unit_scale=scale,
                       header_unit=header, warnings=warnings, repairs=list(repairs), doors=doors, plans=plans,
-                      classes=classes, timings=timings)
+                      classes=classes, timings=timings,
+                      undecoded=dict(getattr(doc, "undecoded", {})))  # DWG: types the reader cannot decode

@@ -13,6 +13,10 @@ def _read_doc(path: str, progress):
     import ezdxf
     from ezdxf import recover
 
+    from . import cad_dwg  # DWG input: read straight into the same structures (no temporary DXF)
+
+    if cad_dwg.is_dwg(path):
+        return cad_dwg.read_dwg(path, progress)
     if not os.path.exists(path):
         raise InputError(f"DXF file '{path}' does not exist")
     if os.path.isdir(path):

@@ -24,12 +24,17 @@ UNITS = ["auto", "mm", "cm", "m", "inch", "feet"]
 VARIANTS = ["semantic", "fix-id"]
 
 
+# DWG: AutoCAD R13-2018, read directly by algorithms/cad_dwg.py (ezdwg)
+CAD_FILTER = "CAD drawings (*.dxf *.DXF *.dwg *.DWG);;DXF (*.dxf *.DXF);;DWG (*.dwg *.DWG)"
+
+
 class DxfToOsmagAlgorithm(Cad2OsmagAlgorithm):
     NAME = "dxftoosmag"
-    DISPLAY_NAME = "Convert DXF floor plan to osmAG"
+    DISPLAY_NAME = "Convert DXF/DWG floor plan to osmAG"
     GROUP = "Pipeline"
     GROUP_ID = "pipeline"
-    HELP = ("Runs the whole pipeline on one floor: structural layers of the DXF are kept (walls, columns, "
+    HELP = ("Runs the whole pipeline on one floor (a DXF, or a DWG of AutoCAD R13-2018 read directly): "
+            "structural layers of the drawing are kept (walls, columns, "
             "glazing, stairs), rasterized, segmented into an Area Graph of rooms, corridors and the passages "
             "between them, refined (simplified polygons with shared borders) and written as an osmAG file "
             "anchored on the Earth. ANCHOR is the position of the drawing origin (pick it on a basemap), "
@@ -37,7 +42,7 @@ class DxfToOsmagAlgorithm(Cad2OsmagAlgorithm):
             "also available as its own algorithm for finer control.")
 
     def initAlgorithm(self, config=None):  # noqa: N802
-        self.addParameter(QgsProcessingParameterFile("INPUT", self.tr("DXF floor plan"), extension="dxf"))
+        self.addParameter(QgsProcessingParameterFile("INPUT", self.tr("DXF or DWG floor plan"), fileFilter=CAD_FILTER))
         self.addParameter(QgsProcessingParameterFile("LAYER_RULES", self.tr("Layer rules (JSON, optional)"),
                                                      extension="json", optional=True))
         self.addParameter(QgsProcessingParameterEnum("UNITS", self.tr("Drawing units"), UNITS, defaultValue=0))

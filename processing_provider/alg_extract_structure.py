@@ -91,12 +91,17 @@ def geometry_to_qgs(coords, closed):
     return QgsGeometry(multi)
 
 
+# DWG: AutoCAD R13-2018, read directly by algorithms/cad_dwg.py (ezdwg)
+CAD_FILTER = "CAD drawings (*.dxf *.DXF *.dwg *.DWG);;DXF (*.dxf *.DXF);;DWG (*.dwg *.DWG)"
+
+
 class ExtractStructureAlgorithm(Cad2OsmagAlgorithm):
     NAME = "extractstructure"
-    DISPLAY_NAME = "Extract structure from DXF"
+    DISPLAY_NAME = "Extract structure from DXF/DWG"
     GROUP = "Pipeline"
     GROUP_ID = "pipeline"
-    HELP = ("Reads a DXF floor plan, explodes blocks (with scale, rotation, mirror and MINSERT arrays; "
+    HELP = ("Reads a DXF floor plan, or a DWG (AutoCAD R13-2018, read directly: no converter needed), "
+            "explodes blocks (with scale, rotation, mirror and MINSERT arrays; "
             "entities on layer 0 inside a block take the INSERT's layer), skips frozen and off layers, keeps "
             "the structural layers chosen by the layer rules (walls, columns, windows/glazing, stairs, "
             "lifts, and the reference layers 0 and Defpoints) and flattens curves to 1 cm.\n"
@@ -126,7 +131,7 @@ class ExtractStructureAlgorithm(Cad2OsmagAlgorithm):
     DOORS = "DOORS"
 
     def initAlgorithm(self, config=None):  # noqa: N802
-        self.addParameter(QgsProcessingParameterFile(self.INPUT, self.tr("DXF drawing"), extension="dxf"))
+        self.addParameter(QgsProcessingParameterFile(self.INPUT, self.tr("DXF or DWG drawing"), fileFilter=CAD_FILTER))
         self.addParameter(QgsProcessingParameterFile(
             self.LAYER_RULES, self.tr("Layer rules (JSON, empty = built-in defaults)"), extension="json",
             optional=True))

@@ -21,16 +21,21 @@ COUNT_COLUMNS = ("LINE", "LWPOLYLINE", "POLYLINE", "ARC", "CIRCLE", "ELLIPSE", "
                  "3DFACE", "TEXT", "MTEXT", "ATTRIB", "DIMENSION")
 
 
+# DWG: AutoCAD R13-2018, read directly by algorithms/cad_dwg.py (ezdwg)
+CAD_FILTER = "CAD drawings (*.dxf *.DXF *.dwg *.DWG);;DXF (*.dxf *.DXF);;DWG (*.dwg *.DWG)"
+
+
 class ListLayersAlgorithm(Cad2OsmagAlgorithm):
     NAME = "listlayers"
-    DISPLAY_NAME = "List DXF layers"
+    DISPLAY_NAME = "List DXF/DWG layers"
     GROUP = "Pipeline"
     GROUP_ID = "pipeline"
-    HELP = ("Reports every layer of a DXF drawing with its entity counts by type (after exploding blocks: "
+    HELP = ("Reports every layer of a DXF or DWG drawing (DWG: AutoCAD R13-2018, read directly) with its "
+            "entity counts by type (after exploding blocks: "
             "entities on layer 0 inside a block count on the INSERT's layer), whether it is frozen or off, "
             "and whether the layer rules keep it (kind and matching keyword; door layers are listed with kind "
             "'door' but not kept, since doorways stay open unless doors are included). Use the table to choose the "
-            "LAYERS of 'Extract structure from DXF' or to write your own LAYER_RULES JSON file.\n"
+            "LAYERS of 'Extract structure from DXF/DWG' or to write your own LAYER_RULES JSON file.\n"
             "Output: a table without geometry (save it as CSV, or keep it as a memory layer).")
 
     INPUT = "INPUT"
@@ -38,7 +43,7 @@ class ListLayersAlgorithm(Cad2OsmagAlgorithm):
     OUTPUT = "OUTPUT"
 
     def initAlgorithm(self, config=None):  # noqa: N802
-        self.addParameter(QgsProcessingParameterFile(self.INPUT, self.tr("DXF drawing"), extension="dxf"))
+        self.addParameter(QgsProcessingParameterFile(self.INPUT, self.tr("DXF or DWG drawing"), fileFilter=CAD_FILTER))
         self.addParameter(QgsProcessingParameterFile(
             self.LAYER_RULES, self.tr("Layer rules (JSON, empty = built-in defaults)"), extension="json",
             optional=True))

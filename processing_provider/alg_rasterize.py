@@ -88,7 +88,7 @@ class RasterizeAlgorithm(Cad2OsmagAlgorithm):
     DISPLAY_NAME = "Rasterize structure"
     GROUP = "Pipeline"
     GROUP_ID = "pipeline"
-    HELP = ("Turns structure lines (the WALLS output of 'Extract structure from DXF', or any line/polygon "
+    HELP = ("Turns structure lines (the WALLS output of 'Extract structure from DXF/DWG', or any line/polygon "
             "layer in metres) into a single-band occupancy GeoTIFF: 0 = free, 255 = occupied (the inverse "
             "of a ROS map_server image, where black is occupied). Hairlines are drawn 0.15 m wide, wide "
             "polylines with their width, filled outlines (solid hatches) filled.\n"
@@ -174,7 +174,7 @@ class RasterizeAlgorithm(Cad2OsmagAlgorithm):
         if crs.isValid() and crs.isGeographic():
             raise QgsProcessingException(self.tr(
                 "The structure layer is in a geographic CRS ({}); rasterize needs metres: use the WALLS output "
-                "of 'Extract structure from DXF' or reproject to a projected CRS first.").format(crs.authid()))
+                "of 'Extract structure from DXF/DWG' or reproject to a projected CRS first.").format(crs.authid()))
 
         geoms = features_to_geometries(source, feedback)
         extent = None
