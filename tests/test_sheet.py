@@ -331,3 +331,15 @@ def test_furniture_touching_a_wall_stays_and_free_furniture_goes(tmp_path):
 def test_inspect_still_lists_every_layer(sheet):
     d = inspect_dxf(sheet["dxf"])
     assert "图框" in d.layers and d.layers["图框"].kind is None
+
+
+def test_spaghetti_plan_converts_with_open_doorways(tmp_path):
+    """The whole pipeline on the layer-"0" variant: every room is reached through its doorway."""
+    from algorithms.pipeline import process_floor
+
+    out = generate_delivered(str(tmp_path), spaghetti=True, name="sp")
+    floor = process_floor(out["dxf"])
+    areas, passages = floor.refined.areas, floor.refined.passages
+    assert len(areas) >= 15 and len(passages) >= 15, (len(areas), len(passages))
+    linked = {p.from_id for p in passages} | {p.to_id for p in passages}
+    assert sum(a.id in linked for a in areas) >= len(areas) - 2  # at most the stair and lift cores unlinked
