@@ -101,11 +101,21 @@ def _swings(geoms: Sequence[CadGeometry], leaf_required: bool):
     arc_set = {a[0] for a in arcs}
     with_leaf = {}
     drop = set()
-    for i, g in enumerate(geoms):
-        if i in arc_set or g.kind == "column" or g.filled:
-            continue
+    # leaves: short lines / thin rectangles with a vertex at an arc centre (vectorised prefilter)
+    short = [i for i, g in enumerate(geoms) if 2 <= len(g.coords) <= 5 and i not in arc_set
+             and g.kind != "column" and not g.filled]
+    if short:
+        verts = np.concatenate([geoms[i].coords for i in short])
+        owner = np.repeat(np.asarray(short), [len(geoms[i].coords) for i in short])
+        fin = np.isfinite(verts).all(axis=1)
+        dist, _ = tree.query(np.where(fin[:, None], verts, 1e18), distance_upper_bound=0.16)
+        near = sorted(set(owner[np.isfinite(dist)].tolist()))
+    else:
+        near = []
+    for i in near:
+        g = geoms[i]
         c = g.coords
-        if len(c) < 2 or len(c) > 5 or not np.isfinite(c).all():
+        if not np.isfinite(c).all():
             continue
         for k in set(j for lst in tree.query_ball_point(c, 0.16) for j in lst):
             ai, cx, cy, r, e0, e1 = arcs[k]

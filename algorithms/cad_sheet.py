@@ -166,12 +166,12 @@ def frame_mask(geoms: Sequence[CadGeometry], rules: LayerRules) -> np.ndarray:
         if hit is None:
             hit = layer_hit[g.layer] = rules.layer_is(g.layer, "frame") or rules.layer_is(g.layer, "legend")
         out[i] = hit
-    cands = [i for i, g in enumerate(geoms) if not out[i] and _is_straightish(g)
-             and np.ptp(g.coords, axis=0).max() >= FRAME_MIN_LENGTH / 4 and _length(g.coords) >= FRAME_MIN_LENGTH]
-    if not cands:
-        return out
-    allp, own, _ = _sample_all(geoms, np.flatnonzero(~out), FRAME_FREE_DIST)
+    rest_idx = np.flatnonzero(~out)
+    allp, own, lens = _sample_all(geoms, rest_idx, FRAME_FREE_DIST)
     if not len(allp):
+        return out
+    cands = [int(i) for i, ln in zip(rest_idx, lens) if ln >= FRAME_MIN_LENGTH and _is_straightish(geoms[i])]
+    if not cands:
         return out
     tree = cKDTree(allp)
     free_ids = []
