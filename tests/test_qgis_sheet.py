@@ -81,3 +81,21 @@ def test_extractstructure_on_a_spaghetti_plan_finds_doors_and_furniture(tmp_path
     assert len(widths) == res["DOOR_COUNT"] and all(0.6 <= w <= 2.0 for w in widths)
     tags = _rows(tmp_path / "t.gpkg", 'select text, block, tag from "{t}" where entity = \'ATTRIB\'')
     assert tags and all(b == "ROOM_TAG" and t == "NAME" for _, b, t in tags)
+
+
+def test_dxftoosmag_on_a_whole_sheet_converts_the_main_plan_or_the_picked_one(tmp_path):
+    from algorithms import osmag
+
+    out = generate_delivered(str(tmp_path), sheet=True, name="sheet")
+    osm = tmp_path / "sheet.osm"
+    _, res, log = run_alg("dxftoosmag", {"INPUT": out["dxf"], "OUTPUT": str(osm), "OUTPUT_AREAS": "memory:",
+                                         "OUTPUT_PASSAGES": "memory:"})
+    assert res["AREA_COUNT"] >= 15 and res["PASSAGE_COUNT"] >= 15
+    assert "[1] detail" in log  # the log lists the groups found on the sheet
+    # picked explicitly, the enlarged detail converts too (one stair core)
+    osm1 = tmp_path / "detail.osm"
+    _, res1, _ = run_alg("dxftoosmag", {"INPUT": out["dxf"], "OUTPUT": str(osm1), "PLAN": "1",
+                                        "OUTPUT_AREAS": "memory:", "OUTPUT_PASSAGES": "memory:"})
+    assert 1 <= res1["AREA_COUNT"] <= 3
+    areas, _, _, _ = osmag.read_osmag(str(osm1))
+    assert areas
