@@ -159,7 +159,7 @@ def classify_entities(geoms: Sequence[CadGeometry], chains: Sequence[str], rules
       from jamb to jamb; swings inside door blocks give hints too;
     * pattern (non-solid) hatches thicker than HATCH_THICK (tiles, flooring) are never walls;
     * on ``weak_layers`` (layer "0", fallback layers): closed compact outlines (0.35-2.5 m) that touch no
-      other geometry, and what lies inside them, are furniture.
+      other geometry, and what lies inside them, are furniture (unless filled or hatched: a column).
 
     Returns ``(keep mask, classes {class: count}, door hints)``."""
     from .cad_explode import BLOCK_SEP
@@ -234,8 +234,8 @@ def _free_furniture(geoms: Sequence[CadGeometry], cls: List[str], weak: set) -> 
         hits = [idx[j] for j in tree.query(zone, predicate="intersects")]
         inside_poly = poly.buffer(-TOUCH) if poly.area > 0 else poly
         touching = [j for j in hits if j != i and j not in cset and not inside_poly.contains(_line(geoms[j]))]
-        if touching:
-            continue
+        if touching or any(geoms[j].filled or geoms[j].kind == "column" for j in hits if j != i):
+            continue  # a hatched / filled outline is a column, not furniture
         cls[i] = "furniture"
         for j in hits:
             if j != i and not cls[j] and inside_poly.contains(_line(geoms[j])):

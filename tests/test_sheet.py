@@ -321,8 +321,12 @@ def test_furniture_touching_a_wall_stays_and_free_furniture_goes(tmp_path):
     msp.add_lwpolyline([(4, 3), (5.6, 3), (5.6, 3.8), (4, 3.8)], close=True)  # desk in the room
     msp.add_line((4.3, 3.6), (5.3, 3.6))  # its monitor, inside it
     msp.add_lwpolyline([(0, 5), (0.6, 5), (0.6, 7), (0, 7)], close=True)  # a cupboard against the wall
+    col = msp.add_hatch(color=7)  # a column: outline and solid fill, standing free -> stays
+    col.paths.add_polyline_path([(7, 4), (7.6, 4), (7.6, 4.6), (7, 4.6)], is_closed=True)
+    msp.add_lwpolyline([(7, 4), (7.6, 4), (7.6, 4.6), (7, 4.6)], close=True)
     d = import_dxf(_save(doc, tmp_path))
     assert d.classes["furniture"] == 2
+    assert sum(1 for g in d.geometries if np.isclose(np.nanmin(g.coords[:, 0]), 7.0)) == 2
     xs = [g.coords[:, 0].min() for g in d.geometries]
     assert not any(3.9 < x < 4.4 for x in xs)
     assert any(g.closed and np.allclose(g.coords[:, 0].min(), 0) and np.ptp(g.coords[:, 1]) == 2 for g in d.geometries)
