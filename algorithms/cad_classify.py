@@ -128,8 +128,25 @@ def _swings(geoms: Sequence[CadGeometry], leaf_required: bool):
                 drop.add(i)
                 with_leaf[ai] = (cx, cy, e1 if d0 <= d1 else e0)
                 break
+    hints = list(with_leaf.values())
+    # swings drawn without a leaf: the hinge is at a wall end (a jamb) and so is the arc end where the
+    # closed leaf lies; the open end stands in the room. Such arcs are doors with a hint.
+    lone = [a for a in arcs if a[0] not in with_leaf]
+    if lone:
+        ends = [g.coords[[0, -1]] for i, g in enumerate(geoms) if i not in arc_set and len(g.coords) >= 2
+                and np.isfinite(g.coords[[0, -1]]).all()]
+        if ends:
+            etree = cKDTree(np.concatenate(ends))
+            for ai, cx, cy, r, e0, e1 in lone:
+                tol = 0.1 * r
+                if not etree.query_ball_point((cx, cy), tol):
+                    continue
+                n0, n1 = bool(etree.query_ball_point(e0, tol)), bool(etree.query_ball_point(e1, tol))
+                if n0 != n1:
+                    hints.append((cx, cy, e0 if n0 else e1))
+                    with_leaf[ai] = hints[-1]
     drop |= {i for i in arc_set if i in with_leaf or (geoms[i].kind != "wall" and not leaf_required)}
-    return sorted(drop), list(with_leaf.values())
+    return sorted(drop), hints
 
 
 # ------------------------------------------------------------------------------------------ spaghetti

@@ -286,6 +286,18 @@ def test_door_swing_becomes_a_hint_from_jamb_to_jamb(tmp_path):
     assert d.classes["door"] == 2
 
 
+def test_leafless_swing_hinged_at_a_wall_end_is_a_door(tmp_path):
+    doc = _doc()
+    msp = doc.modelspace()
+    _box(msp, 0, 0, 10, 8, layer="0", door_gap=(4.0, 4.9))
+    msp.add_arc((4.0, 0.0), 0.9, 0, 90)  # no leaf: hinge and closed end at the two wall ends
+    msp.add_arc((8.0, 8.0), 0.9, 180, 270)  # an arc in a corner region with no wall end at its centre
+    d = import_dxf(_save(doc, tmp_path))
+    assert len(d.doors) == 1
+    h = d.doors[0]
+    assert np.allclose(sorted([(h.x0, h.y0), (h.x1, h.y1)]), [(4.0, 0.0), (4.9, 0.0)], atol=0.02)
+
+
 def test_double_door_is_one_hint(tmp_path):
     doc = _doc()
     msp = doc.modelspace()
