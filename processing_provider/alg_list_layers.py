@@ -36,6 +36,8 @@ class ListLayersAlgorithm(Cad2OsmagAlgorithm):
             "and whether the layer rules keep it (kind and matching keyword; door layers are listed with kind "
             "'door' but not kept, since doorways stay open unless doors are included). Use the table to choose the "
             "LAYERS of 'Extract structure from DXF/DWG' or to write your own LAYER_RULES JSON file.\n"
+            "Layer names as delivered: the rules match the meaningful part of a name (the prefix of a bound "
+            "external reference, as in E1-RI-1F$0$A-WALL, is ignored); the 'matched' column shows it.\n"
             "Output: a table without geometry (save it as CSV, or keep it as a memory layer).")
 
     INPUT = "INPUT"
