@@ -1,0 +1,974 @@
+"""Stage 5: room names, numbers and types from the drawing's texts.
+
+Public API
+----------
+``load_name_rules(path=None) -> NameRules``
+    The configurable rules (``default_name_rules.json`` beside this module, or a copy of it).
+``normalize_text(text) -> str``
+    NFKC, control / bidi / formatting codes removed, whitespace collapsed.
+``classify_text(text, rules=None, layer="", block="", tag="") -> (role, reason)``
+    role ``name`` | ``number`` | ``ignored``; reason says why (``dimension``, ``area``, ``elevation``,
+    ``door/window code``, ``axis``, ``stair arrow``, ``note``, ``title``, ``title block``, ``empty``...).
+    ``text`` may be a ``CadText`` (its layer, block and ATTRIB tag are then used).
+``room_name_points(texts, rules=None) -> [(x, y, text)]``
+    Where the room names (and numbers) of a drawing are: evidence that a space is inside the building.
+``assign_names(areas, texts, level, rules=None, progress=None, grid=None, labels=None, passages=None,
+split=True) -> NamesReport``
+    Scores every room text against every area exactly as the paper (below), gives each text to its
+    best-scoring area, joins name + number, splits areas holding two different room names when a
+    narrowing separates them (else ``label_conflict``), suffixes duplicate names, gives unnamed areas
+    a stable id ``<level>-<id>`` and types areas from keywords, codes and geometry. Areas are changed in
+    place (``name``, ``ref``, ``type``, ``tags``); split pieces and their passages are appended to
+    ``areas`` / ``passages``.
+
+Score (Zhang et al., "CAD to osmAG", text-to-room association): with the text point p, the area's
+centroid c and area A (m²), S = sqrt(A / pi), rho = |p - c| / S, d_b = distance from p to the boundary:
+* p inside:  100 - 50 rho for rho <= rho_max (0.7), else 50 - 25 (rho - rho_max);
+* p outside, d_b < D_max (2.2 m): 40 + 30 f_size + 20 f_dist, f_size = 1 / (1 + log10(1 + A / 10000)),
+  f_dist = 1 - d_b / D_max;
+* otherwise 0 (not a candidate). Each text goes to the area with the highest positive score. Where the
+paper leaves an inside score at or below 0 (a text far from the centroid of a very long area), we keep
+the area as a candidate with score 1: a nearby area (>= 40) still wins, but a text inside a long
+corridor with no other candidate is not lost.
+
+Layer fields written on the areas (``Area.tags``, so they reach the AREAS layer): ``label_score`` (best
+score of the texts used), ``label_texts`` (ids of the CadTexts used, ';'-separated), ``label_conflict``
+(the other room names when an area holds several and could not be split). ``osm_tags(area)`` gives the
+tags meant for the osmAG file (these three replaced by a ``fixme`` on conflicts).
+"""
+from __future__ import annotations
+
+import json
+import math
+import os
+import re
+import unicodedata
+from dataclasses import dataclass, field
+from typing import Dict, Iterable, List, Optional, Sequence, Tuple
+
+import numpy as np
+from shapely.geometry import LineString, Point, Polygon
+from shapely.ops import split as shp_split
+from shapely.strtree import STRtree
+
+from .errors import InputError
+from .model import Area, CadText, Passage
+from .progress import ensure
+
+DEFAULT_NAME_RULES_PATH = os.path.join(os.path.dirname(os.path.abspath(__file__)), "default_name_rules.json")
+RHO_MAX = 0.7
+D_MAX = 2.2  # metres
+NARROWING_RATIO = 0.6  # a split cut must be at most this share of the narrower piece's width
+LABEL_FIELDS = ("label_score", "label_texts", "label_conflict")
+ROLES = ("name", "number", "ignored")
+
+
+# ------------------------------------------------------------------------------------------ rules
+@dataclass
+class NameRules:
+    name_layers: List[str]
+    name_blocks: List[str]
+    name_tags: List[str]
+    number_tags: List[str]
+    ignore_layers: List[Tuple[str, List[str]]]
+    ignore_patterns: List[Tuple[str, "re.Pattern"]]
+    number_patterns: List["re.Pattern"]
+    types: List[dict]
+    code_types: List[dict]
+    max_name_words: int = 7
+    max_name_chars: int = 48
+    corridor_geometry: Dict[str, float] = field(default_factory=dict)
+    source: str = ""
+
+    def __post_init__(self):
+        # keyword -> (type entry) sorted longest first: the longest keyword found in a name wins
+        kws = []
+        for entry in self.types:
+            for kw in entry.get("keywords", []):
+                kws.append((normalize_text(kw).casefold(), entry))
+        kws.sort(key=lambda t: -len(t[0]))
+        self._type_keywords = [(kw, _keyword_regex(kw), e) for kw, e in kws if kw]
+
+
+def _keyword_regex(kw: str) -> "re.Pattern":
+    """Latin/Cyrillic keywords match at the start of a word (stems: 'riunion' matches 'riunioni');
+    CJK keywords match anywhere."""
+    if re.match(r"^[\w .'&/-]+$", kw) and not re.search(r"[\u3000-\u9fff]", kw):
+        return re.compile(r"(?<![^\W\d_])" + re.escape(kw))
+    return re.compile(re.escape(kw))
+
+
+def _layer_match(words: Sequence[str], name: str) -> Optional[str]:
+    """The first keyword occurring in ``name`` (casefolded). ASCII keywords of <= 3 characters must be
+    a whole token of the name (``tk`` matches 'TK' or 'A-TK', not 'ATKINS')."""
+    if not name:
+        return None
+    tokens = None
+    for w in words:
+        if len(w) <= 3 and w.isascii() and w.isalnum():
+            if tokens is None:
+                tokens = set(re.split(r"[^0-9a-z\u0080-\uffff]+", name))
+            if w in tokens:
+                return w
+        elif w in name:
+            return w
+    return None
+
+
+def load_name_rules(path: Optional[str] = None) -> NameRules:
+    """Rules from a JSON file (None: the built-in defaults). Raises InputError on a bad file."""
+    src = path or DEFAULT_NAME_RULES_PATH
+    try:
+        with open(src, encoding="utf-8") as fh:
+            data = json.load(fh)
+    except FileNotFoundError:
+        raise InputError(f"name rules file '{src}' does not exist; give an existing JSON file or leave it empty")
+    except (OSError, ValueError) as exc:
+        raise InputError(f"name rules file '{os.path.basename(src)}' is not valid JSON ({exc}); "
+                         "start from a copy of algorithms/default_name_rules.json")
+    if not isinstance(data, dict):
+        raise InputError(f"name rules file '{os.path.basename(src)}' must hold a JSON object")
+
+    def words(key):
+        return [normalize_text(w).casefold() for w in data.get(key, []) if str(w).strip()]
+
+    try:
+        ignore_layers = [(reason, [normalize_text(w).casefold() for w in ws])
+                         for reason, ws in (data.get("ignore_layers") or {}).items()]
+        pats = [(reason, re.compile(p, re.IGNORECASE)) for reason, p in data.get("ignore_patterns", [])]
+        nums = [re.compile(p, re.IGNORECASE) for p in data.get("number_patterns", [])]
+        codes = [dict(e, _re=re.compile(e["pattern"], re.IGNORECASE)) for e in data.get("code_types", [])]
+        types = [dict(e) for e in data.get("types", [])]
+        for e in types + codes:
+            if e.get("type") not in ("room", "corridor", "stairs", "elevator"):
+                raise ValueError(f"unknown area type {e.get('type')!r} (room, corridor, stairs, elevator)")
+    except (re.error, ValueError, TypeError, KeyError) as exc:
+        raise InputError(f"name rules file '{os.path.basename(src)}': {exc}")
+    return NameRules(name_layers=words("name_layers"), name_blocks=words("name_blocks"),
+                     name_tags=words("name_tags"), number_tags=words("number_tags"),
+                     ignore_layers=ignore_layers, ignore_patterns=pats, number_patterns=nums, types=types,
+                     code_types=codes, max_name_words=int(data.get("max_name_words", 7)),
+                     max_name_chars=int(data.get("max_name_chars", 48)),
+                     corridor_geometry=dict(data.get("corridor_geometry") or {}), source=src)
+
+
+_DEFAULT: Optional[NameRules] = None
+
+
+def default_name_rules() -> NameRules:
+    global _DEFAULT
+    if _DEFAULT is None:
+        _DEFAULT = load_name_rules(None)
+    return _DEFAULT
+
+
+def _resolve(rules) -> NameRules:
+    if rules is None:
+        return default_name_rules()
+    if isinstance(rules, NameRules):
+        return rules
+    return load_name_rules(str(rules))
+
+
+# ------------------------------------------------------------------------------------------ text
+_MTEXT_CODES = re.compile(r"\\[ACFHQTWfhqtwacLlOoKkXx][^;\\{}]*;?|\\[PpNn~]|[{}]")
+_PERCENT_CODES = {"%%c": "⌀", "%%d": "°", "%%p": "±", "%%u": "", "%%o": "", "%%k": "", "%%%": "%"}
+_XREF_PREFIX = re.compile(r"^.*\$\d+\$")
+
+
+def strip_xref(layer: str) -> str:
+    """'E1-RI-1F$0$A-ANNO-ROOM' -> 'A-ANNO-ROOM' (bound external reference prefixes, any depth)."""
+    return _XREF_PREFIX.sub("", layer or "")
+
+
+def normalize_text(text) -> str:
+    """Plain, comparable text: MTEXT/percent formatting codes, control and bidi/format characters
+    removed, NFKC (full-width forms to ASCII, '㎡' to 'm2'), whitespace collapsed."""
+    if text is None:
+        return ""
+    s = str(text)
+    if "\\" in s or "{" in s:
+        s = _MTEXT_CODES.sub(" ", s)
+    if "%%" in s:
+        for k, v in _PERCENT_CODES.items():
+            s = re.sub(re.escape(k), v, s, flags=re.IGNORECASE)
+    s = unicodedata.normalize("NFKC", s)
+    s = "".join(ch if unicodedata.category(ch)[0] != "C" else " " for ch in s)
+    return " ".join(s.split())
+
+
+def _has_letter(s: str) -> bool:
+    return any(unicodedata.category(ch).startswith("L") for ch in s)
+
+
+def _text_fields(text, layer, block, tag):
+    if isinstance(text, CadText):
+        return text.text, text.layer, text.block, text.tag
+    return text, layer, block, tag
+
+
+def classify_text(text, rules=None, layer: str = "", block: str = "", tag: str = "") -> Tuple[str, str]:
+    """``(role, reason)`` of one text. role: ``name`` (a room name), ``number`` (a room number, kept
+    as ref), ``ignored``. The reason names the rule: 'name layer', 'keyword', 'room tag' ... for names
+    and numbers; 'dimension', 'area', 'elevation', 'door/window code', 'axis', 'stair arrow', 'note',
+    'title', 'title block', 'furniture', 'long text', 'empty', 'digits only' ... for ignored texts."""
+    rules = _resolve(rules)
+    raw, layer, block, tag = _text_fields(text, layer, block, tag)
+    s = normalize_text(raw)
+    if not s or not re.search(r"\w", s):
+        return "ignored", "empty"
+    low = s.casefold()
+    lay = strip_xref(layer).casefold()
+    blk = strip_xref(block).casefold()
+    tg = normalize_text(tag).casefold()
+    # ---- ATTRIB tags and room-name layers / blocks: what the drawing says the text is
+    tag_tokens = set(re.split(r"[^0-9a-z\u0080-\uffff]+", tg)) if tg else set()
+    number_tag = bool(tg) and any((w in tag_tokens) if len(w) <= 3 else (w in tg) for w in rules.number_tags)
+    name_tag = bool(tg) and not number_tag and any(
+        (w in tag_tokens) if len(w) <= 3 else (w in tg) for w in rules.name_tags)
+    name_layer = _layer_match(rules.name_layers, lay)
+    name_block = _layer_match(rules.name_blocks, blk)
+    evidence = "room tag" if (name_tag or number_tag) else ("name layer" if name_layer else
+                                                            ("room block" if name_block else ""))
+    type_hit = _type_entry(low, rules)
+    # ---- layers that hold other things
+    if not evidence:
+        for reason, words in rules.ignore_layers:
+            if _layer_match(words, lay):
+                if reason in ("stair arrow", "door/window code", "note") and type_hit is not None and \
+                        _is_name_like(low, rules):
+                    break  # "Stair A" on the stair layer is a name
+                return "ignored", f"{reason} (layer)"
+    # ---- numbers
+    if number_tag:
+        return ("number", "room tag") if _has_alnum(low) else ("ignored", "empty")
+    if _is_door_code(low, rules):
+        return "ignored", "door/window code"
+    if any(p.search(low) for p in rules.number_patterns) and not _is_elevation(low, rules):
+        digits = low.isdigit()
+        if digits and not evidence and int(low) % 50 == 0:
+            return "ignored", "dimension"
+        return "number", evidence or "number pattern"
+    if low.isdigit() or re.fullmatch(r"[\d\s.,]+", low):
+        if evidence and low.isdigit():
+            return "number", evidence
+        # single digits: axis bubbles, section marks; more: dimensions
+        return "ignored", "axis" if len(low) <= 2 else "dimension"
+    # ---- everything else that is not a name
+    for reason, pat in rules.ignore_patterns:
+        if evidence and reason in ("furniture", "long text", "note", "spaced title"):
+            continue
+        if pat.search(low):
+            if reason in ("furniture",) and type_hit is not None and type_hit[1].get("type") != "room":
+                continue
+            return "ignored", reason
+    if not _has_letter(low):
+        return "ignored", "digits only" if re.search(r"\d", low) else "symbols only"
+    if not evidence and (len(low) > rules.max_name_chars or len(low.split()) > rules.max_name_words):
+        return "ignored", "long text"
+    if name_tag:
+        return "name", "room tag"
+    if evidence:
+        return "name", evidence
+    if type_hit is not None:
+        return "name", "keyword"
+    return "name", "short text"
+
+
+def _has_alnum(s: str) -> bool:
+    return any(ch.isalnum() for ch in s)
+
+
+def _is_name_like(low: str, rules: NameRules) -> bool:
+    return len(low) <= rules.max_name_chars and not _is_arrow(low, rules)
+
+
+def _is_arrow(low: str, rules: NameRules) -> bool:
+    return any(r == "stair arrow" and p.search(low) for r, p in rules.ignore_patterns)
+
+
+def _is_door_code(low: str, rules: NameRules) -> bool:
+    return any(r == "door/window code" and p.search(low) for r, p in rules.ignore_patterns)
+
+
+def _is_elevation(low: str, rules: NameRules) -> bool:
+    return any(r in ("elevation", "area") and p.search(low) for r, p in rules.ignore_patterns)
+
+
+def _type_entry(low: str, rules: NameRules):
+    """(keyword, entry) of the longest type keyword in the text, or None."""
+    for kw, rx, entry in rules._type_keywords:
+        if rx.search(low):
+            return kw, entry
+    return None
+
+
+def type_of_name(name: str, ref: str = "", rules=None) -> Optional[dict]:
+    """The type entry (type, indoor, room) a name or number implies: code patterns first
+    (E1-ST-03 stairs, E2-P1 lift), then the longest keyword. None when nothing matches."""
+    rules = _resolve(rules)
+    for s in (ref, name):
+        low = normalize_text(s).casefold()
+        if not low:
+            continue
+        for e in rules.code_types:
+            if e["_re"].search(low):
+                return e
+    hit = _type_entry(normalize_text(name).casefold(), rules)
+    return hit[1] if hit else None
+
+
+# ------------------------------------------------------------------------------------------ lines
+@dataclass
+class Label:
+    """One label: a text, or several lines of one multi-line TEXT label joined."""
+
+    ids: List[int]
+    text: str
+    x: float
+    y: float
+    height: float
+    layer: str
+    block: str
+    tag: str
+    role: str = ""
+    reason: str = ""
+
+
+def _text_id(t: CadText, k: int) -> int:
+    return int(t.id) if getattr(t, "id", -1) is not None and int(getattr(t, "id", -1)) >= 0 else k
+
+
+def _est_width(s: str, h: float) -> float:
+    wide = sum(1 for ch in s if unicodedata.east_asian_width(ch) in ("W", "F"))
+    return h * (0.65 * (len(s) - wide) + 1.0 * wide)
+
+
+def group_lines(texts: Sequence[CadText]) -> List[Label]:
+    """Join the lines of multi-line labels drawn as separate TEXTs: same layer, height (+-15 %) and
+    rotation, the next line 0.5-2.7 heights below the previous one and overlapping it horizontally.
+    Each text belongs to at most one label; ATTRIBs and MTEXTs stay alone (they carry their own lines)."""
+    labels: List[Label] = []
+    cand = []
+    for k, t in enumerate(texts):
+        s = normalize_text(t.text)
+        lab = Label([_text_id(t, k)], s, float(t.x), float(t.y), float(t.height or 0.0), t.layer or "",
+                    getattr(t, "block", "") or "", getattr(t, "tag", "") or "")
+        labels.append(lab)
+        if t.entity == "TEXT" and s and t.height and t.height > 0 and abs(((t.rotation or 0) + 1) % 180 - 1) < 1:
+            cand.append(len(labels) - 1)
+    if len(cand) < 2:
+        return labels
+    # sort candidates top to bottom; link each line to the nearest line right above it
+    cand.sort(key=lambda i: (-labels[i].y, labels[i].x))
+    xs = np.array([labels[i].x for i in cand])
+    ys = np.array([labels[i].y for i in cand])
+    above: Dict[int, int] = {}
+    taken = set()
+    for a_pos, i in enumerate(cand):
+        li = labels[i]
+        h = li.height
+        dy = ys - li.y  # positive: the other line is above
+        ok = (dy >= 0.5 * h) & (dy <= 2.7 * h)
+        if not ok.any():
+            continue
+        best = None
+        for b_pos in np.flatnonzero(ok):
+            j = cand[b_pos]
+            lj = labels[j]
+            if j in taken or lj.layer != li.layer or abs(lj.height - h) > 0.15 * max(h, lj.height):
+                continue
+            wi, wj = _est_width(li.text, h), _est_width(lj.text, h)
+            # overlap of [x, x + w] extents, tolerant to centred/right alignment
+            if min(li.x + wi, lj.x + wj) - max(li.x - 0.5 * wi, lj.x - 0.5 * wj) <= 0:
+                continue
+            d = dy[b_pos] + abs(lj.x - li.x) / max(wi, wj, 1e-9)
+            if best is None or d < best[0]:
+                best = (d, j)
+        if best is not None:
+            above[i] = best[1]
+            taken.add(best[1])
+    if not above:
+        return labels
+    below = {j: i for i, j in above.items()}
+    out: List[Label] = []
+    used = set()
+    for k, lab in enumerate(labels):
+        if k in used:
+            continue
+        if k in above:  # not the first line: emitted with its first line
+            continue
+        chain = [k]
+        while chain[-1] in below:
+            chain.append(below[chain[-1]])
+        used.update(chain)
+        if len(chain) == 1:
+            out.append(lab)
+            continue
+        parts = [labels[c] for c in chain]
+        out.append(Label(ids=[i for p in parts for i in p.ids], text=" ".join(p.text for p in parts),
+                         x=float(np.mean([p.x for p in parts])), y=float(np.mean([p.y for p in parts])),
+                         height=lab.height, layer=lab.layer, block=lab.block, tag=lab.tag))
+    return out
+
+
+def classify_labels(texts: Sequence[CadText], rules=None) -> List[Label]:
+    rules = _resolve(rules)
+    labels = group_lines(texts)
+    for lab in labels:
+        lab.role, lab.reason = classify_text(lab.text, rules, layer=lab.layer, block=lab.block, tag=lab.tag)
+    return labels
+
+
+def room_name_points(texts: Sequence[CadText], rules=None) -> List[Tuple[float, float, str]]:
+    """(x, y, text) of every room name and room number of a drawing (CAD frame, metres). Segmentation
+    uses them as evidence that the space around them is inside the building."""
+    return [(lab.x, lab.y, lab.text) for lab in classify_labels(texts, rules) if lab.role in ("name", "number")]
+
+
+# ------------------------------------------------------------------------------------------ score
+def score(px: float, py: float, polygon, centroid=None, area: Optional[float] = None,
+          rho_max: float = RHO_MAX, d_max: float = D_MAX) -> Tuple[float, str]:
+    """The paper's score of text point (px, py) for a polygon and how it matched: 'inside', 'nearby'
+    or '' (score 0, not a candidate). Inside scores at or below 0 are raised to 1 (see module doc)."""
+    A = float(polygon.area) if area is None else float(area)
+    if A <= 0:
+        return 0.0, ""
+    p = Point(px, py)
+    if polygon.covers(p):
+        c = centroid if centroid is not None else polygon.centroid
+        S = math.sqrt(A / math.pi)
+        rho = math.hypot(px - c.x, py - c.y) / S
+        s = 100.0 - 50.0 * rho if rho <= rho_max else 50.0 - 25.0 * (rho - rho_max)
+        return max(s, 1.0), "inside"
+    d_b = float(polygon.exterior.distance(p)) if polygon.geom_type == "Polygon" else float(polygon.distance(p))
+    if d_b < d_max:
+        f_size = 1.0 / (1.0 + math.log10(1.0 + A / 10000.0))
+        f_dist = 1.0 - d_b / d_max
+        return 40.0 + 30.0 * f_size + 20.0 * f_dist, "nearby"
+    return 0.0, ""
+
+
+# ------------------------------------------------------------------------------------------ report
+@dataclass
+class TextRecord:
+    ids: List[int]
+    text: str
+    x: float
+    y: float
+    layer: str
+    role: str
+    reason: str
+    area_id: Optional[int] = None
+    score: float = 0.0
+    match: str = ""  # inside | nearby | "" (outside every area)
+
+
+@dataclass
+class NamesReport:
+    texts: List[TextRecord] = field(default_factory=list)
+    named: int = 0  # areas with a name from the drawing
+    numbered: int = 0  # areas with a ref
+    auto: int = 0  # areas with a generated id
+    conflicts: List[int] = field(default_factory=list)  # area ids holding several names
+    splits: List[Tuple[int, List[int]]] = field(default_factory=list)  # (original id, piece ids)
+    duplicates: Dict[str, List[int]] = field(default_factory=dict)  # name -> area ids suffixed
+    typed: Dict[str, int] = field(default_factory=dict)  # type -> count set from names / geometry
+    new_passages: List[int] = field(default_factory=list)
+
+    def counts(self) -> Dict[str, object]:
+        ignored: Dict[str, int] = {}
+        for r in self.texts:
+            if r.role == "ignored":
+                ignored[r.reason] = ignored.get(r.reason, 0) + 1
+        room = [r for r in self.texts if r.role in ("name", "number")]
+        return {"labels": len(self.texts), "names": sum(r.role == "name" for r in self.texts),
+                "numbers": sum(r.role == "number" for r in self.texts),
+                "ignored": sum(r.role == "ignored" for r in self.texts), "ignored_by_reason": ignored,
+                "assigned": sum(r.area_id is not None for r in room),
+                "inside": sum(r.match == "inside" for r in room), "nearby": sum(r.match == "nearby" for r in room),
+                "outside": sum(r.area_id is None for r in room), "named_areas": self.named,
+                "numbered_areas": self.numbered, "auto_ids": self.auto, "conflicts": len(self.conflicts),
+                "splits": len(self.splits), "duplicate_names": len(self.duplicates), "typed": dict(self.typed)}
+
+    def summary(self) -> str:
+        c = self.counts()
+        ign = ", ".join(f"{k} {v}" for k, v in sorted(c["ignored_by_reason"].items(), key=lambda kv: -kv[1]))
+        return (f"{c['labels']} labels: {c['names']} room names, {c['numbers']} room numbers, {c['ignored']} "
+                f"ignored ({ign or 'none'}); {c['assigned']} assigned ({c['inside']} inside, {c['nearby']} "
+                f"nearby), {c['outside']} outside every area; {c['named_areas']} areas named, "
+                f"{c['numbered_areas']} numbered, {c['auto_ids']} with a generated id, {c['splits']} split, "
+                f"{c['conflicts']} with conflicting names, {c['duplicate_names']} duplicate names suffixed")
+
+
+# ------------------------------------------------------------------------------------------ assign
+def _key(name: str) -> str:
+    return " ".join(normalize_text(name).casefold().split())
+
+
+def auto_id(level: str, area_id: int) -> str:
+    """The stable generated id of an unnamed area: ``<level>-<area id>``."""
+    return f"{str(level).strip() or '1'}-{int(area_id)}"
+
+
+def assign_names(areas: List[Area], texts: Sequence[CadText], level="1", rules=None, progress=None,
+                 grid=None, labels=None, passages: Optional[List[Passage]] = None, split: bool = True,
+                 rho_max: float = RHO_MAX, d_max: float = D_MAX, inside_first: bool = True) -> NamesReport:
+    """Name, number and type ``areas`` (in place) from ``texts``; see the module doc. ``grid`` gives
+    the resolution of the split raster, ``labels`` (the label raster on ``grid``) is updated for split
+    areas, ``passages`` get the split cuts and follow the pieces. Never raises on odd texts."""
+    progress = ensure(progress)
+    rules = _resolve(rules)
+    report = NamesReport()
+    level = str(level).strip() or "1"
+    progress.step(0, "classifying texts")
+    labs = classify_labels(list(texts or []), rules)
+    records = [TextRecord(l.ids, l.text, l.x, l.y, l.layer, l.role, l.reason) for l in labs]
+    report.texts = records
+    areas_ok = [a for a in areas if a.polygon is not None and not a.polygon.is_empty and a.polygon.area > 0
+                and a.type != "structure"]
+    progress.step(15, "scoring texts against areas")
+    best_by_area: Dict[int, List[TextRecord]] = {}
+    if areas_ok:
+        polys = [a.polygon for a in areas_ok]
+        tree = STRtree(polys)
+        cents = [p.centroid for p in polys]
+        room = [r for r in records if r.role in ("name", "number")]
+        for n, r in enumerate(room):
+            if n % 200 == 0:
+                progress.step(15 + 35 * n / max(1, len(room)))
+            if not (math.isfinite(r.x) and math.isfinite(r.y)):
+                continue
+            p = Point(r.x, r.y)
+            best = (0.0, None, "")
+            for i in sorted(tree.query(p, predicate="dwithin", distance=d_max).tolist()):
+                s, how = score(r.x, r.y, polys[i], cents[i], rho_max=rho_max, d_max=d_max)
+                if inside_first and how == "inside":
+                    s += 1000.0  # a text inside an area is that area's (nearby scores only for texts outside)
+                if s > best[0]:
+                    best = (s, i, how)
+            if best[0] > 1000.0:
+                best = (best[0] - 1000.0, best[1], best[2])
+            if best[1] is not None:
+                a = areas_ok[best[1]]
+                r.area_id, r.score, r.match = a.id, round(best[0], 2), best[2]
+                best_by_area.setdefault(a.id, []).append(r)
+    progress.step(50, "naming areas")
+    by_id = {a.id: a for a in areas}
+    # ---- split areas holding several different names
+    if split:
+        for aid in sorted(best_by_area):
+            recs = best_by_area[aid]
+            names = {}
+            for r in recs:
+                if r.role == "name":
+                    names.setdefault(_key(r.text), r)
+            if len(names) < 2:
+                continue
+            a = by_id[aid]
+            if a.type in ("stairs", "elevator"):
+                continue
+            pieces = _split_area(a, recs, names, grid, areas, passages, labels)
+            if pieces:
+                report.splits.append((aid, [p.id for p in pieces]))
+                for p in pieces:
+                    by_id[p.id] = p
+                best_by_area.pop(aid)
+                for p in pieces:
+                    best_by_area[p.id] = [r for r in recs if r.area_id == p.id]
+                report.new_passages.extend(pieces[0].tags.pop("_new_passages", []))
+                progress.info(f"area {aid} held {len(names)} room names ({', '.join(r.text for r in names.values())}); "
+                              f"split along the narrowing between them into areas {[p.id for p in pieces]}")
+    # ---- names, refs, label fields
+    for a in areas:
+        if a.type == "structure":
+            continue
+        recs = best_by_area.get(a.id, [])
+        for k in LABEL_FIELDS:
+            a.tags.pop(k, None)
+        names = sorted([r for r in recs if r.role == "name"], key=lambda r: (-r.score, r.ids[0]))
+        nums = sorted([r for r in recs if r.role == "number"], key=lambda r: (-r.score, r.ids[0]))
+        distinct: List[TextRecord] = []
+        for r in names:
+            if all(_key(r.text) != _key(d.text) for d in distinct):
+                distinct.append(r)
+        a.name = a.name if (a.name and not recs and not _looks_auto(a.name)) else ""
+        a.ref = ""
+        if distinct:
+            a.name = distinct[0].text
+        if nums:
+            a.ref = nums[0].text
+            if not a.name:
+                a.name = nums[0].text
+        if recs:
+            a.tags["label_score"] = f"{max(r.score for r in recs):.1f}"
+            a.tags["label_texts"] = ";".join(str(i) for r in names + nums for i in r.ids)
+        if len(distinct) > 1:
+            a.tags["label_conflict"] = " | ".join(d.text for d in distinct[1:])
+            report.conflicts.append(a.id)
+            progress.warning(f"area {a.id} holds {len(distinct)} room names ({', '.join(d.text for d in distinct)}) "
+                             "and no narrowing separates them: named after the best-placed one, the others kept in "
+                             "label_conflict (split the area by hand, or check the walls around it)")
+        if a.name:
+            report.named += bool(distinct)
+            report.numbered += bool(a.ref)
+    # ---- duplicate names on the floor: suffix, never merge
+    groups: Dict[str, List[Area]] = {}
+    for a in areas:
+        if a.type != "structure" and a.name:
+            groups.setdefault(_key(a.name), []).append(a)
+    taken = {_key(a.name) for a in areas if a.name}
+    for key, grp in sorted(groups.items()):
+        if len(grp) < 2:
+            continue
+        grp.sort(key=lambda a: a.id)
+        report.duplicates[grp[0].name] = [a.id for a in grp]
+        base = grp[0].name
+        n = 0
+        for a in grp:
+            if a.ref and _key(a.ref) not in _key(a.name) and _key(f"{a.name} {a.ref}") not in taken:
+                a.name = f"{a.name} {a.ref}"
+            else:
+                while True:
+                    n += 1
+                    cand = f"{base} ({n})"
+                    if _key(cand) not in taken:
+                        break
+                a.name = cand
+            taken.add(_key(a.name))
+    # ---- generated ids for the rest
+    for a in areas:
+        if a.type == "structure" or a.name:
+            continue
+        cand = auto_id(level, a.id)
+        k = 1
+        while _key(cand) in taken:
+            k += 1
+            cand = f"{auto_id(level, a.id)}-{k}"
+        a.name = cand
+        taken.add(_key(cand))
+        report.auto += 1
+    progress.step(85, "typing areas")
+    _type_areas(areas, best_by_area, passages, rules, report)
+    progress.step(100, report.summary())
+    return report
+
+
+def _looks_auto(name: str) -> bool:
+    return bool(re.fullmatch(r"-?\w{1,6}-\d+(-\d+)?|L-?\w+-[ASP]\d+", name or ""))
+
+
+def _type_areas(areas, best_by_area, passages, rules: NameRules, report: NamesReport) -> None:
+    degree: Dict[int, int] = {}
+    for p in passages or []:
+        degree[p.from_id] = degree.get(p.from_id, 0) + 1
+        degree[p.to_id] = degree.get(p.to_id, 0) + 1
+    geo = dict({"min_elongation": 3.0, "max_width": 4.0, "min_degree": 3}, **rules.corridor_geometry)
+    for a in areas:
+        if a.type == "structure":
+            continue
+        for k in ("indoor", "room", "ref", "name"):
+            a.tags.pop(k, None)
+        named = bool(best_by_area.get(a.id))
+        entry = type_of_name(a.name, a.ref, rules) if named else None
+        if entry is not None and a.type not in ("stairs", "elevator"):
+            if entry["type"] != a.type:
+                report.typed[entry["type"]] = report.typed.get(entry["type"], 0) + 1
+            a.type = entry["type"]
+        elif entry is None and not named and a.type == "room" and _corridor_shaped(a, degree.get(a.id, 0), geo):
+            a.type = "corridor"
+            report.typed["corridor (geometry)"] = report.typed.get("corridor (geometry)", 0) + 1
+        # Simple Indoor Tagging
+        if a.type == "corridor":
+            indoor, room = "corridor", ""
+        elif a.type == "stairs":
+            indoor, room = "room", "stairs"
+        elif a.type == "elevator":
+            indoor, room = "room", "elevator"
+        else:
+            indoor = (entry or {}).get("indoor") or "room"
+            room = (entry or {}).get("room") or ""
+            if indoor == "corridor":
+                indoor = "area"
+        a.tags["indoor"] = indoor
+        if room:
+            a.tags["room"] = room
+        if a.ref:
+            a.tags["ref"] = a.ref
+
+
+def _corridor_shaped(a: Area, degree: int, geo: Dict[str, float]) -> bool:
+    if degree < geo["min_degree"]:
+        return False
+    rect = a.polygon.minimum_rotated_rectangle
+    xy = np.asarray(rect.exterior.coords)
+    if len(xy) < 4:
+        return False
+    e = np.hypot(*np.diff(xy[:3], axis=0).T)
+    length, width = max(e), min(e)
+    # the width that matters is the free width: area / length is robust to side niches
+    free_w = a.polygon.area / max(length, 1e-9)
+    return width > 0 and length / max(free_w, 1e-9) >= geo["min_elongation"] and free_w <= geo["max_width"]
+
+
+def osm_tags(area: Area) -> Dict[str, str]:
+    """The area's tags for the osmAG file: the label fields left out, a conflict as ``fixme``."""
+    tags = {k: v for k, v in (area.tags or {}).items() if k not in LABEL_FIELDS and not k.startswith("_")}
+    conflict = (area.tags or {}).get("label_conflict")
+    if conflict:
+        tags["fixme"] = f"several room names in one area: {area.name} | {conflict}"
+    return tags
+
+
+def for_osm(areas: Sequence[Area]) -> List[Area]:
+    """Copies of the areas with ``osm_tags`` (for writing osmAG without the layer-only fields)."""
+    from dataclasses import replace
+
+    return [replace(a, tags=osm_tags(a)) for a in areas]
+
+
+# ------------------------------------------------------------------------------------------ split
+def _split_area(a: Area, recs: List[TextRecord], names: Dict[str, TextRecord], grid, areas: List[Area],
+                passages: Optional[List[Passage]], labels) -> Optional[List[Area]]:
+    """Split area ``a`` between its different room names along straight cuts across the narrowings the
+    watershed of its clearance map finds between them. Returns the pieces (``a`` first, changed in
+    place; the others appended to ``areas``) or None when no narrowing separates the names."""
+    from scipy import ndimage
+    import cv2
+
+    poly = a.polygon
+    if poly.geom_type != "Polygon":
+        return None
+    res = float(grid.resolution) if grid is not None else 0.05
+    x0, y0, x1, y1 = poly.bounds
+    while (x1 - x0) * (y1 - y0) / (res * res) > 6e6:
+        res *= 1.5
+    pad = 3
+    cols = int(math.ceil((x1 - x0) / res)) + 2 * pad
+    rows = int(math.ceil((y1 - y0) / res)) + 2 * pad
+    ox, oy = x0 - pad * res, y1 + pad * res
+
+    def to_px(xy):
+        xy = np.asarray(xy, float)
+        return np.column_stack(((xy[:, 0] - ox) / res, (oy - xy[:, 1]) / res))
+
+    mask = np.zeros((rows, cols), np.uint8)
+    cv2.fillPoly(mask, [np.round(to_px(poly.exterior.coords) * 8).astype(np.int32)], 1, shift=3)
+    for hole in poly.interiors:
+        cv2.fillPoly(mask, [np.round(to_px(hole.coords) * 8).astype(np.int32)], 0, shift=3)
+    inside = mask.astype(bool)
+    if inside.sum() < 20:
+        return None
+    clearance = ndimage.distance_transform_edt(inside) * res
+    # seeds: one label per distinct name; every text of that name seeds it
+    keys = list(names)
+    markers = np.zeros((rows, cols), np.int16)
+    rr, cc = np.nonzero(inside)
+    for k, key in enumerate(keys, start=1):
+        for r in recs:
+            if r.role != "name" or _key(r.text) != key:
+                continue
+            c, rw = to_px([(r.x, r.y)])[0]
+            ci, ri = int(c), int(rw)
+            if not (0 <= ri < rows and 0 <= ci < cols and inside[ri, ci]):
+                j = int(np.argmin((rr - rw) ** 2 + (cc - c) ** 2))
+                ri, ci = int(rr[j]), int(cc[j])
+            if markers[ri, ci] not in (0, k):
+                return None  # two names on one pixel
+            markers[ri, ci] = k
+    cost = np.full((rows, cols), 65535, np.uint16)
+    cmax = max(float(clearance.max()), 1e-9)
+    cost[inside] = np.round(60000 * (1.0 - clearance[inside] / cmax)).astype(np.uint16)
+    reg = ndimage.watershed_ift(cost, markers.astype(np.int32))
+    reg[~inside] = 0
+    # widths and cuts between regions
+    width = {k: 2.0 * float(clearance[reg == k].max()) if (reg == k).any() else 0.0 for k in range(1, len(keys) + 1)}
+    cuts = []
+    for k1 in range(1, len(keys) + 1):
+        for k2 in range(k1 + 1, len(keys) + 1):
+            pts = _shared_edges(reg, k1, k2)
+            if len(pts) < 2:
+                continue
+            xy = np.column_stack((ox + pts[:, 0] * res, oy - pts[:, 1] * res))
+            e0, e1 = _farthest_pair(xy)
+            seg = _extend(LineString([e0, e1]), poly, res)
+            if seg is None:
+                continue
+            ratio = seg.length / max(min(width[k1], width[k2]), 1e-9)
+            cuts.append((ratio, seg, k1, k2))
+    cuts.sort(key=lambda c: c[0])
+    seed_pts = {k: [Point(r.x, r.y) for r in recs if r.role == "name" and _key(r.text) == keys[k - 1]]
+                for k in range(1, len(keys) + 1)}
+    pieces: List[Tuple[Polygon, set]] = [(poly, set(range(1, len(keys) + 1)))]
+    cut_lines = []
+    for ratio, seg, k1, k2 in cuts:
+        if ratio > NARROWING_RATIO:
+            continue
+        for n, (pp, ks) in enumerate(pieces):
+            if k1 in ks and k2 in ks:
+                parts = _cut(pp, seg, seed_pts, ks)
+                if parts is None:
+                    break
+                pieces[n:n + 1] = parts
+                cut_lines.append(seg)
+                break
+    if len(pieces) < 2 or any(len(ks) != 1 for _, ks in pieces):
+        return None if len(pieces) < 2 else _finish_partial(a, pieces, cut_lines, areas, passages, labels, grid,
+                                                            recs, seed_pts)
+    return _finish(a, pieces, cut_lines, areas, passages, labels, grid, recs, seed_pts)
+
+
+def _finish_partial(a, pieces, cut_lines, areas, passages, labels, grid, recs, seed_pts):
+    """Some names were separated, others not: keep the separations that worked."""
+    return _finish(a, pieces, cut_lines, areas, passages, labels, grid, recs, seed_pts)
+
+
+def _shared_edges(reg: np.ndarray, k1: int, k2: int) -> np.ndarray:
+    """Pixel-corner coordinates (col, row) of the midpoints of edges between regions k1 and k2."""
+    out = []
+    h = ((reg[:, :-1] == k1) & (reg[:, 1:] == k2)) | ((reg[:, :-1] == k2) & (reg[:, 1:] == k1))
+    r, c = np.nonzero(h)
+    out.append(np.column_stack((c + 1.0, r + 0.5)))
+    v = ((reg[:-1, :] == k1) & (reg[1:, :] == k2)) | ((reg[:-1, :] == k2) & (reg[1:, :] == k1))
+    r, c = np.nonzero(v)
+    out.append(np.column_stack((c + 0.5, r + 1.0)))
+    return np.concatenate(out) if out else np.zeros((0, 2))
+
+
+def _farthest_pair(xy: np.ndarray):
+    if len(xy) > 400:
+        try:
+            from scipy.spatial import ConvexHull
+
+            xy = xy[ConvexHull(xy).vertices]
+        except Exception:
+            xy = xy[:: max(1, len(xy) // 400)]
+    d = ((xy[:, None, :] - xy[None, :, :]) ** 2).sum(-1)
+    i, j = np.unravel_index(int(np.argmax(d)), d.shape)
+    return tuple(xy[i]), tuple(xy[j])
+
+
+def _extend(seg: LineString, poly: Polygon, res: float) -> Optional[LineString]:
+    """The straight line through ``seg``, from boundary to boundary of ``poly`` around it."""
+    (ax, ay), (bx, by) = seg.coords
+    L = math.hypot(bx - ax, by - ay)
+    if L < 1e-9:
+        return None
+    ux, uy = (bx - ax) / L, (by - ay) / L
+    ext = 4 * res + 0.05 * L
+    line = LineString([(ax - ux * ext, ay - uy * ext), (bx + ux * ext, by + uy * ext)])
+    return line
+
+
+def _cut(pp: Polygon, seg: LineString, seed_pts: Dict[int, List[Point]], ks: set):
+    """Split polygon ``pp`` with ``seg``; each part must hold the seeds of the names in ``ks`` on one
+    side only. Parts without a seed join the neighbour sharing the longest border."""
+    try:
+        parts = [g for g in shp_split(pp, seg).geoms if g.area > 0]
+    except Exception:
+        return None
+    if len(parts) < 2:
+        return None
+    owner = []
+    for g in parts:
+        mine = {k for k in ks if any(g.buffer(1e-6).covers(p) for p in seed_pts[k])}
+        owner.append(mine)
+    # seeds outside the polygon (nearby texts): nearest part
+    for k in ks:
+        if not any(k in o for o in owner):
+            d = [min(g.distance(p) for p in seed_pts[k]) for g in parts]
+            owner[int(np.argmin(d))].add(k)
+    seeded = [i for i, o in enumerate(owner) if o]
+    if len(seeded) < 2:
+        return None
+    if any(len(owner[i] & owner[j]) for i in seeded for j in seeded if i < j):
+        return None
+    groups = {i: [parts[i]] for i in seeded}
+    for i, g in enumerate(parts):
+        if owner[i]:
+            continue
+        best = max(seeded, key=lambda j: g.intersection(parts[j]).length if g.touches(parts[j]) else -1)
+        groups[best].append(g)
+    from shapely.ops import unary_union
+
+    out = []
+    for i in seeded:
+        u = unary_union(groups[i])
+        if u.geom_type != "Polygon":
+            u = max(getattr(u, "geoms", [u]), key=lambda g: g.area)
+        out.append((u, owner[i]))
+    return out
+
+
+def _finish(a: Area, pieces, cut_lines, areas: List[Area], passages, labels, grid, recs, seed_pts):
+    from dataclasses import replace
+
+    orig = a.polygon
+    # the piece holding the best-scored name keeps the area's id
+    best_rec = max((r for r in recs if r.role == "name"), key=lambda r: r.score)
+    order = sorted(range(len(pieces)), key=lambda i: 0 if pieces[i][0].buffer(1e-6).covers(Point(best_rec.x, best_rec.y)) else 1)
+    pieces = [pieces[i] for i in order]
+    next_id = max(x.id for x in areas) + 1
+    out = []
+    for n, (g, _) in enumerate(pieces):
+        if n == 0:
+            a.polygon = g
+            out.append(a)
+        else:
+            b = replace(a, id=next_id, polygon=g, name="", ref="", tags=dict(a.tags))
+            next_id += 1
+            areas.append(b)
+            out.append(b)
+    # texts follow the piece they lie in (nearby texts: the nearest piece)
+    for r in recs:
+        p = Point(r.x, r.y)
+        r.area_id = min(out, key=lambda b: b.polygon.distance(p)).id
+    new_pass = []
+    if passages is not None:
+        for p in passages:
+            for end in ("from_id", "to_id"):
+                if getattr(p, end) == a.id:
+                    mid = p.line.interpolate(0.5, normalized=True)
+                    setattr(p, end, min(out, key=lambda b: b.polygon.distance(mid)).id)
+        pid = max([p.id for p in passages] + [0]) + 1
+        for seg in cut_lines:
+            inter = seg.intersection(orig)
+            if inter.is_empty:
+                continue
+            if inter.geom_type != "LineString":
+                inter = max(getattr(inter, "geoms", []), key=lambda g: g.length, default=None)
+                if inter is None or inter.geom_type != "LineString":
+                    continue
+            c0, c1 = inter.coords[0], inter.coords[-1]
+            line = LineString([c0, c1])
+            mid = line.interpolate(0.5, normalized=True)
+            near = sorted(out, key=lambda b: b.polygon.distance(mid))[:2]
+            if len(near) < 2:
+                continue
+            passages.append(Passage(id=pid, from_id=near[0].id, to_id=near[1].id, line=line))
+            new_pass.append(pid)
+            pid += 1
+    if labels is not None and grid is not None:
+        _relabel(labels, grid, a.id, out)
+    a.tags["_new_passages"] = new_pass
+    return out
+
+
+def _relabel(labels: np.ndarray, grid, old_id: int, pieces: List[Area]) -> None:
+    import cv2
+
+    rows, cols = labels.shape
+    sel = labels == old_id
+    if not sel.any():
+        return
+    for b in pieces[1:]:
+        m = np.zeros((rows, cols), np.uint8)
+        xs, ys = np.asarray(b.polygon.exterior.coords).T
+        c, r = grid.world_to_pixel(xs, ys)
+        cv2.fillPoly(m, [np.round(np.column_stack((c, r)) * 8).astype(np.int32)], 1, shift=3)
+        labels[sel & m.astype(bool)] = b.id
+
+
+__all__ = ["NameRules", "load_name_rules", "default_name_rules", "normalize_text", "strip_xref", "classify_text",
+           "classify_labels", "group_lines", "room_name_points", "score", "assign_names", "NamesReport",
+           "TextRecord", "type_of_name", "auto_id", "osm_tags", "for_osm", "LABEL_FIELDS", "RHO_MAX", "D_MAX"]
