@@ -426,6 +426,39 @@ def room_name_points(texts: Sequence[CadText], rules=None) -> List[Tuple[float, 
     return [(lab.x, lab.y, lab.text) for lab in classify_labels(texts, rules) if lab.role in ("name", "number")]
 
 
+PROTECTED_TYPE = "room:labelled"  # temporary type that keeps refinement from merging a labelled small room
+
+
+def protect_labelled_areas(areas: Sequence[Area], texts: Sequence[CadText], min_area: float, rules=None,
+                           smallest: float = 1.0) -> Dict[int, str]:
+    """Before refinement: areas smaller than ``min_area`` (but at least ``smallest`` m²) that hold a room
+    name or number get the temporary type ``PROTECTED_TYPE`` so that the small-area merge keeps them (a
+    labelled WC or store room is a room, however small). Returns {area id: original type} for
+    ``restore_types``."""
+    pts = room_name_points(texts, rules)
+    if not pts:
+        return {}
+    small = [a for a in areas if smallest <= a.polygon.area < min_area and a.type in ("room", "corridor")]
+    if not small:
+        return {}
+    tree = STRtree([a.polygon for a in small])
+    saved: Dict[int, str] = {}
+    for x, y, _ in pts:
+        for i in tree.query(Point(x, y), predicate="intersects").tolist():
+            a = small[i]
+            if a.id not in saved:
+                saved[a.id] = a.type
+                a.type = PROTECTED_TYPE
+    return saved
+
+
+def restore_types(saved: Dict[int, str], *area_lists: Sequence[Area]) -> None:
+    for areas in area_lists:
+        for a in areas:
+            if a.type == PROTECTED_TYPE:
+                a.type = saved.get(a.id, "room")
+
+
 # ------------------------------------------------------------------------------------------ score
 def score(px: float, py: float, polygon, centroid=None, area: Optional[float] = None,
           rho_max: float = RHO_MAX, d_max: float = D_MAX) -> Tuple[float, str]:
@@ -475,6 +508,8 @@ class NamesReport:
     duplicates: Dict[str, List[int]] = field(default_factory=dict)  # name -> area ids suffixed
     typed: Dict[str, int] = field(default_factory=dict)  # type -> count set from names / geometry
     new_passages: List[int] = field(default_factory=list)
+    base_names: Dict[int, str] = field(default_factory=dict)  # area id -> name from the drawing, before suffixes
+    name_record: Dict[int, "TextRecord"] = field(default_factory=dict)  # area id -> the text it is named after
 
     def counts(self) -> Dict[str, object]:
         ignored: Dict[str, int] = {}
@@ -499,6 +534,55 @@ class NamesReport:
                 f"nearby), {c['outside']} outside every area; {c['named_areas']} areas named, "
                 f"{c['numbered_areas']} numbered, {c['auto_ids']} with a generated id, {c['splits']} split, "
                 f"{c['conflicts']} with conflicting names, {c['duplicate_names']} duplicate names suffixed")
+
+
+def floor_figures(areas: Sequence[Area], passages: Sequence[Passage], report: Optional[NamesReport]) -> Dict[str, object]:
+    """Quality figures of one converted floor (``make evaluate-cad``): room-name texts inside an area and
+    naming an area of their own (%), the largest component's share of the floor area (%), semantic
+    accuracy (named areas whose name text lies inside them, %), counts."""
+    rooms = [a for a in areas if a.type != "structure"]
+    parent = {a.id: a.id for a in rooms}
+
+    def find(i):
+        while parent[i] != i:
+            parent[i] = parent[parent[i]]
+            i = parent[i]
+        return i
+
+    for p in passages:
+        if p.from_id in parent and p.to_id in parent:
+            parent[find(p.from_id)] = find(p.to_id)
+    comp: Dict[int, float] = {}
+    for a in rooms:
+        comp[find(a.id)] = comp.get(find(a.id), 0.0) + a.area
+    total = sum(comp.values())
+    out: Dict[str, object] = {"areas": len(rooms), "passages": len(passages), "components": len(comp),
+                              "largest_component_pct": 100.0 * max(comp.values()) / total if total else 0.0,
+                              "stairs": sum(a.type == "stairs" for a in rooms),
+                              "elevators": sum(a.type == "elevator" for a in rooms),
+                              "corridors": sum(a.type == "corridor" for a in rooms)}
+    if report is None:
+        return out
+    names = [r for r in report.texts if r.role == "name"]
+    conflict = {a.id for a in rooms if (a.tags or {}).get("label_conflict")}
+    own = 0
+    for r in names:
+        if r.area_id is None or r.area_id in conflict:
+            continue
+        if _key(report.base_names.get(r.area_id, "")) == _key(r.text):
+            own += 1
+    named = [aid for aid, rec in report.name_record.items() if rec.role == "name"]
+    correct = sum(report.name_record[aid].match == "inside" for aid in named)
+    c = report.counts()
+    out.update({"room_texts": len(names), "numbers": c["numbers"], "ignored": c["ignored"],
+                "ignored_by_reason": c["ignored_by_reason"],
+                "inside_pct": 100.0 * sum(r.match == "inside" for r in names) / len(names) if names else None,
+                "own_area_pct": 100.0 * own / len(names) if names else None,
+                "named_areas": len(named), "conflicts": len(conflict & set(named)),
+                "conflict_pct": 100.0 * len(conflict & set(named)) / len(named) if named else None,
+                "semantic_accuracy_pct": 100.0 * correct / len(named) if named else None,
+                "splits": len(report.splits), "outside": c["outside"], "own_texts": own})
+    return out
 
 
 # ------------------------------------------------------------------------------------------ assign
@@ -559,10 +643,7 @@ def assign_names(areas: List[Area], texts: Sequence[CadText], level="1", rules=N
     if split:
         for aid in sorted(best_by_area):
             recs = best_by_area[aid]
-            names = {}
-            for r in recs:
-                if r.role == "name":
-                    names.setdefault(_key(r.text), r)
+            names = {_key(r.text): r for r in reversed(_competing(recs))}
             if len(names) < 2:
                 continue
             a = by_id[aid]
@@ -586,12 +667,9 @@ def assign_names(areas: List[Area], texts: Sequence[CadText], level="1", rules=N
         recs = best_by_area.get(a.id, [])
         for k in LABEL_FIELDS:
             a.tags.pop(k, None)
-        names = sorted([r for r in recs if r.role == "name"], key=lambda r: (-r.score, r.ids[0]))
+        names = sorted([r for r in recs if r.role == "name"], key=lambda r: (not _strong(r), -r.score, r.ids[0]))
         nums = sorted([r for r in recs if r.role == "number"], key=lambda r: (-r.score, r.ids[0]))
-        distinct: List[TextRecord] = []
-        for r in names:
-            if all(_key(r.text) != _key(d.text) for d in distinct):
-                distinct.append(r)
+        distinct = _competing(recs)
         a.name = a.name if (a.name and not recs and not _looks_auto(a.name)) else ""
         a.ref = ""
         if distinct:
@@ -609,6 +687,12 @@ def assign_names(areas: List[Area], texts: Sequence[CadText], level="1", rules=N
             progress.warning(f"area {a.id} holds {len(distinct)} room names ({', '.join(d.text for d in distinct)}) "
                              "and no narrowing separates them: named after the best-placed one, the others kept in "
                              "label_conflict (split the area by hand, or check the walls around it)")
+        if distinct:
+            report.base_names[a.id] = a.name
+            report.name_record[a.id] = distinct[0]
+        elif nums:
+            report.base_names[a.id] = a.name
+            report.name_record[a.id] = nums[0]
         if a.name:
             report.named += bool(distinct)
             report.numbered += bool(a.ref)
@@ -652,6 +736,25 @@ def assign_names(areas: List[Area], texts: Sequence[CadText], level="1", rules=N
     _type_areas(areas, best_by_area, passages, rules, report)
     progress.step(100, report.summary())
     return report
+
+
+def _strong(r: TextRecord) -> bool:
+    """A name backed by more than its shortness: a room-name layer, block or tag, or a room keyword."""
+    return r.reason != "short text"
+
+
+def _competing(recs: Sequence[TextRecord]) -> List[TextRecord]:
+    """The distinct room names of an area that compete for it, best first: the strong names when there
+    is one (a keyword-less short text beside 'Office' labels a thing in it, e.g. 'copy', 'coffee'),
+    else the short texts."""
+    names = sorted([r for r in recs if r.role == "name"], key=lambda r: (not _strong(r), -r.score, r.ids[0]))
+    strong = [r for r in names if _strong(r)]
+    pool = strong or names
+    out: List[TextRecord] = []
+    for r in pool:
+        if all(_key(r.text) != _key(d.text) for d in out):
+            out.append(r)
+    return out
 
 
 def _looks_auto(name: str) -> bool:
@@ -730,11 +833,19 @@ def for_osm(areas: Sequence[Area]) -> List[Area]:
 # ------------------------------------------------------------------------------------------ split
 def _split_area(a: Area, recs: List[TextRecord], names: Dict[str, TextRecord], grid, areas: List[Area],
                 passages: Optional[List[Passage]], labels) -> Optional[List[Area]]:
-    """Split area ``a`` between its different room names along straight cuts across the narrowings the
-    watershed of its clearance map finds between them. Returns the pieces (``a`` first, changed in
-    place; the others appended to ``areas``) or None when no narrowing separates the names."""
+    """Split area ``a`` between its different room names at the narrowings of its clearance map.
+
+    The clearance (distance to the area's border) is thresholded at growing half-widths t (0.2 m up to
+    half the widest door, 1.4 m): the first t at which two names fall into different cores is where
+    the narrowings are. Every core bigger than 2 m² (named or not: a corridor joining the rooms becomes
+    its own area) seeds a watershed of the clearance inside the area; a split is kept only when the
+    opening (2 t) is at most NARROWING_RATIO of the width of every piece. Returns the pieces (``a``
+    first, changed in place, the others appended to ``areas``) or None (no narrowing: a conflict)."""
     from scipy import ndimage
     import cv2
+
+    from .model import OccupancyGrid
+    from .segmentation import label_polygons
 
     poly = a.polygon
     if poly.geom_type != "Polygon":
@@ -760,154 +871,93 @@ def _split_area(a: Area, recs: List[TextRecord], names: Dict[str, TextRecord], g
     if inside.sum() < 20:
         return None
     clearance = ndimage.distance_transform_edt(inside) * res
-    # seeds: one label per distinct name; every text of that name seeds it
     keys = list(names)
-    markers = np.zeros((rows, cols), np.int16)
+    seeds: Dict[str, List[Tuple[int, int]]] = {k: [] for k in keys}
     rr, cc = np.nonzero(inside)
-    for k, key in enumerate(keys, start=1):
-        for r in recs:
-            if r.role != "name" or _key(r.text) != key:
-                continue
-            c, rw = to_px([(r.x, r.y)])[0]
-            ci, ri = int(c), int(rw)
-            if not (0 <= ri < rows and 0 <= ci < cols and inside[ri, ci]):
-                j = int(np.argmin((rr - rw) ** 2 + (cc - c) ** 2))
-                ri, ci = int(rr[j]), int(cc[j])
-            if markers[ri, ci] not in (0, k):
-                return None  # two names on one pixel
-            markers[ri, ci] = k
+    for r in recs:
+        k = _key(r.text)
+        if r.role != "name" or k not in seeds:
+            continue
+        c, rw = to_px([(r.x, r.y)])[0]
+        ci, ri = int(c), int(rw)
+        if not (0 <= ri < rows and 0 <= ci < cols and inside[ri, ci]):
+            j = int(np.argmin((rr - rw) ** 2 + (cc - c) ** 2))
+            ri, ci = int(rr[j]), int(cc[j])
+        seeds[k].append((ri, ci))
+    min_core_px = 2.0 / (res * res)
+    found = None
+    for t in np.arange(0.2, 1.41, 0.1):
+        core = clearance > t
+        comp, n = ndimage.label(core)
+        if n < 2:
+            continue
+        # a seed outside the core belongs to the core nearest to it
+        _, (ir, ic) = ndimage.distance_transform_edt(~core, return_indices=True)
+        owner = {}
+        for k in keys:
+            cs = {int(comp[ir[p], ic[p]]) for p in seeds[k]}
+            owner[k] = min(cs)
+        if len(set(owner.values())) >= 2:
+            found = (t, comp, n, owner)
+            break
+    if found is None:
+        return None
+    t, comp, n, owner = found
+    sizes = ndimage.sum(np.ones_like(comp), comp, index=np.arange(1, n + 1))
+    keep = {i + 1 for i, sz in enumerate(sizes) if sz >= min_core_px} | set(owner.values())
+    markers = np.where(np.isin(comp, list(keep)), comp, 0).astype(np.int32)
     cost = np.full((rows, cols), 65535, np.uint16)
     cmax = max(float(clearance.max()), 1e-9)
     cost[inside] = np.round(60000 * (1.0 - clearance[inside] / cmax)).astype(np.uint16)
-    reg = ndimage.watershed_ift(cost, markers.astype(np.int32))
+    reg = ndimage.watershed_ift(cost, markers)
     reg[~inside] = 0
-    # widths and cuts between regions
-    width = {k: 2.0 * float(clearance[reg == k].max()) if (reg == k).any() else 0.0 for k in range(1, len(keys) + 1)}
-    cuts = []
-    for k1 in range(1, len(keys) + 1):
-        for k2 in range(k1 + 1, len(keys) + 1):
-            pts = _shared_edges(reg, k1, k2)
-            if len(pts) < 2:
-                continue
-            xy = np.column_stack((ox + pts[:, 0] * res, oy - pts[:, 1] * res))
-            e0, e1 = _farthest_pair(xy)
-            seg = _extend(LineString([e0, e1]), poly, res)
-            if seg is None:
-                continue
-            ratio = seg.length / max(min(width[k1], width[k2]), 1e-9)
-            cuts.append((ratio, seg, k1, k2))
-    cuts.sort(key=lambda c: c[0])
-    seed_pts = {k: [Point(r.x, r.y) for r in recs if r.role == "name" and _key(r.text) == keys[k - 1]]
-                for k in range(1, len(keys) + 1)}
-    pieces: List[Tuple[Polygon, set]] = [(poly, set(range(1, len(keys) + 1)))]
-    cut_lines = []
-    for ratio, seg, k1, k2 in cuts:
-        if ratio > NARROWING_RATIO:
+    present = [k for k in sorted(keep) if (reg == k).any()]
+    if len(present) < 2:
+        return None
+    for k in present:  # the opening must be clearly narrower than every piece
+        if 2 * t > NARROWING_RATIO * 2.0 * float(clearance[reg == k].max()):
+            return None
+    # cells tiling the window: every pixel takes the region of the nearest area pixel
+    _, (ir, ic) = ndimage.distance_transform_edt(reg == 0, return_indices=True)
+    cells = reg[ir, ic].astype(np.int32)
+    cell_polys = label_polygons(cells, OccupancyGrid(cells, ox, oy, res))
+    pieces = []
+    for k in present:
+        cp = cell_polys.get(k)
+        if cp is None:
+            return None
+        g = poly.intersection(cp)
+        if g.is_empty:
             continue
-        for n, (pp, ks) in enumerate(pieces):
-            if k1 in ks and k2 in ks:
-                parts = _cut(pp, seg, seed_pts, ks)
-                if parts is None:
-                    break
-                pieces[n:n + 1] = parts
-                cut_lines.append(seg)
-                break
-    if len(pieces) < 2 or any(len(ks) != 1 for _, ks in pieces):
-        return None if len(pieces) < 2 else _finish_partial(a, pieces, cut_lines, areas, passages, labels, grid,
-                                                            recs, seed_pts)
-    return _finish(a, pieces, cut_lines, areas, passages, labels, grid, recs, seed_pts)
-
-
-def _finish_partial(a, pieces, cut_lines, areas, passages, labels, grid, recs, seed_pts):
-    """Some names were separated, others not: keep the separations that worked."""
-    return _finish(a, pieces, cut_lines, areas, passages, labels, grid, recs, seed_pts)
-
-
-def _shared_edges(reg: np.ndarray, k1: int, k2: int) -> np.ndarray:
-    """Pixel-corner coordinates (col, row) of the midpoints of edges between regions k1 and k2."""
-    out = []
-    h = ((reg[:, :-1] == k1) & (reg[:, 1:] == k2)) | ((reg[:, :-1] == k2) & (reg[:, 1:] == k1))
-    r, c = np.nonzero(h)
-    out.append(np.column_stack((c + 1.0, r + 0.5)))
-    v = ((reg[:-1, :] == k1) & (reg[1:, :] == k2)) | ((reg[:-1, :] == k2) & (reg[1:, :] == k1))
-    r, c = np.nonzero(v)
-    out.append(np.column_stack((c + 0.5, r + 1.0)))
-    return np.concatenate(out) if out else np.zeros((0, 2))
-
-
-def _farthest_pair(xy: np.ndarray):
-    if len(xy) > 400:
-        try:
-            from scipy.spatial import ConvexHull
-
-            xy = xy[ConvexHull(xy).vertices]
-        except Exception:
-            xy = xy[:: max(1, len(xy) // 400)]
-    d = ((xy[:, None, :] - xy[None, :, :]) ** 2).sum(-1)
-    i, j = np.unravel_index(int(np.argmax(d)), d.shape)
-    return tuple(xy[i]), tuple(xy[j])
-
-
-def _extend(seg: LineString, poly: Polygon, res: float) -> Optional[LineString]:
-    """The straight line through ``seg``, from boundary to boundary of ``poly`` around it."""
-    (ax, ay), (bx, by) = seg.coords
-    L = math.hypot(bx - ax, by - ay)
-    if L < 1e-9:
+        if g.geom_type != "Polygon":
+            parts = [p for p in getattr(g, "geoms", []) if p.geom_type == "Polygon" and p.area > 0]
+            if not parts:
+                continue
+            g = max(parts, key=lambda p: p.area)
+        pieces.append((g, {kk for kk, o in owner.items() if o == k}))
+    if len(pieces) < 2 or sum(1 for _, ks in pieces if ks) < 2:
         return None
-    ux, uy = (bx - ax) / L, (by - ay) / L
-    ext = 4 * res + 0.05 * L
-    line = LineString([(ax - ux * ext, ay - uy * ext), (bx + ux * ext, by + uy * ext)])
-    return line
-
-
-def _cut(pp: Polygon, seg: LineString, seed_pts: Dict[int, List[Point]], ks: set):
-    """Split polygon ``pp`` with ``seg``; each part must hold the seeds of the names in ``ks`` on one
-    side only. Parts without a seed join the neighbour sharing the longest border."""
-    try:
-        parts = [g for g in shp_split(pp, seg).geoms if g.area > 0]
-    except Exception:
-        return None
-    if len(parts) < 2:
-        return None
-    owner = []
-    for g in parts:
-        mine = {k for k in ks if any(g.buffer(1e-6).covers(p) for p in seed_pts[k])}
-        owner.append(mine)
-    # seeds outside the polygon (nearby texts): nearest part
-    for k in ks:
-        if not any(k in o for o in owner):
-            d = [min(g.distance(p) for p in seed_pts[k]) for g in parts]
-            owner[int(np.argmin(d))].add(k)
-    seeded = [i for i, o in enumerate(owner) if o]
-    if len(seeded) < 2:
-        return None
-    if any(len(owner[i] & owner[j]) for i in seeded for j in seeded if i < j):
-        return None
-    groups = {i: [parts[i]] for i in seeded}
-    for i, g in enumerate(parts):
-        if owner[i]:
-            continue
-        best = max(seeded, key=lambda j: g.intersection(parts[j]).length if g.touches(parts[j]) else -1)
-        groups[best].append(g)
+    # what the intersections left over (slivers) joins the piece it touches most
     from shapely.ops import unary_union
 
-    out = []
-    for i in seeded:
-        u = unary_union(groups[i])
-        if u.geom_type != "Polygon":
-            u = max(getattr(u, "geoms", [u]), key=lambda g: g.area)
-        out.append((u, owner[i]))
-    return out
+    rest = poly.difference(unary_union([g for g, _ in pieces]))
+    for frag in getattr(rest, "geoms", [rest]):
+        if frag.is_empty or frag.area <= 0:
+            continue
+        j = max(range(len(pieces)), key=lambda i: pieces[i][0].buffer(1e-6).intersection(frag).area)
+        merged = unary_union([pieces[j][0], frag])
+        if merged.geom_type == "Polygon":
+            pieces[j] = (merged, pieces[j][1])
+    return _finish(a, pieces, areas, passages, labels, grid, recs, t)
 
 
-def _finish(a: Area, pieces, cut_lines, areas: List[Area], passages, labels, grid, recs, seed_pts):
+def _finish(a: Area, pieces, areas: List[Area], passages, labels, grid, recs, t: float):
     from dataclasses import replace
 
-    orig = a.polygon
-    # the piece holding the best-scored name keeps the area's id
-    best_rec = max((r for r in recs if r.role == "name"), key=lambda r: r.score)
-    order = sorted(range(len(pieces)), key=lambda i: 0 if pieces[i][0].buffer(1e-6).covers(Point(best_rec.x, best_rec.y)) else 1)
-    pieces = [pieces[i] for i in order]
+    # the piece holding the best-ranked name keeps the area's id; unnamed pieces (corridors) come last
+    best_rec = _competing(recs)[0]
+    bk = _key(best_rec.text)
+    pieces.sort(key=lambda pk: (0 if bk in pk[1] else 1 if pk[1] else 2))
     next_id = max(x.id for x in areas) + 1
     out = []
     for n, (g, _) in enumerate(pieces):
@@ -915,7 +965,8 @@ def _finish(a: Area, pieces, cut_lines, areas: List[Area], passages, labels, gri
             a.polygon = g
             out.append(a)
         else:
-            b = replace(a, id=next_id, polygon=g, name="", ref="", tags=dict(a.tags))
+            b = replace(a, id=next_id, polygon=g, name="", ref="", tags=dict(a.tags),
+                        max_clearance=0.0)
             next_id += 1
             areas.append(b)
             out.append(b)
@@ -931,23 +982,22 @@ def _finish(a: Area, pieces, cut_lines, areas: List[Area], passages, labels, gri
                     mid = p.line.interpolate(0.5, normalized=True)
                     setattr(p, end, min(out, key=lambda b: b.polygon.distance(mid)).id)
         pid = max([p.id for p in passages] + [0]) + 1
-        for seg in cut_lines:
-            inter = seg.intersection(orig)
-            if inter.is_empty:
-                continue
-            if inter.geom_type != "LineString":
-                inter = max(getattr(inter, "geoms", []), key=lambda g: g.length, default=None)
-                if inter is None or inter.geom_type != "LineString":
+        from shapely.ops import linemerge
+
+        for i in range(len(out)):
+            for j in range(i + 1, len(out)):
+                shared = out[i].polygon.boundary.intersection(out[j].polygon.boundary)
+                lines = [g for g in getattr(shared, "geoms", [shared]) if g.geom_type == "LineString" and g.length > 0]
+                if not lines:
                     continue
-            c0, c1 = inter.coords[0], inter.coords[-1]
-            line = LineString([c0, c1])
-            mid = line.interpolate(0.5, normalized=True)
-            near = sorted(out, key=lambda b: b.polygon.distance(mid))[:2]
-            if len(near) < 2:
-                continue
-            passages.append(Passage(id=pid, from_id=near[0].id, to_id=near[1].id, line=line))
-            new_pass.append(pid)
-            pid += 1
+                merged = linemerge(lines)
+                for ln in getattr(merged, "geoms", [merged]):
+                    if ln.length < 0.3:
+                        continue
+                    passages.append(Passage(id=pid, from_id=out[i].id, to_id=out[j].id,
+                                            line=LineString([ln.coords[0], ln.coords[-1]])))
+                    new_pass.append(pid)
+                    pid += 1
     if labels is not None and grid is not None:
         _relabel(labels, grid, a.id, out)
     a.tags["_new_passages"] = new_pass
@@ -971,4 +1021,4 @@ def _relabel(labels: np.ndarray, grid, old_id: int, pieces: List[Area]) -> None:
 
 __all__ = ["NameRules", "load_name_rules", "default_name_rules", "normalize_text", "strip_xref", "classify_text",
            "classify_labels", "group_lines", "room_name_points", "score", "assign_names", "NamesReport",
-           "TextRecord", "type_of_name", "auto_id", "osm_tags", "for_osm", "LABEL_FIELDS", "RHO_MAX", "D_MAX"]
+           "TextRecord", "type_of_name", "floor_figures", "protect_labelled_areas", "restore_types", "auto_id", "osm_tags", "for_osm", "LABEL_FIELDS", "RHO_MAX", "D_MAX"]
