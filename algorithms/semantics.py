@@ -108,7 +108,7 @@ def _layer_match(words: Sequence[str], name: str) -> Optional[str]:
         if len(w) <= 3 and w.isascii() and w.isalnum():
             if tokens is None:
                 tokens = set(re.split(r"[^0-9a-z\u0080-\uffff]+", name))
-            if w in tokens:
+            if any(tok.startswith(w) for tok in tokens):
                 return w
         elif w in name:
             return w
@@ -192,6 +192,8 @@ def normalize_text(text) -> str:
     if "%%" in s:
         for k, v in _PERCENT_CODES.items():
             s = re.sub(re.escape(k), v, s, flags=re.IGNORECASE)
+    if "\x1b" in s:
+        s = re.sub(r"\x1b\[[0-9;?]*[A-Za-z]|\x1b[@-_]", " ", s)  # terminal escape sequences
     s = unicodedata.normalize("NFKC", s)
     s = "".join(ch if unicodedata.category(ch)[0] != "C" else " " for ch in s)
     return " ".join(s.split())
@@ -344,7 +346,10 @@ def _est_width(s: str, h: float) -> float:
     return h * (0.65 * (len(s) - wide) + 1.0 * wide)
 
 
-def group_lines(texts: Sequence[CadText]) -> List[Label]:
+_NO_JOIN = ("elevation", "area", "dimension", "axis", "door/window code", "scale", "stair arrow", "empty")
+
+
+def group_lines(texts: Sequence[CadText], rules=None) -> List[Label]:
     """Join the lines of multi-line labels drawn as separate TEXTs: same layer, height (+-15 %) and
     rotation, the next line 0.5-2.7 heights below the previous one and overlapping it horizontally.
     Each text belongs to at most one label; ATTRIBs and MTEXTs stay alone (they carry their own lines)."""
@@ -355,8 +360,12 @@ def group_lines(texts: Sequence[CadText]) -> List[Label]:
         lab = Label([_text_id(t, k)], s, float(t.x), float(t.y), float(t.height or 0.0), t.layer or "",
                     getattr(t, "block", "") or "", getattr(t, "tag", "") or "")
         labels.append(lab)
-        if t.entity == "TEXT" and s and t.height and t.height > 0 and abs(((t.rotation or 0) + 1) % 180 - 1) < 1:
-            cand.append(len(labels) - 1)
+        if t.entity == "TEXT" and s and t.height and t.height > 0 and abs(((t.rotation or 0) + 1) % 180 - 1) < 1 \
+                and math.isfinite(lab.x) and math.isfinite(lab.y):
+            role, reason = classify_text(s, rules, layer=lab.layer, block=lab.block, tag=lab.tag)
+            # numbers, elevations, areas... are lines of their own: "Office" over "101" is name + number
+            if role != "number" and reason.split(" (")[0] not in _NO_JOIN:
+                cand.append(len(labels) - 1)
     if len(cand) < 2:
         return labels
     # sort candidates top to bottom; link each line to the nearest line right above it
@@ -414,7 +423,7 @@ def group_lines(texts: Sequence[CadText]) -> List[Label]:
 
 def classify_labels(texts: Sequence[CadText], rules=None) -> List[Label]:
     rules = _resolve(rules)
-    labels = group_lines(texts)
+    labels = group_lines(texts, rules)
     for lab in labels:
         lab.role, lab.reason = classify_text(lab.text, rules, layer=lab.layer, block=lab.block, tag=lab.tag)
     return labels
