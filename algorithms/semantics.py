@@ -79,6 +79,9 @@ class NameRules:
     max_name_chars: int = 48
     corridor_geometry: Dict[str, float] = field(default_factory=dict)
     source: str = ""
+    callout: Optional["re.Pattern"] = None  # "E1-ST-01详见建施(...)": the code a detail reference names
+    callout_tail: Optional["re.Pattern"] = None  # "卫生间详见建施(...)": the reference after a name
+    weak_name_layers: List[str] = field(default_factory=list)  # generic text layers: names likely, not sure
 
     def __post_init__(self):
         # keyword -> (type entry) sorted longest first: the longest keyword found in a name wins
@@ -133,6 +136,8 @@ def load_name_rules(path: Optional[str] = None) -> NameRules:
         return [normalize_text(w).casefold() for w in data.get(key, []) if str(w).strip()]
 
     try:
+        if data.get("callout"):
+            re.compile(data["callout"])
         ignore_layers = [(reason, [normalize_text(w).casefold() for w in ws])
                          for reason, ws in (data.get("ignore_layers") or {}).items()]
         pats = [(reason, re.compile(p, re.IGNORECASE)) for reason, p in data.get("ignore_patterns", [])]
@@ -149,7 +154,10 @@ def load_name_rules(path: Optional[str] = None) -> NameRules:
                      ignore_layers=ignore_layers, ignore_patterns=pats, number_patterns=nums, types=types,
                      code_types=codes, max_name_words=int(data.get("max_name_words", 7)),
                      max_name_chars=int(data.get("max_name_chars", 48)),
-                     corridor_geometry=dict(data.get("corridor_geometry") or {}), source=src)
+                     corridor_geometry=dict(data.get("corridor_geometry") or {}), source=src,
+                     callout=re.compile(data["callout"], re.IGNORECASE) if data.get("callout") else None,
+                     callout_tail=re.compile(data["callout_tail"], re.IGNORECASE) if data.get("callout_tail") else None,
+                     weak_name_layers=words("weak_name_layers"))
 
 
 _DEFAULT: Optional[NameRules] = None
@@ -232,6 +240,7 @@ def classify_text(text, rules=None, layer: str = "", block: str = "", tag: str =
     name_block = _layer_match(rules.name_blocks, blk)
     evidence = "room tag" if (name_tag or number_tag) else ("name layer" if name_layer else
                                                             ("room block" if name_block else ""))
+    weak = not evidence and bool(_layer_match(rules.weak_name_layers, lay))
     type_hit = _type_entry(low, rules)
     # ---- layers that hold other things
     if not evidence:
@@ -272,6 +281,8 @@ def classify_text(text, rules=None, layer: str = "", block: str = "", tag: str =
         return "name", "room tag"
     if evidence:
         return "name", evidence
+    if weak and type_hit is None:
+        return "name", "text layer"
     if type_hit is not None:
         return "name", "keyword"
     return "name", "short text"
@@ -422,11 +433,34 @@ def group_lines(texts: Sequence[CadText], rules=None) -> List[Label]:
 
 
 def classify_labels(texts: Sequence[CadText], rules=None) -> List[Label]:
+    """Labels (multi-line TEXTs joined) with role and reason. Two refinements on top of
+    ``classify_text``: a detail callout ('E1-ST-01详见建施(A-E-40-01)', 'P2 see 5/A-501') is the room
+    number it names; a name ending in a room code ('研究室 E1a-F4-06') is split into name + number."""
     rules = _resolve(rules)
     labels = group_lines(texts, rules)
+    out: List[Label] = []
     for lab in labels:
+        m = rules.callout.match(lab.text.casefold()) if rules.callout is not None and lab.text else None
+        if m and m.group("code"):
+            lab.text = lab.text[m.start("code"):m.end("code")]
+            lab.role, lab.reason = "number", "callout"
+            out.append(lab)
+            continue
+        if rules.callout_tail is not None and lab.text:
+            m = rules.callout_tail.search(lab.text)
+            if m and m.start() > 0 and _has_letter(lab.text[:m.start()]):
+                lab.text = lab.text[:m.start()].strip()
         lab.role, lab.reason = classify_text(lab.text, rules, layer=lab.layer, block=lab.block, tag=lab.tag)
-    return labels
+        parts = lab.text.rsplit(" ", 1)
+        if lab.role == "name" and len(parts) == 2 and "-" in parts[1] and _has_letter(parts[0]) and \
+                any(p.search(parts[1].casefold()) for p in rules.number_patterns):
+            from dataclasses import replace
+
+            out.append(replace(lab, text=parts[0]))
+            out.append(replace(lab, text=parts[1], role="number", reason="code after the name"))
+            continue
+        out.append(lab)
+    return out
 
 
 def room_name_points(texts: Sequence[CadText], rules=None) -> List[Tuple[float, float, str]]:
@@ -689,7 +723,7 @@ def assign_names(areas: List[Area], texts: Sequence[CadText], level="1", rules=N
                 a.name = nums[0].text
         if recs:
             a.tags["label_score"] = f"{max(r.score for r in recs):.1f}"
-            a.tags["label_texts"] = ";".join(str(i) for r in names + nums for i in r.ids)
+            a.tags["label_texts"] = ";".join(dict.fromkeys(str(i) for r in names + nums for i in r.ids))
         if len(distinct) > 1:
             a.tags["label_conflict"] = " | ".join(d.text for d in distinct[1:])
             report.conflicts.append(a.id)
@@ -749,7 +783,7 @@ def assign_names(areas: List[Area], texts: Sequence[CadText], level="1", rules=N
 
 def _strong(r: TextRecord) -> bool:
     """A name backed by more than its shortness: a room-name layer, block or tag, or a room keyword."""
-    return r.reason != "short text"
+    return r.reason not in ("short text", "text layer")
 
 
 def _competing(recs: Sequence[TextRecord]) -> List[TextRecord]:
