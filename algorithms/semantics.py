@@ -935,10 +935,18 @@ def _split_area(a: Area, recs: List[TextRecord], names: Dict[str, TextRecord], g
         if n < 2:
             continue
         # a seed outside the core belongs to the core nearest to it
-        _, (ir, ic) = ndimage.distance_transform_edt(~core, return_indices=True)
+        cr = cc_ = None
         owner = {}
         for k in keys:
-            cs = {int(comp[ir[p], ic[p]]) for p in seeds[k]}
+            cs = set()
+            for (pr, pc) in seeds[k]:
+                if core[pr, pc]:
+                    cs.add(int(comp[pr, pc]))
+                    continue
+                if cr is None:
+                    cr, cc_ = np.nonzero(core)
+                j = int(np.argmin((cr - pr) ** 2 + (cc_ - pc) ** 2))
+                cs.add(int(comp[cr[j], cc_[j]]))
             owner[k] = min(cs)
         if len(set(owner.values())) >= 2:
             found = (t, comp, n, owner)
