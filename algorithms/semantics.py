@@ -267,7 +267,7 @@ def classify_text(text, rules=None, layer: str = "", block: str = "", tag: str =
         return "ignored", "axis" if len(low) <= 2 else "dimension"
     # ---- everything else that is not a name
     for reason, pat in rules.ignore_patterns:
-        if evidence and reason in ("furniture", "long text", "note", "spaced title"):
+        if evidence and reason in ("furniture", "long text", "spaced title"):
             continue
         if pat.search(low):
             if reason in ("furniture",) and type_hit is not None and type_hit[1].get("type") != "room":
@@ -817,7 +817,12 @@ def _type_areas(areas, best_by_area, passages, rules: NameRules, report: NamesRe
             a.tags.pop(k, None)
         named = bool(best_by_area.get(a.id))
         entry = type_of_name(a.name, a.ref, rules) if named else None
-        if entry is not None and a.type not in ("stairs", "elevator"):
+        rec = report.name_record.get(a.id)
+        # the text beats the symbol density of area_types when it says stairs/lift, or when it is the
+        # area's own label (inside, near the centre): a lobby is not a lift because lift lines cross it
+        own_label = rec is not None and rec.match == "inside" and rec.score >= 65.0
+        if entry is not None and (a.type not in ("stairs", "elevator") or entry["type"] in ("stairs", "elevator")
+                                  or own_label):
             if entry["type"] != a.type:
                 report.typed[entry["type"]] = report.typed.get(entry["type"], 0) + 1
             a.type = entry["type"]

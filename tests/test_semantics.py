@@ -259,12 +259,17 @@ def test_unnamed_long_narrow_hub_is_a_corridor():
 
 def test_keyword_types_and_symbol_types():
     areas = [Area(id=1, polygon=box(0, 0, 4, 6)), Area(id=2, polygon=box(4, 0, 6, 2)),
-             Area(id=3, polygon=box(6, 0, 10, 6), type="stairs"), Area(id=4, polygon=box(10, 0, 14, 6))]
-    S.assign_names(areas, [T("E1-ST-03", 2, 3), T("E2-P1", 5, 1), T("Office", 8, 3), T("走道", 12, 3)])
-    assert [a.type for a in areas] == ["stairs", "elevator", "stairs", "corridor"]
+             Area(id=3, polygon=box(6, 0, 10, 6), type="stairs"), Area(id=4, polygon=box(10, 0, 14, 6)),
+             Area(id=5, polygon=box(20, 0, 24, 6), type="elevator"), Area(id=6, polygon=box(30, 0, 34, 6), type="elevator")]
+    S.assign_names(areas, [T("E1-ST-03", 2, 3), T("E2-P1", 5, 1), T("Office", 9.8, 5.8), T("走道", 12, 3),
+                           T("E1-ST-05", 22, 3), T("门厅", 32, 3)])
+    assert [a.type for a in areas] == ["stairs", "elevator", "stairs", "corridor", "stairs", "room"]
     assert areas[0].name == "E1-ST-03" and areas[0].ref == "E1-ST-03" and areas[0].tags["room"] == "stairs"
     assert areas[1].tags["room"] == "elevator"
-    assert areas[2].tags["room"] == "stairs"  # typed from its symbols: a stray name does not untype it
+    assert areas[2].tags["room"] == "stairs"  # typed from its symbols: a name in its corner does not untype it
+    # the text beats the symbols when it names the stair, or when it is the area's own centred label
+    assert areas[4].tags["room"] == "stairs" and areas[5].tags == {"indoor": "area", "room": "lobby",
+                                                                   "label_score": "100.0", "label_texts": "5"}
 
 
 def test_bad_texts_never_raise_and_are_counted():
