@@ -669,7 +669,10 @@ def assign_names(areas: List[Area], texts: Sequence[CadText], level="1", rules=N
             p = Point(r.x, r.y)
             best = (0.0, None, "")
             for i in sorted(tree.query(p, predicate="dwithin", distance=d_max).tolist()):
-                s, how = score(r.x, r.y, polys[i], cents[i], rho_max=rho_max, d_max=d_max)
+                try:
+                    s, how = score(r.x, r.y, polys[i], cents[i], rho_max=rho_max, d_max=d_max)
+                except Exception:  # GEOS on an invalid polygon: this area is no candidate
+                    continue
                 if inside_first and how == "inside":
                     s += 1000.0  # a text inside an area is that area's (nearby scores only for texts outside)
                 if s > best[0]:
@@ -692,7 +695,12 @@ def assign_names(areas: List[Area], texts: Sequence[CadText], level="1", rules=N
             a = by_id[aid]
             if a.type in ("stairs", "elevator"):
                 continue
-            pieces = _split_area(a, recs, names, grid, areas, passages, labels)
+            try:
+                pieces = _split_area(a, recs, names, grid, areas, passages, labels)
+            except Exception as exc:  # an invalid polygon must not stop the naming: keep it whole
+                progress.warning(f"area {aid}: could not be split between its room names "
+                                 f"({type(exc).__name__}: {exc}); kept whole")
+                pieces = None
             if pieces:
                 report.splits.append((aid, [p.id for p in pieces]))
                 for p in pieces:

@@ -465,3 +465,10 @@ def test_dwg_stairs_and_lifts_become_typed_areas(shared_data, sheet):
         assert typed[code] <= ({"stairs"} if code in want_st else {"elevator"}), (code, typed[code])
     if sheet.startswith("sist"):
         assert sum(1 for a in floor.refined.areas if any("\u4e00" <= ch <= "\u9fff" for ch in a.name)) >= 10
+
+
+def test_invalid_polygons_do_not_stop_naming():
+    bowtie = Polygon([(0, 0), (4, 4), (4, 0), (0, 4)])  # self-intersecting
+    areas = [Area(id=1, polygon=bowtie), Area(id=2, polygon=box(10, 0, 14, 4))]
+    rep = S.assign_names(areas, [T("Office A", 1, 2), T("Office B", 3, 2), T("Store", 12, 2)])
+    assert areas[1].name == "Store" and rep.counts()["labels"] == 3
