@@ -392,7 +392,7 @@ def test_sample_building_every_room_named_and_typed(tmp_path):
     for k, dxf in enumerate(info["dxf"], 1):
         floor = pipeline.process_floor(dxf, level=str(k))
         areas = floor.refined.areas
-        for room in ground_truth_rooms(info["gt"][k - 1]):
+        for room in ground_truth_rooms(info["ground_truth"][k - 1]):
             best = max(areas, key=lambda a: a.polygon.intersection(room["polygon"]).area)
             assert best.name == room["name"], (k, room["name"], best.name)
             assert best.type == room["areatype"], (room["name"], best.type)
