@@ -1012,7 +1012,48 @@ def _split_area(a: Area, recs: List[TextRecord], names: Dict[str, TextRecord], g
         merged = unary_union([pieces[j][0], frag])
         if merged.geom_type == "Polygon":
             pieces[j] = (merged, pieces[j][1])
+    pieces = _straighten(pieces, res)
     return _finish(a, pieces, areas, passages, labels, grid, recs, t)
+
+
+def _straighten(pieces, res: float):
+    """Replace the pixel staircase between two pieces by its Douglas-Peucker simplification (1.5 px):
+    the union of the two is cut again along the simplified line. Kept only when the cut gives exactly
+    two parts whose areas stay within 5 % of the staircase pieces."""
+    from shapely.ops import linemerge, unary_union
+
+    pieces = list(pieces)
+    for i in range(len(pieces)):
+        for j in range(i + 1, len(pieces)):
+            gi, gj = pieces[i][0], pieces[j][0]
+            try:
+                shared = gi.boundary.intersection(gj.boundary)
+                lines = [g for g in getattr(shared, "geoms", [shared]) if g.geom_type == "LineString" and g.length > 0]
+                if not lines:
+                    continue
+                chain = linemerge(lines)
+                if chain.geom_type != "LineString" or len(chain.coords) <= 2:
+                    continue
+                simple = chain.simplify(1.5 * res, preserve_topology=False)
+                c = np.asarray(simple.coords)
+                d0, d1 = c[0] - c[1], c[-1] - c[-2]
+                ext = 3 * res
+                c0 = c[0] + d0 / max(np.hypot(*d0), 1e-12) * ext
+                c1 = c[-1] + d1 / max(np.hypot(*d1), 1e-12) * ext
+                cut = LineString([tuple(c0)] + [tuple(p) for p in c] + [tuple(c1)])
+                both = unary_union([gi, gj])
+                parts = [g for g in shp_split(both, cut).geoms if g.area > 0]
+                if len(parts) != 2:
+                    continue
+                ni = max(parts, key=lambda g: g.intersection(gi).area)
+                nj = parts[1] if ni is parts[0] else parts[0]
+                if abs(ni.area - gi.area) > 0.05 * gi.area or abs(nj.area - gj.area) > 0.05 * gj.area:
+                    continue
+                pieces[i] = (ni, pieces[i][1])
+                pieces[j] = (nj, pieces[j][1])
+            except Exception:
+                continue
+    return pieces
 
 
 def _finish(a: Area, pieces, areas: List[Area], passages, labels, grid, recs, t: float):
