@@ -33,7 +33,9 @@ IGNORED = [("", "empty"), ("   ", "empty"), ("\x00\x07\u200f", "empty"), ("---",
            ("楼梯放大详图", "title"), ("1:100", "scale"), ("www.archweb.it", "title block"),
            ("C A L L E  B E A T E R I O", "spaced title"), ("PISO DE LADRILLO ESPINA DE PEZ", "note"),
            ("注：所有尺寸以毫米计", "note"), ("6 lockers guard", "furniture"), ("white board", "furniture"),
-           ("this is a long remark about the works to be carried out here", "long text")]
+           ("this is a long remark about the works to be carried out here", "long text"),
+           ("1/A3-11", "axis"), ("A3`-L", "axis"), ("A-A3-40-04,05", "drawing reference"), ("5F板边线", "note"),
+           ("1F顶板至5F底板开洞", "note"), ("i=1%", "dimension"), ("SCALE", "title block")]
 
 
 @pytest.mark.parametrize("text", NAMES)
