@@ -204,7 +204,9 @@ def normalize_text(text) -> str:
         s = re.sub(r"\x1b\[[0-9;?]*[A-Za-z]|\x1b[@-_]", " ", s)  # terminal escape sequences
     s = unicodedata.normalize("NFKC", s)
     s = "".join(ch if unicodedata.category(ch)[0] != "C" else " " for ch in s)
-    return " ".join(s.split())
+    s = " ".join(s.split())
+    # letter-spaced CJK names ("走 道", "通 廊") are one word
+    return re.sub(r"(?<=[\u3400-\u9fff])\s+(?=[\u3400-\u9fff])", "", s)
 
 
 def _has_letter(s: str) -> bool:

@@ -35,7 +35,9 @@ IGNORED = [("", "empty"), ("   ", "empty"), ("\x00\x07\u200f", "empty"), ("---",
            ("注：所有尺寸以毫米计", "note"), ("6 lockers guard", "furniture"), ("white board", "furniture"),
            ("this is a long remark about the works to be carried out here", "long text"),
            ("1/A3-11", "axis"), ("A3`-L", "axis"), ("A-A3-40-04,05", "drawing reference"), ("5F板边线", "note"),
-           ("1F顶板至5F底板开洞", "note"), ("i=1%", "dimension"), ("SCALE", "title block")]
+           ("1F顶板至5F底板开洞", "note"), ("i=1%", "dimension"), ("SCALE", "title block"),
+           ('("nullsurf" "")', "cad internals"), ("BYLAYER", "cad internals"), ("不上人平屋面", "note"),
+           ("平 面 图", "title")]
 
 
 @pytest.mark.parametrize("text", NAMES)
@@ -77,6 +79,7 @@ def test_normalize_strips_codes_controls_and_bidi():
     assert S.normalize_text("\u202eWC\u202c\u200b\x07") == "WC"
     assert S.normalize_text("ＷＣ　１０１") == "WC 101"
     assert S.normalize_text(None) == ""
+    assert S.normalize_text("走 道") == "走道" and S.normalize_text("wc men") == "wc men"
 
 
 def test_multiline_text_labels_are_joined():
