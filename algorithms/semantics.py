@@ -58,6 +58,7 @@ from .progress import ensure
 DEFAULT_NAME_RULES_PATH = os.path.join(os.path.dirname(os.path.abspath(__file__)), "default_name_rules.json")
 RHO_MAX = 0.7
 D_MAX = 2.2  # metres
+CALLOUT_REACH = 8.0  # metres from a stair/lift detail callout to the stair or lift it names
 NARROWING_RATIO = 0.6  # a split cut must be at most this share of the narrower piece's width
 LABEL_FIELDS = ("label_score", "label_texts", "label_conflict")
 ROLES = ("name", "number", "ignored")
@@ -669,6 +670,18 @@ def assign_names(areas: List[Area], texts: Sequence[CadText], level="1", rules=N
             if not (math.isfinite(r.x) and math.isfinite(r.y)):
                 continue
             p = Point(r.x, r.y)
+            if r.reason == "callout" and (type_of_name("", r.text, rules) or {}).get("type") in ("stairs", "elevator"):
+                # a detail callout ("E1-ST-01详见…") sits beside its stair or lift, on a leader: it names the
+                # nearest stair/lift area, and never types the corridor it happens to lie in
+                want = type_of_name("", r.text, rules)["type"]
+                near = [i for i in tree.query(p, predicate="dwithin", distance=CALLOUT_REACH).tolist()
+                        if areas_ok[i].type in ("stairs", "elevator")]
+                if near:
+                    i = min(near, key=lambda i: (areas_ok[i].type != want, polys[i].distance(p), i))
+                    r.area_id, r.match = areas_ok[i].id, "callout"
+                    r.score = round(score(r.x, r.y, polys[i], cents[i], rho_max=rho_max, d_max=d_max)[0], 2)
+                    best_by_area.setdefault(areas_ok[i].id, []).append(r)
+                continue
             best = (0.0, None, "")
             for i in sorted(tree.query(p, predicate="dwithin", distance=d_max).tolist()):
                 try:

@@ -477,3 +477,17 @@ def test_invalid_polygons_do_not_stop_naming():
     areas = [Area(id=1, polygon=bowtie), Area(id=2, polygon=box(10, 0, 14, 4))]
     rep = S.assign_names(areas, [T("Office A", 1, 2), T("Office B", 3, 2), T("Store", 12, 2)])
     assert areas[1].name == "Store" and rep.counts()["labels"] == 3
+
+
+def test_detail_callouts_name_the_nearest_stair_never_the_corridor():
+    corridor = Area(id=1, polygon=box(0, 0, 30, 3), type="corridor")
+    stair = Area(id=2, polygon=box(10, 3, 14, 9), type="stairs")
+    lift = Area(id=3, polygon=box(14, 3, 16, 5), type="elevator")
+    far_stair = Area(id=4, polygon=box(40, 0, 44, 6), type="stairs")
+    areas = [corridor, stair, lift, far_stair]
+    rep = S.assign_names(areas, [T("E1-ST-01详见建施(A-E-40-01)", 9, 1.5), T("E1-P2详见建施(A-E-40-19)", 15, 1.5),
+                                 T("E1-ST-09详见建施(A-E-40-09)", 25, 1.5), T("走道", 5, 1.5)])
+    assert (stair.name, stair.ref) == ("E1-ST-01", "E1-ST-01") and (lift.ref, lift.type) == ("E1-P2", "elevator")
+    assert corridor.name == "走道" and corridor.type == "corridor" and not corridor.ref
+    assert far_stair.ref == ""  # 15 m away: the callout is left unassigned (counted outside)
+    assert rep.counts()["outside"] == 1
