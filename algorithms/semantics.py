@@ -26,10 +26,11 @@ centroid c and area A (m²), S = sqrt(A / pi), rho = |p - c| / S, d_b = distance
 * p inside:  100 - 50 rho for rho <= rho_max (0.7), else 50 - 25 (rho - rho_max);
 * p outside, d_b < D_max (2.2 m): 40 + 30 f_size + 20 f_dist, f_size = 1 / (1 + log10(1 + A / 10000)),
   f_dist = 1 - d_b / D_max;
-* otherwise 0 (not a candidate). Each text goes to the area with the highest positive score. Where the
-paper leaves an inside score at or below 0 (a text far from the centroid of a very long area), we keep
-the area as a candidate with score 1: a nearby area (>= 40) still wins, but a text inside a long
-corridor with no other candidate is not lost.
+* otherwise 0 (not a candidate). Each text goes to the area with the highest positive score, except that
+a text inside an area belongs to it (``inside_first``; the paper would let a room 2 m away, >= 40, beat
+a text inside a long corridor far from its centroid, < 40) and that an inside score at or below 0 counts
+as 1. Stair/lift detail callouts ("E1-ST-01详见建施(...)", drawn beside the stair on a leader) name the
+nearest stair or lift area within ``CALLOUT_REACH`` and are never given to the corridor they lie in.
 
 Layer fields written on the areas (``Area.tags``, so they reach the AREAS layer): ``label_score`` (best
 score of the texts used), ``label_texts`` (ids of the CadTexts used, ';'-separated), ``label_conflict``
