@@ -151,6 +151,65 @@ def read_floor(path: str, frame, progress=None) -> FloorData:
     return fl
 
 
+def floors_from_layers(areas: Sequence[Area], passages: Sequence[Passage], frame, source: str = "layers",
+                       level: Optional[str] = None) -> List[FloorData]:
+    """Areas/passages in WGS84 lon/lat (e.g. QGIS layers made by loadosmag), split into one floor per
+    ``level`` tag (or all on ``level``) and converted into ``frame``. ``osmAG:parent`` tags naming an
+    area (by name or id) of the same floor become its parent."""
+    from . import osmag
+
+    areas, passages = osmag.to_frame(areas, passages, frame)
+    groups: Dict[str, List[Area]] = {}
+    for a in areas:
+        lv = str(level or (a.tags or {}).get("level", "") or "").strip()
+        if ";" in lv and a.type == "structure":
+            continue  # a building outline of a merged file: the fusion makes a new one
+        groups.setdefault(lv, []).append(a)
+    out = []
+    for lv, group in groups.items():
+        ids = {a.id for a in group}
+        by_name = {a.name: a.id for a in group if a.name}
+        fl = FloorData(source=f"{source} (level {lv or '?'})", areas=[], passages=[], tag_level=lv or None)
+        for a in group:
+            pv = str((a.tags or {}).get("osmAG:parent", "") or "").strip()
+            pid = by_name.get(pv)
+            if pid is None:
+                try:
+                    pid = int(float(pv)) if pv else None
+                except ValueError:
+                    pid = None
+            if pid in ids:
+                fl.parents[a.id] = pid
+        for a in group:
+            if a.type == "structure" and fl.outline is None and a.id not in fl.parents:
+                fl.outline = a
+            elif a.type == "structure":
+                fl.structures.append(a)
+            else:
+                fl.areas.append(a)
+        for p in passages:
+            if p.from_id in ids and p.to_id in ids:
+                fl.passages.append(p)
+            elif (p.from_id in ids) != (p.to_id in ids):
+                continue  # a vertical passage of a merged file: the fusion links the shafts again
+        heights = [float(a.tags["height"]) for a in group if _is_float((a.tags or {}).get("height"))]
+        fl.height = max(set(heights), key=heights.count) if heights else None
+        out.append(fl)
+    known = {p.id for fl in out for p in fl.passages}
+    for p in passages:
+        if p.id not in known and not any(p.from_id in {a.id for a in fl.areas + fl.structures} for fl in out):
+            out[0].dropped_passages.append((p.id, f"from {p.from_id} to {p.to_id}: no such area"))
+    return out
+
+
+def _is_float(v) -> bool:
+    try:
+        float(v)
+        return True
+    except (TypeError, ValueError):
+        return False
+
+
 def anchor_kind(a: Area) -> Optional[str]:
     """``stairs``/``elevator`` for a vertical anchor (type, else name/ref/tags), else None."""
     if a.type in ANCHOR_TYPES:
@@ -687,5 +746,57 @@ def merge_floor_files(paths: Sequence[str], out_path: str, building_name: str = 
                        progress=progress.sub(5, 100))
 
 
-__all__ = ["FloorData", "read_floor", "fuse_floors", "merge_floor_files", "level_from_name", "anchor_kind",
+def _convert_one(args):
+    from . import pipeline
+
+    dxf, out, level, kwargs = args
+    import time as _t
+
+    t0 = _t.perf_counter()
+    stats = pipeline.convert_dxf(dxf, out, level=level, **kwargs)
+    return out, _t.perf_counter() - t0, stats.get("areas"), stats.get("passages")
+
+
+def convert_floors(dxf_paths: Sequence[str], out_dir: str, levels: Optional[Sequence[str]] = None,
+                   workers: int = 2, progress=None, **convert_kwargs) -> List[Tuple[str, float, int, int]]:
+    """Convert DXF floors to osmAG files in ``out_dir`` (``<stem>.osm``), ``workers`` at a time in a
+    process pool (each floor is independent). Levels: ``levels``, else from the file names. Returns
+    [(osm path, seconds, areas, passages)] in input order. Every floor gets the same anchor (the
+    ``anchor_lon``/``anchor_lat`` keyword, default 0/0), so the fusion only has to register them."""
+    import concurrent.futures as cf
+
+    progress = ensure(progress)
+    jobs = []
+    for k, dxf in enumerate(dxf_paths):
+        lv = (levels[k] if levels is not None and k < len(levels) else None) or level_from_name(dxf)
+        if lv is None:
+            raise InputError(f"the level of '{os.path.basename(dxf)}' is unknown: name it like '*-F3*' or give levels")
+        out = os.path.join(out_dir, os.path.splitext(os.path.basename(dxf))[0] + ".osm")
+        jobs.append((dxf, out, lv, dict(convert_kwargs)))
+    os.makedirs(out_dir, exist_ok=True)
+    results: Dict[int, tuple] = {}
+    if workers <= 1 or len(jobs) == 1:
+        for k, job in enumerate(jobs):
+            progress.check()
+            results[k] = _convert_one(job)
+            progress.step(100.0 * (k + 1) / len(jobs), f"{os.path.basename(job[0])}: {results[k][1]:.1f} s")
+    else:
+        import multiprocessing as mp
+
+        ctx = mp.get_context("spawn")  # no fork of a process that may hold QGIS/Qt state
+        with cf.ProcessPoolExecutor(max_workers=workers, mp_context=ctx) as ex:
+            futs = {ex.submit(_convert_one, job): k for k, job in enumerate(jobs)}
+            for f in cf.as_completed(futs):
+                k = futs[f]
+                results[k] = f.result()
+                progress.step(100.0 * len(results) / len(jobs),
+                              f"{os.path.basename(jobs[k][0])}: {results[k][1]:.1f} s")
+                if progress.is_canceled():
+                    for other in futs:
+                        other.cancel()
+                    progress.check()
+    return [results[k] for k in range(len(jobs))]
+
+
+__all__ = ["convert_floors", "floors_from_layers", "FloorData", "read_floor", "fuse_floors", "merge_floor_files", "level_from_name", "anchor_kind",
            "register_anchors", "Rigid", "floor_anchors"]
