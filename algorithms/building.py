@@ -665,8 +665,10 @@ def fuse_floors(floors: Sequence[FloorData], out_path: str, frame, building_name
             used_h.add(y.index)
             inter_poly = max(getattr(inter, "geoms", [inter]), key=lambda g: getattr(g, "area", 0))
             a_lo, a_hi = copies[k][x.index], copies[k + 1][y.index]
+            n_kind = 1 + sum(1 for lk in links if lk[0] == lo.level and lk[1] == hi.level and lk[4] == x.kind)
             vertical.append(Passage(id=passages_out + len(vertical) + 1, from_id=a_lo.id, to_id=a_hi.id,
                                     line=_shaft_segment(inter_poly),
+                                    name=f"{'Stairs' if x.kind == 'stairs' else 'Lift'} {n_kind} L{lo.level}-L{hi.level}",
                                     tags={"osmAG:vertical": "yes",
                                           ("stairs" if x.kind == "stairs" else "elevator"): "yes"}))
             links.append((lo.level, hi.level, a_lo.name or str(a_lo.id), a_hi.name or str(a_hi.id), x.kind,

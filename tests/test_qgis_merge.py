@@ -45,6 +45,13 @@ def test_mergefloors_headless(floor_files, tmp_path):
     pds = ogr.Open(str(tmp_path / "p.gpkg"))
     plyr = pds.GetLayer(0)
     assert plyr.GetFeatureCount() == len(passages)
+    # the building's layers as input again (split by their level field): the same building comes out
+    out2 = tmp_path / "again.osm"
+    _, res2, _ = run_alg("mergefloors", {"AREAS": str(tmp_path / "a.gpkg"), "PASSAGES": str(tmp_path / "p.gpkg"),
+                                         "BUILDING": "Wing", "OUTPUT": str(out2)})
+    assert res2["FLOOR_COUNT"] == 2 and res2["VERTICAL_PASSAGES"] == 2 and res2["RMS"] < 0.01
+    a2, p2, _, rep2 = osmag.read_osmag(str(out2))
+    assert len(a2) == len(areas) and len(p2) == len(passages) and rep2["dangling_refs"] == []
 
 
 @pytest.mark.qgis_process
