@@ -140,15 +140,22 @@ def read_floor(path: str, frame, progress=None) -> FloorData:
                    tag_level=tag_level, height=(max(set(heights), key=heights.count) if heights else None),
                    dropped_passages=sorted(set(dropped)))
     ids = {a.id for a in areas}
-    for a in areas:
-        if a.type == "structure":
-            if fl.outline is None and fl.parents.get(a.id) not in ids:
-                fl.outline = a
-            else:
-                fl.structures.append(a)
-        else:
-            fl.areas.append(a)
+    _split_structures(fl, [a for a in areas if a.type == "structure"], ids)
+    fl.areas = [a for a in areas if a.type != "structure"]
     return fl
+
+
+def _split_structures(fl: FloorData, structures: List[Area], ids) -> None:
+    """The floor's outline is its one structure area without a parent in the floor; with several (wings
+    drawn as separate structures), a new outline is computed around them all and they become its
+    children."""
+    top = [a for a in structures if fl.parents.get(a.id) not in ids]
+    if len(top) == 1:
+        fl.outline = top[0]
+        fl.structures = [a for a in structures if a is not top[0]]
+    else:
+        fl.outline = None
+        fl.structures = list(structures)
 
 
 def floors_from_layers(areas: Sequence[Area], passages: Sequence[Passage], frame, source: str = "layers",
@@ -162,8 +169,8 @@ def floors_from_layers(areas: Sequence[Area], passages: Sequence[Passage], frame
     groups: Dict[str, List[Area]] = {}
     for a in areas:
         lv = str(level or (a.tags or {}).get("level", "") or "").strip()
-        if ";" in lv and a.type == "structure":
-            continue  # a building outline of a merged file: the fusion makes a new one
+        if a.type == "structure" and (";" in lv or not lv):
+            continue  # a building outline (several levels, or none): the fusion makes a new one
         groups.setdefault(lv, []).append(a)
     out = []
     for lv, group in groups.items():
@@ -180,13 +187,8 @@ def floors_from_layers(areas: Sequence[Area], passages: Sequence[Passage], frame
                     pid = None
             if pid in ids:
                 fl.parents[a.id] = pid
-        for a in group:
-            if a.type == "structure" and fl.outline is None and a.id not in fl.parents:
-                fl.outline = a
-            elif a.type == "structure":
-                fl.structures.append(a)
-            else:
-                fl.areas.append(a)
+        _split_structures(fl, [a for a in group if a.type == "structure"], ids)
+        fl.areas = [a for a in group if a.type != "structure"]
         for p in passages:
             if p.from_id in ids and p.to_id in ids:
                 fl.passages.append(p)
@@ -393,9 +395,80 @@ def register_anchors(moving: Sequence[Anchor], fixed: Sequence[Anchor], tol: flo
 
         if rms_of(T) - rms_of(TR) > 0.1:
             T = TR
+    rot_ok = rotate and spread >= 1.0 and T.theta != 0.0
+    T = _robust_refit(T, src, dst, rotate=rot_ok)
+    T = _polish_on_shapes(T, [(moving[i].polygon, fixed[j].polygon) for i, j, _ in inl], rotate=rot_ok)
     P = T.apply(src)
     matches = [(i, j, float(np.hypot(*(p - q)))) for (i, j, _), p, q in zip(inl, P, dst)]
     return T, matches
+
+
+def _robust_refit(T: Rigid, src: np.ndarray, dst: np.ndarray, rotate: bool, c: float = 0.15,
+                  iterations: int = 20) -> Rigid:
+    """Iteratively reweighted least squares (Cauchy weights, scale ``c`` metres) from ``T``: a shaft
+    drawn differently on two floors (a landing included on one of them) moves its centroid by a metre;
+    it is kept as a match but no longer drags the floor, which follows the shafts that agree."""
+    if len(src) < 2:
+        return T
+    for _ in range(iterations):
+        r = np.linalg.norm(T.apply(src) - dst, axis=1)
+        w = 1.0 / (1.0 + (r / c) ** 2)
+        cs = (src * w[:, None]).sum(0) / w.sum()
+        cd = (dst * w[:, None]).sum(0) / w.sum()
+        theta = T.theta
+        if rotate:
+            a, b = (src - cs) * np.sqrt(w)[:, None], (dst - cd) * np.sqrt(w)[:, None]
+            theta = math.atan2(float((a[:, 0] * b[:, 1] - a[:, 1] * b[:, 0]).sum()), float((a * b).sum()))
+        co, si = math.cos(theta), math.sin(theta)
+        t = cd - np.array([co * cs[0] - si * cs[1], si * cs[0] + co * cs[1]])
+        new = Rigid(theta, float(t[0]), float(t[1]))
+        if abs(new.tx - T.tx) < 1e-6 and abs(new.ty - T.ty) < 1e-6 and abs(new.theta - T.theta) < 1e-9:
+            return new
+        T = new
+    return T
+
+
+def _polish_on_shapes(T: Rigid, pairs, rotate: bool, max_move: float = MATCH_TOLERANCE) -> Rigid:
+    """Refine ``T`` on the shapes of the matched shafts: minimise the mean non-overlap (1 - Dice) of each
+    moved shaft with its partner (Nelder-Mead from ``T``). Shafts drawn alike on both floors then lie
+    exactly on each other, and one drawn differently (a landing included on one floor) costs about the
+    same wherever it is, so it cannot pull. Kept only when it lowers the cost and moves less than
+    ``max_move``."""
+    from scipy.optimize import minimize
+
+    if not pairs:
+        return T
+
+    def cost(v):
+        R = Rigid(v[2] if rotate else T.theta, v[0], v[1])
+        tot = 0.0
+        for pm, pf in pairs:
+            g = R.geometry(pm)
+            tot += 1.0 - 2.0 * g.intersection(pf).area / max(g.area + pf.area, 1e-9)
+        return tot / len(pairs)
+
+    x0 = np.array([T.tx, T.ty, T.theta])
+    c0 = cost(x0)
+    simplex = np.array([x0, x0 + [0.3, 0, 0], x0 + [0, 0.3, 0], x0 + [0, 0, math.radians(0.3)]])
+    if not rotate:
+        x0, simplex = x0[:2], simplex[:3, :2]
+        simplex[1:] = x0 + np.array([[0.3, 0], [0, 0.3]])
+    try:
+        res = minimize(cost, x0, method="Nelder-Mead",
+                       options={"initial_simplex": simplex, "xatol": 1e-4, "fatol": 1e-7, "maxiter": 400})
+    except Exception:  # noqa: BLE001 - a degenerate shape: keep the point fit
+        return T
+    if not res.success and res.fun >= c0:
+        return T
+    v = res.x
+    R = Rigid(float(v[2]) if rotate else T.theta, float(v[0]), float(v[1]))
+    moved = float(np.max(np.linalg.norm(R.apply(np.array([[0.0, 0.0]])) - T.apply(np.array([[0.0, 0.0]])), axis=1)))
+    # judge the move where the shafts are, not at the frame origin kilometres away
+    pts = np.array([[pm.centroid.x, pm.centroid.y] for pm, _ in pairs])
+    moved = float(np.max(np.linalg.norm(R.apply(pts) - T.apply(pts), axis=1)))
+    if res.fun < c0 - 1e-6 and moved <= max_move:
+        return R
+    return T
 
 
 def _outline_geometries(fl: FloorData, T: Optional[Rigid] = None):
@@ -429,7 +502,8 @@ def _outline_of(fl: FloorData):
 
     if fl.outline is not None:
         return fl.outline.polygon
-    return floor_outline(fl.areas) or unary_union([a.polygon for a in fl.areas]).convex_hull
+    parts = fl.areas + fl.structures
+    return floor_outline(parts) or unary_union([a.polygon for a in parts]).convex_hull
 
 
 def _shaft_segment(poly):
@@ -457,7 +531,9 @@ def fuse_floors(floors: Sequence[FloorData], out_path: str, frame, building_name
 
     ``levels``/``heights``: per floor (None entries: from tags / file name / default 3.2 m). Returns
     figures: ``levels``, ``transforms`` {level: (dx, dy, degrees, method)}, ``residuals`` {level:
-    [(anchor, partner, metres)]}, ``rms`` {level: metres}, ``vertical`` [(lower area, upper area, kind)],
+    [(anchor, partner, metres)]} (distance of the shafts' centroids after registration: a shaft drawn
+    differently on the two floors shows its difference here), ``rms`` and ``median_residual`` {level:
+    metres}, ``overall_rms``, ``vertical`` [(lower area, upper area, kind)],
     ``areas_in``/``areas_out``, ``passages``, ``dropped_passages``, ``warnings``, plus the writer's stats.
     Raises InputError (nothing written) for unknown or repeated levels, floors that do not overlap,
     passages to missing areas with ``strict_passages``.
@@ -523,6 +599,7 @@ def fuse_floors(floors: Sequence[FloorData], out_path: str, frame, building_name
     transforms: Dict[str, tuple] = {floors[ref].level: (0.0, 0.0, 0.0, "reference")}
     residuals: Dict[str, list] = {}
     rms: Dict[str, float] = {}
+    medians: Dict[str, float] = {}
     todo = sorted((k for k in range(n) if k != ref), key=lambda k: abs(k - ref))
     for step_i, k in enumerate(todo):
         progress.step(10 + 40.0 * step_i / max(len(todo), 1))
@@ -549,10 +626,11 @@ def fuse_floors(floors: Sequence[FloorData], out_path: str, frame, building_name
                         round(d, 3)) for i, jj, d in matches]
                 residuals[fl.level] = res
                 rms[fl.level] = float(math.sqrt(np.mean([d * d for _, _, d in res]))) if res else 0.0
+                medians[fl.level] = float(np.median([d for _, _, d in res])) if res else 0.0
                 transforms[fl.level] = (R.tx, R.ty, R.degrees, f"anchors ({len(matches)} matched)")
                 progress.info(f"level {fl.level}: registered on level {floors[j].level} by {len(matches)} anchors, "
                               f"shift ({R.tx:.2f}, {R.ty:.2f}) m, rotation {R.degrees:.2f}°, residual RMS "
-                              f"{rms[fl.level]:.3f} m (" + ", ".join(f"{a}: {d:.3f} m" for a, _, d in res) + ")")
+                              f"{rms[fl.level]:.3f} m, median {medians[fl.level]:.3f} m (" + ", ".join(f"{a}: {d:.3f} m" for a, _, d in res) + ")")
                 if len(matches) == 1:
                     warn(f"level {fl.level}: only one anchor matched ({res[0][0]}); translation only, no check "
                          "against a second anchor")
@@ -699,7 +777,7 @@ def fuse_floors(floors: Sequence[FloorData], out_path: str, frame, building_name
     areas_in = sum(len(fl.areas) + len(fl.structures) + (1 if fl.outline is not None else 0) for fl in floors)
     stats = {k: v for k, v in written.items() if k not in ("way_ids", "names")}
     stats.update({"floors": n, "levels": [fl.level for fl in floors], "transforms": transforms,
-                  "residuals": residuals, "rms": rms, "vertical": links, "reference": floors[ref].level,
+                  "residuals": residuals, "rms": rms, "median_residual": medians, "vertical": links, "reference": floors[ref].level,
                   "areas_in": areas_in, "areas_out": written["areas"] + written["structure_areas"] - 1,
                   "dropped_passages": {fl.level: fl.dropped_passages for fl in floors if fl.dropped_passages},
                   "warnings": warnings + written["warnings"],
