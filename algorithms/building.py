@@ -106,6 +106,7 @@ class FloorData:
     height: Optional[float] = None
     tag_level: Optional[str] = None
     dropped_passages: List[Tuple[int, str]] = field(default_factory=list)  # (way id, why)
+    frame: object = None  # the LocalFrame the geometries are in
 
     @property
     def label(self) -> str:
@@ -136,7 +137,7 @@ def read_floor(path: str, frame, progress=None) -> FloorData:
             heights.append(float(a.tags.get("height")))
         except (TypeError, ValueError):
             pass
-    fl = FloorData(source=path, areas=[], passages=list(passages), parents=dict(report["parents"]),
+    fl = FloorData(source=path, areas=[], passages=list(passages), parents=dict(report["parents"]), frame=frame,
                    tag_level=tag_level, height=(max(set(heights), key=heights.count) if heights else None),
                    dropped_passages=sorted(set(dropped)))
     ids = {a.id for a in areas}
@@ -807,12 +808,8 @@ def merge_floor_files(paths: Sequence[str], out_path: str, building_name: str = 
         progress.step(5.0 * i / len(paths), f"reading {os.path.basename(path)}")
         if not os.path.isfile(path):
             raise InputError(f"floor file '{path}' does not exist")
-        if frame is None:
-            import xml.etree.ElementTree as ET
-
-            _, _, root, _ = osmag.read_osmag(path)
-            frame = osmag.frame_from_root(root)
         fl = read_floor(path, frame)
+        frame = frame or fl.frame
         floors.append(fl)
         try:
             with open(path, encoding="utf-8", errors="replace") as fh:

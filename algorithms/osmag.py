@@ -637,14 +637,17 @@ def to_frame(areas: Sequence[Area], passages: Sequence[Passage], frame) -> Tuple
     """Copies of lon/lat areas and passages (as read) converted into ``frame``'s CAD/local metres."""
     import copy
 
+    geoms = np.empty(len(areas) + len(passages), dtype=object)
+    geoms[:] = [a.polygon for a in areas] + [p.line for p in passages]
+    moved = frame.geometry_from_crs(geoms) if len(geoms) else geoms  # one projection call for everything
     out_a, out_p = [], []
-    for a in areas:
+    for k, a in enumerate(areas):
         b = copy.copy(a)
-        b.polygon = frame.geometry_from_crs(a.polygon)
+        b.polygon = moved[k]
         out_a.append(b)
-    for p in passages:
+    for k, p in enumerate(passages):
         b = copy.copy(p)
-        b.line = frame.geometry_from_crs(p.line)
+        b.line = moved[len(areas) + k]
         out_p.append(b)
     return out_a, out_p
 

@@ -117,10 +117,8 @@ class MergeFloorsAlgorithm(Cad2OsmagAlgorithm):
             for p in paths:
                 if not os.path.isfile(p):
                     raise QgsProcessingException(self.tr("floor file '{}' does not exist").format(p))
-                if frame is None:
-                    _, _, root, _ = osmag.read_osmag(p)
-                    frame = osmag.frame_from_root(root)
-                floors.append(building.read_floor(p, frame))
+                floors.append(building.read_floor(p, frame, progress=progress.sub(0, 1)))
+                frame = frame or floors[-1].frame
                 with open(p, encoding="utf-8", errors="replace") as fh:
                     fixid = fixid or 'k="osmAG:from" v="-' in fh.read(2000000)
             if src is not None:
