@@ -335,7 +335,7 @@ def register_anchors(moving: Sequence[Anchor], fixed: Sequence[Anchor], tol: flo
     comp = [(i, j) for i, a in enumerate(moving) for j, b in enumerate(fixed) if _compatible(a, b)]
     if not comp:
         return None, []
-    named = [(i, j) for i, j in comp if moving[i].name and moving[i].name and
+    named = [(i, j) for i, j in comp if moving[i].name and fixed[j].name and
              _base_name(moving[i].name) == _base_name(fixed[j].name)]
     tree = cKDTree(F)
 
