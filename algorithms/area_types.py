@@ -75,31 +75,38 @@ def classify_vertical_areas(areas: Sequence[Area], geometries: Sequence[CadGeome
 
 
 def _segments(geometries: Sequence[CadGeometry]) -> np.ndarray:
-    segs = []
+    """Every straight piece of every geometry as an (N, 2, 2) array (NaN rows split rings)."""
+    gap = np.full((1, 2), np.nan)
+    arrs = []
     for g in geometries:
         c = np.asarray(g.coords, float)
         if len(c) < 2:
             continue
-        # NaN rows separate rings: split there
-        parts = np.split(c, np.where(np.isnan(c).any(axis=1))[0])
-        for part in parts:
-            part = part[~np.isnan(part).any(axis=1)]
-            if len(part) < 2:
+        if g.closed:
+            if np.isnan(c).any():  # several rings: close each one
+                for part in np.split(c, np.where(np.isnan(c).any(axis=1))[0]):
+                    part = part[~np.isnan(part).any(axis=1)]
+                    if len(part) >= 2:
+                        arrs += [part, part[:1], gap]
                 continue
-            if g.closed:
-                part = np.vstack([part, part[:1]])
-            segs.append(np.stack([part[:-1], part[1:]], axis=1))
-    return np.concatenate(segs) if segs else np.zeros((0, 2, 2))
+            arrs += [c, c[:1], gap]
+        else:
+            arrs += [c, gap]
+    if not arrs:
+        return np.zeros((0, 2, 2))
+    allc = np.concatenate(arrs)
+    seg = np.stack([allc[:-1], allc[1:]], axis=1)
+    return seg[~np.isnan(seg).any(axis=(1, 2))]
 
 
-def find_stair_runs(geometries: Sequence[CadGeometry], min_treads: int = MIN_TREADS) -> List[Polygon]:
+def find_stair_runs(geometries: Sequence[CadGeometry], min_treads: int = MIN_TREADS, segments=None) -> List[Polygon]:
     """Stair runs drawn as treads on any layer: clusters of >= ``min_treads`` parallel segments of similar
     length side by side at a regular tread spacing. Returns each run's minimum rotated rectangle."""
     from scipy.sparse import coo_matrix
     from scipy.sparse.csgraph import connected_components
     from scipy.spatial import cKDTree
 
-    S = _segments(geometries)
+    S = _segments(geometries) if segments is None else segments
     if len(S) < min_treads:
         return []
     L = np.linalg.norm(S[:, 1] - S[:, 0], axis=1)
@@ -141,12 +148,12 @@ def find_stair_runs(geometries: Sequence[CadGeometry], min_treads: int = MIN_TRE
     return runs
 
 
-def find_lift_crosses(geometries: Sequence[CadGeometry]) -> List[Polygon]:
+def find_lift_crosses(geometries: Sequence[CadGeometry], segments=None) -> List[Polygon]:
     """Lift symbols drawn as a cross on any layer: two segments of similar length crossing near both
     their midpoints at 40-140 degrees. Returns the box the cross spans (its four end points)."""
     from scipy.spatial import cKDTree
 
-    S = _segments(geometries)
+    S = _segments(geometries) if segments is None else segments
     if len(S) < 2:
         return []
     L = np.linalg.norm(S[:, 1] - S[:, 0], axis=1)
@@ -184,7 +191,8 @@ def classify_by_symbol_shapes(areas: Sequence[Area], geometries: Sequence[CadGeo
     if not cand:
         return changed
     tree = STRtree([a.polygon for a in cand])
-    for run in find_stair_runs(geometries):
+    segs = _segments(geometries)
+    for run in find_stair_runs(geometries, segments=segs):
         hits = tree.query(run, predicate="intersects")
         best, share = None, 0.0
         for h in hits:
@@ -196,7 +204,7 @@ def classify_by_symbol_shapes(areas: Sequence[Area], geometries: Sequence[CadGeo
         if best is not None and share >= 0.5 * run.area and share >= 0.25 * best.polygon.area:
             best.type = "stairs"
             changed[best.id] = "stairs"
-    for box in find_lift_crosses(geometries):
+    for box in find_lift_crosses(geometries, segments=segs):
         c = box.centroid
         hits = [cand[int(h)] for h in tree.query(c, predicate="intersects")]
         hits = [a for a in hits if a.id not in changed and a.polygon.area <= 4.0 * box.area]
