@@ -789,6 +789,16 @@ def fuse_floors(floors: Sequence[FloorData], out_path: str, frame, building_name
     return stats
 
 
+def is_fix_id(path: str) -> bool:
+    """True when the file references areas by way id (fix-id variant)."""
+    try:
+        with open(path, encoding="utf-8", errors="replace") as fh:
+            head = fh.read(1_000_000)
+    except OSError:
+        return False
+    return bool(re.search(r'k=["\']osmAG:(?:from|to|parent)["\'] v=["\']-?\d+["\']', head))
+
+
 def merge_floor_files(paths: Sequence[str], out_path: str, building_name: str = "Building",
                       levels: Optional[Sequence[str]] = None, heights: Optional[Sequence[float]] = None,
                       variant: Optional[str] = None, register: bool = True, strict_passages: bool = False,
@@ -811,12 +821,7 @@ def merge_floor_files(paths: Sequence[str], out_path: str, building_name: str = 
         fl = read_floor(path, frame)
         frame = frame or fl.frame
         floors.append(fl)
-        try:
-            with open(path, encoding="utf-8", errors="replace") as fh:
-                head = fh.read(400000)
-            fixid = fixid or bool(re.search(r'k=["\']osmAG:(?:from|parent)["\'] v=["\']-?\d+["\']', head))
-        except OSError:
-            pass
+        fixid = fixid or is_fix_id(path)
     variant = variant or ("fix-id" if fixid else "semantic")
     return fuse_floors(floors, out_path, frame, building_name=building_name, levels=levels, heights=heights,
                        variant=variant, register=register, strict_passages=strict_passages,

@@ -119,8 +119,7 @@ class MergeFloorsAlgorithm(Cad2OsmagAlgorithm):
                     raise QgsProcessingException(self.tr("floor file '{}' does not exist").format(p))
                 floors.append(building.read_floor(p, frame, progress=progress.sub(0, 1)))
                 frame = frame or floors[-1].frame
-                with open(p, encoding="utf-8", errors="replace") as fh:
-                    fixid = fixid or 'k="osmAG:from" v="-' in fh.read(2000000)
+                fixid = fixid or building.is_fix_id(p)
             if src is not None:
                 crs = src.sourceCrs()
                 if is_cad_frame(crs):
