@@ -361,11 +361,24 @@ def test_sist_five_filtered_floors_fuse_into_one_routable_building(shared_data, 
     assert len(names) == len(set(names))
 
 
+# Shafts named on both sheets of a pair of consecutive converted SIST levels, counted once from the DWG
+# originals' TEXT/MTEXT (E1-ST-xx stairs, E1-Px/E2-Px lifts; the texts converted with ezdwg.to_dxf, block
+# attributes not included, so these are lower bounds). F2's original is missing: F1-F3 are consecutive.
+SIST_DWG_SHAFTS = {
+    ("1", "3"): ["E1-P1", "E1-P2", "E1-ST-01", "E1-ST-02", "E1-ST-03", "E1-ST-04", "E1-ST-05", "E1-ST-06",
+                 "E1-ST-08", "E1-ST-09", "E2-P1", "E2-P2", "E2-P3", "E2-P4", "E2-ST-01", "E2-ST-02"],
+    ("3", "4"): ["E1-P2", "E1-ST-01", "E1-ST-02", "E1-ST-03", "E1-ST-04", "E1-ST-05", "E1-ST-06", "E1-ST-07",
+                 "E1-ST-08", "E1-ST-09", "E1-ST-15", "E2-P1", "E2-ST-01", "E2-ST-02", "E2-ST-05"],
+    ("4", "5"): ["E1-P2", "E1-P3", "E1-ST-01", "E1-ST-02", "E1-ST-03", "E1-ST-04", "E1-ST-05", "E1-ST-06",
+                 "E1-ST-07", "E1-ST-08", "E1-ST-09", "E2-P1", "E2-ST-01", "E2-ST-02"],
+}
+
+
 @pytest.mark.slow
 def test_sist_and_library_dwg_sheets_fuse_with_their_named_shafts(shared_data, tmp_path):
     """The original SIST sheets (F1, F3, F4, F5) and the four library sheets, straight from DWG, name their
     stairs and lifts (E1-ST-03, E2-P1...) and draw them on stair/lift layers: every shaft drawn on two
-    consecutive converted levels must be linked."""
+    consecutive converted levels must be linked (SIST: at least the hand-counted named shafts above)."""
     try:
         import algorithms.cad_dwg  # noqa: F401
     except ImportError:
@@ -376,14 +389,13 @@ def test_sist_and_library_dwg_sheets_fuse_with_their_named_shafts(shared_data, t
         paths = [str(folder / n) for n in names if (folder / n).exists()]
         if len(paths) < 2:
             continue
-        levels = None if sub == "sist-original" else ["4", "5", "6", "8"][:len(paths)]
+        # the library sheets are numbered 04..08 (08 is the sheet after 06): their levels in sheet order
+        levels = None if sub == "sist-original" else [str(k) for k in range(1, len(paths) + 1)]
         conv = building.convert_floors(paths, str(tmp_path / sub), levels=levels, workers=2, variant="fix-id")
         st = building.merge_floor_files([c[0] for c in conv], str(tmp_path / f"{sub}.osm"), building_name=sub,
                                         levels=levels)
         assert st["areas_in"] == st["areas_out"]
         areas, _, root, _ = osmag.read_osmag(str(tmp_path / f"{sub}.osm"))
-        linked = {(lo, hi) for lo, hi, *_ in st["vertical"]}
-        # every pair of consecutive converted levels whose shafts overlap is linked, shaft by shaft
         for lo, hi in zip(st["levels"], st["levels"][1:]):
             a_lo = [a for a in areas if a.tags.get("level") == lo and a.type in ("stairs", "elevator")]
             a_hi = [a for a in areas if a.tags.get("level") == hi and a.type in ("stairs", "elevator")]
@@ -391,44 +403,5 @@ def test_sist_and_library_dwg_sheets_fuse_with_their_named_shafts(shared_data, t
                            a.polygon.intersection(b.polygon).area >= 0.3 * min(a.polygon.area, b.polygon.area)}
             linked_lo = {x[2] for x in st["vertical"] if (x[0], x[1]) == (lo, hi)}
             assert overlapping and overlapping <= linked_lo, (sub, lo, hi, overlapping - linked_lo)
-            assert (lo, hi) in linked
-
-
-# --------------------------------------------------------------------------- real osmAG map, two levels
-def test_real_two_level_sist_map_is_registered_back_exactly_and_its_shafts_linked(shared_data, tmp_path):
-    """semantic_tags_SIST_1.osm (the osmAG authors' map of SIST, levels 1 and 2, stairs E1-ST-xx and
-    lifts E1-Px named on both levels). Counted by hand: 8 shafts are on both levels (E1-ST-01, 02, 03,
-    05, 08, 09 and lifts E1-P1, E1-P2); E1-ST-06, E2-P3 and E2-P4 are on level 1 only. E1-P1, E1-P2,
-    E1-ST-05 and E1-ST-08 are drawn identically on both levels, E1-ST-01 includes its landing on level 2
-    (centroid 1.6 m off). Level 2 is moved 2.7 km away and rotated by 7 degrees; the fusion must put it
-    back where it was drawn and link exactly those 8 shafts."""
-    src = shared_data / "osmag" / "semantic_tags_SIST_1.osm"
-    if not src.exists():
-        pytest.skip(f"{src} is missing")
-    areas, passages, root, _ = osmag.read_osmag(str(src))
-    frame = osmag.frame_from_root(root)
-    floors = building.floors_from_layers(areas, passages, frame, source="semantic_tags_SIST_1")
-    assert sorted(f.tag_level for f in floors) == ["1", "2"]
-    f2 = [f for f in floors if f.tag_level == "2"][0]
-    orig = {a.id: a.polygon for a in f2.areas}
-    away = Rigid(math.radians(7.0), 2400.0, -1300.0)
-    for a in f2.areas + f2.structures:
-        a.polygon = away.geometry(a.polygon)
-    for p in f2.passages:
-        p.line = away.geometry(p.line)
-    rec = RecordingProgress()
-    st = fuse_floors(floors, str(tmp_path / "sist.osm"), frame, building_name="SIST", progress=rec)
-    assert st["transforms"]["2"][2] == pytest.approx(-7.0, abs=1e-3)
-    assert max(a.polygon.hausdorff_distance(orig[a.id]) for a in f2.areas) < 0.01
-    res = {a: d for a, _, d in st["residuals"]["2"]}
-    assert len(res) == 8
-    for name in ("E1-P1", "E1-P2", "E1-ST-05", "E1-ST-08"):
-        assert res[name] < 0.01
-    assert res["E1-ST-01"] == pytest.approx(1.604, abs=0.01)
-    assert st["median_residual"]["2"] < 0.05
-    linked = sorted(x[2].replace(" (level 1)", "") for x in st["vertical"])
-    assert linked == ["E1-P1", "E1-P2", "E1-ST-01", "E1-ST-02", "E1-ST-03", "E1-ST-05", "E1-ST-08", "E1-ST-09"]
-    assert sorted(x[4] for x in st["vertical"]) == ["elevator"] * 2 + ["stairs"] * 6
-    out_areas, out_passages, _, rep = osmag.read_osmag(str(tmp_path / "sist.osm"))
-    assert len([p for p in out_passages if p.tags.get("osmAG:vertical") == "yes"]) == 8
-    assert st["areas_in"] == st["areas_out"]
+            if sub == "sist-original":
+                assert len(linked_lo) >= len(SIST_DWG_SHAFTS[(lo, hi)]), (lo, hi, sorted(linked_lo))
