@@ -47,7 +47,9 @@ MIN_FLOOR_OVERLAP = 0.2  # overlap / smaller floor outline for two floors to bel
 DEFAULT_HEIGHT = 3.2
 
 _STAIR_WORDS = re.compile(r"(stair|staircase|treppe|escal|scala|楼梯|樓梯|梯间|-ST-|^ST\d|\bST-?\d)", re.I)
-_LIFT_WORDS = re.compile(r"(elevator|lift|aufzug|ascensor|ascensore|电梯|電梯|-EV|\bEV\d|-P\d+$)", re.I)
+_LIFT_WORDS = re.compile(r"(elevator|lift|aufzug|ascensor|ascensore|电梯|電梯|-EV\d|\bEV\d)", re.I)
+_NOT_SHAFT = re.compile(r"(lobby|hall|foyer|landing|machine|motor|厅|前室|机房|候梯)", re.I)  # rooms beside shafts
+_LIFT_CODE = re.compile(r"^[A-Z]{1,2}\d+[a-z]?-P\d{1,2}$")  # E1-P1, E2-P4: lift codes of Chinese drawings
 _CN_DIGITS = {"零": 0, "一": 1, "二": 2, "两": 2, "三": 3, "四": 4, "五": 5, "六": 6, "七": 7, "八": 8, "九": 9,
               "十": 10}
 
@@ -224,11 +226,11 @@ def anchor_kind(a: Area) -> Optional[str]:
         return "elevator"
     for text in (a.name, a.ref, tags.get("ref", "")):
         text = str(text or "")
-        if not text:
+        if not text or _NOT_SHAFT.search(text):
             continue
         if _STAIR_WORDS.search(text):
             return "stairs"
-        if _LIFT_WORDS.search(text):
+        if _LIFT_WORDS.search(text) or _LIFT_CODE.match(text.strip()):
             return "elevator"
     return None
 

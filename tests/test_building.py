@@ -31,6 +31,16 @@ def test_level_from_file_name(name, level):
     assert level_from_name(name) == level
 
 
+@pytest.mark.parametrize("name,kind", [
+    ("E1-ST-03", "stairs"), ("Stair A", "stairs"), ("楼梯间", "stairs"), ("Treppenhaus 2", "stairs"),
+    ("E1-P1", "elevator"), ("E2-P4", "elevator"), ("Lift 2", "elevator"), ("电梯", "elevator"),
+    ("电梯厅", None), ("电梯机房", None), ("Lift lobby", None), ("Lab-P1", None), ("E1c-F2-PF-01", None),
+    ("Office 3", None),
+])
+def test_vertical_anchors_from_names(name, kind):
+    assert building.anchor_kind(Area(1, box(0, 0, 3, 3), name=name)) == kind
+
+
 # --------------------------------------------------------------------------- registration
 def _anchors(points, kinds, sizes=None, names=None):
     out = []
