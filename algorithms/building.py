@@ -341,13 +341,17 @@ def register_anchors(moving: Sequence[Anchor], fixed: Sequence[Anchor], tol: flo
              _base_name(moving[i].name) == _base_name(fixed[j].name)]
     tree = cKDTree(F)
 
+    compat = np.zeros((len(moving), len(fixed)), bool)
+    for i, j in comp:
+        compat[i, j] = True
+
     def consensus(T: Rigid):
         P = T.apply(M)
         pairs = []
-        for i, p in enumerate(P):
-            for j in tree.query_ball_point(p, tol):
-                if _compatible(moving[i], fixed[j]):
-                    pairs.append((float(np.hypot(*(p - F[j]))), i, j))
+        for i, js in enumerate(tree.query_ball_point(P, tol)):
+            for j in js:
+                if compat[i, j]:
+                    pairs.append((float(np.hypot(*(P[i] - F[j]))), i, j))
         pairs.sort()
         used_i, used_j, out = set(), set(), []
         for d, i, j in pairs:
@@ -442,13 +446,20 @@ def _polish_on_shapes(T: Rigid, pairs, rotate: bool, max_move: float = MATCH_TOL
     if not pairs:
         return T
 
+    import shapely
+
+    PM = np.empty(len(pairs), dtype=object)
+    PM[:] = [pm for pm, _ in pairs]
+    PF = np.empty(len(pairs), dtype=object)
+    PF[:] = [pf for _, pf in pairs]
+    denom = np.maximum(shapely.area(PM) + shapely.area(PF), 1e-9)  # a rigid move keeps the area
+
     def cost(v):
-        R = Rigid(v[2] if rotate else T.theta, v[0], v[1])
-        tot = 0.0
-        for pm, pf in pairs:
-            g = R.geometry(pm)
-            tot += 1.0 - 2.0 * g.intersection(pf).area / max(g.area + pf.area, 1e-9)
-        return tot / len(pairs)
+        th = v[2] if rotate else T.theta
+        co, si = math.cos(th), math.sin(th)
+        rot = np.array([[co, si], [-si, co]])
+        G = shapely.transform(PM, lambda xy: xy @ rot + (v[0], v[1]))
+        return float(np.mean(1.0 - 2.0 * shapely.area(shapely.intersection(G, PF)) / denom))
 
     x0 = np.array([T.tx, T.ty, T.theta])
     c0 = cost(x0)
