@@ -111,3 +111,20 @@ def test_merged_building_parses_and_routes_across_floors(client, floors, tmp_pat
     names = {p.id: p.name for p in passages}
     # the route goes up through a stair or lift link
     assert any(names[v] in chain for v in vertical), chain
+
+
+def test_real_two_level_map_fused_by_us_parses(client, tmp_path):
+    """The osmAG authors' own two-level SIST map, split into floors and fused again by us (fix-id, with
+    8 vertical passages between its stairs and lifts), is read back by their parser: every passage."""
+    src = REPO.parent / "shared" / "data" / "osmag" / "semantic_tags_SIST_1.osm"
+    if not src.exists():
+        pytest.skip(f"{src} is missing")
+    areas, passages, root, _ = osmag.read_osmag(str(src))
+    frame = osmag.frame_from_root(root)
+    out = tmp_path / "sist_fused.osm"
+    st = building.fuse_floors(building.floors_from_layers(areas, passages, frame), str(out), frame,
+                              variant="fix-id")
+    assert st["vertical_passages"] == 8
+    parsed = _passages(client, out)
+    _, ours, _, _ = osmag.read_osmag(str(out))
+    assert set(parsed) == {p.id for p in ours} and len(parsed) == st["passages"]
