@@ -6,7 +6,8 @@ ROOT  := $(abspath $(dir $(lastword $(MAKEFILE_LIST))))
 VENV  := $(ROOT)/.venv
 PY    := $(VENV)/bin/python
 APT_PACKAGES := qgis python3-qgis qgis-providers python3-venv python3-gdal gdal-bin osmium-tool xvfb \
-                python3-dev build-essential libproj-dev proj-bin
+                python3-dev build-essential libproj-dev proj-bin \
+                libeigen3-dev libopencv-core-dev libopencv-imgproc-dev
 STAMP := $(VENV)/.installed
 
 .PHONY: install demo test test-quick bench evaluate evaluate-cad clean help
