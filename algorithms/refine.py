@@ -97,12 +97,18 @@ def _overlapping_pairs(arr, valid, resolution: float):
     (including duplicates and polygons lying inside others)."""
     import shapely
 
-    tree = shapely.STRtree(arr)
-    o1, o2 = tree.query(arr, predicate="overlaps")
-    c1, c2 = tree.query(arr, predicate="contains")  # also catches duplicates and areas inside areas
-    i1 = np.concatenate([o1, np.minimum(c1, c2)])
-    i2 = np.concatenate([o2, np.maximum(c1, c2)])
-    keep = (i1 < i2) & valid[i1] & valid[i2]
+    # GEOS predicates on an invalid polygon raise TopologyException (side location conflict):
+    # only valid polygons are compared; invalid ones are offenders of their own
+    idx = np.flatnonzero(valid)
+    if len(idx) < 2:
+        return []
+    sub = arr[idx]
+    tree = shapely.STRtree(sub)
+    o1, o2 = tree.query(sub, predicate="overlaps")
+    c1, c2 = tree.query(sub, predicate="contains")  # also catches duplicates and areas inside areas
+    i1 = idx[np.concatenate([o1, np.minimum(c1, c2)]).astype(np.int64)]
+    i2 = idx[np.concatenate([o2, np.maximum(c1, c2)]).astype(np.int64)]
+    keep = i1 < i2
     pairs = sorted(set(zip(i1[keep].tolist(), i2[keep].tolist())))
     if not pairs:
         return []
