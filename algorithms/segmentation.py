@@ -182,6 +182,40 @@ def _coarse_reach(passable: np.ndarray, rc: float, target_px: float = 32.0) -> n
     return reach
 
 
+def _opens_onto(lab: np.ndarray, n: int, lab0: np.ndarray, n0: int, big0: np.ndarray, min_contact: int
+                ) -> np.ndarray:
+    """Which candidate pieces (``lab`` 1..n-1) open onto the enclosed interior: pieces and interior
+    pockets (``lab0`` 1..n0-1) touching along at least ``min_contact`` pixel edges are linked, and a
+    piece is kept when its links reach an interior component that is a real space (``big0``), not a
+    corner the outside disk left (the pieces of a portico between pillars reach the rooms through
+    the strip along its back wall and through each other)."""
+    from scipy.sparse import coo_matrix
+    from scipy.sparse.csgraph import connected_components
+
+    # the pieces are 4-connected components of the candidates, so they never touch each other:
+    # only piece-pocket contacts link them
+    ca, cb = [], []
+    for a, b in ((lab[:-1, :], lab0[1:, :]), (lab[1:, :], lab0[:-1, :]),
+                 (lab[:, :-1], lab0[:, 1:]), (lab[:, 1:], lab0[:, :-1])):
+        m = (a > 0) & (b > 0)
+        ca.append(a[m])
+        cb.append(b[m])
+    ca = np.concatenate(ca).astype(np.int64)
+    cb = np.concatenate(cb).astype(np.int64)
+    if len(ca) == 0:
+        return np.zeros(n, bool)
+    pair, cnt = np.unique(ca * n0 + cb, return_counts=True)
+    pair = pair[cnt >= min_contact]
+    ea, eb = pair // n0, pair % n0
+    g = coo_matrix((np.ones(len(pair)), (ea, n + eb)), shape=(n + n0, n + n0))
+    _, comp = connected_components(g, directed=False)
+    good = np.zeros(comp.max() + 1, bool)
+    good[comp[n + np.flatnonzero(big0)]] = True
+    keep = good[comp[:n]]
+    keep[0] = False
+    return keep
+
+
 def _chord_pockets(claimed: np.ndarray, free_out: np.ndarray) -> np.ndarray:
     """Close claimed space at the chord of its openings, not at the arc of the rolling disk.
 
@@ -247,6 +281,11 @@ def building_interior(free: np.ndarray, resolution: float, envelope_gap: float =
     reach0 = _reach(_outside_centres(_edt(np.pad(passable, pad, mode="constant", constant_values=True)), rc0),
                     rc0, pad)
     interior0 = free & ~reach0
+    # what the disk leaves in the corners of the outside (up to rc0^2: corners of 50 degrees and more)
+    # is no interior a doorway could open onto
+    n0, lab0, st0, _ = cv2.connectedComponentsWithStats(interior0.view(np.uint8), connectivity=4, ltype=cv2.CV_32S)
+    big0 = st0[:, cv2.CC_STAT_AREA] >= rc0 * rc0
+    big0[0] = False
     claimed = np.zeros(free.shape, bool)
     pts = np.zeros((0, 2), np.int64)
     if inside_points is not None and len(inside_points):
@@ -268,11 +307,7 @@ def building_interior(free: np.ndarray, resolution: float, envelope_gap: float =
         n, lab = cv2.connectedComponents(cand.view(np.uint8), connectivity=4, ltype=cv2.CV_32S)
         keep = np.zeros(n, bool)
         if k == 0:  # footprint: keep what opens onto the enclosed interior
-            contact = np.zeros(n, np.int64)
-            for a, b in ((lab[:-1, :], interior0[1:, :]), (lab[1:, :], interior0[:-1, :]),
-                         (lab[:, :-1], interior0[:, 1:]), (lab[:, 1:], interior0[:, :-1])):
-                contact += np.bincount(a[b], minlength=n)
-            keep = contact >= min_contact
+            keep = _opens_onto(lab, n, lab0, n0, big0, min_contact)
         rest = []
         for c, r in open_pts:
             if lab[r, c] > 0:
