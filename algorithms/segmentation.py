@@ -87,6 +87,8 @@ MIN_INTERIOR_COMPONENT_M2 = 1.0  # smaller free pockets inside the envelope are 
 OUTSIDE_CONTACT = 0.35  # areas whose outline is open to the outside for this fraction are exterior recesses
 FOOTPRINT_FACTOR = 3.0  # footprint of the plan: openings up to 3 x ENVELOPE_GAP are bridged for evidence
 CLAIM_FACTOR = 1.5  # space claimed at footprint scale D is at most (1.5 D)^2 (larger: landscape, sheet gaps)
+BITE_CONTACT = 0.3  # a piece whose outline runs along interior space for this fraction is a bite into a room
+DEEP_SPACE = 0.3  # a piece with area >= this x chord^2 of its opening is a space (hall, porch), not a corner
 MIN_CONTACT_M = 0.5  # space open to the outside must open onto the interior this wide (a doorway) to be claimed
 MIN_PASSAGE_M = 0.2  # shorter extra contacts between two areas that also touch elsewhere are no passage
 
@@ -195,10 +197,10 @@ def _opens_onto(lab: np.ndarray, n: int, lab0: np.ndarray, n0: int, big0: np.nda
     # the pieces are 4-connected components of the candidates, so they never touch each other:
     # only piece-pocket contacts link them
     ca, cb = [], []
-    for a, b in ((lab[:-1, :], lab0[1:, :]), (lab[1:, :], lab0[:-1, :]),
-                 (lab[:, :-1], lab0[:, 1:]), (lab[:, 1:], lab0[:, :-1])):
-        m = (a > 0) & (b > 0)
-        ca.append(a[m])
+    for src, nb, _ in _boundary_pairs(lab):
+        b = lab0.ravel()[nb]
+        m = b > 0
+        ca.append(lab.ravel()[src[m]])
         cb.append(b[m])
     ca = np.concatenate(ca).astype(np.int64)
     cb = np.concatenate(cb).astype(np.int64)
@@ -214,6 +216,60 @@ def _opens_onto(lab: np.ndarray, n: int, lab0: np.ndarray, n0: int, big0: np.nda
     keep = good[comp[:n]]
     keep[0] = False
     return keep
+
+
+def _boundary_pairs(lab: np.ndarray):
+    """The 4-neighbour pairs leaving the pieces of ``lab`` (> 0): yields (flat index of the piece
+    pixel, flat index of its neighbour outside the piece, direction) for the four directions. Only
+    the pieces' boundary pixels are visited (fast on large rasters with small pieces)."""
+    import cv2
+
+    rows, cols = lab.shape
+    m = (lab > 0).view(np.uint8)
+    inner = cv2.erode(m, np.array([[0, 1, 0], [1, 1, 1], [0, 1, 0]], np.uint8), borderType=cv2.BORDER_CONSTANT,
+                      borderValue=0)
+    bd = np.flatnonzero((m & (1 - inner)).ravel())
+    r, c = np.divmod(bd, cols)
+    flat = lab.ravel()
+    for dr, dc in ((-1, 0), (1, 0), (0, -1), (0, 1)):
+        ok = (r + dr >= 0) & (r + dr < rows) & (c + dc >= 0) & (c + dc < cols)
+        src = bd[ok]
+        nb = src + dr * cols + dc
+        keep = flat[nb] != flat[src]
+        yield src[keep], nb[keep], (dr, dc)
+
+
+def _space_shaped(lab: np.ndarray, n: int, interior0: np.ndarray, out_free: np.ndarray) -> np.ndarray:
+    """Which candidate pieces are spaces rather than corners of the outside: a piece is kept when it
+    is a bite of the outside disk into the interior (at least ``BITE_CONTACT`` of its outline runs
+    along interior space) or when it is deep behind its opening (area >= ``DEEP_SPACE`` x chord^2,
+    the chord measured across its cut to the outside): halls and porches between wings are, the
+    triangle the footprint disk leaves in a concave corner of the outside (a courtyard corner
+    in front of a door) is not."""
+    total = np.zeros(n, np.int64)
+    contact = np.zeros(n, np.int64)
+    cols = lab.shape[1]
+    big = max(lab.shape) + 1
+    cmin = np.full((n, 2), big, np.int64)
+    cmax = np.full((n, 2), -1, np.int64)
+    flat = lab.ravel()
+    i0 = interior0.ravel()
+    of = out_free.ravel()
+    for src, nb, _ in _boundary_pairs(lab):
+        ids = flat[src]
+        total += np.bincount(ids, minlength=n)
+        contact += np.bincount(ids[i0[nb]], minlength=n)
+        cut = of[nb]
+        if cut.any():
+            rc = np.stack(np.divmod(src[cut], cols), 1)
+            np.minimum.at(cmin, ids[cut], rc)
+            np.maximum.at(cmax, ids[cut], rc)
+    area = np.bincount(flat, minlength=n).astype(np.float64)
+    span = np.where(cmax[:, :1] >= 0, cmax - cmin + 1, 0).astype(np.float64)
+    chord2 = (span ** 2).sum(axis=1)
+    ok = (contact >= BITE_CONTACT * np.maximum(total, 1)) | (area >= DEEP_SPACE * chord2)
+    ok[0] = False
+    return ok
 
 
 def _chord_pockets(claimed: np.ndarray, free_out: np.ndarray) -> np.ndarray:
@@ -277,9 +333,10 @@ def building_interior(free: np.ndarray, resolution: float, envelope_gap: float =
         rcf = fgap / 2.0 / resolution
         # a disk wider than the map proves nothing: larger scales are not used
         scales += [r for r in (rcf, 2.0 * rcf) if 2.0 * r <= max(free.shape)]
-    pad = int(math.ceil(rc0)) + 2
-    reach0 = _reach(_outside_centres(_edt(np.pad(passable, pad, mode="constant", constant_values=True)), rc0),
-                    rc0, pad)
+    # the envelope and the footprint scale exactly (their arcs decide bites), larger scales coarsely
+    pad = int(math.ceil(scales[1] if len(scales) > 1 else rc0)) + 2
+    dist = _edt(np.pad(passable, pad, mode="constant", constant_values=True))
+    reach0 = _reach(_outside_centres(dist, rc0), rc0, pad)
     interior0 = free & ~reach0
     # what the disk leaves in the corners of the outside (up to rc0^2: corners of 50 degrees and more)
     # is no interior a doorway could open onto
@@ -300,14 +357,17 @@ def building_interior(free: np.ndarray, resolution: float, envelope_gap: float =
     for k, rc in enumerate(scales[1:]):
         if k > 0 and not open_pts:
             break
-        reach = _coarse_reach(passable, rc)
+        reach = _reach(_outside_centres(dist, rc), rc, pad) if k == 0 else _coarse_reach(passable, rc)
+        if k == 0:
+            del dist
         cand = free & reach0 & ~reach & ~claimed
         if not cand.any():
             continue
         n, lab = cv2.connectedComponents(cand.view(np.uint8), connectivity=4, ltype=cv2.CV_32S)
         keep = np.zeros(n, bool)
-        if k == 0:  # footprint: keep what opens onto the enclosed interior
-            keep = _opens_onto(lab, n, lab0, n0, big0, min_contact)
+        if k == 0:  # footprint: keep what opens onto the enclosed interior and is a space of its own
+            keep = _opens_onto(lab, n, lab0, n0, big0, min_contact) & _space_shaped(lab, n, interior0,
+                                                                                     free & reach)
         rest = []
         for c, r in open_pts:
             if lab[r, c] > 0:
