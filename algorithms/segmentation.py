@@ -8,9 +8,16 @@ Steps (``AreaGraph.stats`` keeps the wall time of each):
 
 ``interior``
     Building envelope. A disk of radius ``envelope_gap / 2`` rolled through the free space from
-    outside the image marks everything it can reach as *outside*; facade openings narrower than
-    ``envelope_gap`` (doors, glazing, drawing gaps) are therefore bridged and the interior is the
-    rest of the free space. Outside space is never an area. Unknown cells are never free.
+    outside the image marks everything it can reach as *open to the outside*; facade openings
+    narrower than ``envelope_gap`` (doors, glazing, drawing gaps) are therefore bridged. Space open
+    to the outside is still inside where there is evidence (``building_interior``): the footprint
+    of the plan (what a disk of ``FOOTPRINT_FACTOR`` x ``envelope_gap`` cannot reach, where it opens
+    onto a real room through a doorway and is a space of its own: halls and porticoes open between
+    wings, bites of the disk into rooms behind undrawn windows) and room-name points
+    (``inside_points``: the space holding a name is inside at the smallest footprint scale that
+    encloses it). Claimed space is closed at the chord between the facade wall ends. Only space
+    without evidence that is open to the outside is outside; it is never an area. Unknown cells
+    are never free. ``door_hints`` (doorways found in the drawing) are kept free.
 ``skeleton``
     Clearance (Euclidean distance to the nearest wall) and the skeleton of the free space as a
     graph (``skeleton.skeleton_graph``): the space is thinned to its one-pixel medial axis -- the
@@ -56,7 +63,12 @@ Steps (``AreaGraph.stats`` keeps the wall time of each):
     their border vertices exactly.
 ``passages``
     One passage per connected piece of the border between two areas: the segment between the two
-    ends of the shared border (where it meets walls), its length is the passage width.
+    ends of the shared border (where it meets walls), its length is the passage width. Door hints
+    the segmentation missed (the areas on both sides are not joined) become passages too.
+``components``
+    Connected components of the area graph: every area's ``component`` (0 = the largest by
+    area); the others are logged with their area ids, names and size, so no room is silently
+    orphaned (``assign_components``, ``report_components``).
 """
 from __future__ import annotations
 
@@ -241,8 +253,8 @@ def _boundary_pairs(lab: np.ndarray):
 
 def _space_shaped(lab: np.ndarray, n: int, interior0: np.ndarray, out_free: np.ndarray) -> np.ndarray:
     """Which candidate pieces are spaces rather than corners of the outside: a piece is kept when it
-    is a bite of the outside disk into the interior (at least ``BITE_CONTACT`` of its outline runs
-    along interior space) or when it is deep behind its opening (area >= ``DEEP_SPACE`` x chord^2,
+    is a bite of the outside disk into a room (at least ``BITE_CONTACT`` of its outline runs along
+    ``interior0``, the enclosed rooms) or when it is deep behind its opening (area >= ``DEEP_SPACE`` x chord^2,
     the chord measured across its cut to the outside): halls and porches between wings are, the
     triangle the footprint disk leaves in a concave corner of the outside (a courtyard corner
     in front of a door) is not."""
@@ -272,13 +284,13 @@ def _space_shaped(lab: np.ndarray, n: int, interior0: np.ndarray, out_free: np.n
     return ok
 
 
-def _chord_pockets(claimed: np.ndarray, free_out: np.ndarray) -> np.ndarray:
+def _chord_pockets(claimed: np.ndarray, free_out: np.ndarray, max_chord: float = 0.0) -> np.ndarray:
     """Close claimed space at the chord of its openings, not at the arc of the rolling disk.
 
     The disk that stopped at an opening leaves an arc-shaped cut between ``claimed`` and the
     remaining outside free space ``free_out``; the convex hull of each cut piece is the lens
     between the arc and the chord joining the two facade wall ends. Returns the free pixels of
-    those lenses (to be claimed too)."""
+    those lenses (to be claimed too). ``max_chord`` > 0: only cut pieces at most that long (px)."""
     import cv2
 
     cut = free_out & (cv2.dilate(claimed.view(np.uint8), np.ones((3, 3), np.uint8)).view(bool))
@@ -288,6 +300,8 @@ def _chord_pockets(claimed: np.ndarray, free_out: np.ndarray) -> np.ndarray:
         if st[k, cv2.CC_STAT_AREA] < 3:
             continue
         x0, y0, w, h = (int(v) for v in st[k, :4])
+        if max_chord > 0 and math.hypot(w, h) > max_chord:
+            continue
         rr, cc = np.nonzero(lab[y0:y0 + h, x0:x0 + w] == k)
         pts = np.stack([cc + x0, rr + y0], axis=1).astype(np.int32)
         cv2.fillConvexPoly(out, cv2.convexHull(pts), 1)
@@ -316,8 +330,9 @@ def building_interior(free: np.ndarray, resolution: float, envelope_gap: float =
     * ``inside_points`` ((x, y) pixel coordinates, col/row, of room-name texts): the space holding
       one is inside whatever its facade, at the smallest footprint scale (x1, x2) that encloses it.
 
-    Claimed space enclosed at scale D is at most ``CLAIM_FACTOR`` x D squared: larger pockets are
-    forecourts, the street or the gap between two drawings of a sheet.
+    Claimed space enclosed at the footprint scale D is at most (``CLAIM_FACTOR`` x D)^2, at the
+    larger scale at most D^2: larger pockets are forecourts, the street or the gap between two
+    drawings of a sheet.
 
     Claimed space is closed at the chord between the two facade wall ends of its opening, never
     at the arc of the rolling disk (no bites). ``info`` (a dict) receives figures for the log.
@@ -343,7 +358,14 @@ def building_interior(free: np.ndarray, resolution: float, envelope_gap: float =
     n0, lab0, st0, _ = cv2.connectedComponentsWithStats(interior0.view(np.uint8), connectivity=4, ltype=cv2.CV_32S)
     big0 = st0[:, cv2.CC_STAT_AREA] >= rc0 * rc0
     big0[0] = False
-    claimed = np.zeros(free.shape, bool)
+    # facade openings narrower than the envelope gap close at their chord, not at the disk's arc
+    claimed = _chord_pockets(big0[lab0], free & reach0, max_chord=2.2 * rc0)
+    if claimed.any():
+        interior0 = interior0 | claimed
+        n0, lab0, st0, _ = cv2.connectedComponentsWithStats(interior0.view(np.uint8), connectivity=4,
+                                                            ltype=cv2.CV_32S)
+        big0 = st0[:, cv2.CC_STAT_AREA] >= rc0 * rc0
+        big0[0] = False
     pts = np.zeros((0, 2), np.int64)
     if inside_points is not None and len(inside_points):
         pts = np.rint(np.asarray(inside_points, dtype=np.float64).reshape(-1, 2) - 0.5).astype(np.int64)
@@ -366,7 +388,7 @@ def building_interior(free: np.ndarray, resolution: float, envelope_gap: float =
         n, lab = cv2.connectedComponents(cand.view(np.uint8), connectivity=4, ltype=cv2.CV_32S)
         keep = np.zeros(n, bool)
         if k == 0:  # footprint: keep what opens onto the enclosed interior and is a space of its own
-            keep = _opens_onto(lab, n, lab0, n0, big0, min_contact) & _space_shaped(lab, n, interior0,
+            keep = _opens_onto(lab, n, lab0, n0, big0, min_contact) & _space_shaped(lab, n, big0[lab0],
                                                                                      free & reach)
         rest = []
         for c, r in open_pts:
@@ -380,7 +402,7 @@ def building_interior(free: np.ndarray, resolution: float, envelope_gap: float =
         # a space proven enclosed by a disk of diameter D is believed up to (CLAIM_FACTOR x D)^2:
         # larger ones are the gaps between drawings on a sheet, forecourts, the street
         size = np.bincount(lab.ravel(), minlength=n)
-        keep &= size <= (CLAIM_FACTOR * 2.0 * rc) ** 2
+        keep &= size <= ((CLAIM_FACTOR if k == 0 else 1.0) * 2.0 * rc) ** 2
         if not keep.any():
             continue
         got = keep[lab]
@@ -891,17 +913,23 @@ def report_components(components: List[dict], progress, stage: str = "segmentati
 
 
 def room_name_points(texts) -> np.ndarray:
-    """(x, y) of texts that may name a room: they contain a letter and are not dimensions, levels
-    or grid bubbles (a simple rule; the names module refines it). ``texts``: ``model.CadText``."""
+    """(x, y) of texts that may name a room: they contain a letter and are not dimensions, levels,
+    grid bubbles or drawing titles ("PLAN", "SECTION 1-1", "scala 1:100", web addresses); a simple
+    rule, the names module refines it. ``texts``: ``model.CadText``."""
     import re
 
     dim = re.compile(r"^[\s%%cdpCDP\u00b1\u2300\u00f8+\-.,:;=x\u00d7/()hHmMcC0-9\u00b0'\"]*$")
+    title = re.compile(r"^(plan|plans|pianta|planta|plano|grundriss|section|sezione|secci[oó]n|schnitt|coupe|"
+                       r"facade|fa[cç]ade|prospetto|alzado|ansicht|elevation|scale|scala|escala|ma[sß]stab|"
+                       r"north|nord|norte|legend|legenda|leyenda|title|titolo|t[ií]tulo|www\.|http)\b",
+                       re.I)
     level = re.compile(r"^(level|livello|nivel|niveau|ebene|quota|cota|h|el\.?|elev\.?)\s*[+\-\u00b1]?\s*[0-9]",
                        re.I)
     pts = []
     for t in texts or ():
         txt = (t.text or "").strip()
-        if len(txt) < 2 or not any(ch.isalpha() for ch in txt) or dim.match(txt) or level.match(txt):
+        if len(txt) < 2 or not any(ch.isalpha() for ch in txt) or dim.match(txt) or level.match(txt) \
+                or title.match(txt) or re.search(r"\b1\s*:\s*\d+", txt):
             continue
         if not (np.isfinite(t.x) and np.isfinite(t.y)):
             continue

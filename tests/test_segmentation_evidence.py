@@ -215,6 +215,9 @@ def test_room_name_points_rule():
     texts = [CadText(1, 1, "AULA 1", 0.3, 0, "t"), CadText(2, 2, "+0.30", 0.3, 0, "t"),
              CadText(3, 3, "A", 0.3, 0, "t"), CadText(4, 4, "Level -6.000", 0.3, 0, "t"),
              CadText(5, 5, "2.40x1.20", 0.3, 0, "t"), CadText(6, 6, "Hall distribuzione", 0.3, 0, "t"),
-             CadText(7, 7, "h 2.70", 0.3, 0, "t"), CadText(8, 8, "办公室", 0.3, 0, "t")]
+             CadText(7, 7, "h 2.70", 0.3, 0, "t"), CadText(8, 8, "办公室", 0.3, 0, "t"),
+             CadText(9, 9, "PLAN", 0.3, 0, "t"), CadText(10, 10, "SECTION 1-1", 0.3, 0, "t"),
+             CadText(11, 11, "Pianta piano terra scala 1:100", 0.3, 0, "t"),
+             CadText(12, 12, "www.archweb.it", 0.3, 0, "t"), CadText(13, 13, "Planning office", 0.3, 0, "t")]
     pts = seg.room_name_points(texts)
-    assert pts.tolist() == [[1, 1], [6, 6], [8, 8]]
+    assert pts.tolist() == [[1, 1], [6, 6], [8, 8], [13, 13]]
