@@ -90,7 +90,7 @@ def process_floor(dxf_path: str, *, rules=None, layers=None, units=None, include
         room_name_points = segmentation.room_name_points
     seg = timed("segment", 35, 80, segmentation.segment, grid, door_width=door_width,
                 corridor_width=corridor_width, delta=delta, prune=prune,
-                inside_points=room_name_points(drawing.texts), door_hints=drawing.doors)
+                inside_points=room_name_points(drawing.texts), door_hints=drawing.doors, footprint=True)
     vertical = classify_vertical_areas(seg.areas, drawing.geometries)
     if vertical:
         progress.info(f"{len(vertical)} stair/lift areas recognised from their symbols")

@@ -310,8 +310,8 @@ def _chord_pockets(claimed: np.ndarray, free_out: np.ndarray, max_chord: float =
 
 def building_interior(free: np.ndarray, resolution: float, envelope_gap: float = DEFAULT_ENVELOPE_GAP,
                       unknown: Optional[np.ndarray] = None, inside_points=None,
-                      footprint_gap: Optional[float] = None, info: Optional[dict] = None
-                      ) -> Tuple[np.ndarray, np.ndarray]:
+                      footprint_gap: Optional[float] = None, info: Optional[dict] = None,
+                      footprint: bool = True) -> Tuple[np.ndarray, np.ndarray]:
     """Free space inside the building envelope.
 
     Returns ``(interior_free, envelope)``: ``envelope`` is everything that is not outside, walls
@@ -322,7 +322,9 @@ def building_interior(free: np.ndarray, resolution: float, envelope_gap: float =
     outside the image through free (or ``unknown``: unexplored, no evidence of a building) space.
     Space open to the outside is still inside when there is evidence of it:
 
-    * the footprint of the plan: space that a disk of diameter ``footprint_gap`` (default
+    * facade openings narrower than ``envelope_gap`` close at the chord between their wall ends,
+      not at the arc of the disk (no bites into the rooms behind them);
+    * with ``footprint``, the footprint of the plan: space that a disk of diameter ``footprint_gap`` (default
       ``FOOTPRINT_FACTOR`` x ``envelope_gap``) cannot reach -- halls, porches and loggias open
       between two wings, facades whose windows are not drawn -- and that opens onto the enclosed
       interior (a doorway, at least ``MIN_CONTACT_M`` of contact), so that landscape pockets
@@ -377,7 +379,7 @@ def building_interior(free: np.ndarray, resolution: float, envelope_gap: float =
     claimed_pts = 0
     min_contact = max(1, int(round(MIN_CONTACT_M / resolution)))
     for k, rc in enumerate(scales[1:]):
-        if k > 0 and not open_pts:
+        if not open_pts and (k > 0 or not footprint):
             break
         reach = _reach(_outside_centres(dist, rc), rc, pad) if k == 0 else _coarse_reach(passable, rc)
         if k == 0:
@@ -387,7 +389,9 @@ def building_interior(free: np.ndarray, resolution: float, envelope_gap: float =
             continue
         n, lab = cv2.connectedComponents(cand.view(np.uint8), connectivity=4, ltype=cv2.CV_32S)
         keep = np.zeros(n, bool)
-        if k == 0:  # footprint: keep what opens onto the enclosed interior and is a space of its own
+        if k == 0 and not footprint:
+            keep[:] = False
+        elif k == 0:  # footprint: keep what opens onto the enclosed interior and is a space of its own
             keep = _opens_onto(lab, n, lab0, n0, big0, min_contact) & _space_shaped(lab, n, big0[lab0],
                                                                                      free & reach)
         rest = []
@@ -941,7 +945,8 @@ def room_name_points(texts) -> np.ndarray:
 def segment(grid: OccupancyGrid, door_width: float = DEFAULT_DOOR_WIDTH,
             corridor_width: float = DEFAULT_CORRIDOR_WIDTH, delta: float = DEFAULT_DELTA,
             prune: float = DEFAULT_PRUNE, progress: Optional[Progress] = None,
-            envelope_gap: float = DEFAULT_ENVELOPE_GAP, inside_points=None, door_hints=None) -> AreaGraph:
+            envelope_gap: float = DEFAULT_ENVELOPE_GAP, inside_points=None, door_hints=None,
+            footprint: bool = False) -> AreaGraph:
     """Segment the free space of ``grid`` into an Area Graph.
 
     Returns an ``AreaGraph`` whose areas carry exact pixel-edge polygons (world metres), whose
@@ -952,7 +957,9 @@ def segment(grid: OccupancyGrid, door_width: float = DEFAULT_DOOR_WIDTH,
     ``InputError`` for unusable input.
 
     ``inside_points``: (x, y) world metres of room-name texts, evidence that the space holding each
-    is inside the building whatever its facade (``building_interior``). ``door_hints``
+    is inside the building whatever its facade (``building_interior``). ``footprint``: the plan's
+    footprint is evidence too (``FOOTPRINT_FACTOR``; for CAD plans, whose outline is drawn: on a
+    robot map the free space beside the rooms is where the scan ended, not a porch). ``door_hints``
     (``model.DoorHint``): doorways found in the drawing; their openings are kept free and they
     become passages where the areas on both sides are not joined otherwise (``hint_passages``).
     Every area gets its ``component`` in the area graph (0 = the largest); ``stats`` has
@@ -981,7 +988,8 @@ def segment(grid: OccupancyGrid, door_width: float = DEFAULT_DOOR_WIDTH,
         pix_pts = np.stack(grid.world_to_pixel(xy[:, 0], xy[:, 1]), axis=1)
     # unknown cells are not passable for the envelope disk either: some maps draw walls in grey
     info: dict = {}
-    interior, envelope = building_interior(free, res, envelope_gap, inside_points=pix_pts, info=info)
+    interior, envelope = building_interior(free, res, envelope_gap, inside_points=pix_pts, info=info,
+                                           footprint=footprint)
     del envelope
     stats["claimed_open_m2"] = info.get("claimed_px", 0) * res * res
     stats["inside_points"] = float(info.get("inside_points", 0))

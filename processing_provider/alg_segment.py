@@ -9,6 +9,7 @@ from qgis.core import (
     QgsProcessing,
     QgsProcessingException,
     QgsProcessingOutputNumber,
+    QgsProcessingParameterEnum,
     QgsProcessingParameterFeatureSink,
     QgsProcessingParameterFeatureSource,
     QgsProcessingParameterNumber,
@@ -30,6 +31,18 @@ def _area_fields():
     fields = area_fields()
     fields.append(QgsField("perimeter_m", FIELD_DOUBLE))
     return fields
+
+
+def _is_cad_raster(path):
+    """True for an occupancy GeoTIFF written by cad2osmag (a rasterized CAD plan)."""
+    if not str(path).lower().endswith((".tif", ".tiff")):
+        return False
+    from osgeo import gdal
+
+    from ..algorithms.raster_io import OCCUPANCY_TAG
+
+    ds = gdal.Open(str(path))
+    return ds is not None and OCCUPANCY_TAG in (ds.GetMetadata() or {})
 
 
 def _texts_and_doors(texts, doors):
@@ -87,7 +100,9 @@ class SegmentAlgorithm(Cad2OsmagAlgorithm):
             "length, min and max clearance). Space open to the outside is still inside where there is evidence: "
             "the plan's footprint (openings up to 3 x ENVELOPE_GAP, closed at the chord between the facade wall "
             "ends, where it opens onto the interior through a doorway) and the optional TEXTS (room names, from "
-            "'Extract structure': the space holding one is never outside). The optional DOORS (jamb-to-jamb "
+            "'Extract structure': the space holding one is never outside). FOOTPRINT: by default the footprint is "
+            "used for rasters made by 'Rasterize' (CAD plans), not for images and ROS maps (robot maps, whose free "
+            "space beside the rooms is where the scan ended). The optional DOORS (jamb-to-jamb "
             "lines) are kept open and become passages where the segmentation missed them. Every area has a "
             "'component' field: its connected component in the area graph (0 = the largest); the log lists the "
             "others (rooms no passage reaches).")
@@ -128,6 +143,10 @@ class SegmentAlgorithm(Cad2OsmagAlgorithm):
         self.addParameter(QgsProcessingParameterFeatureSource(
             "STRUCTURE", self.tr("Structure lines of the drawing (WALLS of 'Extract structure'), to recognise "
                                  "stairs and lifts"), [QgsProcessing.SourceType.TypeVectorLine], optional=True))
+        self.addParameter(QgsProcessingParameterEnum(
+            "FOOTPRINT", self.tr("Use the plan's footprint as evidence of inside space"),
+            options=[self.tr("automatic (CAD rasters from 'Rasterize': yes; images and ROS maps: no)"),
+                     self.tr("yes"), self.tr("no")], defaultValue=0))
         self.addParameter(QgsProcessingParameterFeatureSource(
             "TEXTS", self.tr("Room names (TEXTS of 'Extract structure'): evidence of inside space"),
             [QgsProcessing.SourceType.TypeVectorPoint], optional=True))
@@ -186,7 +205,11 @@ class SegmentAlgorithm(Cad2OsmagAlgorithm):
                                                      self.parameterAsSource(parameters, "DOORS", context))
         if inside_points is not None:
             feedback.pushInfo(self.tr("{} room-name points used as evidence of inside space").format(len(inside_points)))
+        choice = self.parameterAsEnum(parameters, "FOOTPRINT", context)
+        footprint = choice == 1 or (choice == 0 and _is_cad_raster(path))
+        feedback.pushInfo(self.tr("Footprint evidence: {}").format(self.tr("yes") if footprint else self.tr("no")))
         ag = self.call(feedback, segmentation.segment, grid, inside_points=inside_points, door_hints=door_hints,
+                       footprint=footprint,
                        door_width=self.parameterAsDouble(parameters, self.DOOR_WIDTH, context),
                        corridor_width=self.parameterAsDouble(parameters, self.CORRIDOR_WIDTH, context),
                        delta=self.parameterAsDouble(parameters, self.DELTA, context),

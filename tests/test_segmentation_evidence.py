@@ -49,6 +49,16 @@ def open_facade():
     return grid, rooms, doors, labels
 
 
+def test_robot_maps_use_no_footprint(open_facade):
+    """Without footprint evidence (the default: robot maps, whose free space beside the rooms is
+    where the scan ended) the open hall stays outside unless a name claims it."""
+    grid, rooms, _, labels = open_facade
+    ag = seg.segment(grid)
+    assert _best(ag, rooms["HALL DISTRIBUZIONE"])[1] < 0.5
+    named = seg.segment(grid, inside_points=np.array([labels["HALL DISTRIBUZIONE"]]))
+    assert _best(named, rooms["HALL DISTRIBUZIONE"])[1] >= 0.8
+
+
 def test_old_envelope_eats_the_open_hall_and_portico(open_facade):
     """The failure of issue 8: with the 4 m disk alone the hall open to the street and the portico
     closed only by pillars are outside, and the rooms fall apart into two components."""
@@ -65,7 +75,7 @@ def test_old_envelope_eats_the_open_hall_and_portico(open_facade):
 def test_open_hall_and_portico_become_areas_with_passages(open_facade, with_names):
     grid, rooms, doors, labels = open_facade
     pts = np.array(list(labels.values())) if with_names else None
-    ag = seg.segment(grid, inside_points=pts)
+    ag = seg.segment(grid, inside_points=pts, footprint=True)
     found = {}
     for name, poly in rooms.items():
         a, iou = _best(ag, poly)
@@ -91,11 +101,11 @@ def test_label_claims_a_hall_wider_than_the_footprint_scale():
     walls, rooms, doors, labels = open_facade_plan(hall_width=14.0)
     grid = _grid_of(walls, (-6.0, -6.0, 44.0, 21.0))
     hall = rooms["HALL DISTRIBUZIONE"]
-    plain = seg.segment(grid)
+    plain = seg.segment(grid, footprint=True)
     _, iou = _best(plain, hall)
     assert iou < 0.5
     rec = RecordingProgress()
-    named = seg.segment(grid, inside_points=np.array(list(labels.values())), progress=rec)
+    named = seg.segment(grid, inside_points=np.array(list(labels.values())), progress=rec, footprint=True)
     a, iou = _best(named, hall)
     assert iou >= 0.8
     assert named.stats["inside_points_outside"] == 0
@@ -107,7 +117,7 @@ def test_names_far_outside_claim_nothing(open_facade):
     grid, rooms, _, labels = open_facade
     pts = np.array(list(labels.values()) + [(-4.0, -4.5)])
     rec = RecordingProgress()
-    ag = seg.segment(grid, inside_points=pts, progress=rec)
+    ag = seg.segment(grid, inside_points=pts, progress=rec, footprint=True)
     assert ag.stats["inside_points_outside"] == 1
     assert any(k == "warning" and "open to the outside" in m for k, m in rec.messages)
     total = sum(p.area for p in rooms.values())
@@ -140,7 +150,7 @@ def test_footprint_pockets_without_doorway_stay_outside():
             (8, 0, 8, 12), (18, 0, 18, 12)]  # two closed wings, a 10 m recess between them
     walls = unary_union([LineString([(a, b), (c, d)]).buffer(t / 2, cap_style=3) for a, b, c, d in segs])
     grid = _grid_of(walls, (-5.0, -5.0, 31.0, 17.0))
-    ag = seg.segment(grid)
+    ag = seg.segment(grid, footprint=True)
     recess = box(8.2, 0, 17.8, 11.8)
     assert all(a.polygon.intersection(recess).area < 1.0 for a in ag.areas)
     assert ag.stats["components"] == 2  # the two wings: nothing joins them, and the log says so
