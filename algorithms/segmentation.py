@@ -311,7 +311,7 @@ def _chord_pockets(claimed: np.ndarray, free_out: np.ndarray, max_chord: float =
 def building_interior(free: np.ndarray, resolution: float, envelope_gap: float = DEFAULT_ENVELOPE_GAP,
                       unknown: Optional[np.ndarray] = None, inside_points=None,
                       footprint_gap: Optional[float] = None, info: Optional[dict] = None,
-                      footprint: bool = True) -> Tuple[np.ndarray, np.ndarray]:
+                      footprint: bool = False) -> Tuple[np.ndarray, np.ndarray]:
     """Free space inside the building envelope.
 
     Returns ``(interior_free, envelope)``: ``envelope`` is everything that is not outside, walls
