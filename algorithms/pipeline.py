@@ -17,6 +17,7 @@ from shapely.ops import unary_union
 from . import cad_import, osmag, rasterize, refine, segmentation, semantics
 from .area_types import classify_vertical_areas
 from .georef import LocalFrame
+from .errors import Canceled, InputError
 from .model import Area, AreaGraph, CadDrawing, OccupancyGrid
 from .progress import ensure
 
@@ -69,16 +70,25 @@ def process_floor(dxf_path: str, *, rules=None, layers=None, units=None, include
 
     def timed(name, start, end, func, *args, **kwargs):
         t0 = time.perf_counter()
-        out = func(*args, progress=progress.sub(start, end), **kwargs)
+        try:
+            out = func(*args, progress=progress.sub(start, end), **kwargs)
+        except (InputError, Canceled):
+            raise
+        except Exception as exc:  # GEOS topology errors and the like: name the stage, never a raw traceback
+            if type(exc).__module__.split(".")[0] not in ("shapely", "cv2", "osgeo"):
+                raise
+            raise InputError(f"the {name} stage failed on this drawing's geometry ({type(exc).__name__}: {exc}); "
+                             "please report the drawing") from exc
         timings[name] = time.perf_counter() - t0
         return out
 
     drawing = timed("cad_import", 0, 25, cad_import.import_dxf, dxf_path, rules=rules, layers=layers,
                     units=units, include_doors=include_doors, plan=plan)
     grid = timed("rasterize", 25, 35, rasterize.rasterize, drawing.geometries, resolution=resolution,
-                 extent=extent)
+                 extent=extent, door_hints=drawing.doors)
     seg = timed("segment", 35, 80, segmentation.segment, grid, door_width=door_width,
-                corridor_width=corridor_width, delta=delta, prune=prune)
+                corridor_width=corridor_width, delta=delta, prune=prune,
+                inside_points=segmentation.room_name_points(drawing.texts, name_rules), door_hints=drawing.doors, footprint=True)
     vertical = classify_vertical_areas(seg.areas, drawing.geometries)
     if vertical:
         progress.info(f"{len(vertical)} stair/lift areas recognised from their symbols")
@@ -97,7 +107,8 @@ def process_floor(dxf_path: str, *, rules=None, layers=None, units=None, include
         floor_area = Area(id=0, polygon=outline, type="structure", name=f"Level {level}")
     stats = {"timings": timings, "refine": rstats, "segment": dict(seg.stats),
              "texts": len(drawing.texts), "geometries": len(drawing.geometries), "unit": drawing.unit_name,
-             "raster_shape": grid.shape, "areas": len(refined.areas), "passages": len(refined.passages)}
+             "raster_shape": grid.shape, "areas": len(refined.areas), "passages": len(refined.passages),
+             "components": rstats.get("components", 1), "largest_component_share": rstats.get("largest_component_share", 1.0)}
     if names_report is not None:
         stats["names"] = names_report.counts()
     progress.info(f"floor {level}: {len(refined.areas)} areas, {len(refined.passages)} passages "
