@@ -82,6 +82,12 @@ class Cad2OsmagPlugin:
         self._add_to_menu(toolbox)
         self.actions.append(toolbox)
 
+        place = QAction(self.tr("Place a floor plan on the map…"), self.iface.mainWindow())
+        place.triggered.connect(self.show_placement)
+        self._add_to_menu(place)
+        self.actions.append(place)
+        self.placement_dock = None
+
         for kind, label in (("osm", self.tr("Add OpenStreetMap basemap")),
                             ("satellite", self.tr("Add satellite imagery basemap"))):
             action = QAction(label, self.iface.mainWindow())
@@ -101,6 +107,13 @@ class Cad2OsmagPlugin:
                 remove(MENU, action)
             self.iface.removeToolBarIcon(action)
         self.actions = []
+        if getattr(self, "placement_dock", None) is not None:
+            self.placement_dock.widget.remove_overlay()
+            remove_dock = getattr(self.iface, "removeDockWidget", None)  # absent from test doubles
+            if remove_dock is not None:
+                remove_dock(self.placement_dock)
+            self.placement_dock.deleteLater()
+            self.placement_dock = None
         if self.provider is not None:
             QgsApplication.processingRegistry().removeProvider(self.provider)
             self.provider = None
@@ -127,6 +140,19 @@ class Cad2OsmagPlugin:
         search = dock.findChild(QLineEdit)
         if search is not None:
             search.setText("cad2osmag")
+
+    def show_placement(self):
+        """The panel that places a floor plan on the basemap by hand (ui/placement_dock.py)."""
+        from qgis.PyQt.QtCore import Qt
+
+        from .ui.placement_dock import PlacementDock
+
+        if self.placement_dock is None:
+            self.placement_dock = PlacementDock(self.iface)
+            self.iface.addDockWidget(Qt.DockWidgetArea.RightDockWidgetArea, self.placement_dock)
+        self.placement_dock.show()
+        self.placement_dock.raise_()
+        return self.placement_dock
 
     def add_basemap(self, kind):
         from .ui import basemaps
