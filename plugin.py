@@ -82,6 +82,11 @@ class Cad2OsmagPlugin:
         self._add_to_menu(toolbox)
         self.actions.append(toolbox)
 
+        wizard = QAction(icon, self.tr("Convert a floor plan…"), self.iface.mainWindow())
+        wizard.triggered.connect(self.show_convert_wizard)
+        self._add_to_menu(wizard)
+        self.actions.append(wizard)
+
         place = QAction(self.tr("Place a floor plan on the map…"), self.iface.mainWindow())
         place.triggered.connect(self.show_placement)
         self._add_to_menu(place)
@@ -140,6 +145,15 @@ class Cad2OsmagPlugin:
         search = dock.findChild(QLineEdit)
         if search is not None:
             search.setText("cad2osmag")
+
+    def show_convert_wizard(self):
+        """The guided conversion (ui/convert_wizard.py), modeless so that the map stays usable."""
+        from .ui.convert_wizard import ConvertWizard
+
+        wizard = ConvertWizard(self.iface.mapCanvas(), self.iface.mainWindow())
+        wizard.show()
+        self._wizard = wizard  # keep it alive while open
+        return wizard
 
     def show_placement(self):
         """The panel that places a floor plan on the basemap by hand (ui/placement_dock.py)."""

@@ -107,6 +107,7 @@ def plan_canvas(qgis_app, qgis_new_project):
     from cad2osmag.ui.placement import PlanOverlay
     from cad2osmag.ui.placement_math import Placement
 
+    QgsProject.instance().removeEntry("cad2osmag", "placement")  # qgis_new_project keeps custom entries
     walls = QgsVectorLayer("LineString", "floor-1", "memory")
     feats = []
     for (x0, y0), (x1, y1) in [((0, 0), (40, 0)), ((40, 0), (40, 20)), ((40, 20), (0, 20)), ((0, 20), (0, 0)),

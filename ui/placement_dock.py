@@ -186,8 +186,9 @@ class PlacementWidget(QWidget):
     def activate_tool(self, which):
         if self.overlay is None or self.placement is None:
             return None
-        if self._previous_tool is None:
-            self._previous_tool = self.canvas.mapTool()
+        current = self.canvas.mapTool()
+        if current is not None and current not in (self.move_tool, self.gcp_tool):
+            self._previous_tool = current  # given back when the plan is removed
         if which == "gcp":
             if self.gcp_tool is None:
                 self.gcp_tool = GcpMapTool(self.canvas, self.overlay, self.placement)
@@ -207,7 +208,8 @@ class PlacementWidget(QWidget):
 
     def deactivate_tools(self):
         for t in (self.move_tool, self.gcp_tool):
-            if t is not None and self.canvas.mapTool() is t:
+            if t is not None:
+                t.deactivate()
                 self.canvas.unsetMapTool(t)
         self.move_tool = self.gcp_tool = None
         if self._previous_tool is not None:
