@@ -6,10 +6,11 @@ ROOT  := $(abspath $(dir $(lastword $(MAKEFILE_LIST))))
 VENV  := $(ROOT)/.venv
 PY    := $(VENV)/bin/python
 APT_PACKAGES := qgis python3-qgis qgis-providers python3-venv python3-gdal gdal-bin osmium-tool xvfb \
-                python3-dev build-essential libproj-dev proj-bin
+                python3-dev build-essential libproj-dev proj-bin \
+                qttools5-dev-tools
 STAMP := $(VENV)/.installed
 
-.PHONY: install demo test test-quick bench evaluate clean help
+.PHONY: install demo test test-quick bench evaluate clean help translations
 
 help:
 	@echo "make demo        install what is missing, build the sample building and convert it (out/demo/)"
@@ -17,6 +18,7 @@ help:
 	@echo "make test-quick  the suite without the slow real-data tests"
 	@echo "make bench       per-stage wall time and peak memory on real data (docs/benchmarks.md)"
 	@echo "make evaluate    score segmentation on ../shared/data/grid_gt"
+	@echo "make translations  update i18n/*.ts from the sources and compile the .qm files"
 
 install: $(STAMP)
 
@@ -38,6 +40,11 @@ bench: install
 
 evaluate: install
 	$(PY) scripts/evaluate_grids.py
+
+# i18n/*.ts from the sources (keeps existing translations), then .qm with Qt's lrelease (qttools5-dev-tools)
+translations:
+	python3 i18n/update_ts.py
+	lrelease i18n/cad2osmag_de.ts i18n/cad2osmag_zh_CN.ts
 
 clean:
 	rm -rf out .pytest_cache

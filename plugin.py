@@ -48,13 +48,17 @@ class Cad2OsmagPlugin:
         self._install_translator()
 
     def _install_translator(self):
-        """Load i18n/cad2osmag_<locale>.qm when QGIS runs in a language we have a translation for."""
-        locale = (QSettings().value("locale/userLocale", "") or QLocale.system().name())[:2]
-        qm = os.path.join(PLUGIN_DIR, "i18n", f"cad2osmag_{locale}.qm")
-        if os.path.exists(qm):
-            self.translator = QTranslator()
-            if self.translator.load(qm):
-                QCoreApplication.installTranslator(self.translator)
+        """Load i18n/cad2osmag_<locale>.qm for the QGIS user locale: the full name first (zh_CN), then the
+        language (de). The .qm files are compiled by `make translations`."""
+        locale = str(QSettings().value("locale/userLocale", "") or QLocale.system().name())
+        for name in (locale, locale[:2]):
+            qm = os.path.join(PLUGIN_DIR, "i18n", f"cad2osmag_{name}.qm")
+            if name and os.path.exists(qm):
+                translator = QTranslator()
+                if translator.load(qm):
+                    QCoreApplication.installTranslator(translator)
+                    self.translator = translator
+                    return
 
     @staticmethod
     def tr(text):
@@ -122,6 +126,9 @@ class Cad2OsmagPlugin:
         if self.provider is not None:
             QgsApplication.processingRegistry().removeProvider(self.provider)
             self.provider = None
+        if self.translator is not None:
+            QCoreApplication.removeTranslator(self.translator)
+            self.translator = None
 
     # --- actions ------------------------------------------------------------------------------
     def open_main_algorithm(self):
