@@ -587,7 +587,12 @@ REPORT: a CSV with one row per file (file, level, status, areas, passages, secon
     </message>
     <message>
       <location filename="../processing_provider/alg_evaluate_segmentation.py" />
-      <source>Compares the LABELS raster of 'Segment' (area ids, 0 = none) with a ground-truth image of the same size that paints every room in its own colour (black walls, white or grey outside). For every ground-truth room the predicted area with the largest overlap is its match: recall and precision of that match, the Matthews correlation coefficient (MCC) of the two masks over the annotated and segmented pixels (weighted by room area), and the F1 score of rooms matched one to one at IoU &gt;= 0.5. REPORT (optional) gets one CSV row per ground-truth room.</source>
+      <source>Compares the LABELS raster of 'Segment' (area ids, 0 = none) with a ground-truth image of the same size that paints every room in its own colour (black walls, white or grey outside). For every ground-truth room the predicted area with the largest overlap is its match: recall and precision of that match, the Matthews correlation coefficient (MCC) of the two masks over the annotated and segmented pixels (weighted by room area), and the F1 score of rooms matched one to one at IoU &gt;= 0.5.
+LABELS: the area id raster written by 'Segment' (one integer per pixel).
+GROUND_TRUTH: a PNG, BMP or TIFF image with exactly the raster's width and height in pixels.
+MIN_ROOM_PX: ground-truth colours covering fewer pixels than this are antialiasing or labels, not rooms, and are ignored (pixels; at 0.05 m/px, 40 px are 0.1 m²).
+REPORT (optional): a CSV with one row per ground-truth room (colour, pixels, matched area, recall, precision, IoU).
+Outputs: MCC, F1, mean RECALL and PRECISION (0-1), the number of ground-truth rooms, predicted areas and rooms matched at IoU &gt;= 0.5.</source>
       <translation type="unfinished" />
     </message>
     <message>
@@ -682,7 +687,11 @@ REPORT: a CSV with one row per file (file, level, status, areas, passages, secon
       <location filename="../processing_provider/alg_export_osmag.py" />
       <source>Writes AREAS and PASSAGES (and optional floor/building outlines as structure areas, which become the osmAG:parent of the areas inside them) as an osmAG file: OpenStreetMap XML that JOSM, GDAL and osmium open, with one root node, negative ids, closed area ways sharing their border nodes, and passage ways whose two nodes belong to both areas they join.
 Georeference: layers in a geographic or projected CRS are converted to WGS84 (the root node is placed at ANCHOR_LON/ANCHOR_LAT when given, else at the centre of the data). Layers in the CAD frame (no CRS) are placed with ANCHOR_LON/ANCHOR_LAT (where the CAD origin lies, also the root node), ROTATION and SCALE; without an anchor the export stops and asks you to georeference first.
-VARIANT 'semantic' references areas by name (survives JOSM editing), 'fix-id' by way id. The file is written atomically: a failed export leaves no file behind. Holes (pillars) are not part of an osmAG area way and are left out (counted in the log).</source>
+VARIANT 'semantic' references areas by name (survives JOSM editing), 'fix-id' by way id. The file is written atomically: a failed export leaves no file behind. Holes (pillars) are not part of an osmAG area way and are left out (counted in the log).
+STRUCTURE (optional): polygons of the floor or building outline, written as structure areas.
+LEVEL: the level tag of every area and passage (e.g. 1, -1); empty keeps the layers' own level field, else 1. HEIGHT: height per level in metres (height tag).
+ANCHOR_LON / ANCHOR_LAT in degrees (WGS84), ROTATION in degrees clockwise from north, SCALE in ground metres per CAD metre: the placement of 'Place a floor plan on the map' gives all four.
+OUTPUT: the .osm file to write.</source>
       <translation type="unfinished" />
     </message>
     <message>
@@ -913,7 +922,9 @@ Outputs, in metres in the drawing's own frame (a local engineering CRS, not geor
       <source>Transforms layers drawn in the CAD frame (metres, no CRS) into a target CRS (default WGS84).
 Mode 'Anchor': pick ANCHOR on the map canvas (any CRS) for the CAD point CAD_ANCHOR_X/Y (default the drawing origin); ROTATION is the direction of the plan's +y axis in degrees clockwise from north, or give ROTATION_POINT (a second map point) for the CAD point CAD_ROTATION_X/Y and the rotation is computed from the two picked points; SCALE is ground metres per CAD metre.
 Mode 'Control points': GCPS is a point layer whose geometry is each point picked against a basemap and whose fields cad_x, cad_y (or sourceX, sourceY) hold its CAD coordinates; at least 2 points, not all on one line. A least-squares similarity (Helmert) is solved and the residual of every point and their RMS are reported in metres.
-All conversions go through a transverse Mercator projection centred on the anchor (pyproj/PROJ), never a flat-earth approximation. Add a basemap (Vector ▸ CAD to osmAG ▸ Add … basemap) to pick points against real imagery.</source>
+FIX_SCALE keeps SCALE during the fit (solves position and rotation only).
+AREAS and PASSAGES: layers in the CAD frame (metres, no CRS), e.g. the outputs of 'Refine'; OUTPUT_AREAS and OUTPUT_PASSAGES get them in TARGET_CRS (default WGS84, EPSG:4326) with all their fields. MODE chooses 'Anchor point + rotation' or 'Control points'. CAD_ANCHOR_X / CAD_ANCHOR_Y and CAD_ROTATION_X / CAD_ROTATION_Y are CAD coordinates in metres.
+All conversions go through a transverse Mercator projection centred on the anchor (pyproj/PROJ), never a flat-earth approximation. Add a basemap (Vector ▸ CAD to osmAG ▸ Add … basemap) to pick points against real imagery, or drag the plan into place with Vector ▸ CAD to osmAG ▸ Place a floor plan on the map, whose placement gives ANCHOR, ROTATION and SCALE.</source>
       <translation type="unfinished" />
     </message>
     <message>
@@ -1185,7 +1196,11 @@ Output: a table without geometry (save it as CSV, or keep it as a memory layer).
     </message>
     <message>
       <location filename="../processing_provider/alg_load_osmag.py" />
-      <source>Opens an osmAG file (semantic or fix-id variant; written by this plugin, JOSM or other osmAG tools) as an AREAS polygon layer and a PASSAGES line layer with every tag as a field (plus osm_id, and from_id / to_id resolving each passage's areas to their way ids). Areas are coloured by osmAG:areatype, passages drawn as bold red lines, both labelled with their name. Dangling references (missing nodes, passages naming unknown areas) and unclosed area ways are reported and skipped. A file without any osmAG area is rejected.</source>
+      <source>Opens an osmAG file (semantic or fix-id variant; written by this plugin, JOSM or other osmAG tools) as an areas polygon layer and a passages line layer with every tag as a field (plus osm_id, and from_id / to_id resolving each passage's areas to their way ids, and vertical = yes for a passage between two stair or lift areas). Areas are coloured by osmAG:areatype, passages drawn as bold red lines and vertical passages thick blue (styles/osmag_*.qml), both labelled with their name; GeoPackage outputs keep the style. Dangling references (missing nodes, passages naming unknown areas) and unclosed area ways are reported and skipped. A file without any osmAG area is rejected.
+INPUT: the osmAG file (.osm, OpenStreetMap XML, coordinates in WGS84 degrees).
+TARGET_CRS: CRS of the output layers (default WGS84, EPSG:4326); choose a projected CRS in metres to measure or edit the areas.
+OUTPUT_AREAS / OUTPUT_PASSAGES: the two layers (temporary, GeoPackage, …).
+Outputs: the number of areas and passages loaded and the VARIANT detected.</source>
       <translation type="unfinished" />
     </message>
     <message>
@@ -1732,7 +1747,12 @@ A raster above MAX_MPX megapixels stops with an error that suggests a resolution
     </message>
     <message>
       <location filename="../processing_provider/alg_sample_building.py" />
-      <source>Writes a realistic multi-floor office building as DXF files (millimetres, NCS layers, walls with real thickness, doors as blocks, glazing, a stair core and a lift, room names as TEXT, MTEXT and ATTRIB, nested blocks on layer 0, furniture and dimensions) together with a ground-truth GeoJSON per floor (rooms, doors, stair/lift anchors, in metres). The same seed always gives byte-identical files. Use it to try the pipeline or to score it.</source>
+      <source>Writes a realistic multi-floor office building as DXF files (millimetres, NCS layers, walls with real thickness, doors as blocks, glazing, a stair core and a lift, room names as TEXT, MTEXT and ATTRIB, nested blocks on layer 0, furniture and dimensions) together with a ground-truth GeoJSON per floor (rooms, doors, stair/lift anchors, in metres). The same seed always gives byte-identical files. Use it to try the pipeline or to score it.
+FLOORS: number of floors (1-20), one DXF and one ground-truth file each; all floors share the stair core and the lift, so they stack.
+SEED: any whole number; it varies the room layout (0 is the layout the README shows).
+PREFIX: start of the file names: &lt;PREFIX&gt;-F1.dxf, &lt;PREFIX&gt;-F1.gt.geojson, …
+OUTPUT_FOLDER: where the files are written (created when missing).
+Outputs: FIRST_FLOOR_DXF (the first floor's DXF) and DXF_FILES (every DXF, ';' separated).</source>
       <translation type="unfinished" />
     </message>
     <message>

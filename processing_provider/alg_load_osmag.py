@@ -204,11 +204,18 @@ class LoadOsmagAlgorithm(Cad2OsmagAlgorithm):
     GROUP = "Tools"
     GROUP_ID = "tools"
     HELP = ("Opens an osmAG file (semantic or fix-id variant; written by this plugin, JOSM or other osmAG "
-            "tools) as an AREAS polygon layer and a PASSAGES line layer with every tag as a field (plus osm_id, "
-            "and from_id / to_id resolving each passage's areas to their way ids). Areas are coloured by "
-            "osmAG:areatype, passages drawn as bold red lines, both labelled with their name. Dangling "
-            "references (missing nodes, passages naming unknown areas) and unclosed area ways are reported and "
-            "skipped. A file without any osmAG area is rejected.")
+            "tools) as an areas polygon layer and a passages line layer with every tag as a field (plus osm_id, "
+            "and from_id / to_id resolving each passage's areas to their way ids, and vertical = yes for a "
+            "passage between two stair or lift areas). Areas are coloured by osmAG:areatype, passages drawn as "
+            "bold red lines and vertical passages thick blue (styles/osmag_*.qml), both labelled with their "
+            "name; GeoPackage outputs keep the style. Dangling references (missing nodes, passages naming "
+            "unknown areas) and unclosed area ways are reported and skipped. A file without any osmAG area is "
+            "rejected.\n"
+            "INPUT: the osmAG file (.osm, OpenStreetMap XML, coordinates in WGS84 degrees).\n"
+            "TARGET_CRS: CRS of the output layers (default WGS84, EPSG:4326); choose a projected CRS in metres "
+            "to measure or edit the areas.\n"
+            "OUTPUT_AREAS / OUTPUT_PASSAGES: the two layers (temporary, GeoPackage, …).\n"
+            "Outputs: the number of areas and passages loaded and the VARIANT detected.")
 
     INPUT = "INPUT"
     TARGET_CRS = "TARGET_CRS"
