@@ -264,6 +264,66 @@
     </message>
     <message>
       <location filename="../ui/convert_wizard.py" />
+      <source>5. Names and types</source>
+      <translation>5. Namen und Typen</translation>
+    </message>
+    <message>
+      <location filename="../ui/convert_wizard.py" />
+      <source>Correct the name and the type of any area (room, corridor, stairs, elevator, structure), then save: the osmAG files are written again.</source>
+      <translation type="unfinished" />
+    </message>
+    <message>
+      <location filename="../ui/convert_wizard.py" />
+      <source>Level</source>
+      <translation>Geschoss</translation>
+    </message>
+    <message>
+      <location filename="../ui/convert_wizard.py" />
+      <source>Area</source>
+      <translation>Fläche</translation>
+    </message>
+    <message>
+      <location filename="../ui/convert_wizard.py" />
+      <source>Name</source>
+      <translation>Name</translation>
+    </message>
+    <message>
+      <location filename="../ui/convert_wizard.py" />
+      <source>Type</source>
+      <translation>Typ</translation>
+    </message>
+    <message>
+      <location filename="../ui/convert_wizard.py" />
+      <source>Save and export again</source>
+      <translation>Speichern und erneut exportieren</translation>
+    </message>
+    <message>
+      <location filename="../ui/convert_wizard.py" />
+      <source>{} areas</source>
+      <translation type="unfinished" />
+    </message>
+    <message>
+      <location filename="../ui/convert_wizard.py" />
+      <source>Exporting osmAG again</source>
+      <translation type="unfinished" />
+    </message>
+    <message>
+      <location filename="../ui/convert_wizard.py" />
+      <source>Saving {} changed areas…</source>
+      <translation type="unfinished" />
+    </message>
+    <message>
+      <location filename="../ui/convert_wizard.py" />
+      <source>{} areas changed; osmAG files written again.</source>
+      <translation type="unfinished" />
+    </message>
+    <message>
+      <location filename="../ui/convert_wizard.py" />
+      <source>Export failed: {}</source>
+      <translation type="unfinished" />
+    </message>
+    <message>
+      <location filename="../ui/convert_wizard.py" />
       <source>Convert a floor plan to osmAG</source>
       <translation>Einen Grundriss in osmAG umwandeln</translation>
     </message>

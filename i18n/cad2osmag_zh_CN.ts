@@ -264,6 +264,66 @@
     </message>
     <message>
       <location filename="../ui/convert_wizard.py" />
+      <source>5. Names and types</source>
+      <translation>5. 名称和类型</translation>
+    </message>
+    <message>
+      <location filename="../ui/convert_wizard.py" />
+      <source>Correct the name and the type of any area (room, corridor, stairs, elevator, structure), then save: the osmAG files are written again.</source>
+      <translation type="unfinished" />
+    </message>
+    <message>
+      <location filename="../ui/convert_wizard.py" />
+      <source>Level</source>
+      <translation>楼层</translation>
+    </message>
+    <message>
+      <location filename="../ui/convert_wizard.py" />
+      <source>Area</source>
+      <translation>区域</translation>
+    </message>
+    <message>
+      <location filename="../ui/convert_wizard.py" />
+      <source>Name</source>
+      <translation>名称</translation>
+    </message>
+    <message>
+      <location filename="../ui/convert_wizard.py" />
+      <source>Type</source>
+      <translation>类型</translation>
+    </message>
+    <message>
+      <location filename="../ui/convert_wizard.py" />
+      <source>Save and export again</source>
+      <translation>保存并重新导出</translation>
+    </message>
+    <message>
+      <location filename="../ui/convert_wizard.py" />
+      <source>{} areas</source>
+      <translation type="unfinished" />
+    </message>
+    <message>
+      <location filename="../ui/convert_wizard.py" />
+      <source>Exporting osmAG again</source>
+      <translation type="unfinished" />
+    </message>
+    <message>
+      <location filename="../ui/convert_wizard.py" />
+      <source>Saving {} changed areas…</source>
+      <translation type="unfinished" />
+    </message>
+    <message>
+      <location filename="../ui/convert_wizard.py" />
+      <source>{} areas changed; osmAG files written again.</source>
+      <translation type="unfinished" />
+    </message>
+    <message>
+      <location filename="../ui/convert_wizard.py" />
+      <source>Export failed: {}</source>
+      <translation type="unfinished" />
+    </message>
+    <message>
+      <location filename="../ui/convert_wizard.py" />
       <source>Convert a floor plan to osmAG</source>
       <translation>将平面图转换为 osmAG</translation>
     </message>

@@ -99,6 +99,11 @@ _DE = {
     "Add the styled floors to the map": "Die gestalteten Geschosse zur Karte hinzufügen",
     "Convert": "Umwandeln",
     "Cancel": "Abbrechen",
+    "5. Names and types": "5. Namen und Typen",
+    "Save and export again": "Speichern und erneut exportieren",
+    "Name": "Name",
+    "Type": "Typ",
+    "Area": "Fläche",
 }
 
 _ZH = {
@@ -194,6 +199,11 @@ _ZH = {
     "Add the styled floors to the map": "将带样式的楼层添加到地图",
     "Convert": "转换",
     "Cancel": "取消",
+    "5. Names and types": "5. 名称和类型",
+    "Save and export again": "保存并重新导出",
+    "Name": "名称",
+    "Type": "类型",
+    "Area": "区域",
 }
 
 SEED = {"de": _DE, "zh_CN": _ZH}

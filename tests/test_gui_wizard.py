@@ -137,6 +137,32 @@ def test_wizard_converts_two_floors_placed_by_dragging(provider, qgis_iface, qgi
     styled = [layer for layer in QgsProject.instance().mapLayers().values() if layer.name().endswith(" areas")]
     assert all(layer.renderer().type() == "categorizedSymbol" for layer in styled)
     wiz.grab().save(str(art / "wizard_4_done.png"))
+
+    # 5. names and types: rename one room, make another a corridor, export again
+    wiz.next()
+    names = wiz.names_page
+    assert wiz.currentPage() is names
+    n_areas = sum(len(osmag.read_osmag(str(out / (os.path.splitext(os.path.basename(d))[0] + ".osm")))[0])
+                  for d in sample["dxf"])
+    assert names.table.rowCount() == n_areas
+    rooms = [r for r in range(names.table.rowCount()) if names.table.cellWidget(r, 3).currentText() == "room"]
+    names.table.item(rooms[0], 2).setText("Server room")
+    names.table.cellWidget(rooms[1], 3).setCurrentText("corridor")
+    renamed_id, level = names.table.item(rooms[0], 1).text(), names.table.item(rooms[0], 0).text()
+    retyped_id = names.table.item(rooms[1], 1).text()
+    task = names.save()
+    _wait(lambda: names.save_button.isEnabled())
+    assert "2 areas changed" in names.status.text(), names.status.text()
+    k = int(level)
+    osm = out / (os.path.splitext(os.path.basename(sample["dxf"][k]))[0] + ".osm")
+    areas, _, root, _ = osmag.read_osmag(str(osm))
+    assert root == pytest.approx((placed.anchor_lon, placed.anchor_lat), abs=1e-9)
+    assert "Server room" in {a.name for a in areas}
+    assert sum(a.type == "corridor" for a in areas) >= 1
+    building, _, _, _ = osmag.read_osmag(str(out / "building.osm"))
+    assert "Server room" in {a.name for a in building}
+    assert renamed_id != retyped_id
+    wiz.grab().save(str(art / "wizard_5_names.png"))
     canvas.setLayers([layer for layer in QgsProject.instance().mapLayers().values()
                       if layer.name().endswith(("areas", "passages"))])
     canvas.refresh()

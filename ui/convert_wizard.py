@@ -9,7 +9,9 @@ implementation) step by step:
    control points; saved with the project);
 4. conversion: one osmAG file per floor (``cad2osmag:dxftoosmag``) or also the merged building
    (``cad2osmag:mergefloors``), run as a QgsTask with progress and cancel; the styled floors are added to
-   the map.
+   the map;
+5. names and types of the areas in an editable table; saving writes them into the floors' layers and
+   exports the osmAG files again (``cad2osmag:exportosmag``, ``mergefloors``).
 """
 from __future__ import annotations
 
@@ -24,7 +26,7 @@ from qgis.core import (
     QgsTask,
     QgsVectorLayer,
 )
-from qgis.PyQt.QtCore import QCoreApplication, pyqtSignal
+from qgis.PyQt.QtCore import QCoreApplication, Qt, pyqtSignal
 from qgis.PyQt.QtWidgets import (
     QAbstractItemView,
     QCheckBox,
@@ -399,6 +401,116 @@ class RunPage(QWizardPage):
         return self.done
 
 
+AREA_TYPES = ["room", "corridor", "stairs", "elevator", "structure"]
+
+
+class NamesPage(QWizardPage):
+    """Names and types of the areas of every converted floor, editable; *Save and export again* writes them
+    into the floors' area layers and rewrites the osmAG files through ``exportosmag`` (and ``mergefloors``)."""
+
+    def __init__(self, wizard):
+        super().__init__()
+        self.wiz = wizard
+        self.task = None
+        self.setTitle(tr("5. Names and types"))
+        self.setSubTitle(tr("Correct the name and the type of any area (room, corridor, stairs, elevator, "
+                            "structure), then save: the osmAG files are written again."))
+        lay = QVBoxLayout(self)
+        self.table = QTableWidget(0, 4)
+        self.table.setHorizontalHeaderLabels([tr("Level"), tr("Area"), tr("Name"), tr("Type")])
+        from qgis.PyQt.QtWidgets import QHeaderView
+
+        self.table.horizontalHeader().setSectionResizeMode(2, QHeaderView.ResizeMode.Stretch)
+        lay.addWidget(self.table, 1)
+        row = QHBoxLayout()
+        self.save_button = QPushButton(tr("Save and export again"))
+        self.save_button.clicked.connect(self.save)
+        self.status = QLabel("")
+        row.addWidget(self.save_button)
+        row.addWidget(self.status, 1)
+        lay.addLayout(row)
+        self.rows = []  # (floor params, feature id)
+
+    def initializePage(self):  # noqa: N802
+        from qgis.PyQt.QtWidgets import QComboBox
+
+        self.table.setRowCount(0)
+        self.rows = []
+        for params in self.wiz.run_page.outputs:
+            layer = QgsVectorLayer(params["OUTPUT_AREAS"], "areas", "ogr")
+            if not layer.isValid():
+                continue
+            for f in layer.getFeatures():
+                r = self.table.rowCount()
+                self.table.insertRow(r)
+                for c, v in enumerate((params["LEVEL"], str(f["osm_id"]))):
+                    item = QTableWidgetItem(v)
+                    item.setFlags(item.flags() & ~Qt.ItemFlag.ItemIsEditable)
+                    self.table.setItem(r, c, item)
+                self.table.setItem(r, 2, QTableWidgetItem(str(f["name"] or "")))
+                combo = QComboBox()
+                combo.addItems(AREA_TYPES)
+                kind = str(f["osmAG:areatype"] or "room")
+                if kind not in AREA_TYPES:
+                    combo.addItem(kind)
+                combo.setCurrentText(kind)
+                self.table.setCellWidget(r, 3, combo)
+                self.rows.append((params, f.id()))
+        self.status.setText(tr("{} areas").format(len(self.rows)))
+
+    def edits(self):
+        """{areas layer path: {feature id: (name, type)}} of the rows whose values changed."""
+        out = {}
+        for r, (params, fid) in enumerate(self.rows):
+            out.setdefault(params["OUTPUT_AREAS"], {})[fid] = (self.table.item(r, 2).text().strip(),
+                                                               self.table.cellWidget(r, 3).currentText())
+        return out
+
+    def save(self):
+        changed = 0
+        for path, values in self.edits().items():
+            layer = QgsVectorLayer(path, "areas", "ogr")
+            names = layer.fields().names()
+            i_name, i_type = names.index("name"), names.index("osmAG:areatype")
+            changes = {}
+            for f in layer.getFeatures():
+                name, kind = values.get(f.id(), (None, None))
+                if name is None or (str(f["name"] or "") == name and str(f["osmAG:areatype"] or "") == kind):
+                    continue
+                changes[f.id()] = {i_name: name or None, i_type: kind}
+            if changes:
+                layer.dataProvider().changeAttributeValues(changes)
+                changed += len(changes)
+        placement = self.wiz.placement_page.panel.placement
+        steps = []
+        run = self.wiz.run_page
+        for params in run.outputs:
+            export = {"AREAS": params["OUTPUT_AREAS"], "PASSAGES": params["OUTPUT_PASSAGES"],
+                      "LEVEL": params["LEVEL"], "HEIGHT": params["HEIGHT"], "OUTPUT": params["OUTPUT"]}
+            if placement is not None:
+                export.update({"ANCHOR_LON": placement.anchor_lon, "ANCHOR_LAT": placement.anchor_lat})
+            steps.append(("cad2osmag:exportosmag", export))
+        if run.merge.isChecked() and len(run.outputs) > 1:
+            steps.append(("cad2osmag:mergefloors", {"FLOORS": [p["OUTPUT"] for p in run.outputs],
+                                                   "OUTPUT": os.path.join(run.folder.text().strip(), "building.osm")}))
+        self.task = AlgorithmsTask(tr("Exporting osmAG again"), steps)
+        self.task.taskCompleted.connect(lambda: self._finished(True, changed))
+        self.task.taskTerminated.connect(lambda: self._finished(False, changed))
+        self.save_button.setEnabled(False)
+        self.status.setText(tr("Saving {} changed areas…").format(changed))
+        QgsApplication.taskManager().addTask(self.task)
+        return self.task
+
+    def _finished(self, ok, changed):
+        self.save_button.setEnabled(True)
+        if ok:
+            self.status.setText(tr("{} areas changed; osmAG files written again.").format(changed))
+            for layer in QgsProject.instance().mapLayers().values():
+                layer.triggerRepaint()
+        else:
+            self.status.setText(tr("Export failed: {}").format("; ".join(self.task.errors)))
+
+
 class ConvertWizard(QWizard):
     def __init__(self, canvas, parent=None):
         super().__init__(parent)
@@ -408,7 +520,8 @@ class ConvertWizard(QWizard):
         self.settings_page = SettingsPage(self)
         self.placement_page = PlacementPage(self, canvas)
         self.run_page = RunPage(self)
-        for page in (self.files_page, self.settings_page, self.placement_page, self.run_page):
+        self.names_page = NamesPage(self)
+        for page in (self.files_page, self.settings_page, self.placement_page, self.run_page, self.names_page):
             self.addPage(page)
         self.resize(720, 640)
 
