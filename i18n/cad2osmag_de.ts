@@ -184,6 +184,36 @@
     </message>
     <message>
       <location filename="../ui/convert_wizard.py" />
+      <source>Preview the areas of the first floor</source>
+      <translation>Vorschau der Flächen des ersten Geschosses</translation>
+    </message>
+    <message>
+      <location filename="../ui/convert_wizard.py" />
+      <source>Previewing the segmentation</source>
+      <translation type="unfinished" />
+    </message>
+    <message>
+      <location filename="../ui/convert_wizard.py" />
+      <source>Preview failed: {}</source>
+      <translation type="unfinished" />
+    </message>
+    <message>
+      <location filename="../ui/convert_wizard.py" />
+      <source>canceled</source>
+      <translation type="unfinished" />
+    </message>
+    <message>
+      <location filename="../ui/convert_wizard.py" />
+      <source>Computing…</source>
+      <translation type="unfinished" />
+    </message>
+    <message>
+      <location filename="../ui/convert_wizard.py" />
+      <source>{} areas, {} passages</source>
+      <translation type="unfinished" />
+    </message>
+    <message>
+      <location filename="../ui/convert_wizard.py" />
       <source>3. Place the plan on the map</source>
       <translation>3. Plan auf der Karte platzieren</translation>
     </message>
@@ -255,11 +285,6 @@
     <message>
       <location filename="../ui/convert_wizard.py" />
       <source>Stopped: {}</source>
-      <translation type="unfinished" />
-    </message>
-    <message>
-      <location filename="../ui/convert_wizard.py" />
-      <source>canceled</source>
       <translation type="unfinished" />
     </message>
     <message>

@@ -104,6 +104,7 @@ _DE = {
     "Name": "Name",
     "Type": "Typ",
     "Area": "Fläche",
+    "Preview the areas of the first floor": "Vorschau der Flächen des ersten Geschosses",
 }
 
 _ZH = {
@@ -204,6 +205,7 @@ _ZH = {
     "Name": "名称",
     "Type": "类型",
     "Area": "区域",
+    "Preview the areas of the first floor": "预览第一层的区域",
 }
 
 SEED = {"de": _DE, "zh_CN": _ZH}

@@ -76,6 +76,16 @@ def test_wizard_converts_two_floors_placed_by_dragging(provider, qgis_iface, qgi
     assert s.resolution.value() == pytest.approx(0.044) and s.door_width.suffix() == " m"
     s.first_level.setValue(0)
     s.min_area.setValue(8.0)
+    s.resolution.setValue(0.05)
+    task = s.preview()
+    assert task is not None and not s.preview_button.isEnabled()
+    _wait(lambda: s.preview_button.isEnabled())
+    assert len(s.canvas.layers()) == 4, s.preview_status.text()
+    n_preview = int(s.preview_status.text().split()[0])
+    assert n_preview >= 15
+    assert s.preview_layers[3].rasterUnitsPerPixelX() == pytest.approx(0.05)
+    s.canvas.refresh()
+    s.canvas.waitWhileRendering()
     wiz.grab().save(str(art / "wizard_2_settings.png"))
     wiz.next()
 

@@ -56,9 +56,29 @@ def tr(text):
 
 
 # ====================================================================== running algorithms in a task
+class _LogFeedback(QgsProcessingFeedback):
+    """Feedback that keeps the algorithm's messages in a list (read by the wizard when the task ends)."""
+
+    def __init__(self, log):
+        super().__init__()
+        self._log = log
+
+    def pushInfo(self, info):  # noqa: N802
+        self._log.append(info)
+
+    def pushWarning(self, warning):  # noqa: N802
+        self._log.append("⚠ " + warning)
+
+    def reportError(self, error, fatalError=False):  # noqa: N802, N803
+        self._log.append("✖ " + error)
+
+
 class AlgorithmsTask(QgsTask):
     """Runs a list of (algorithm id, parameters) one after the other in a background thread, with the
-    task's progress and cancel wired to the algorithms' feedback. ``results`` / ``errors`` per step."""
+    task's progress and cancel wired to the algorithms' feedback. ``results`` / ``errors`` per step.
+
+    Feedback and context objects are made here, in the main thread, and live as long as the task: Qt
+    objects must not be created in the worker thread and garbage-collected in another."""
 
     def __init__(self, description: str, steps):
         super().__init__(description, QgsTask.Flag.CanCancel)
@@ -66,8 +86,17 @@ class AlgorithmsTask(QgsTask):
         self.results: List[Optional[dict]] = []
         self.errors: List[str] = []
         self.log: List[str] = []
+        self._feedbacks = [_LogFeedback(self.log) for _ in self.steps]
+        self._contexts = [QgsProcessingContext() for _ in self.steps]
+
+    def cancel(self):
+        for fb in self._feedbacks:
+            fb.cancel()
+        super().cancel()
 
     def run(self):
+        from qgis.PyQt.QtCore import QThread
+
         n = max(len(self.steps), 1)
         for k, (alg_id, params) in enumerate(self.steps):
             if self.isCanceled():
@@ -77,40 +106,18 @@ class AlgorithmsTask(QgsTask):
                 self.errors.append(f"{alg_id}: not available")
                 self.results.append(None)
                 continue
-            task = self
-
-            class Feedback(QgsProcessingFeedback):
-                def pushInfo(self, info):  # noqa: N802
-                    task.log.append(info)
-
-                def pushWarning(self, warning):  # noqa: N802
-                    task.log.append("⚠ " + warning)
-
-                def reportError(self, error, fatalError=False):  # noqa: N802, N803
-                    task.log.append("✖ " + error)
-
-            feedback = Feedback()
+            feedback, context = self._feedbacks[k], self._contexts[k]
+            context.pushToThread(QThread.currentThread())
             feedback.progressChanged.connect(lambda p, k=k: self.setProgress(100.0 * (k + p / 100.0) / n))
-            context = QgsProcessingContext()
             try:
-                import threading
-
-                stop = threading.Event()
-
-                def watch():  # forward the task's cancel to the algorithm
-                    while not stop.wait(0.1):
-                        if self.isCanceled():
-                            feedback.cancel()
-                            return
-
-                watcher = threading.Thread(target=watch, daemon=True)
-                watcher.start()
                 result, ok = alg.run(params, context, feedback)
             except Exception as exc:  # noqa: BLE001 - reported in the wizard
                 result, ok = None, False
                 self.log.append("✖ " + str(exc))
-            finally:
-                stop.set()
+            # layers the algorithm opened live in the context's store: free them in this thread, then
+            # hand the context back to the main thread, which deletes it with the task
+            context.temporaryLayerStore().removeAllMapLayers()
+            context.pushToThread(QgsApplication.instance().thread())
             self.results.append(result if ok else None)
             if not ok:
                 self.errors.append(f"{os.path.basename(str(params.get('INPUT', alg_id)))}: "
@@ -244,6 +251,84 @@ class SettingsPage(QWizardPage):
         form.addRow(tr("Merge areas smaller than"), self.min_area)
         form.addRow(tr("Level of the first floor"), self.first_level)
         form.addRow(tr("Floor height"), self.height)
+        from qgis.gui import QgsMapCanvas
+
+        self.preview_button = QPushButton(tr("Preview the areas of the first floor"))
+        self.preview_button.clicked.connect(self.preview)
+        self.preview_status = QLabel("")
+        form.addRow(self.preview_button, self.preview_status)
+        self.canvas = QgsMapCanvas()
+        self.canvas.setMinimumHeight(260)
+        form.addRow(self.canvas)
+        self.wiz = wizard
+        self.task = None
+        self.preview_layers = []
+        import tempfile
+
+        self._tmp = tempfile.mkdtemp(prefix="cad2osmag-preview-")
+
+    def preview(self):
+        """extractstructure -> rasterize -> segment on the first floor with these settings, as a task; the
+        walls, the occupancy raster and the areas are shown in the page's own canvas (drawing frame)."""
+        paths = self.wiz.files_page.paths()
+        if not paths:
+            return None
+        d = self._tmp
+        walls, occ = os.path.join(d, "walls.gpkg"), os.path.join(d, "occupancy.tif")
+        areas, passages = os.path.join(d, "areas.gpkg"), os.path.join(d, "passages.gpkg")
+        steps = [("cad2osmag:extractstructure", {"INPUT": paths[0], "WALLS": walls,
+                                                 "TEXTS": os.path.join(d, "texts.gpkg")}),
+                 ("cad2osmag:rasterize", {"WALLS": walls, "RESOLUTION": self.resolution.value(), "OCCUPANCY": occ}),
+                 ("cad2osmag:segment", {"INPUT": occ, "DOOR_WIDTH": self.door_width.value(),
+                                        "CORRIDOR_WIDTH": self.corridor_width.value(), "STRUCTURE": walls,
+                                        "AREAS": areas, "PASSAGES": passages,
+                                        "LABELS": os.path.join(d, "labels.tif")})]
+        self.canvas.setLayers([])
+        self.preview_layers = []
+        self.task = AlgorithmsTask(tr("Previewing the segmentation"), steps)
+        self.task.taskCompleted.connect(lambda: self._show(walls, occ, areas, passages))
+        self.task.taskTerminated.connect(lambda: self.preview_status.setText(
+            tr("Preview failed: {}").format("; ".join(self.task.errors) or tr("canceled"))))
+        self.preview_button.setEnabled(False)
+        self.preview_status.setText(tr("Computing…"))
+        self.task.taskTerminated.connect(lambda: self.preview_button.setEnabled(True))
+        QgsApplication.taskManager().addTask(self.task)
+        return self.task
+
+    def release_preview(self):
+        """The preview canvas only points at its layers: drop it from them before they are deleted."""
+        import shutil
+
+        self.canvas.setLayers([])
+        self.preview_layers = []
+        shutil.rmtree(self._tmp, ignore_errors=True)
+
+    def _show(self, walls, occ, areas, passages):
+        from qgis.core import (QgsCategorizedSymbolRenderer, QgsFillSymbol, QgsLineSymbol, QgsRasterLayer,
+                               QgsRendererCategory, QgsSingleSymbolRenderer)
+
+        from ..processing_provider.alg_load_osmag import AREA_COLOURS
+
+        raster = QgsRasterLayer(occ, "occupancy")
+        area_layer = QgsVectorLayer(areas, "areas", "ogr")
+        cats = [QgsRendererCategory(k, QgsFillSymbol.createSimple({"color": fill, "outline_color": line,
+                                                                   "outline_width": "0.3"}), k)
+                for k, (fill, line) in AREA_COLOURS.items() if k != "structure"]
+        area_layer.setRenderer(QgsCategorizedSymbolRenderer("type", cats))
+        pass_layer = QgsVectorLayer(passages, "passages", "ogr")
+        pass_layer.setRenderer(QgsSingleSymbolRenderer(QgsLineSymbol.createSimple({"color": "220,20,20",
+                                                                                   "width": "0.8"})))
+        wall_layer = QgsVectorLayer(walls, "walls", "ogr")
+        wall_layer.setRenderer(QgsSingleSymbolRenderer(QgsLineSymbol.createSimple({"color": "0,0,0",
+                                                                                   "width": "0.2"})))
+        self.preview_layers = [pass_layer, wall_layer, area_layer, raster]
+        self.canvas.setDestinationCrs(area_layer.crs())
+        self.canvas.setLayers(self.preview_layers)
+        self.canvas.setExtent(raster.extent())
+        self.canvas.refresh()
+        self.preview_button.setEnabled(True)
+        self.preview_status.setText(tr("{} areas, {} passages").format(area_layer.featureCount(),
+                                                                     pass_layer.featureCount()))
 
 
 class PlacementPage(QWizardPage):
@@ -527,4 +612,5 @@ class ConvertWizard(QWizard):
 
     def done(self, result):  # noqa: D401 - Qt override
         self.placement_page.panel.remove_overlay()
+        self.settings_page.release_preview()
         super().done(result)
