@@ -77,7 +77,6 @@ class Cad2OsmagPlugin:
         icon = QIcon(ICON_PATH)
         main = QAction(icon, self.tr("Convert a DXF floor plan to osmAG…"), self.iface.mainWindow())
         main.triggered.connect(self.open_main_algorithm)
-        self.iface.addToolBarIcon(main)
         self._add_to_menu(main)
         self.actions.append(main)
 
@@ -88,6 +87,7 @@ class Cad2OsmagPlugin:
 
         wizard = QAction(icon, self.tr("Convert a floor plan…"), self.iface.mainWindow())
         wizard.triggered.connect(self.show_convert_wizard)
+        self.iface.addToolBarIcon(wizard)  # the toolbar button opens the guided conversion
         self._add_to_menu(wizard)
         self.actions.append(wizard)
 
