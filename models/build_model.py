@@ -26,7 +26,6 @@ def build():
         QgsProcessingModelOutput,
         QgsProcessingModelParameter,
         QgsProcessingParameterFile,
-        QgsProcessingParameterFileDestination,
         QgsProcessingParameterNumber,
         QgsProcessingParameterPoint,
         QgsProcessingParameterString,
