@@ -77,6 +77,7 @@ def _run(alg_id, params):
     return results, ok, feedback
 
 
+@pytest.mark.slow  # three floors through the whole pipeline (about 40 s on 2 cores)
 def test_folder_batch_converts_every_floor_in_parallel_and_reports_the_bad_file(provider, floors_folder, tmp_path):
     folder, sample = floors_folder
     out = tmp_path / "out"
@@ -159,6 +160,7 @@ def test_batch_dialog_opens_for_every_algorithm_and_runs_three_files(provider, q
     dialog.close()
 
 
+@pytest.mark.slow
 @pytest.mark.qgis_process
 def test_folder_batch_headless(floors_folder, tmp_path):
     folder, sample = floors_folder
