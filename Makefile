@@ -7,10 +7,10 @@ VENV  := $(ROOT)/.venv
 PY    := $(VENV)/bin/python
 APT_PACKAGES := qgis python3-qgis qgis-providers python3-venv python3-gdal gdal-bin osmium-tool xvfb \
                 python3-dev build-essential libproj-dev proj-bin \
-                libeigen3-dev libopencv-core-dev libopencv-imgproc-dev
+                libeigen3-dev libopencv-core-dev libopencv-imgproc-dev qttools5-dev-tools
 STAMP := $(VENV)/.installed
 
-.PHONY: install demo test test-quick bench evaluate evaluate-cad clean help
+.PHONY: install demo test test-quick bench evaluate evaluate-cad clean help translations
 
 help:
 	@echo "make demo        install what is missing, build the sample building and convert it (out/demo/)"
@@ -21,6 +21,7 @@ help:
 	@echo "make evaluate-cad [DATA=dir]  convert every DXF/DWG of DATA (default: the shared ArchWeb plans and DWG"
 	@echo "                  sheets) and print per plan: conversion, room-name texts inside an area / naming an"
 	@echo "                  area of their own, largest component, areas, passages, named areas, conflicts"
+	@echo "make translations  update i18n/*.ts from the sources and compile the .qm files"
 
 install: $(STAMP)
 
@@ -46,6 +47,11 @@ evaluate: install
 DATA ?=
 evaluate-cad: install
 	$(PY) scripts/evaluate_cad.py $(if $(DATA),--data $(DATA),)
+
+# i18n/*.ts from the sources (keeps existing translations), then .qm with Qt's lrelease (qttools5-dev-tools)
+translations:
+	python3 i18n/update_ts.py
+	lrelease i18n/cad2osmag_de.ts i18n/cad2osmag_zh_CN.ts
 
 clean:
 	rm -rf out .pytest_cache

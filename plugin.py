@@ -48,13 +48,17 @@ class Cad2OsmagPlugin:
         self._install_translator()
 
     def _install_translator(self):
-        """Load i18n/cad2osmag_<locale>.qm when QGIS runs in a language we have a translation for."""
-        locale = (QSettings().value("locale/userLocale", "") or QLocale.system().name())[:2]
-        qm = os.path.join(PLUGIN_DIR, "i18n", f"cad2osmag_{locale}.qm")
-        if os.path.exists(qm):
-            self.translator = QTranslator()
-            if self.translator.load(qm):
-                QCoreApplication.installTranslator(self.translator)
+        """Load i18n/cad2osmag_<locale>.qm for the QGIS user locale: the full name first (zh_CN), then the
+        language (de). The .qm files are compiled by `make translations`."""
+        locale = str(QSettings().value("locale/userLocale", "") or QLocale.system().name())
+        for name in (locale, locale[:2]):
+            qm = os.path.join(PLUGIN_DIR, "i18n", f"cad2osmag_{name}.qm")
+            if name and os.path.exists(qm):
+                translator = QTranslator()
+                if translator.load(qm):
+                    QCoreApplication.installTranslator(translator)
+                    self.translator = translator
+                    return
 
     @staticmethod
     def tr(text):
@@ -73,7 +77,6 @@ class Cad2OsmagPlugin:
         icon = QIcon(ICON_PATH)
         main = QAction(icon, self.tr("Convert a DXF floor plan to osmAG…"), self.iface.mainWindow())
         main.triggered.connect(self.open_main_algorithm)
-        self.iface.addToolBarIcon(main)
         self._add_to_menu(main)
         self.actions.append(main)
 
@@ -81,6 +84,18 @@ class Cad2OsmagPlugin:
         toolbox.triggered.connect(self.show_toolbox)
         self._add_to_menu(toolbox)
         self.actions.append(toolbox)
+
+        wizard = QAction(icon, self.tr("Convert a floor plan…"), self.iface.mainWindow())
+        wizard.triggered.connect(self.show_convert_wizard)
+        self.iface.addToolBarIcon(wizard)  # the toolbar button opens the guided conversion
+        self._add_to_menu(wizard)
+        self.actions.append(wizard)
+
+        place = QAction(self.tr("Place a floor plan on the map…"), self.iface.mainWindow())
+        place.triggered.connect(self.show_placement)
+        self._add_to_menu(place)
+        self.actions.append(place)
+        self.placement_dock = None
 
         for kind, label in (("osm", self.tr("Add OpenStreetMap basemap")),
                             ("satellite", self.tr("Add satellite imagery basemap"))):
@@ -101,9 +116,19 @@ class Cad2OsmagPlugin:
                 remove(MENU, action)
             self.iface.removeToolBarIcon(action)
         self.actions = []
+        if getattr(self, "placement_dock", None) is not None:
+            self.placement_dock.widget.remove_overlay()
+            remove_dock = getattr(self.iface, "removeDockWidget", None)  # absent from test doubles
+            if remove_dock is not None:
+                remove_dock(self.placement_dock)
+            self.placement_dock.deleteLater()
+            self.placement_dock = None
         if self.provider is not None:
             QgsApplication.processingRegistry().removeProvider(self.provider)
             self.provider = None
+        if self.translator is not None:
+            QCoreApplication.removeTranslator(self.translator)
+            self.translator = None
 
     # --- actions ------------------------------------------------------------------------------
     def open_main_algorithm(self):
@@ -127,6 +152,28 @@ class Cad2OsmagPlugin:
         search = dock.findChild(QLineEdit)
         if search is not None:
             search.setText("cad2osmag")
+
+    def show_convert_wizard(self):
+        """The guided conversion (ui/convert_wizard.py), modeless so that the map stays usable."""
+        from .ui.convert_wizard import ConvertWizard
+
+        wizard = ConvertWizard(self.iface.mapCanvas(), self.iface.mainWindow())
+        wizard.show()
+        self._wizard = wizard  # keep it alive while open
+        return wizard
+
+    def show_placement(self):
+        """The panel that places a floor plan on the basemap by hand (ui/placement_dock.py)."""
+        from qgis.PyQt.QtCore import Qt
+
+        from .ui.placement_dock import PlacementDock
+
+        if self.placement_dock is None:
+            self.placement_dock = PlacementDock(self.iface)
+            self.iface.addDockWidget(Qt.DockWidgetArea.RightDockWidgetArea, self.placement_dock)
+        self.placement_dock.show()
+        self.placement_dock.raise_()
+        return self.placement_dock
 
     def add_basemap(self, kind):
         from .ui import basemaps

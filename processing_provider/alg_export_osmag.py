@@ -32,7 +32,13 @@ class ExportOsmagAlgorithm(Cad2OsmagAlgorithm):
             "node), ROTATION and SCALE; without an anchor the export stops and asks you to georeference first.\n"
             "VARIANT 'semantic' references areas by name (survives JOSM editing), 'fix-id' by way id. The file "
             "is written atomically: a failed export leaves no file behind. Holes (pillars) are not part of "
-            "an osmAG area way and are left out (counted in the log).")
+            "an osmAG area way and are left out (counted in the log).\n"
+            "STRUCTURE (optional): polygons of the floor or building outline, written as structure areas.\n"
+            "LEVEL: the level tag of every area and passage (e.g. 1, -1); empty keeps the layers' own level "
+            "field, else 1. HEIGHT: height per level in metres (height tag).\n"
+            "ANCHOR_LON / ANCHOR_LAT in degrees (WGS84), ROTATION in degrees clockwise from north, SCALE in "
+            "ground metres per CAD metre: the placement of 'Place a floor plan on the map' gives all four.\n"
+            "OUTPUT: the .osm file to write.")
 
     AREAS = "AREAS"
     PASSAGES = "PASSAGES"

@@ -84,9 +84,15 @@ class GeoreferenceAlgorithm(Cad2OsmagAlgorithm):
             "basemap and whose fields cad_x, cad_y (or sourceX, sourceY) hold its CAD coordinates; at least "
             "2 points, not all on one line. A least-squares similarity (Helmert) is solved and the "
             "residual of every point and their RMS are reported in metres.\n"
+            "FIX_SCALE keeps SCALE during the fit (solves position and rotation only).\n"
+            "AREAS and PASSAGES: layers in the CAD frame (metres, no CRS), e.g. the outputs of 'Refine'; "
+            "OUTPUT_AREAS and OUTPUT_PASSAGES get them in TARGET_CRS (default WGS84, EPSG:4326) with all "
+            "their fields. MODE chooses 'Anchor point + rotation' or 'Control points'. CAD_ANCHOR_X / "
+            "CAD_ANCHOR_Y and CAD_ROTATION_X / CAD_ROTATION_Y are CAD coordinates in metres.\n"
             "All conversions go through a transverse Mercator projection centred on the anchor (pyproj/PROJ), "
             "never a flat-earth approximation. Add a basemap (Vector ▸ CAD to osmAG ▸ Add … basemap) to pick "
-            "points against real imagery.")
+            "points against real imagery, or drag the plan into place with Vector ▸ CAD to osmAG ▸ Place a floor "
+            "plan on the map, whose placement gives ANCHOR, ROTATION and SCALE.")
 
     AREAS = "AREAS"
     PASSAGES = "PASSAGES"

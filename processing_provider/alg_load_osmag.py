@@ -1,4 +1,6 @@
 """cad2osmag:loadosmag — open an osmAG file as styled AREAS and PASSAGES layers."""
+import os
+
 from qgis.core import (
     QgsCoordinateReferenceSystem,
     QgsCategorizedSymbolRenderer,
@@ -49,9 +51,24 @@ def _labels(layer, size=9.0, colour="30,30,30"):
     layer.setLabelsEnabled(True)
 
 
+STYLES_DIR = os.path.join(os.path.dirname(os.path.dirname(__file__)), "styles")
+
+
 def apply_osmag_style(layer, kind):
     """Style a layer made by loadosmag: ``kind`` 'areas' (categorized by osmAG:areatype, labels on
-    name) or 'passages' (bold red lines, labels on name). Works on QGIS 3.22+."""
+    name) or 'passages' (bold red lines, vertical passages highlighted, labels on name). The shipped
+    QML ``styles/osmag_<kind>.qml`` is used when present, else the same style is built here."""
+    qml = os.path.join(STYLES_DIR, f"osmag_{kind}.qml")
+    if os.path.isfile(qml):
+        _, ok = layer.loadNamedStyle(qml)
+        if ok:
+            layer.triggerRepaint()
+            return
+    build_osmag_style(layer, kind)
+
+
+def build_osmag_style(layer, kind):
+    """The osmAG style built in code (styles/build_styles.py saves it as the shipped QML files)."""
     if kind == "areas":
         cats = []
         for value, (fill, outline) in AREA_COLOURS.items():
@@ -66,10 +83,15 @@ def apply_osmag_style(layer, kind):
         layer.setRenderer(QgsCategorizedSymbolRenderer("osmAG:areatype", cats))
         _labels(layer)
     else:
-        sym = QgsLineSymbol.createSimple({"color": "220,20,20", "width": "1.2", "capstyle": "round"})
-        from qgis.core import QgsSingleSymbolRenderer
+        from qgis.core import QgsRuleBasedRenderer
 
-        layer.setRenderer(QgsSingleSymbolRenderer(sym))
+        root = QgsRuleBasedRenderer.Rule(None)
+        vertical = QgsLineSymbol.createSimple({"color": "0,90,255", "width": "2.4", "capstyle": "round"})
+        root.appendChild(QgsRuleBasedRenderer.Rule(vertical, 0, 0, "\"vertical\" = 'yes'",
+                                                   "vertical passage (stairs / lift)"))
+        door = QgsLineSymbol.createSimple({"color": "220,20,20", "width": "1.2", "capstyle": "round"})
+        root.appendChild(QgsRuleBasedRenderer.Rule(door, 0, 0, "", "passage", "", True))  # ELSE rule
+        layer.setRenderer(QgsRuleBasedRenderer(root))
         _labels(layer, 8.0, "160,0,0")
     layer.triggerRepaint()
 
@@ -132,7 +154,9 @@ def osmag_to_sinks(alg, parameters, context, feedback, path, tcrs, areas_key, pa
     afields = make_fields(("osm_id", FIELD_LONG), *((k, FIELD_STRING) for k in akeys))
     pkeys = _keys(passages)
     pfields = make_fields(("osm_id", FIELD_LONG), ("from_id", FIELD_LONG), ("to_id", FIELD_LONG),
-                          *((k, FIELD_STRING) for k in pkeys))
+                          ("vertical", FIELD_STRING), *((k, FIELD_STRING) for k in pkeys))
+    # a vertical passage joins two stair / lift areas (of adjacent levels): the style highlights it
+    shaft = {a.id for a in areas if a.type in ("stairs", "elevator")}
     sink, adest = alg.parameterAsSink(parameters, areas_key, context, afields, QgsWkbTypes.Type.Polygon,
                                        tcrs)
     for a, g in zip(areas, agoms if sink is not None else []):  # an optional output may be skipped
@@ -152,6 +176,7 @@ def osmag_to_sinks(alg, parameters, context, feedback, path, tcrs, areas_key, pa
         f["osm_id"] = int(p.id)
         f["from_id"] = int(p.from_id)
         f["to_id"] = int(p.to_id)
+        f["vertical"] = "yes" if p.from_id in shaft and p.to_id in shaft else "no"
         for k in pkeys:
             v = get_tag(p.tags, k)
             if v is not None:
@@ -179,11 +204,18 @@ class LoadOsmagAlgorithm(Cad2OsmagAlgorithm):
     GROUP = "Tools"
     GROUP_ID = "tools"
     HELP = ("Opens an osmAG file (semantic or fix-id variant; written by this plugin, JOSM or other osmAG "
-            "tools) as an AREAS polygon layer and a PASSAGES line layer with every tag as a field (plus osm_id, "
-            "and from_id / to_id resolving each passage's areas to their way ids). Areas are coloured by "
-            "osmAG:areatype, passages drawn as bold red lines, both labelled with their name. Dangling "
-            "references (missing nodes, passages naming unknown areas) and unclosed area ways are reported and "
-            "skipped. A file without any osmAG area is rejected.")
+            "tools) as an areas polygon layer and a passages line layer with every tag as a field (plus osm_id, "
+            "and from_id / to_id resolving each passage's areas to their way ids, and vertical = yes for a "
+            "passage between two stair or lift areas). Areas are coloured by osmAG:areatype, passages drawn as "
+            "bold red lines and vertical passages thick blue (styles/osmag_*.qml), both labelled with their "
+            "name; GeoPackage outputs keep the style. Dangling references (missing nodes, passages naming "
+            "unknown areas) and unclosed area ways are reported and skipped. A file without any osmAG area is "
+            "rejected.\n"
+            "INPUT: the osmAG file (.osm, OpenStreetMap XML, coordinates in WGS84 degrees).\n"
+            "TARGET_CRS: CRS of the output layers (default WGS84, EPSG:4326); choose a projected CRS in metres "
+            "to measure or edit the areas.\n"
+            "OUTPUT_AREAS / OUTPUT_PASSAGES: the two layers (temporary, GeoPackage, …).\n"
+            "Outputs: the number of areas and passages loaded and the VARIANT detected.")
 
     INPUT = "INPUT"
     TARGET_CRS = "TARGET_CRS"

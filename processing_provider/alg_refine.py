@@ -29,7 +29,7 @@ AREA_ID_FIELDS = ("id", "osm_id", "area_id", "fid")
 AREA_TYPE_FIELDS = ("type", "osmAG:areatype", "osmAG:areaType", "areatype")
 INTERNAL_AREA_FIELDS = {"id", "osm_id", "area_id", "fid", "type", "area_m2", "perimeter_m", "max_clearance",
                         "areatype", "component"}
-INTERNAL_PASSAGE_FIELDS = {"id", "osm_id", "fid", "from_id", "to_id", "width_m"}
+INTERNAL_PASSAGE_FIELDS = {"id", "osm_id", "fid", "from_id", "to_id", "width_m", "vertical"}  # vertical: loadosmag, for the style
 
 
 def _value(feat, names, field_names):

@@ -21,7 +21,13 @@ class SampleBuildingAlgorithm(Cad2OsmagAlgorithm):
             "with real thickness, doors as blocks, glazing, a stair core and a lift, room names as TEXT, "
             "MTEXT and ATTRIB, nested blocks on layer 0, furniture and dimensions) together with a "
             "ground-truth GeoJSON per floor (rooms, doors, stair/lift anchors, in metres). The same seed "
-            "always gives byte-identical files. Use it to try the pipeline or to score it.")
+            "always gives byte-identical files. Use it to try the pipeline or to score it.\n"
+            "FLOORS: number of floors (1-20), one DXF and one ground-truth file each; all floors share the "
+            "stair core and the lift, so they stack.\n"
+            "SEED: any whole number; it varies the room layout (0 is the layout the README shows).\n"
+            "PREFIX: start of the file names: <PREFIX>-F1.dxf, <PREFIX>-F1.gt.geojson, …\n"
+            "OUTPUT_FOLDER: where the files are written (created when missing).\n"
+            "Outputs: FIRST_FLOOR_DXF (the first floor's DXF) and DXF_FILES (every DXF, ';' separated).")
 
     FLOORS = "FLOORS"
     SEED = "SEED"

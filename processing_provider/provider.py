@@ -1,7 +1,8 @@
 """The "CAD to osmAG" Processing provider (id ``cad2osmag``).
 
 Algorithms are discovered from the ``alg_*.py`` modules of this package: each defines one subclass of
-``Cad2OsmagAlgorithm``. Adding a stage means adding one file; the provider never changes.
+``Cad2OsmagAlgorithm``. Adding a stage means adding one file; the provider never changes. The graphical
+models shipped in ``models/*.model3`` are added too (e.g. ``cad2osmag:cad_to_osmag``).
 """
 import importlib
 import inspect
@@ -16,6 +17,25 @@ from .base import Cad2OsmagAlgorithm
 
 PROVIDER_ID = "cad2osmag"
 ICON_PATH = os.path.join(os.path.dirname(os.path.dirname(__file__)), "icons", "icon.svg")
+MODELS_DIR = os.path.join(os.path.dirname(os.path.dirname(__file__)), "models")
+
+
+def shipped_models():
+    """The graphical models of ``models/*.model3``, loaded (a broken file is logged and skipped)."""
+    from qgis.core import QgsProcessingModelAlgorithm
+
+    models = []
+    if not os.path.isdir(MODELS_DIR):
+        return models
+    for name in sorted(os.listdir(MODELS_DIR)):
+        if not name.endswith(".model3"):
+            continue
+        model = QgsProcessingModelAlgorithm()
+        if model.fromFile(os.path.join(MODELS_DIR, name)):
+            models.append(model)
+        else:
+            QgsMessageLog.logMessage(f"cannot load the model {name}", "cad2osmag", Qgis.MessageLevel.Critical)
+    return models
 
 
 def algorithm_classes():
@@ -37,6 +57,10 @@ def algorithm_classes():
 
 
 class Cad2OsmagProvider(QgsProcessingProvider):
+    def __init__(self, include_models=True):
+        super().__init__()
+        self.include_models = include_models
+
     def id(self):
         return PROVIDER_ID
 
@@ -55,3 +79,6 @@ class Cad2OsmagProvider(QgsProcessingProvider):
     def loadAlgorithms(self):
         for cls in algorithm_classes():
             self.addAlgorithm(cls())
+        if self.include_models:
+            for model in shipped_models():
+                self.addAlgorithm(model)

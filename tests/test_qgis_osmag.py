@@ -267,7 +267,7 @@ def test_basemaps_added_without_fetching(qgis_app, qgis_new_project):
 
 
 def test_load_styles(qgis_app, qgis_new_project):
-    from qgis.core import QgsCategorizedSymbolRenderer, QgsSingleSymbolRenderer, QgsVectorLayer
+    from qgis.core import QgsCategorizedSymbolRenderer, QgsRuleBasedRenderer, QgsVectorLayer
 
     apply_osmag_style = _plugin_package().processing_provider.alg_load_osmag.apply_osmag_style
 
@@ -279,9 +279,10 @@ def test_load_styles(qgis_app, qgis_new_project):
     assert isinstance(r, QgsCategorizedSymbolRenderer) and r.classAttribute() == "osmAG:areatype"
     assert {c.value() for c in r.categories()} >= {"room", "corridor", "stairs", "elevator", "structure"}
     assert areas.labelsEnabled() and areas.labeling().settings().fieldName == "name"
-    pr = passages.renderer()
-    assert isinstance(pr, QgsSingleSymbolRenderer)
-    assert pr.symbol().width() >= 1.0 and pr.symbol().color().red() > 200 and pr.symbol().color().green() < 50
+    pr = passages.renderer()  # door passages red (ELSE rule), vertical passages blue: tests/test_gui_styles.py
+    assert isinstance(pr, QgsRuleBasedRenderer)
+    door = [r for r in pr.rootRule().children() if r.isElse()][0].symbol()
+    assert door.width() >= 1.0 and door.color().red() > 200 and door.color().green() < 50
     assert passages.labelsEnabled()
 
 

@@ -1,0 +1,159 @@
+"""Writes i18n/cad2osmag_<lang>.ts from the plugin's sources (``make translations`` then compiles them
+with Qt's ``lrelease``).
+
+pylupdate5 only sees literal ``tr("...")`` calls; the algorithms' names, groups and help are class
+attributes (DISPLAY_NAME, GROUP, HELP, MODES) translated at run time with the class name as context
+(``Cad2OsmagAlgorithm.tr``), so this script reads the sources with ``ast`` and collects both:
+
+* ``self.tr("...")`` inside a class -> context = the class name;
+* ``tr("...")`` at module level in ``ui/*`` -> the context of that module's ``tr`` helper;
+* ``QCoreApplication.translate("Context", "...")`` anywhere;
+* DISPLAY_NAME / GROUP / HELP / MODES class attributes of every algorithm class;
+* ``(key, "label")`` tuples looped into ``self.tr(label)`` (output labels).
+
+Translations already in a .ts file are kept; strings that are new get the translations of
+``SEED`` below, if any, else stay "unfinished" (Qt then shows the English text).
+"""
+import ast
+import os
+import sys
+import xml.etree.ElementTree as ET
+from collections import OrderedDict
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+REPO = os.path.dirname(HERE)
+LANGUAGES = {"de": "de_DE", "zh_CN": "zh_CN"}
+SOURCES = ["plugin.py", "processing_provider", "ui"]
+
+sys.path.insert(0, HERE)
+from seed_translations import SEED  # noqa: E402
+
+
+def _str(node):
+    if isinstance(node, ast.Constant) and isinstance(node.value, str):
+        return node.value
+    if isinstance(node, ast.JoinedStr):
+        return None
+    return None
+
+
+def _module_tr_context(tree):
+    """Context of a module-level ``def tr(text): return QCoreApplication.translate("Ctx", text)``."""
+    for node in tree.body:
+        if isinstance(node, ast.FunctionDef) and node.name == "tr":
+            for sub in ast.walk(node):
+                if isinstance(sub, ast.Call) and getattr(sub.func, "attr", "") == "translate" and sub.args:
+                    return _str(sub.args[0])
+    return None
+
+
+def collect(path):
+    """[(context, source text, file)] of one Python file."""
+    with open(path, encoding="utf-8") as fh:
+        tree = ast.parse(fh.read(), path)
+    rel = os.path.relpath(path, HERE)
+    out = []
+    module_ctx = _module_tr_context(tree)
+
+    def visit(node, cls):
+        for child in ast.iter_child_nodes(node):
+            if isinstance(child, ast.ClassDef):
+                for stmt in child.body:  # translated class attributes
+                    if isinstance(stmt, ast.Assign) and len(stmt.targets) == 1 and isinstance(stmt.targets[0], ast.Name):
+                        name = stmt.targets[0].id
+                        if name in ("DISPLAY_NAME", "GROUP", "HELP") and _str(stmt.value):
+                            out.append((child.name, _str(stmt.value), rel))
+                        elif name == "MODES" and isinstance(stmt.value, ast.List):
+                            out.extend((child.name, _str(e), rel) for e in stmt.value.elts if _str(e))
+                visit(child, child.name)
+                continue
+            if isinstance(child, ast.Call):
+                f = child.func
+                if isinstance(f, ast.Attribute) and f.attr == "tr" and cls and child.args and _str(child.args[0]):
+                    out.append((cls, _str(child.args[0]), rel))
+                elif isinstance(f, ast.Name) and f.id == "tr" and child.args and _str(child.args[0]):
+                    ctx = module_ctx or cls
+                    if ctx:
+                        out.append((ctx, _str(child.args[0]), rel))
+                elif isinstance(f, ast.Attribute) and f.attr == "translate" and len(child.args) >= 2 \
+                        and _str(child.args[0]) and _str(child.args[1]):
+                    out.append((_str(child.args[0]), _str(child.args[1]), rel))
+            if isinstance(child, ast.For) and cls:  # for key, label in (("A", "Areas"), ...): self.tr(label)
+                body_src = ast.dump(ast.Module(body=child.body, type_ignores=[]))
+                if "attr='tr'" in body_src and isinstance(child.iter, (ast.Tuple, ast.List)):
+                    for elt in child.iter.elts:
+                        if isinstance(elt, ast.Tuple) and len(elt.elts) >= 2 and _str(elt.elts[1]):
+                            out.append((cls, _str(elt.elts[1]), rel))
+            visit(child, cls)
+
+    visit(tree, None)
+    # the provider's class-level name() uses the context Cad2OsmagProvider already (translate call)
+    return out
+
+
+def all_messages():
+    messages = OrderedDict()  # (context, source) -> file
+    for src in SOURCES:
+        path = os.path.join(REPO, src)
+        files = [path] if path.endswith(".py") else sorted(
+            os.path.join(path, n) for n in os.listdir(path) if n.endswith(".py"))
+        for f in files:
+            for ctx, text, rel in collect(f):
+                messages.setdefault((ctx, text), rel)
+    return messages
+
+
+def read_ts(path):
+    """{(context, source): translation} of an existing .ts file (finished or not, non-empty)."""
+    done = {}
+    if not os.path.exists(path):
+        return done
+    root = ET.parse(path).getroot()
+    for ctx in root.iter("context"):
+        name = ctx.findtext("name")
+        for msg in ctx.iter("message"):
+            tr_el = msg.find("translation")
+            if tr_el is not None and tr_el.text and tr_el.get("type") not in ("vanished", "obsolete"):
+                done[(name, msg.findtext("source"))] = tr_el.text
+    return done
+
+
+def write_ts(path, lang, messages, existing, seed):
+    root = ET.Element("TS", version="2.1", language=lang)
+    by_ctx = OrderedDict()
+    for (ctx, text), rel in messages.items():
+        by_ctx.setdefault(ctx, []).append((text, rel))
+    translated = 0
+    for ctx in sorted(by_ctx):
+        c = ET.SubElement(root, "context")
+        ET.SubElement(c, "name").text = ctx
+        for text, rel in by_ctx[ctx]:
+            m = ET.SubElement(c, "message")
+            ET.SubElement(m, "location", filename=rel)
+            ET.SubElement(m, "source").text = text
+            value = existing.get((ctx, text)) or seed.get(text)
+            t = ET.SubElement(m, "translation")
+            if value:
+                t.text = value
+                translated += 1
+            else:
+                t.set("type", "unfinished")
+    ET.indent(root)
+    with open(path, "w", encoding="utf-8") as fh:
+        fh.write('<?xml version="1.0" encoding="utf-8"?>\n<!DOCTYPE TS>\n')
+        fh.write(ET.tostring(root, encoding="unicode"))
+        fh.write("\n")
+    return translated
+
+
+def main():
+    messages = all_messages()
+    for suffix, lang in LANGUAGES.items():
+        path = os.path.join(HERE, f"cad2osmag_{suffix}.ts")
+        n = write_ts(path, lang, messages, read_ts(path), SEED.get(suffix, {}))
+        print(f"{os.path.basename(path)}: {n} of {len(messages)} strings translated")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -1,0 +1,199 @@
+"""The guided conversion (ui/convert_wizard.py) stepped through headless on the sample building: files and
+their layers, settings in metres, placement by dragging, conversion as a QgsTask, styled floors on the map.
+Screenshots of every page go to tests/artifacts/ (the README's images)."""
+import math
+import os
+import time
+
+import pytest
+
+from algorithms import osmag
+from algorithms.sample_building import generate_building
+
+from .conftest import plugin_package
+
+
+@pytest.fixture()
+def provider(qgis_app, qgis_processing):
+    from qgis.core import QgsApplication
+
+    plugin_package()
+    from cad2osmag.processing_provider.provider import Cad2OsmagProvider
+
+    registry = QgsApplication.processingRegistry()
+    if registry.providerById("cad2osmag") is None:
+        prov = Cad2OsmagProvider()
+        registry.addProvider(prov)
+        yield prov
+        registry.removeProvider(prov)
+    else:
+        yield registry.providerById("cad2osmag")
+
+
+def _wait(predicate, timeout=300):
+    from qgis.core import QgsApplication
+
+    t0 = time.time()
+    while not predicate():
+        QgsApplication.processEvents()
+        time.sleep(0.05)
+        assert time.time() - t0 < timeout, "timed out"
+
+
+def test_wizard_converts_two_floors_placed_by_dragging(provider, qgis_iface, qgis_new_project, tmp_path, repo_root):
+    from qgis.core import QgsCoordinateReferenceSystem, QgsProject, QgsRectangle
+    from qgis.gui import QgsMapCanvas, QgsMapMouseEvent
+    from qgis.PyQt.QtCore import QEvent, QPoint, Qt
+
+    from cad2osmag.ui.convert_wizard import ConvertWizard
+    from cad2osmag.ui.placement import load_placement
+
+    art = repo_root / "tests" / "artifacts"
+    art.mkdir(parents=True, exist_ok=True)
+    QgsProject.instance().removeEntry("cad2osmag", "placement")  # qgis_new_project keeps custom entries
+    sample = generate_building(str(tmp_path / "dxf"), floors=2, seed=4)
+    canvas = QgsMapCanvas()
+    canvas.resize(700, 500)
+    canvas.setDestinationCrs(QgsCoordinateReferenceSystem("EPSG:3857"))
+    canvas.setExtent(QgsRectangle(13535000, 3656000, 13535300, 3656200))  # Shanghai, web mercator
+    canvas.show()
+    wiz = ConvertWizard(canvas)
+    wiz.show()
+
+    # 1. files and their layers
+    page = wiz.files_page
+    page.add_files(sample["dxf"])
+    assert page.paths() == sample["dxf"] and page.isComplete()
+    assert page.layers.rowCount() >= 3
+    kept = {page.layers.item(r, 0).text(): page.layers.item(r, 2).text() for r in range(page.layers.rowCount())}
+    assert any(v == "yes" for v in kept.values()) and any(v == "no" for v in kept.values())
+    wiz.grab().save(str(art / "wizard_1_files.png"))
+    wiz.next()
+
+    # 2. settings in metres
+    s = wiz.settings_page
+    assert wiz.currentPage() is s
+    assert s.resolution.value() == pytest.approx(0.044) and s.door_width.suffix() == " m"
+    s.first_level.setValue(0)
+    s.min_area.setValue(8.0)
+    s.resolution.setValue(0.05)
+    task = s.preview()
+    assert task is not None and not s.preview_button.isEnabled()
+    _wait(lambda: s.preview_button.isEnabled())
+    assert len(s.canvas.layers()) == 4, s.preview_status.text()
+    n_preview = int(s.preview_status.text().split()[0])
+    assert n_preview >= 15
+    assert s.preview_layers[3].rasterUnitsPerPixelX() == pytest.approx(0.05)
+    s.canvas.refresh()
+    s.canvas.waitWhileRendering()
+    wiz.grab().save(str(art / "wizard_2_settings.png"))
+    wiz.next()
+
+    # 3. placement: the first floor's walls over the map, dragged and turned with the mouse
+    panel = wiz.placement_page.panel
+    assert panel.overlay is not None and canvas.mapTool() is panel.move_tool
+    tool = panel.move_tool
+    before = panel.placement
+    ct = canvas.getCoordinateTransform()
+
+    def drag(a, b):
+        for kind, p, btn, btns in ((QEvent.Type.MouseButtonPress, a, Qt.MouseButton.LeftButton,
+                                    Qt.MouseButton.LeftButton),
+                                   (QEvent.Type.MouseMove, b, Qt.MouseButton.NoButton, Qt.MouseButton.LeftButton),
+                                   (QEvent.Type.MouseButtonRelease, b, Qt.MouseButton.LeftButton,
+                                    Qt.MouseButton.NoButton)):
+            e = QgsMapMouseEvent(canvas, kind, QPoint(int(p[0]), int(p[1])), btn, btns,
+                                 Qt.KeyboardModifier.NoModifier)
+            {QEvent.Type.MouseButtonPress: tool.canvasPressEvent, QEvent.Type.MouseMove: tool.canvasMoveEvent,
+             QEvent.Type.MouseButtonRelease: tool.canvasReleaseEvent}[kind](e)
+
+    centre = ct.transform(tool.handle_points()["pivot"])
+    drag((centre.x() - 30, centre.y() + 10), (centre.x() + 10, centre.y() - 20))
+    handle = ct.transform(tool.handle_points()["rotate"])
+    pivot = ct.transform(tool.handle_points()["pivot"])
+    r = math.hypot(handle.x() - pivot.x(), handle.y() - pivot.y())
+    drag((handle.x(), handle.y()), (pivot.x() + r * math.sin(math.radians(12)), pivot.y() - r * math.cos(math.radians(12))))
+    placed = panel.placement
+    assert placed.rotation_deg == pytest.approx(12.0, abs=0.6)
+    assert placed.anchor_lon != pytest.approx(before.anchor_lon, abs=1e-9)
+    assert load_placement() == placed  # saved with the project
+    assert panel.rot_spin.value() == pytest.approx(placed.rotation_deg, abs=1e-3)  # 3 decimals shown
+    canvas.setLayers([panel.overlay.layer])
+    canvas.refresh()
+    canvas.waitWhileRendering()
+    wiz.grab().save(str(art / "wizard_3_placement.png"))
+    canvas.grab().save(str(art / "wizard_3_canvas.png"))
+    wiz.next()
+
+    # 4. convert both floors as a task, merged building too, styled layers added
+    run = wiz.run_page
+    out = tmp_path / "out"
+    run.folder.setText(str(out))
+    assert not run.isComplete()
+    task = run.start()
+    assert task is not None and run.cancel_button.isEnabled()
+    _wait(lambda: run.run_button.isEnabled())
+    assert run.done, run.log.toPlainText()
+    assert run.progress.value() == 100
+    for k, dxf in enumerate(sample["dxf"]):
+        osm = out / (os.path.splitext(os.path.basename(dxf))[0] + ".osm")
+        areas, passages, root, _ = osmag.read_osmag(str(osm))
+        assert root == pytest.approx((placed.anchor_lon, placed.anchor_lat), abs=1e-9)
+        assert {a.tags.get("level") for a in areas if a.type != "structure"} == {str(k)}
+        assert len(areas) >= 15
+    assert (out / "building.osm").is_file()
+    names = sorted(layer.name() for layer in QgsProject.instance().mapLayers().values())
+    assert sum(n.endswith(" areas") for n in names) == 2 and sum(n.endswith(" passages") for n in names) == 2
+    styled = [layer for layer in QgsProject.instance().mapLayers().values() if layer.name().endswith(" areas")]
+    assert all(layer.renderer().type() == "categorizedSymbol" for layer in styled)
+    wiz.grab().save(str(art / "wizard_4_done.png"))
+
+    # 5. names and types: rename one room, make another a corridor, export again
+    wiz.next()
+    names = wiz.names_page
+    assert wiz.currentPage() is names
+    n_areas = sum(len(osmag.read_osmag(str(out / (os.path.splitext(os.path.basename(d))[0] + ".osm")))[0])
+                  for d in sample["dxf"])
+    assert names.table.rowCount() == n_areas
+    rooms = [r for r in range(names.table.rowCount()) if names.table.cellWidget(r, 3).currentText() == "room"]
+    names.table.item(rooms[0], 2).setText("Server room")
+    names.table.cellWidget(rooms[1], 3).setCurrentText("corridor")
+    renamed_id, level = names.table.item(rooms[0], 1).text(), names.table.item(rooms[0], 0).text()
+    retyped_id = names.table.item(rooms[1], 1).text()
+    task = names.save()
+    _wait(lambda: names.save_button.isEnabled())
+    assert "2 areas changed" in names.status.text(), names.status.text()
+    k = int(level)
+    osm = out / (os.path.splitext(os.path.basename(sample["dxf"][k]))[0] + ".osm")
+    areas, _, root, _ = osmag.read_osmag(str(osm))
+    assert root == pytest.approx((placed.anchor_lon, placed.anchor_lat), abs=1e-9)
+    assert "Server room" in {a.name for a in areas}
+    assert sum(a.type == "corridor" for a in areas) >= 1
+    building, _, _, _ = osmag.read_osmag(str(out / "building.osm"))
+    assert "Server room" in {a.name for a in building}
+    assert renamed_id != retyped_id
+    wiz.grab().save(str(art / "wizard_5_names.png"))
+    canvas.setLayers([layer for layer in QgsProject.instance().mapLayers().values()
+                      if layer.name().endswith(("areas", "passages"))])
+    canvas.refresh()
+    canvas.waitWhileRendering()
+    canvas.grab().save(str(art / "wizard_4_canvas.png"))
+    wiz.done(0)
+    assert canvas.mapTool() is not tool
+    canvas.close()
+
+
+def test_wizard_task_can_be_canceled(provider, qgis_new_project, tmp_path):
+    from cad2osmag.ui.convert_wizard import AlgorithmsTask
+    from qgis.core import QgsApplication, QgsTask
+
+    sample = generate_building(str(tmp_path / "dxf"), floors=2, seed=5)
+    steps = [("cad2osmag:dxftoosmag", {"INPUT": p, "OUTPUT": str(tmp_path / f"f{k}.osm")})
+             for k, p in enumerate(sample["dxf"])]
+    task = AlgorithmsTask("cancel me", steps)
+    QgsApplication.taskManager().addTask(task)
+    _wait(lambda: task.status() == QgsTask.TaskStatus.Running)
+    task.cancel()
+    _wait(lambda: task.status() in (QgsTask.TaskStatus.Terminated, QgsTask.TaskStatus.Complete))
+    assert task.status() == QgsTask.TaskStatus.Terminated
+    assert not (tmp_path / "f1.osm").exists()

@@ -1,0 +1,616 @@
+"""*Convert a floor plan…*: one guided conversion that runs the Processing algorithms (no second
+implementation) step by step:
+
+1. floor plans: pick DXF/DWG files (several floors at once); the layers of the selected file and whether the
+   layer rules keep them (``cad2osmag:listlayers``);
+2. settings in metres: raster resolution, widest door, corridor width, smallest area, first level, floor
+   height;
+3. placement on the basemap (the *Place the plan on the map* panel, embedded: drag, rotate, scale or
+   control points; saved with the project);
+4. conversion: one osmAG file per floor (``cad2osmag:dxftoosmag``) or also the merged building
+   (``cad2osmag:mergefloors``), run as a QgsTask with progress and cancel; the styled floors are added to
+   the map;
+5. names and types of the areas in an editable table; saving writes them into the floors' layers and
+   exports the osmAG files again (``cad2osmag:exportosmag``, ``mergefloors``).
+"""
+from __future__ import annotations
+
+import os
+from typing import List, Optional
+
+from qgis.core import (
+    QgsApplication,
+    QgsProcessingContext,
+    QgsProcessingFeedback,
+    QgsProject,
+    QgsTask,
+    QgsVectorLayer,
+)
+from qgis.PyQt.QtCore import QCoreApplication, Qt, pyqtSignal
+from qgis.PyQt.QtWidgets import (
+    QAbstractItemView,
+    QCheckBox,
+    QDoubleSpinBox,
+    QFileDialog,
+    QFormLayout,
+    QHBoxLayout,
+    QLabel,
+    QLineEdit,
+    QListWidget,
+    QProgressBar,
+    QPushButton,
+    QSpinBox,
+    QTableWidget,
+    QTableWidgetItem,
+    QTextEdit,
+    QVBoxLayout,
+    QWizard,
+    QWizardPage,
+)
+
+from .placement_dock import PlacementWidget
+
+
+def tr(text):
+    return QCoreApplication.translate("ConvertWizard", text)
+
+
+# ====================================================================== running algorithms in a task
+class _LogFeedback(QgsProcessingFeedback):
+    """Feedback that keeps the algorithm's messages in a list (read by the wizard when the task ends)."""
+
+    def __init__(self, log):
+        super().__init__()
+        self._log = log
+
+    def pushInfo(self, info):  # noqa: N802
+        self._log.append(info)
+
+    def pushWarning(self, warning):  # noqa: N802
+        self._log.append("⚠ " + warning)
+
+    def reportError(self, error, fatalError=False):  # noqa: N802, N803
+        self._log.append("✖ " + error)
+
+
+class AlgorithmsTask(QgsTask):
+    """Runs a list of (algorithm id, parameters) one after the other in a background thread, with the
+    task's progress and cancel wired to the algorithms' feedback. ``results`` / ``errors`` per step.
+
+    Feedback and context objects are made here, in the main thread, and live as long as the task: Qt
+    objects must not be created in the worker thread and garbage-collected in another."""
+
+    def __init__(self, description: str, steps):
+        super().__init__(description, QgsTask.Flag.CanCancel)
+        self.steps = list(steps)
+        self.results: List[Optional[dict]] = []
+        self.errors: List[str] = []
+        self.log: List[str] = []
+        self._feedbacks = [_LogFeedback(self.log) for _ in self.steps]
+        self._contexts = [QgsProcessingContext() for _ in self.steps]
+
+    def cancel(self):
+        for fb in self._feedbacks:
+            fb.cancel()
+        super().cancel()
+
+    def run(self):
+        from qgis.PyQt.QtCore import QThread
+
+        n = max(len(self.steps), 1)
+        for k, (alg_id, params) in enumerate(self.steps):
+            if self.isCanceled():
+                return False
+            alg = QgsApplication.processingRegistry().createAlgorithmById(alg_id)
+            if alg is None:
+                self.errors.append(f"{alg_id}: not available")
+                self.results.append(None)
+                continue
+            feedback, context = self._feedbacks[k], self._contexts[k]
+            context.pushToThread(QThread.currentThread())
+            feedback.progressChanged.connect(lambda p, k=k: self.setProgress(100.0 * (k + p / 100.0) / n))
+            try:
+                result, ok = alg.run(params, context, feedback)
+            except Exception as exc:  # noqa: BLE001 - reported in the wizard
+                result, ok = None, False
+                self.log.append("✖ " + str(exc))
+            # layers the algorithm opened live in the context's store: free them in this thread, then
+            # hand the context back to the main thread, which deletes it with the task
+            context.temporaryLayerStore().removeAllMapLayers()
+            context.pushToThread(QgsApplication.instance().thread())
+            self.results.append(result if ok else None)
+            if not ok:
+                self.errors.append(f"{os.path.basename(str(params.get('INPUT', alg_id)))}: "
+                                   + (self.log[-1] if self.log else "failed"))
+            if self.isCanceled():
+                return False
+        self.setProgress(100.0)
+        return not self.errors
+
+
+# ====================================================================== pages
+class FilesPage(QWizardPage):
+    def __init__(self, wizard):
+        super().__init__()
+        self.wiz = wizard
+        self.setTitle(tr("1. Floor plans"))
+        self.setSubTitle(tr("Pick the DXF/DWG files of the building, one per floor (bottom floor first). "
+                            "The table shows the layers of the selected file and which ones the layer rules "
+                            "keep as structure."))
+        lay = QVBoxLayout(self)
+        row = QHBoxLayout()
+        self.files = QListWidget()
+        self.files.setSelectionMode(QAbstractItemView.SelectionMode.SingleSelection)
+        row.addWidget(self.files, 1)
+        buttons = QVBoxLayout()
+        self.add_button = QPushButton(tr("Add files…"))
+        self.add_button.clicked.connect(self.choose_files)
+        self.remove_button = QPushButton(tr("Remove"))
+        self.remove_button.clicked.connect(self.remove_selected)
+        self.up_button = QPushButton(tr("Up"))
+        self.up_button.clicked.connect(lambda: self.move(-1))
+        self.down_button = QPushButton(tr("Down"))
+        self.down_button.clicked.connect(lambda: self.move(1))
+        for b in (self.add_button, self.remove_button, self.up_button, self.down_button):
+            buttons.addWidget(b)
+        buttons.addStretch(1)
+        row.addLayout(buttons)
+        lay.addLayout(row)
+        self.layers = QTableWidget(0, 4)
+        self.layers.setHorizontalHeaderLabels([tr("Layer"), tr("Kind"), tr("Kept"), tr("Entities")])
+        self.layers.setEditTriggers(QAbstractItemView.EditTrigger.NoEditTriggers)
+        lay.addWidget(self.layers, 2)
+        self.summary = QLabel("")
+        lay.addWidget(self.summary)
+        self.files.currentRowChanged.connect(self.show_layers)
+
+    def paths(self) -> List[str]:
+        return [self.files.item(i).text() for i in range(self.files.count())]
+
+    def choose_files(self):
+        paths, _ = QFileDialog.getOpenFileNames(self, tr("Floor plans"), "",
+                                                tr("CAD drawings (*.dxf *.dwg *.DXF *.DWG)"))
+        self.add_files(paths)
+
+    def add_files(self, paths):
+        for p in paths:
+            if p not in self.paths():
+                self.files.addItem(p)
+        if self.files.currentRow() < 0 and self.files.count():
+            self.files.setCurrentRow(0)
+        self.completeChanged.emit()
+
+    def remove_selected(self):
+        row = self.files.currentRow()
+        if row >= 0:
+            self.files.takeItem(row)
+            self.completeChanged.emit()
+
+    def move(self, delta):
+        row = self.files.currentRow()
+        new = row + delta
+        if row < 0 or not 0 <= new < self.files.count():
+            return
+        item = self.files.takeItem(row)
+        self.files.insertItem(new, item)
+        self.files.setCurrentRow(new)
+
+    def show_layers(self, row):
+        self.layers.setRowCount(0)
+        if row < 0:
+            return
+        path = self.files.item(row).text()
+        alg = QgsApplication.processingRegistry().createAlgorithmById("cad2osmag:listlayers")
+        context = QgsProcessingContext()
+        res, ok = (alg.run({"INPUT": path, "OUTPUT": "memory:"}, context, QgsProcessingFeedback())
+                   if alg is not None else (None, False))
+        if not ok:
+            self.summary.setText(tr("Cannot read the layers of {}.").format(os.path.basename(path)))
+            return
+        layer = context.getMapLayer(res["OUTPUT"]) or context.takeResultLayer(res["OUTPUT"])
+        feats = list(layer.getFeatures())
+        self.layers.setRowCount(len(feats))
+        for r, f in enumerate(feats):
+            for c, v in enumerate((f["layer"], f["kind"], tr("yes") if f["kept"] else tr("no"), str(f["total"]))):
+                self.layers.setItem(r, c, QTableWidgetItem(str(v)))
+        self.summary.setText(tr("{}: {} layers, kept: {}").format(os.path.basename(path), len(feats),
+                                                                  res.get("KEPT_LAYERS", "")))
+
+    def isComplete(self):  # noqa: N802
+        return self.files.count() > 0
+
+
+class SettingsPage(QWizardPage):
+    def __init__(self, wizard):
+        super().__init__()
+        self.setTitle(tr("2. Segmentation settings (metres)"))
+        self.setSubTitle(tr("The defaults suit most buildings. Smaller pixels follow thin walls better but "
+                            "take longer."))
+        form = QFormLayout(self)
+
+        def spin(value, lo, hi, decimals, suffix, step):
+            s = QDoubleSpinBox()
+            s.setRange(lo, hi)
+            s.setDecimals(decimals)
+            s.setSingleStep(step)
+            s.setSuffix(suffix)
+            s.setValue(value)
+            return s
+
+        self.resolution = spin(0.044, 0.005, 1.0, 3, " m/px", 0.005)
+        self.door_width = spin(2.8, 0.3, 100.0, 2, " m", 0.1)
+        self.corridor_width = spin(8.0, 0.5, 100.0, 2, " m", 0.5)
+        self.min_area = spin(10.0, 0.0, 10000.0, 1, " m²", 1.0)
+        self.height = spin(3.2, 0.5, 100.0, 2, " m", 0.1)
+        self.first_level = QSpinBox()
+        self.first_level.setRange(-20, 200)
+        self.first_level.setValue(1)
+        form.addRow(tr("Raster resolution"), self.resolution)
+        form.addRow(tr("Widest door"), self.door_width)
+        form.addRow(tr("Corridor width"), self.corridor_width)
+        form.addRow(tr("Merge areas smaller than"), self.min_area)
+        form.addRow(tr("Level of the first floor"), self.first_level)
+        form.addRow(tr("Floor height"), self.height)
+        from qgis.gui import QgsMapCanvas
+
+        self.preview_button = QPushButton(tr("Preview the areas of the first floor"))
+        self.preview_button.clicked.connect(self.preview)
+        self.preview_status = QLabel("")
+        form.addRow(self.preview_button, self.preview_status)
+        self.canvas = QgsMapCanvas()
+        self.canvas.setMinimumHeight(260)
+        form.addRow(self.canvas)
+        self.wiz = wizard
+        self.task = None
+        self.preview_layers = []
+        import tempfile
+
+        self._tmp = tempfile.mkdtemp(prefix="cad2osmag-preview-")
+
+    def preview(self):
+        """extractstructure -> rasterize -> segment on the first floor with these settings, as a task; the
+        walls, the occupancy raster and the areas are shown in the page's own canvas (drawing frame)."""
+        paths = self.wiz.files_page.paths()
+        if not paths:
+            return None
+        d = self._tmp
+        walls, occ = os.path.join(d, "walls.gpkg"), os.path.join(d, "occupancy.tif")
+        areas, passages = os.path.join(d, "areas.gpkg"), os.path.join(d, "passages.gpkg")
+        steps = [("cad2osmag:extractstructure", {"INPUT": paths[0], "WALLS": walls,
+                                                 "TEXTS": os.path.join(d, "texts.gpkg")}),
+                 ("cad2osmag:rasterize", {"WALLS": walls, "RESOLUTION": self.resolution.value(), "OCCUPANCY": occ}),
+                 ("cad2osmag:segment", {"INPUT": occ, "DOOR_WIDTH": self.door_width.value(),
+                                        "CORRIDOR_WIDTH": self.corridor_width.value(), "STRUCTURE": walls,
+                                        "AREAS": areas, "PASSAGES": passages,
+                                        "LABELS": os.path.join(d, "labels.tif")})]
+        self.canvas.setLayers([])
+        self.preview_layers = []
+        self.task = AlgorithmsTask(tr("Previewing the segmentation"), steps)
+        self.task.taskCompleted.connect(lambda: self._show(walls, occ, areas, passages))
+        self.task.taskTerminated.connect(lambda: self.preview_status.setText(
+            tr("Preview failed: {}").format("; ".join(self.task.errors) or tr("canceled"))))
+        self.preview_button.setEnabled(False)
+        self.preview_status.setText(tr("Computing…"))
+        self.task.taskTerminated.connect(lambda: self.preview_button.setEnabled(True))
+        QgsApplication.taskManager().addTask(self.task)
+        return self.task
+
+    def release_preview(self):
+        """The preview canvas only points at its layers: drop it from them before they are deleted."""
+        import shutil
+
+        self.canvas.setLayers([])
+        self.preview_layers = []
+        shutil.rmtree(self._tmp, ignore_errors=True)
+
+    def _show(self, walls, occ, areas, passages):
+        from qgis.core import (QgsCategorizedSymbolRenderer, QgsFillSymbol, QgsLineSymbol, QgsRasterLayer,
+                               QgsRendererCategory, QgsSingleSymbolRenderer)
+
+        from ..processing_provider.alg_load_osmag import AREA_COLOURS
+
+        raster = QgsRasterLayer(occ, "occupancy")
+        area_layer = QgsVectorLayer(areas, "areas", "ogr")
+        cats = [QgsRendererCategory(k, QgsFillSymbol.createSimple({"color": fill, "outline_color": line,
+                                                                   "outline_width": "0.3"}), k)
+                for k, (fill, line) in AREA_COLOURS.items() if k != "structure"]
+        area_layer.setRenderer(QgsCategorizedSymbolRenderer("type", cats))
+        pass_layer = QgsVectorLayer(passages, "passages", "ogr")
+        pass_layer.setRenderer(QgsSingleSymbolRenderer(QgsLineSymbol.createSimple({"color": "220,20,20",
+                                                                                   "width": "0.8"})))
+        wall_layer = QgsVectorLayer(walls, "walls", "ogr")
+        wall_layer.setRenderer(QgsSingleSymbolRenderer(QgsLineSymbol.createSimple({"color": "0,0,0",
+                                                                                   "width": "0.2"})))
+        self.preview_layers = [pass_layer, wall_layer, area_layer, raster]
+        self.canvas.setDestinationCrs(area_layer.crs())
+        self.canvas.setLayers(self.preview_layers)
+        self.canvas.setExtent(raster.extent())
+        self.canvas.refresh()
+        self.preview_button.setEnabled(True)
+        self.preview_status.setText(tr("{} areas, {} passages").format(area_layer.featureCount(),
+                                                                     pass_layer.featureCount()))
+
+
+class PlacementPage(QWizardPage):
+    def __init__(self, wizard, canvas):
+        super().__init__()
+        self.wiz = wizard
+        self.setTitle(tr("3. Place the plan on the map"))
+        self.setSubTitle(tr("Add a basemap, then drag the plan to its place, turn it with the round handle, or "
+                            "click control points (drawing point, then map point). Every floor uses this "
+                            "placement."))
+        lay = QVBoxLayout(self)
+        self.panel = PlacementWidget(canvas, self)
+        lay.addWidget(self.panel)
+
+    def initializePage(self):  # noqa: N802
+        paths = self.wiz.files_page.paths()
+        if paths and self.panel.overlay is None:
+            self.panel.load_file(paths[0])
+
+    def cleanupPage(self):  # noqa: N802
+        self.panel.deactivate_tools()
+
+    def isComplete(self):  # noqa: N802
+        return self.panel.placement is not None
+
+
+class RunPage(QWizardPage):
+    finishedConversion = pyqtSignal(bool)
+
+    def __init__(self, wizard):
+        super().__init__()
+        self.wiz = wizard
+        self.task = None
+        self.done = False
+        self.setTitle(tr("4. Convert and export"))
+        self.setSubTitle(tr("One osmAG file per floor is written to the output folder; the floors are added "
+                            "to the map, styled."))
+        lay = QVBoxLayout(self)
+        row = QHBoxLayout()
+        self.folder = QLineEdit()
+        browse = QPushButton(tr("…"))
+        browse.clicked.connect(self.choose_folder)
+        row.addWidget(QLabel(tr("Output folder")))
+        row.addWidget(self.folder, 1)
+        row.addWidget(browse)
+        lay.addLayout(row)
+        self.merge = QCheckBox(tr("Also write the merged building (building.osm)"))
+        self.merge.setChecked(True)
+        self.add_to_map = QCheckBox(tr("Add the styled floors to the map"))
+        self.add_to_map.setChecked(True)
+        lay.addWidget(self.merge)
+        lay.addWidget(self.add_to_map)
+        row = QHBoxLayout()
+        self.run_button = QPushButton(tr("Convert"))
+        self.run_button.clicked.connect(self.start)
+        self.cancel_button = QPushButton(tr("Cancel"))
+        self.cancel_button.setEnabled(False)
+        self.cancel_button.clicked.connect(self.cancel)
+        row.addWidget(self.run_button)
+        row.addWidget(self.cancel_button)
+        lay.addLayout(row)
+        self.progress = QProgressBar()
+        self.progress.setRange(0, 100)
+        lay.addWidget(self.progress)
+        self.log = QTextEdit()
+        self.log.setReadOnly(True)
+        lay.addWidget(self.log, 1)
+        self.outputs = []
+
+    def choose_folder(self):
+        folder = QFileDialog.getExistingDirectory(self, tr("Output folder"), self.folder.text())
+        if folder:
+            self.folder.setText(folder)
+
+    def steps(self):
+        """(algorithm id, parameters) for every floor, then the merge."""
+        w = self.wiz
+        s = w.settings_page
+        placement = w.placement_page.panel.placement
+        out = self.folder.text().strip()
+        steps, self.outputs = [], []
+        for k, path in enumerate(w.files_page.paths()):
+            stem = os.path.splitext(os.path.basename(path))[0]
+            osm = os.path.join(out, stem + ".osm")
+            params = {"INPUT": path, "OUTPUT": osm, "LEVEL": str(s.first_level.value() + k),
+                      "HEIGHT": s.height.value(), "RESOLUTION": s.resolution.value(),
+                      "DOOR_WIDTH": s.door_width.value(), "CORRIDOR_WIDTH": s.corridor_width.value(),
+                      "MIN_AREA": s.min_area.value(),
+                      "OUTPUT_AREAS": os.path.join(out, stem + "_areas.gpkg"),
+                      "OUTPUT_PASSAGES": os.path.join(out, stem + "_passages.gpkg")}
+            if placement is not None:
+                params.update(placement.dxftoosmag_parameters())
+            steps.append(("cad2osmag:dxftoosmag", params))
+            self.outputs.append(params)
+        if self.merge.isChecked() and len(steps) > 1:
+            steps.append(("cad2osmag:mergefloors", {"FLOORS": [p["OUTPUT"] for p in self.outputs],
+                                                   "OUTPUT": os.path.join(out, "building.osm")}))
+        return steps
+
+    def start(self):
+        out = self.folder.text().strip()
+        if not out:
+            self.log.append(tr("Choose an output folder first."))
+            return None
+        os.makedirs(out, exist_ok=True)
+        self.done = False
+        self.task = AlgorithmsTask(tr("Converting floor plans to osmAG"), self.steps())
+        self.task.progressChanged.connect(lambda p: self.progress.setValue(int(p)))
+        self.task.taskCompleted.connect(lambda: self.finished(True))
+        self.task.taskTerminated.connect(lambda: self.finished(False))
+        self.run_button.setEnabled(False)
+        self.cancel_button.setEnabled(True)
+        self.log.append(tr("Converting {} floor(s)…").format(len(self.outputs)))
+        QgsApplication.taskManager().addTask(self.task)
+        return self.task
+
+    def cancel(self):
+        if self.task is not None:
+            self.task.cancel()
+
+    def finished(self, ok):
+        task = self.task
+        for line in task.log:
+            if line.startswith(("⚠", "✖")) or "areas" in line:
+                self.log.append(line)
+        if ok:
+            self.log.append(tr("Done: {} floor(s) written to {}").format(len(self.outputs), self.folder.text()))
+            if self.add_to_map.isChecked():
+                self.add_layers()
+        else:
+            self.log.append(tr("Stopped: {}").format("; ".join(task.errors) or tr("canceled")))
+        self.progress.setValue(100 if ok else self.progress.value())
+        self.run_button.setEnabled(True)
+        self.cancel_button.setEnabled(False)
+        self.done = ok
+        self.completeChanged.emit()
+        self.finishedConversion.emit(ok)
+
+    def add_layers(self):
+        from ..processing_provider.alg_load_osmag import apply_osmag_style
+
+        project = QgsProject.instance()
+        added = []
+        for params in self.outputs:
+            stem = os.path.splitext(os.path.basename(params["OUTPUT"]))[0]
+            for key, kind in (("OUTPUT_PASSAGES", "passages"), ("OUTPUT_AREAS", "areas")):
+                layer = QgsVectorLayer(params[key], f"{stem} {kind}", "ogr")
+                if layer.isValid():
+                    apply_osmag_style(layer, kind)
+                    project.addMapLayer(layer)
+                    added.append(layer)
+        return added
+
+    def isComplete(self):  # noqa: N802
+        return self.done
+
+
+AREA_TYPES = ["room", "corridor", "stairs", "elevator", "structure"]
+
+
+class NamesPage(QWizardPage):
+    """Names and types of the areas of every converted floor, editable; *Save and export again* writes them
+    into the floors' area layers and rewrites the osmAG files through ``exportosmag`` (and ``mergefloors``)."""
+
+    def __init__(self, wizard):
+        super().__init__()
+        self.wiz = wizard
+        self.task = None
+        self.setTitle(tr("5. Names and types"))
+        self.setSubTitle(tr("Correct the name and the type of any area (room, corridor, stairs, elevator, "
+                            "structure), then save: the osmAG files are written again."))
+        lay = QVBoxLayout(self)
+        self.table = QTableWidget(0, 4)
+        self.table.setHorizontalHeaderLabels([tr("Level"), tr("Area"), tr("Name"), tr("Type")])
+        from qgis.PyQt.QtWidgets import QHeaderView
+
+        self.table.horizontalHeader().setSectionResizeMode(2, QHeaderView.ResizeMode.Stretch)
+        lay.addWidget(self.table, 1)
+        row = QHBoxLayout()
+        self.save_button = QPushButton(tr("Save and export again"))
+        self.save_button.clicked.connect(self.save)
+        self.status = QLabel("")
+        row.addWidget(self.save_button)
+        row.addWidget(self.status, 1)
+        lay.addLayout(row)
+        self.rows = []  # (floor params, feature id)
+
+    def initializePage(self):  # noqa: N802
+        from qgis.PyQt.QtWidgets import QComboBox
+
+        self.table.setRowCount(0)
+        self.rows = []
+        for params in self.wiz.run_page.outputs:
+            layer = QgsVectorLayer(params["OUTPUT_AREAS"], "areas", "ogr")
+            if not layer.isValid():
+                continue
+            for f in layer.getFeatures():
+                r = self.table.rowCount()
+                self.table.insertRow(r)
+                for c, v in enumerate((params["LEVEL"], str(f["osm_id"]))):
+                    item = QTableWidgetItem(v)
+                    item.setFlags(item.flags() & ~Qt.ItemFlag.ItemIsEditable)
+                    self.table.setItem(r, c, item)
+                self.table.setItem(r, 2, QTableWidgetItem(str(f["name"] or "")))
+                combo = QComboBox()
+                combo.addItems(AREA_TYPES)
+                kind = str(f["osmAG:areatype"] or "room")
+                if kind not in AREA_TYPES:
+                    combo.addItem(kind)
+                combo.setCurrentText(kind)
+                self.table.setCellWidget(r, 3, combo)
+                self.rows.append((params, f.id()))
+        self.status.setText(tr("{} areas").format(len(self.rows)))
+
+    def edits(self):
+        """{areas layer path: {feature id: (name, type)}} of the rows whose values changed."""
+        out = {}
+        for r, (params, fid) in enumerate(self.rows):
+            out.setdefault(params["OUTPUT_AREAS"], {})[fid] = (self.table.item(r, 2).text().strip(),
+                                                               self.table.cellWidget(r, 3).currentText())
+        return out
+
+    def save(self):
+        changed = 0
+        for path, values in self.edits().items():
+            layer = QgsVectorLayer(path, "areas", "ogr")
+            names = layer.fields().names()
+            i_name, i_type = names.index("name"), names.index("osmAG:areatype")
+            changes = {}
+            for f in layer.getFeatures():
+                name, kind = values.get(f.id(), (None, None))
+                if name is None or (str(f["name"] or "") == name and str(f["osmAG:areatype"] or "") == kind):
+                    continue
+                changes[f.id()] = {i_name: name or None, i_type: kind}
+            if changes:
+                layer.dataProvider().changeAttributeValues(changes)
+                changed += len(changes)
+        placement = self.wiz.placement_page.panel.placement
+        steps = []
+        run = self.wiz.run_page
+        for params in run.outputs:
+            export = {"AREAS": params["OUTPUT_AREAS"], "PASSAGES": params["OUTPUT_PASSAGES"],
+                      "LEVEL": params["LEVEL"], "HEIGHT": params["HEIGHT"], "OUTPUT": params["OUTPUT"]}
+            if placement is not None:
+                export.update({"ANCHOR_LON": placement.anchor_lon, "ANCHOR_LAT": placement.anchor_lat})
+            steps.append(("cad2osmag:exportosmag", export))
+        if run.merge.isChecked() and len(run.outputs) > 1:
+            steps.append(("cad2osmag:mergefloors", {"FLOORS": [p["OUTPUT"] for p in run.outputs],
+                                                   "OUTPUT": os.path.join(run.folder.text().strip(), "building.osm")}))
+        self.task = AlgorithmsTask(tr("Exporting osmAG again"), steps)
+        self.task.taskCompleted.connect(lambda: self._finished(True, changed))
+        self.task.taskTerminated.connect(lambda: self._finished(False, changed))
+        self.save_button.setEnabled(False)
+        self.status.setText(tr("Saving {} changed areas…").format(changed))
+        QgsApplication.taskManager().addTask(self.task)
+        return self.task
+
+    def _finished(self, ok, changed):
+        self.save_button.setEnabled(True)
+        if ok:
+            self.status.setText(tr("{} areas changed; osmAG files written again.").format(changed))
+            for layer in QgsProject.instance().mapLayers().values():
+                layer.triggerRepaint()
+        else:
+            self.status.setText(tr("Export failed: {}").format("; ".join(self.task.errors)))
+
+
+class ConvertWizard(QWizard):
+    def __init__(self, canvas, parent=None):
+        super().__init__(parent)
+        self.setWindowTitle(tr("Convert a floor plan to osmAG"))
+        self.setOption(QWizard.WizardOption.NoBackButtonOnLastPage, False)
+        self.files_page = FilesPage(self)
+        self.settings_page = SettingsPage(self)
+        self.placement_page = PlacementPage(self, canvas)
+        self.run_page = RunPage(self)
+        self.names_page = NamesPage(self)
+        for page in (self.files_page, self.settings_page, self.placement_page, self.run_page, self.names_page):
+            self.addPage(page)
+        self.resize(720, 640)
+
+    def done(self, result):  # noqa: D401 - Qt override
+        self.placement_page.panel.remove_overlay()
+        self.settings_page.release_preview()
+        super().done(result)
