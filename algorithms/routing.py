@@ -135,6 +135,12 @@ class RouteResult:
 
 
 # =========================================================================== geometry helpers
+def _point(x, y):
+    from shapely.geometry import Point
+
+    return Point(x, y)
+
+
 def _rings(poly):
     """Rings of an oriented polygon (exterior CCW, holes CW): free space on the left of every edge."""
     from shapely.geometry.polygon import orient
@@ -178,19 +184,23 @@ def _tangent(V, prv, nxt, i, j) -> np.ndarray:
     return ~((s1 * s2) < -1e-12)
 
 
-_EPS = 1e-9
+_EPS2 = 1e-10  # m^4: products of orientations below this count as touching
 
 
 def _crossing(ax, ay, bx, by, E) -> np.ndarray:
-    """For segments (a_k, b_k) (arrays of shape (K,)) -> (K,) bool: properly crosses an edge of E (M, 4)."""
-    cx, cy, dx, dy = E[:, 0][None, :], E[:, 1][None, :], E[:, 2][None, :], E[:, 3][None, :]
-    ax, ay, bx, by = ax[:, None], ay[:, None], bx[:, None], by[:, None]
-    o1 = (bx - ax) * (cy - ay) - (by - ay) * (cx - ax)
-    o2 = (bx - ax) * (dy - ay) - (by - ay) * (dx - ax)
-    o3 = (dx - cx) * (ay - cy) - (dy - cy) * (ax - cx)
-    o4 = (dx - cx) * (by - cy) - (dy - cy) * (bx - cx)
-    hit = (((o1 > _EPS) & (o2 < -_EPS)) | ((o1 < -_EPS) & (o2 > _EPS))) & \
-          (((o3 > _EPS) & (o4 < -_EPS)) | ((o3 < -_EPS) & (o4 > _EPS)))
+    """For segments (a_k, b_k) (arrays of shape (K,)) -> (K,) bool: properly crosses an edge of E (M, 4).
+    Touching at an end or running along an edge is not crossing (grazing a corner is allowed)."""
+    cx, cy, dx, dy = E[:, 0], E[:, 1], E[:, 2], E[:, 3]
+    ex, ey = dx - cx, dy - cy
+    k = ex * cy - ey * cx  # edge line: ex*y - ey*x - k = 0
+    ux, uy = (bx - ax)[:, None], (by - ay)[:, None]
+    s = (ux[:, 0] * ay - uy[:, 0] * ax)[:, None]  # segment line: ux*y - uy*x - s = 0
+    o1 = ux * cy - uy * cx - s
+    o2 = ux * dy - uy * dx - s
+    hit = o1 * o2 < -_EPS2
+    o3 = ex * ay[:, None] - ey * ax[:, None] - k
+    o4 = ex * by[:, None] - ey * bx[:, None] - k
+    hit &= o3 * o4 < -_EPS2
     return hit.any(axis=1)
 
 
@@ -206,6 +216,8 @@ class _Piece:
         self.poly = poly
         self.tol_poly = poly.buffer(1e-6)
         shapely.prepare(self.tol_poly)
+        self.core = poly.buffer(-1e-5)  # points in here are strictly inside
+        shapely.prepare(self.core)
         rings = _rings(poly)
         self.edges = _edges_of(rings)
         self.V, self.prv, self.nxt = _reflex_vertices(rings)  # entries are appended later
@@ -220,19 +232,20 @@ class _Piece:
         self.nxt = np.vstack([self.nxt, nan])
         return len(self.V) - 1
 
-    def visible_from(self, p, targets: np.ndarray) -> np.ndarray:
-        """(K,) bool: is the segment from point p to each target collision-free inside the piece?"""
+    def visible_from(self, p, targets: np.ndarray, interior: bool = False) -> np.ndarray:
+        """(K,) bool: is the segment from point p to each target collision-free inside the piece?
+        ``interior``: p lies strictly inside, so a segment that crosses no edge stays inside."""
         if len(targets) == 0:
             return np.zeros(0, bool)
         ax = np.full(len(targets), p[0])
         ay = np.full(len(targets), p[1])
-        return self._visible(ax, ay, targets[:, 0], targets[:, 1])
+        return self._visible(ax, ay, targets[:, 0], targets[:, 1], samples=not interior)
 
-    def _visible(self, ax, ay, bx, by) -> np.ndarray:
+    def _visible(self, ax, ay, bx, by, samples: bool = True) -> np.ndarray:
         import shapely
 
         ok = ~_crossing(ax, ay, bx, by, self.edges)
-        for t in (0.5, 0.25, 0.75):
+        for t in ((0.5, 0.25, 0.75) if samples else ()):
             idx = np.nonzero(ok)[0]
             if not len(idx):
                 break
@@ -273,6 +286,11 @@ class _Piece:
             out.append(k)
         return out[::-1]
 
+    def _inside_xy(self, x, y) -> bool:
+        import shapely
+
+        return bool(shapely.contains_xy(self.core, x, y))
+
     def point_costs(self, p):
         """Shortest distances from point p (inside the piece) to every vertex, and the first vertex used.
 
@@ -284,7 +302,8 @@ class _Piece:
         s1 = dx * (self.prv[:, 1] - py) - dy * (self.prv[:, 0] - px)
         s2 = dx * (self.nxt[:, 1] - py) - dy * (self.nxt[:, 0] - px)
         cand = np.nonzero(~((s1 * s2) < -1e-12))[0]
-        idx = cand[self.visible_from(p, self.V[cand])]
+        interior = self._inside_xy(px, py)
+        idx = cand[self.visible_from(p, self.V[cand], interior=interior)]
         if not len(idx):
             return np.full(n, np.inf), np.full(n, -1)
         d0 = np.hypot(self.V[idx, 0] - p[0], self.V[idx, 1] - p[1])
@@ -419,6 +438,7 @@ class RouteMap:
             self.warnings.append(f"{len(self.implicit)} vertical links added between same-named stairs/lift areas "
                                  "on adjacent levels (the map has no vertical passage between them)")
         self._graphs: Dict[float, _Graph] = {}
+        self._tree = None
         for w in self.warnings:
             progress.warning(w)
         progress.info(f"route map: {len(self.areas)} areas on {len(lvls)} level(s) {lvls}, {len(self.passages)} "
@@ -693,7 +713,14 @@ class RouteMap:
         if not (math.isfinite(x) and math.isfinite(y)):
             raise InputError(f"{what}: the point ({xy[0]}, {xy[1]}) is not a valid coordinate")
         pt = Point(x, y)
-        cands = [k for k in range(len(self.areas)) if lev is None or self.levels[k] == lev]
+        if self._tree is None:
+            import shapely
+
+            self._tree = shapely.STRtree([a.polygon for a in self.areas])
+            for a in self.areas:
+                shapely.prepare(a.polygon)
+        near = [int(k) for k in self._tree.query(pt, predicate="dwithin", distance=SNAP)]
+        cands = [k for k in near if lev is None or self.levels[k] == lev]
         inside = [k for k in cands if self.areas[k].polygon.covers(pt)]
         if lev is None and len({self.levels[k] for k in inside}) > 1:
             raise InputError(f"{what}: the point lies in areas on levels "
@@ -712,7 +739,8 @@ class RouteMap:
                 if d <= SNAP and (best is None or d < best[0] - 1e-9):
                     best = (d, pc)
         if best is None:
-            near = sorted(cands, key=lambda k: self.areas[k].polygon.distance(pt))[:1]
+            near = [k for k in range(len(self.areas)) if lev is None or self.levels[k] == lev]
+            near = sorted(near, key=lambda k: self.areas[k].polygon.distance(pt))[:1]
             hint = ""
             if near:
                 k = near[0]
@@ -1060,7 +1088,7 @@ class RouteMap:
                    f"'{self.areas[b].name}', level {self.levels[b]}) in {desc(cb, b)}; the map has "
                    f"{len(comps)} separate parts for this robot")
         between = []
-        for i, reason in g.closed:
+        for i, reason in (g.closed if ca != cb else []):
             if i < 0:
                 continue
             p = self.passages[i]
