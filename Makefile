@@ -9,7 +9,7 @@ APT_PACKAGES := qgis python3-qgis qgis-providers python3-venv python3-gdal gdal-
                 python3-dev build-essential libproj-dev proj-bin
 STAMP := $(VENV)/.installed
 
-.PHONY: install demo test test-quick bench evaluate clean help
+.PHONY: install demo test test-quick bench bench-route evaluate clean help
 
 help:
 	@echo "make demo        install what is missing, build the sample building and convert it (out/demo/)"
@@ -17,6 +17,7 @@ help:
 	@echo "make test-quick  the suite without the slow real-data tests"
 	@echo "make bench       per-stage wall time and peak memory on real data (docs/benchmarks.md)"
 	@echo "make evaluate    score segmentation on ../shared/data/grid_gt"
+	@echo "make bench-route osmAG route planning vs grid A* (docs/benchmarks.md, own section)"
 
 install: $(STAMP)
 
@@ -35,6 +36,9 @@ test-quick: install
 
 bench: install
 	$(PY) scripts/bench.py --write docs/benchmarks.md
+
+bench-route: install
+	$(PY) scripts/bench_route.py --pairs 50 --write docs/benchmarks.md
 
 evaluate: install
 	$(PY) scripts/evaluate_grids.py

