@@ -214,6 +214,9 @@ def test_cross_floor_route_uses_stairs_or_lift_and_avoid_stairs_detours():
     assert wheel.length > res.length + 30  # the lift is 27 m farther: there and back
     check_astar_matches_dijkstra(rm, 0.3, vc=10)
     check_astar_matches_dijkstra(rm, 0.3, vc=10, avoid=("stairs",))
+    # a goal inside a stair well is still reached when stairs are avoided: by lift, then in through its door
+    into = rm.route("Office 1", "Stair 2", robot_radius=0.3, vertical_cost=10, avoid=["stairs"])
+    assert "Lift 1-2" in into.passages and into.areas[-1] == "Stair 2" and "Stair 1" not in into.areas
     # only stairs lead up: a wheelchair route does not exist, and the message says why
     no_lift = [p for p in passages if p.name != "Lift 1-2"]
     rm2 = RouteMap.from_areas(areas, no_lift)
@@ -284,3 +287,31 @@ def test_other_tools_campus_map(shared_data):
     wheel = rm.route(rm.area_point(k1), rm.area_point(k2), "1", "2", robot_radius=0.3, avoid=["stairs"])
     assert wheel.cost >= res.cost - 1e-6
     assert not any(infer_area_type("room", a) == "stairs" for a in wheel.areas[1:-1])
+
+
+@pytest.mark.slow
+def test_sample_floor_routes_match_grid_astar(tmp_path):
+    """Our pipeline's map of the sample building's floor 1 against 8-connected grid A* on its raster
+    (string-pulled), the benchmark's comparison on a few pairs."""
+    import importlib.util
+
+    from algorithms.pipeline import process_floor
+    from algorithms.sample_building import generate_building
+    from tests.conftest import REPO
+
+    spec = importlib.util.spec_from_file_location("bench_route", REPO / "scripts" / "bench_route.py")
+    bench = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(bench)
+    sb = generate_building(str(tmp_path), floors=1, seed=0)
+    fl = process_floor(sb["dxf"][0], level="1")
+    rm = RouteMap.from_areas(fl.refined.areas, fl.refined.passages)
+    gf = bench.GridFloor(fl.grid, fl.refined.areas, 0.3)
+    pairs = bench.sample_pairs(gf, rm, 6, np.random.default_rng(3), min_dist=10.0)
+    assert len(pairs) == 6
+    for ps, pg, a, b in pairs:
+        res = rm.route(a, b, robot_radius=0.3)
+        path, g8 = gf.astar(ps, pg)
+        any_angle = gf.smooth(path)
+        assert res.length <= any_angle * 1.02
+        assert res.length >= math.hypot(a[0] - b[0], a[1] - b[1]) - 1e-6
+        assert res.length >= any_angle * 0.95  # not through walls: at most the raster's rounding shorter
