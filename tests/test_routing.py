@@ -315,3 +315,24 @@ def test_sample_floor_routes_match_grid_astar(tmp_path):
         assert res.length <= any_angle * 1.02
         assert res.length >= math.hypot(a[0] - b[0], a[1] - b[1]) - 1e-6
         assert res.length >= any_angle * 0.95  # not through walls: at most the raster's rounding shorter
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("name", ["semantic_tags_SIST_1.osm", "show_sist_merge_v1.osm", "show_sist_f1_v5.osm"])
+def test_other_tools_maps_load_and_route_or_explain(shared_data, name):
+    pr = RecordingProgress()
+    rm = RouteMap.from_osmag(str(shared_data / "osmag" / name), progress=pr)
+    comps = rm.components(0.3)
+    big = comps[0]
+    if len(big) < 2:  # show_sist_f1_v5 has no passage at all: every room is its own part
+        assert name == "show_sist_f1_v5.osm" and len(comps) == len(rm.areas)
+        with pytest.raises(RouteError, match=f"the map has {len(comps)} separate parts"):
+            rm.route(rm.area_point(0), rm.area_point(1), rm.levels[0], rm.levels[1])
+        return
+    far = max(((a, b) for a in big[:40] for b in big[:40]),
+              key=lambda ab: rm.areas[ab[0]].polygon.centroid.distance(rm.areas[ab[1]].polygon.centroid))
+    a, b = far
+    res = rm.route(rm.area_point(a), rm.area_point(b), rm.levels[a], rm.levels[b])
+    assert res.areas[0] == rm.areas[a].name and res.areas[-1] == rm.areas[b].name
+    assert res.length >= math.hypot(*(np.asarray(rm.area_point(a)) - rm.area_point(b))) - 1e-6
+    assert res.level_changes == (rm.levels[a] != rm.levels[b])
