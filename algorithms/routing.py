@@ -65,6 +65,7 @@ OPENING_TOL = 0.05  # a wall within 5 cm of a passage segment is part of the ope
 QUAD_SEGS = 2  # 45 degree chords on the rounded corners of grown walls (sagitta 7.6 % of r)
 AVOIDABLE = ("stairs", "elevator")
 LANDMARKS = 12  # ALT heuristic landmarks
+_FAR = 1e15  # landmark distance standing for "unreachable"
 KIND_CODES_INV = ("room", "corridor", "stairs", "elevator", "other")
 KIND_CODES = {k: i for i, k in enumerate(KIND_CODES_INV)}
 
@@ -204,6 +205,25 @@ def _crossing(ax, ay, bx, by, E) -> np.ndarray:
     return hit.any(axis=1)
 
 
+def _crossing_from(px: float, py: float, bx, by, E) -> np.ndarray:
+    """:func:`_crossing` for segments that all start at one point (px, py): cheaper."""
+    cx, cy, dx, dy = E[:, 0], E[:, 1], E[:, 2], E[:, 3]
+    ex, ey = dx - cx, dy - cy
+    o3 = ex * (py - cy) - ey * (px - cx)  # (M,): side of the common start point
+    near = np.abs(o3) > 0  # edges through the start point cannot be crossed properly
+    E2 = E[near]
+    if not len(E2):
+        return np.zeros(len(bx), bool)
+    cx, cy, dx, dy, ex, ey, o3 = cx[near], cy[near], dx[near], dy[near], ex[near], ey[near], o3[near]
+    ux, uy = (bx - px)[:, None], (by - py)[:, None]
+    o1 = ux * (cy - py) - uy * (cx - px)
+    o2 = ux * (dy - py) - uy * (dx - px)
+    hit = o1 * o2 < -_EPS2
+    o4 = ex * (by[:, None] - cy) - ey * (bx[:, None] - cx)
+    hit &= o3 * o4 < -_EPS2
+    return hit.any(axis=1)
+
+
 class _Piece:
     """One connected piece of an area's free space: visibility graph and all-pairs shortest paths."""
 
@@ -237,9 +257,11 @@ class _Piece:
         ``interior``: p lies strictly inside, so a segment that crosses no edge stays inside."""
         if len(targets) == 0:
             return np.zeros(0, bool)
+        if interior:
+            return ~_crossing_from(float(p[0]), float(p[1]), targets[:, 0], targets[:, 1], self.edges)
         ax = np.full(len(targets), p[0])
         ay = np.full(len(targets), p[1])
-        return self._visible(ax, ay, targets[:, 0], targets[:, 1], samples=not interior)
+        return self._visible(ax, ay, targets[:, 0], targets[:, 1], samples=True)
 
     def _visible(self, ax, ay, bx, by, samples: bool = True) -> np.ndarray:
         import shapely
@@ -332,6 +354,8 @@ class _Graph:
         self._rank = None
         self._csr = None
         self.edata: List[tuple] = []
+        self.piece_tree = None
+        self.piece_list: List[_Piece] = []
 
     def csr(self) -> Dict[str, np.ndarray]:
         """The adjacency as flat arrays (built once): per node a slice of neighbours, planar costs,
@@ -713,6 +737,17 @@ class RouteMap:
         if not (math.isfinite(x) and math.isfinite(y)):
             raise InputError(f"{what}: the point ({xy[0]}, {xy[1]}) is not a valid coordinate")
         pt = Point(x, y)
+        # the common case first: the point lies in a piece of the robot's free space
+        if g.piece_tree is None:
+            import shapely
+
+            g.piece_list = list(g.pieces.values())
+            g.piece_tree = shapely.STRtree([pc.tol_poly for pc in g.piece_list])
+        hits = [g.piece_list[int(i)] for i in g.piece_tree.query(pt, predicate="intersects")]
+        hits = [pc for pc in hits if lev is None or pc.level == lev]
+        if hits and (lev is not None or len({pc.level for pc in hits}) == 1):
+            pc = min(hits, key=lambda p: self.areas[p.area_index].polygon.area)
+            return pc, np.array([x, y]), 0.0
         if self._tree is None:
             import shapely
 
@@ -913,7 +948,9 @@ class RouteMap:
             d = dijkstra(mat, directed=True, indices=nxt)
             dist.append(d)
             near = np.minimum(near, np.where(np.isfinite(d), d, 1e18))
-        g.alt[key] = np.vstack(dist)
+        d = np.vstack(dist)
+        d[~np.isfinite(d)] = _FAR
+        g.alt[key] = d
         return g.alt[key]
 
     def _heuristic(self, g: _Graph, tp, grank: int, t_in, vc: float, avoid: set) -> List[float]:
@@ -924,15 +961,13 @@ class RouteMap:
             return []
         P = g.pos_array()
         h = np.hypot(P[:, 0] - tp[0], P[:, 1] - tp[1]) + vc * np.abs(g.rank_array() - grank)
-        dl = self._landmarks(g, vc)
+        dl = self._landmarks(g, vc)  # unreachable = _FAR (finite: FAR - FAR = 0, no NaN)
         if len(dl) and t_in:
             tn = np.fromiter(t_in.keys(), int)
             tc = np.array([t_in[m][0] for m in t_in])
             dlt = np.min(dl[:, tn] + tc[None, :], axis=1)
-            with np.errstate(invalid="ignore"):
-                alt = np.abs(dlt[:, None] - dl)
-            alt = np.where(np.isnan(alt), 0.0, alt)
-            h = np.maximum(h, alt.max(axis=0))
+            h = np.maximum(h, np.abs(dlt[:, None] - dl).max(axis=0))
+            h[h >= 0.5 * _FAR] = math.inf
         elif not t_in:
             h = np.full(n, math.inf)
         return h
