@@ -494,7 +494,8 @@ class RouteMap:
         bad_pass = sorted({w for w, k, v in ref_errors if k in ("osmAG:from", "osmAG:to")})
         if bad_pass:
             targets = sorted({v for w, k, v in ref_errors if k in ("osmAG:from", "osmAG:to")})
-            warnings.append(f"{len(bad_pass)} passages point at areas missing from the file ({', '.join(map(repr, targets[:8]))}"
+            shown = ", ".join(map(repr, targets[:8]))
+            warnings.append(f"{len(bad_pass)} passages point at areas missing from the file ({shown}"
                             f"{' ...' if len(targets) > 8 else ''}), e.g. ways {bad_pass[:5]}; they are not used")
         m_areas, m_passages = to_frame(areas, passages, frame)
         progress.step(70)
@@ -538,13 +539,14 @@ class RouteMap:
 
     def _build(self, r: float, progress) -> _Graph:
         import shapely
-        from shapely.geometry import LineString, MultiLineString, Point, Polygon
+        from shapely.geometry import LineString, Polygon
         from shapely.ops import unary_union
 
         t0 = time.perf_counter()
         g = _Graph()
         nlev = len(self.level_list)
-        horizontal = [i for i in range(len(self.passages)) if i not in set(self.vertical)]
+        vset = set(self.vertical)
+        horizontal = [i for i in range(len(self.passages)) if i not in vset]
         for li, lev in enumerate(self.level_list):
             progress.step(80.0 * li / nlev, f"routing graph: level {lev}")
             ks = [k for k in range(len(self.areas)) if self.levels[k] == lev]
@@ -1164,7 +1166,6 @@ def _resolve_by_level(areas, passages, warnings):
     for a in areas:
         if a.name:
             by_name.setdefault(a.name, []).append(a)
-    by_id = {a.id: a for a in areas}
     fixed = 0
     out = []
     for p in passages:
@@ -1194,7 +1195,6 @@ def _resolve_by_level(areas, passages, warnings):
     if fixed:
         warnings.append(f"{fixed} passages name areas that several levels share; joined to the area on the "
                         "passage's own level")
-    _ = by_id
     return out
 
 

@@ -3,7 +3,7 @@ import math
 
 import numpy as np
 import pytest
-from shapely.geometry import LineString, Point, Polygon, box
+from shapely.geometry import LineString, box
 
 from algorithms.errors import Canceled, InputError
 from algorithms.model import Area, Passage
@@ -100,7 +100,8 @@ def test_unreachable_goal_names_both_components():
              area(4, box(24, 0, 28, 4), "D")]
     passages = [passage(10, 1, 2, (4, 1), (4, 3)), passage(11, 3, 4, (24, 1), (24, 3))]
     rm = RouteMap.from_areas(areas, passages)
-    with pytest.raises(RouteError, match=r"part #\d \(2 areas on level 1: A, B\).*part #\d \(2 areas on level 1: C, D\)"):
+    parts = r"part #\d \(2 areas on level 1: A, B\).*part #\d \(2 areas on level 1: C, D\)"
+    with pytest.raises(RouteError, match=parts):
         rm.route("A", "D")
     assert sorted(map(len, rm.components(0.3))) == [2, 2]
 
@@ -186,8 +187,10 @@ def two_floors(implicit=False):
     areas, passages = [], []
     for lv, base in (("1", 0), ("2", 100)):
         corr = area(base + 1, box(0, 0, 40, 3), f"Corridor {lv}", lv, "corridor")
-        st = area(base + 2, box(0, 3, 4, 8), "ST-01" if implicit else f"Stair {lv}", lv, "room" if implicit else "stairs")
-        lift = area(base + 3, box(36, 3, 39, 6), "E-P1" if implicit else f"Lift {lv}", lv, "room" if implicit else "elevator")
+        st = area(base + 2, box(0, 3, 4, 8), "ST-01" if implicit else f"Stair {lv}", lv,
+                  "room" if implicit else "stairs")
+        lift = area(base + 3, box(36, 3, 39, 6), "E-P1" if implicit else f"Lift {lv}", lv,
+                    "room" if implicit else "elevator")
         office = area(base + 4, box(8, 3, 14, 8), f"Office {lv}", lv)
         areas += [corr, st, lift, office]
         passages += [passage(base + 10, base + 2, base + 1, (1, 3), (3, 3), f"S{lv}", lv),
