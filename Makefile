@@ -10,7 +10,7 @@ APT_PACKAGES := qgis python3-qgis qgis-providers python3-venv python3-gdal gdal-
                 libeigen3-dev libopencv-core-dev libopencv-imgproc-dev qttools5-dev-tools
 STAMP := $(VENV)/.installed
 
-.PHONY: install demo test test-quick bench evaluate evaluate-cad clean help translations
+.PHONY: install demo test test-quick bench bench-route evaluate evaluate-cad clean help translations
 
 help:
 	@echo "make demo        install what is missing, build the sample building and convert it (out/demo/)"
@@ -22,6 +22,8 @@ help:
 	@echo "                  sheets) and print per plan: conversion, room-name texts inside an area / naming an"
 	@echo "                  area of their own, largest component, areas, passages, named areas, conflicts"
 	@echo "make translations  update i18n/*.ts from the sources and compile the .qm files"
+
+	@echo "make bench-route osmAG route planning vs grid A* (docs/benchmarks.md, own section)"
 
 install: $(STAMP)
 
@@ -40,6 +42,9 @@ test-quick: install
 
 bench: install
 	$(PY) scripts/bench.py --write docs/benchmarks.md
+
+bench-route: install
+	$(PY) scripts/bench_route.py --pairs 50 --write docs/benchmarks.md
 
 evaluate: install
 	$(PY) scripts/evaluate_grids.py

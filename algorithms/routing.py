@@ -1,0 +1,1202 @@
+"""Route planning over an osmAG map (pipeline stage 9).
+
+The map is the osmAG Area Graph: areas (rooms, corridors, stairs, lifts) joined by passages. A robot of
+radius ``r`` is planned for in its configuration space, built once per map and radius and cached:
+
+* **Configuration space per level.** Walls are every area border except the passage openings
+  (openings are the passage segments, flat-capped); the free space is the union of the level's areas
+  (structure areas such as floor and building outlines excluded) minus the walls grown by ``r``. Each
+  area's share of it (``area ∩ free``) may fall apart into several pieces when the area narrows below
+  ``2r``; every piece is planned on separately.
+* **Graph: passages are nodes.** A passage narrower than ``2r`` is closed. Otherwise the robot's centre
+  crosses it anywhere on the passage segment shortened by ``r`` at both ends (its span); crossing nodes
+  are put at both ends of the span (a route that turns through a door hugs a jamb there) and, on wide
+  openings (corridor splits, halls), every ``PORTAL_SPACING`` metres between them, so routes that cut
+  across an opening are not forced through one point. A node lying outside the
+  shrunk area (a passage drawn off the border, a nook) joins it at the nearest point, up to ``SNAP``.
+* **Inside each area piece** every pair of its nodes is joined by the shortest collision-free path: a
+  visibility graph over the piece's reflex vertices, all-pairs shortest paths (scipy), kept with its
+  predecessors to rebuild the polyline.
+* **Vertical passages** (a passage whose two areas lie on different levels, the osmAG format's stairs and
+  lift links) join the shafts on both levels at ``vertical_cost`` metres per level crossed. Maps from
+  other tools that only repeat a shaft's name on each floor (``E1-ST-09`` on levels 1 and 2) get an
+  implicit link between same-named stairs/lift areas on adjacent levels, reported as such. Stairs and
+  lifts are recognised by ``osmAG:areatype`` or, in maps that type everything ``room``, by their names
+  (``ST-03``, ``stair``, ``楼梯``; ``P3``, ``lift``, ``elevator``, ``电梯``).
+* **A query** joins start and goal to the nodes of their area piece the same way (visibility from the
+  point, then the precomputed shortest paths) and runs A* with the heuristic "planar straight-line
+  distance + ``vertical_cost`` × levels still to cross", admissible because every vertical link costs at
+  least that and every planar edge is at least the straight distance between its ends.
+* ``avoid`` drops area types from the search: ``("stairs",)`` for wheelchairs and wheeled robots (lifts
+  only), ``("elevator",)`` for evacuation routes.
+
+Coordinates are metres in the map's frame (osmAG files: the local frame of the root node, x east,
+y north). The result keeps the level of every vertex. :class:`RouteMap` is the entry point::
+
+    rm = RouteMap.from_osmag("building.osm")
+    res = rm.route((x0, y0), (x1, y1), start_level="1", goal_level="3", robot_radius=0.3,
+                   avoid=("stairs",))
+    res.points, res.levels, res.length, res.areas, res.passages
+"""
+from __future__ import annotations
+
+import heapq
+import math
+import re
+import time
+from dataclasses import dataclass, field
+from typing import Dict, List, Optional, Sequence, Tuple
+
+import numpy as np
+
+from .errors import InputError
+from .model import Area, Passage
+from .progress import ensure
+
+DEFAULT_ROBOT_RADIUS = 0.3  # metres
+DEFAULT_VERTICAL_COST = 15.0  # metres of travel one level of stairs/lift is worth
+DEFAULT_HEIGHT = 3.2  # metres per level when an area has no height tag
+SNAP = 1.0  # start/goal (and passages) farther than this from the robot's free space: error / not joined
+PORTAL_SPACING = 1.0  # metres between crossing nodes on a wide opening
+PORTAL_MIN_SPAN = 0.05  # a usable span shorter than this gets a single crossing node
+MAX_PORTAL_NODES = 9
+MIN_RADIUS = 0.01  # walls are grown by at least 1 cm so that a zero radius still cannot cross them
+OPENING_TOL = 0.05  # a wall within 5 cm of a passage segment is part of the opening
+QUAD_SEGS = 2  # 45 degree chords on the rounded corners of grown walls (sagitta 7.6 % of r)
+AVOIDABLE = ("stairs", "elevator")
+LANDMARKS = 12  # ALT heuristic landmarks
+_FAR = 1e15  # landmark distance standing for "unreachable"
+KIND_CODES_INV = ("room", "corridor", "stairs", "elevator", "other")
+KIND_CODES = {k: i for i, k in enumerate(KIND_CODES_INV)}
+
+_STAIR_RE = re.compile(r"(stair|treppe|escalat|scala|escalera|楼梯|樓梯|扶梯)|(?:^|[^A-Za-z])ST[-_ ]?\d",
+                       re.IGNORECASE)
+_LIFT_RE = re.compile(r"(elevator|lift|aufzug|ascensore|ascensor|电梯|電梯)|(?:^|[-_ ])(?:P|EV|EL)[-_ ]?\d+[A-Za-z]?$",
+                      re.IGNORECASE)
+
+
+class RouteError(InputError):
+    """No route: the message names the disconnected parts; ``components`` holds them."""
+
+    def __init__(self, message, components=None):
+        super().__init__(message)
+        self.components = components or {}
+
+
+def infer_area_type(area_type: str, name: str) -> str:
+    """The area's type, with stairs and lifts recognised by name in maps that type everything 'room'."""
+    t = (area_type or "room").strip().lower()
+    if t in ("stairs", "elevator", "structure", "corridor"):
+        return t
+    if t in ("stair", "staircase"):
+        return "stairs"
+    if t in ("lift", "elevators"):
+        return "elevator"
+    n = name or ""
+    if _STAIR_RE.search(n):
+        return "stairs"
+    if _LIFT_RE.search(n):
+        return "elevator"
+    return t or "room"
+
+
+def _level_of(tags: Dict[str, str], default: str = "") -> str:
+    v = str((tags or {}).get("level", default) or default).strip()
+    return v.split(";")[0].strip() if v else default
+
+
+def _as_float(s: str) -> Optional[float]:
+    try:
+        v = float(s)
+        return v if math.isfinite(v) else None
+    except (TypeError, ValueError):
+        return None
+
+
+# =========================================================================== results
+@dataclass
+class RouteResult:
+    points: np.ndarray  # (N, 2) metres, map frame
+    levels: List[str]  # level of every vertex (a level change repeats the position)
+    z: np.ndarray  # (N,) level elevation in metres (level x height)
+    length: float  # metres travelled in the plane
+    cost: float  # length + vertical_cost per level crossed
+    level_changes: int
+    areas: List[str]  # names of the areas crossed, in order
+    passages: List[str]  # names of the passages crossed, in order
+    area_ids: List[int]
+    passage_ids: List[int]
+    start: Tuple[float, float]  # the start used (after snapping)
+    goal: Tuple[float, float]
+    start_snap: float  # metres the start was moved into the robot's free space
+    goal_snap: float
+    query_ms: float  # time of the search alone (map already loaded)
+    expanded: int = 0
+    warnings: List[str] = field(default_factory=list)
+
+
+# =========================================================================== geometry helpers
+def _point(x, y):
+    from shapely.geometry import Point
+
+    return Point(x, y)
+
+
+def _rings(poly):
+    """Rings of an oriented polygon (exterior CCW, holes CW): free space on the left of every edge."""
+    from shapely.geometry.polygon import orient
+
+    p = orient(poly, 1.0)
+    out = [np.asarray(p.exterior.coords)[:-1]]
+    out.extend(np.asarray(r.coords)[:-1] for r in p.interiors)
+    return [r for r in out if len(r) >= 3]
+
+
+def _edges_of(rings) -> np.ndarray:
+    segs = [np.hstack([r, np.roll(r, -1, axis=0)]) for r in rings]
+    return np.vstack(segs) if segs else np.zeros((0, 4))
+
+
+def _reflex_vertices(rings):
+    """Reflex vertices (the corners a shortest path bends around) and their ring neighbours:
+    (V (n, 2), prev (n, 2), next (n, 2))."""
+    pts, prv, nxt = [], [], []
+    for r in rings:
+        a, b, c = np.roll(r, 1, axis=0), r, np.roll(r, -1, axis=0)
+        cross = (b[:, 0] - a[:, 0]) * (c[:, 1] - b[:, 1]) - (b[:, 1] - a[:, 1]) * (c[:, 0] - b[:, 0])
+        m = cross < -1e-9
+        pts.append(b[m])
+        prv.append(a[m])
+        nxt.append(c[m])
+    if not pts:
+        z = np.zeros((0, 2))
+        return z, z, z
+    return np.vstack(pts), np.vstack(prv), np.vstack(nxt)
+
+
+def _tangent(V, prv, nxt, i, j) -> np.ndarray:
+    """(K,) bool: the line from V[i] towards V[j] leaves V[i]'s two ring neighbours on one side, i.e. it
+    only grazes the corner at V[i] (a shortest path bends only at such corners). Points that are not
+    corners (prev is NaN) always pass."""
+    px, py = V[i, 0], V[i, 1]
+    dx, dy = V[j, 0] - px, V[j, 1] - py
+    s1 = dx * (prv[i, 1] - py) - dy * (prv[i, 0] - px)
+    s2 = dx * (nxt[i, 1] - py) - dy * (nxt[i, 0] - px)
+    return ~((s1 * s2) < -1e-12)
+
+
+_EPS2 = 1e-10  # m^4: products of orientations below this count as touching
+
+
+def _crossing(ax, ay, bx, by, E) -> np.ndarray:
+    """For segments (a_k, b_k) (arrays of shape (K,)) -> (K,) bool: properly crosses an edge of E (M, 4).
+    Touching at an end or running along an edge is not crossing (grazing a corner is allowed)."""
+    cx, cy, dx, dy = E[:, 0], E[:, 1], E[:, 2], E[:, 3]
+    ex, ey = dx - cx, dy - cy
+    k = ex * cy - ey * cx  # edge line: ex*y - ey*x - k = 0
+    ux, uy = (bx - ax)[:, None], (by - ay)[:, None]
+    s = (ux[:, 0] * ay - uy[:, 0] * ax)[:, None]  # segment line: ux*y - uy*x - s = 0
+    o1 = ux * cy - uy * cx - s
+    o2 = ux * dy - uy * dx - s
+    hit = o1 * o2 < -_EPS2
+    o3 = ex * ay[:, None] - ey * ax[:, None] - k
+    o4 = ex * by[:, None] - ey * bx[:, None] - k
+    hit &= o3 * o4 < -_EPS2
+    return hit.any(axis=1)
+
+
+def _crossing_from(px: float, py: float, bx, by, E) -> np.ndarray:
+    """:func:`_crossing` for segments that all start at one point (px, py): cheaper."""
+    cx, cy, dx, dy = E[:, 0], E[:, 1], E[:, 2], E[:, 3]
+    ex, ey = dx - cx, dy - cy
+    o3 = ex * (py - cy) - ey * (px - cx)  # (M,): side of the common start point
+    near = np.abs(o3) > 0  # edges through the start point cannot be crossed properly
+    E2 = E[near]
+    if not len(E2):
+        return np.zeros(len(bx), bool)
+    cx, cy, dx, dy, ex, ey, o3 = cx[near], cy[near], dx[near], dy[near], ex[near], ey[near], o3[near]
+    ux, uy = (bx - px)[:, None], (by - py)[:, None]
+    o1 = ux * (cy - py) - uy * (cx - px)
+    o2 = ux * (dy - py) - uy * (dx - px)
+    hit = o1 * o2 < -_EPS2
+    o4 = ex * (by[:, None] - cy) - ey * (bx[:, None] - cx)
+    hit &= o3 * o4 < -_EPS2
+    return hit.any(axis=1)
+
+
+class _Piece:
+    """One connected piece of an area's free space: visibility graph and all-pairs shortest paths."""
+
+    def __init__(self, key, area_index: int, poly, level: str):
+        import shapely
+
+        self.key = key
+        self.area_index = area_index
+        self.level = level
+        self.poly = poly
+        self.tol_poly = poly.buffer(1e-6)
+        shapely.prepare(self.tol_poly)
+        self.core = poly.buffer(-1e-5)  # points in here are strictly inside
+        shapely.prepare(self.core)
+        rings = _rings(poly)
+        self.edges = _edges_of(rings)
+        self.V, self.prv, self.nxt = _reflex_vertices(rings)  # entries are appended later
+        self.entries: List[Tuple[int, int, float]] = []  # (graph node, vertex index, snap distance)
+        self.D = None
+        self.pred = None
+
+    def add_point(self, xy) -> int:
+        self.V = np.vstack([self.V, np.asarray(xy, float)[None, :]])
+        nan = np.full((1, 2), np.nan)
+        self.prv = np.vstack([self.prv, nan])
+        self.nxt = np.vstack([self.nxt, nan])
+        return len(self.V) - 1
+
+    def visible_from(self, p, targets: np.ndarray, interior: bool = False) -> np.ndarray:
+        """(K,) bool: is the segment from point p to each target collision-free inside the piece?
+        ``interior``: p lies strictly inside, so a segment that crosses no edge stays inside."""
+        if len(targets) == 0:
+            return np.zeros(0, bool)
+        if interior:
+            return ~_crossing_from(float(p[0]), float(p[1]), targets[:, 0], targets[:, 1], self.edges)
+        ax = np.full(len(targets), p[0])
+        ay = np.full(len(targets), p[1])
+        return self._visible(ax, ay, targets[:, 0], targets[:, 1], samples=True)
+
+    def _visible(self, ax, ay, bx, by, samples: bool = True) -> np.ndarray:
+        import shapely
+
+        ok = ~_crossing(ax, ay, bx, by, self.edges)
+        for t in ((0.5, 0.25, 0.75) if samples else ()):
+            idx = np.nonzero(ok)[0]
+            if not len(idx):
+                break
+            mx = ax[idx] + t * (bx[idx] - ax[idx])
+            my = ay[idx] + t * (by[idx] - ay[idx])
+            ok[idx] = shapely.intersects_xy(self.tol_poly, mx, my)
+        return ok
+
+    def solve(self):
+        from scipy.sparse import coo_matrix
+        from scipy.sparse.csgraph import shortest_path
+
+        n = len(self.V)
+        if n == 0:
+            self.D = np.zeros((0, 0))
+            self.pred = np.zeros((0, 0), np.int32)
+            return
+        iu, ju = np.triu_indices(n, 1)
+        keep = _tangent(self.V, self.prv, self.nxt, iu, ju) & _tangent(self.V, self.prv, self.nxt, ju, iu)
+        iu, ju = iu[keep], ju[keep]
+        vis = np.zeros(len(iu), bool)
+        chunk = max(1, 2_000_000 // max(1, len(self.edges)))
+        for s in range(0, len(iu), chunk):
+            i, j = iu[s:s + chunk], ju[s:s + chunk]
+            vis[s:s + chunk] = self._visible(self.V[i, 0], self.V[i, 1], self.V[j, 0], self.V[j, 1])
+        i, j = iu[vis], ju[vis]
+        w = np.hypot(self.V[i, 0] - self.V[j, 0], self.V[i, 1] - self.V[j, 1]) + 1e-12
+        g = coo_matrix((w, (i, j)), shape=(n, n)).tocsr()
+        self.D, self.pred = shortest_path(g, method="D", directed=False, return_predecessors=True)
+
+    def vertex_path(self, i: int, j: int) -> List[int]:
+        """Vertex indices of the shortest path i -> j (both included)."""
+        out = [j]
+        while out[-1] != i:
+            k = int(self.pred[i, out[-1]])
+            if k < 0:
+                return [i, j]
+            out.append(k)
+        return out[::-1]
+
+    def _inside_xy(self, x, y) -> bool:
+        import shapely
+
+        return bool(shapely.contains_xy(self.core, x, y))
+
+    def point_costs(self, p):
+        """Shortest distances from point p (inside the piece) to every vertex, and the first vertex used.
+
+        Returns (dist (n,), via (n,)): via[k] = the vertex p sees directly on its way to k."""
+        n = len(self.V)
+        # only corners the line from p grazes can be the first bend of a shortest path
+        px, py = float(p[0]), float(p[1])
+        dx, dy = self.V[:, 0] - px, self.V[:, 1] - py
+        s1 = dx * (self.prv[:, 1] - py) - dy * (self.prv[:, 0] - px)
+        s2 = dx * (self.nxt[:, 1] - py) - dy * (self.nxt[:, 0] - px)
+        cand = np.nonzero(~((s1 * s2) < -1e-12))[0]
+        interior = self._inside_xy(px, py)
+        idx = cand[self.visible_from(p, self.V[cand], interior=interior)]
+        if not len(idx):
+            return np.full(n, np.inf), np.full(n, -1)
+        d0 = np.hypot(self.V[idx, 0] - p[0], self.V[idx, 1] - p[1])
+        tot = d0[:, None] + self.D[idx, :]
+        best = np.argmin(tot, axis=0)
+        return tot[best, np.arange(n)], idx[best]
+
+
+# =========================================================================== the graph
+class _Graph:
+    """The routing graph of a map for one robot radius."""
+
+    def __init__(self):
+        self.pos: List[Tuple[float, float]] = []  # node -> planar position
+        self.rank: List[int] = []  # node -> level rank
+        self.level: List[str] = []
+        self.passage: List[int] = []  # node -> passage index (or -1 for an implicit vertical link)
+        self.adj: List[List[tuple]] = []  # node -> [(neighbour, planar cost, kind, data)]
+        self.pieces: Dict[tuple, _Piece] = {}
+        self.pieces_by_area: Dict[int, List[_Piece]] = {}
+        self.closed: List[Tuple[int, str]] = []  # (passage index, reason)
+        self.free: Dict[str, object] = {}  # level -> free space polygon
+        self.build_s = 0.0
+        self.alt: Dict[tuple, np.ndarray] = {}
+        self._pos = None
+        self._rank = None
+        self._csr = None
+        self.edata: List[tuple] = []
+        self.piece_tree = None
+        self.piece_list: List[_Piece] = []
+
+    def csr(self) -> Dict[str, np.ndarray]:
+        """The adjacency as flat arrays (built once): per node a slice of neighbours, planar costs,
+        level spans (vertical links), area-type codes and edge-detail indices."""
+        if self._csr is None:
+            indptr = [0]
+            nbr, cost, span, kcode, eid = [], [], [], [], []
+            self.edata = []
+            for lst in self.adj:
+                for (m, c, kind, data, sp) in lst:
+                    nbr.append(m)
+                    cost.append(c)
+                    span.append(sp)
+                    kcode.append(KIND_CODES.get(kind, len(KIND_CODES_INV) - 1))
+                    eid.append(len(self.edata))
+                    self.edata.append(data)
+                indptr.append(len(nbr))
+            self._csr = {"indptr": np.asarray(indptr, np.int64), "nbr": np.asarray(nbr, np.int64),
+                         "cost": np.asarray(cost, float), "span": np.asarray(span, float),
+                         "kcode": np.asarray(kcode, np.int64), "eid": np.asarray(eid, np.int64)}
+        return self._csr
+
+    def pos_array(self) -> np.ndarray:
+        if self._pos is None or len(self._pos) != len(self.pos):
+            self._pos = np.asarray(self.pos, float).reshape(-1, 2)
+        return self._pos
+
+    def rank_array(self) -> np.ndarray:
+        if self._rank is None or len(self._rank) != len(self.rank):
+            self._rank = np.asarray(self.rank, float)
+        return self._rank
+
+    def add_node(self, xy, rank, level, passage) -> int:
+        self.pos.append((float(xy[0]), float(xy[1])))
+        self.rank.append(rank)
+        self.level.append(level)
+        self.passage.append(passage)
+        self.adj.append([])
+        return len(self.pos) - 1
+
+
+# =========================================================================== the map
+class RouteMap:
+    """An osmAG map ready for route queries. Build it with :meth:`from_osmag` or :meth:`from_areas`."""
+
+    def __init__(self, areas: Sequence[Area], passages: Sequence[Passage], levels: Optional[Sequence[str]] = None,
+                 frame=None, warnings: Sequence[str] = (), progress=None):
+        """``areas``/``passages`` in metres; ``levels``: one per area (default: each area's ``level``
+        tag, else "1"). ``frame``: the LocalFrame of the coordinates (osmAG files), or None."""
+        progress = ensure(progress)
+        self.frame = frame
+        self.warnings: List[str] = list(warnings)
+        self.areas: List[Area] = []
+        self.levels: List[str] = []
+        self.types: List[str] = []
+        self.heights: List[float] = []
+        lv_in = list(levels) if levels is not None else None
+        inferred = 0
+        for k, a in enumerate(areas):
+            if a.polygon is None or a.polygon.is_empty:
+                self.warnings.append(f"area {a.id} ({a.name}) has no geometry; ignored")
+                continue
+            t = infer_area_type(a.type, a.name)
+            if t == "structure":
+                continue
+            if t != (a.type or "room").lower() and t in AVOIDABLE:
+                inferred += 1
+            poly = a.polygon if a.polygon.is_valid else a.polygon.buffer(0)
+            if poly.is_empty:
+                self.warnings.append(f"area {a.id} ({a.name}) has an invalid, empty polygon; ignored")
+                continue
+            b = Area(id=a.id, polygon=poly, type=t, name=a.name or str(a.id), tags=dict(a.tags or {}),
+                     ref=a.ref, component=a.component)
+            self.areas.append(b)
+            self.levels.append(str(lv_in[k]) if lv_in is not None else _level_of(a.tags, "1") or "1")
+            self.types.append(t)
+            h = _as_float((a.tags or {}).get("height", ""))
+            self.heights.append(h if h and h > 0 else DEFAULT_HEIGHT)
+        if not self.areas:
+            raise InputError("the map has no area to plan in (only structure areas, or none at all)")
+        if inferred:
+            self.warnings.append(f"{inferred} areas typed 'room' are stairs or lifts by their names")
+        self.index = {a.id: k for k, a in enumerate(self.areas)}
+        lvls = sorted(set(self.levels), key=lambda s: (_as_float(s) is None, _as_float(s) or 0.0, s))
+        self.level_list = lvls
+        self.level_rank = {s: i for i, s in enumerate(lvls)}
+        self.passages: List[Passage] = []
+        dropped = []
+        for p in passages:
+            if p.from_id not in self.index or p.to_id not in self.index:
+                dropped.append(p.id)
+                continue
+            if p.line is None or p.line.is_empty or len(p.line.coords) < 2:
+                self.warnings.append(f"passage {p.id} has no line; ignored")
+                continue
+            self.passages.append(p)
+        if dropped:
+            self.warnings.append(f"{len(dropped)} passages join an area that is not in the map (missing or a "
+                                 f"structure area): {dropped[:10]}{' ...' if len(dropped) > 10 else ''}; ignored")
+        self.vertical = [i for i, p in enumerate(self.passages)
+                         if self.levels[self.index[p.from_id]] != self.levels[self.index[p.to_id]]]
+        self.implicit = self._implicit_links()
+        if self.implicit:
+            self.warnings.append(f"{len(self.implicit)} vertical links added between same-named stairs/lift areas "
+                                 "on adjacent levels (the map has no vertical passage between them)")
+        self._graphs: Dict[float, _Graph] = {}
+        self._tree = None
+        for w in self.warnings:
+            progress.warning(w)
+        progress.info(f"route map: {len(self.areas)} areas on {len(lvls)} level(s) {lvls}, {len(self.passages)} "
+                      f"passages ({len(self.vertical)} vertical), {len(self.implicit)} implicit vertical links")
+
+    # ------------------------------------------------------------------ construction helpers
+    @classmethod
+    def from_areas(cls, areas, passages, level: str = "1", progress=None) -> "RouteMap":
+        """One floor (or several, by the areas' level tags) in metres, e.g. a pipeline result."""
+        levels = [_level_of(a.tags, str(level)) or str(level) for a in areas]
+        return cls(areas, passages, levels=levels, progress=progress)
+
+    @classmethod
+    def from_osmag(cls, path: str, progress=None) -> "RouteMap":
+        """Read an osmAG file (ours or another tool's; either variant) into its root node's local frame."""
+        from .georef import LocalFrame
+        from .osmag import read_osmag, to_frame
+
+        progress = ensure(progress)
+        areas, passages, root, report = read_osmag(path, progress=progress.sub(0, 60))
+        warnings = []
+        if root is None:
+            c = _lonlat_centre(areas)
+            warnings.append(f"no root node: planning in a local frame centred on {c[0]:.6f}, {c[1]:.6f}")
+            root = c
+        frame = LocalFrame(root[0], root[1])
+        passages = _resolve_by_level(areas, passages, warnings)
+        ref_errors = report.get("dangling_refs") or []
+        bad_pass = sorted({w for w, k, v in ref_errors if k in ("osmAG:from", "osmAG:to")})
+        if bad_pass:
+            targets = sorted({v for w, k, v in ref_errors if k in ("osmAG:from", "osmAG:to")})
+            shown = ", ".join(map(repr, targets[:8]))
+            warnings.append(f"{len(bad_pass)} passages point at areas missing from the file ({shown}"
+                            f"{' ...' if len(targets) > 8 else ''}), e.g. ways {bad_pass[:5]}; they are not used")
+        m_areas, m_passages = to_frame(areas, passages, frame)
+        progress.step(70)
+        return cls(m_areas, m_passages, frame=frame, warnings=warnings, progress=progress)
+
+    def _implicit_links(self) -> List[Tuple[int, int]]:
+        """Same-named stairs/lift areas on adjacent levels with no vertical passage between them."""
+        linked = set()
+        for i in self.vertical:
+            p = self.passages[i]
+            a, b = self.index[p.from_id], self.index[p.to_id]
+            linked.add((min(a, b), max(a, b)))
+        groups: Dict[str, List[int]] = {}
+        for k, a in enumerate(self.areas):
+            if self.types[k] in AVOIDABLE and a.name:
+                groups.setdefault(a.name.strip().lower(), []).append(k)
+        out = []
+        for ks in groups.values():
+            ks = sorted(ks, key=lambda k: self.level_rank[self.levels[k]])
+            for a, b in zip(ks, ks[1:]):
+                ra, rb = self.level_rank[self.levels[a]], self.level_rank[self.levels[b]]
+                if rb - ra != 1 or (min(a, b), max(a, b)) in linked:
+                    continue
+                if self.areas[a].polygon.distance(self.areas[b].polygon) > 5.0:
+                    continue  # same name, different place: not one shaft
+                out.append((a, b))
+        return out
+
+    # ------------------------------------------------------------------ the graph for one radius
+    def graph(self, robot_radius: float = DEFAULT_ROBOT_RADIUS, progress=None) -> _Graph:
+        """The routing graph for ``robot_radius`` (built once, then cached on this object)."""
+        r = float(robot_radius)
+        if not (math.isfinite(r) and 0 <= r <= 5):
+            raise InputError(f"ROBOT_RADIUS must be between 0 and 5 m, got {robot_radius}")
+        key = round(r, 4)
+        g = self._graphs.get(key)
+        if g is None:
+            g = self._build(max(r, MIN_RADIUS), ensure(progress))
+            self._graphs[key] = g
+        return g
+
+    def _build(self, r: float, progress) -> _Graph:
+        import shapely
+        from shapely.geometry import LineString, Polygon
+        from shapely.ops import unary_union
+
+        t0 = time.perf_counter()
+        g = _Graph()
+        nlev = len(self.level_list)
+        vset = set(self.vertical)
+        horizontal = [i for i in range(len(self.passages)) if i not in vset]
+        for li, lev in enumerate(self.level_list):
+            progress.step(80.0 * li / nlev, f"routing graph: level {lev}")
+            ks = [k for k in range(len(self.areas)) if self.levels[k] == lev]
+            hp = [i for i in horizontal if self.levels[self.index[self.passages[i].from_id]] == lev]
+            lines = []
+            for k in ks:
+                poly = self.areas[k].polygon
+                for part in getattr(poly, "geoms", [poly]):
+                    lines.append(LineString(part.exterior.coords))
+                    lines.extend(LineString(h.coords) for h in part.interiors)
+            openings = [self.passages[i].line.buffer(OPENING_TOL, cap_style="flat") for i in hp
+                        if self.passages[i].line.length > 1e-6]
+            walls = unary_union(lines)
+            if openings:
+                walls = walls.difference(unary_union(openings))
+            free = unary_union([self.areas[k].polygon for k in ks] + openings)
+            free = free.difference(walls.buffer(r, quad_segs=QUAD_SEGS))
+            g.free[lev] = free
+            shapely.prepare(free)
+            for k in ks:
+                part = free.intersection(self.areas[k].polygon)
+                polys = [p for p in getattr(part, "geoms", [part]) if isinstance(p, Polygon) and p.area > 1e-4]
+                g.pieces_by_area[k] = []
+                for n, p in enumerate(polys):
+                    pc = _Piece((k, n), k, p, lev)
+                    g.pieces[(k, n)] = pc
+                    g.pieces_by_area[k].append(pc)
+            # crossing nodes on the level's passages
+            for i in hp:
+                p = self.passages[i]
+                a, b = self.index[p.from_id], self.index[p.to_id]
+                c = np.asarray(p.line.coords)
+                p0, p1 = c[0, :2], c[-1, :2]
+                w = float(np.hypot(*(p1 - p0)))
+                if w < 2 * r - 1e-9:
+                    g.closed.append((i, f"{w:.2f} m wide, the robot needs {2 * r:.2f} m"))
+                    continue
+                u = (p1 - p0) / w if w > 0 else np.zeros(2)
+                q0, q1 = p0 + r * u, p1 - r * u
+                span = max(0.0, w - 2 * r)
+                # a route bending through a door hugs a jamb: nodes at both ends of the span (and every
+                # PORTAL_SPACING metres between them); a very narrow span gets one node in its middle
+                n = 1 if span < PORTAL_MIN_SPAN else min(MAX_PORTAL_NODES, 1 + int(math.ceil(span / PORTAL_SPACING)))
+                xs = [0.5 * (q0 + q1)] if n == 1 else [q0 + t * (q1 - q0) for t in np.linspace(0, 1, n)]
+                joined_any = False
+                for x in xs:
+                    ends = [self._entry(g, side, x) for side in (a, b)]
+                    if any(e is None for e in ends):
+                        continue
+                    node = g.add_node(x, li, lev, i)
+                    for (pc, q, d) in ends:
+                        vi = pc.add_point(q)
+                        pc.entries.append((node, vi, d))
+                    joined_any = True
+                if not joined_any:
+                    g.closed.append((i, "no room for the robot on one side of it"))
+        # vertical passages and implicit links
+        links = []
+        for i in self.vertical:
+            p = self.passages[i]
+            c = np.asarray(p.line.coords)
+            x = 0.5 * (c[0, :2] + c[-1, :2])
+            links.append((self.index[p.from_id], self.index[p.to_id], x, x, i))
+        for a, b in self.implicit:
+            inter = self.areas[a].polygon.intersection(self.areas[b].polygon)
+            if not inter.is_empty and inter.area > 0.05:
+                x = np.asarray(inter.representative_point().coords[0])
+                links.append((a, b, x, x, -1))
+            else:
+                xa = np.asarray(self.areas[a].polygon.representative_point().coords[0])
+                xb = np.asarray(self.areas[b].polygon.representative_point().coords[0])
+                links.append((a, b, xa, xb, -1))
+        for a, b, xa, xb, i in links:
+            ea, eb = self._entry(g, a, xa, far=True), self._entry(g, b, xb, far=True)
+            if ea is None or eb is None:
+                g.closed.append((i, f"the shaft {self.areas[a if ea is None else b].name} has no room for the robot"))
+                continue
+            na = g.add_node(xa, self.level_rank[self.levels[a]], self.levels[a], i)
+            nb = g.add_node(xb, self.level_rank[self.levels[b]], self.levels[b], i)
+            for n, (pc, q, d) in ((na, ea), (nb, eb)):
+                vi = pc.add_point(q)
+                pc.entries.append((n, vi, d))
+            span = abs(self.level_rank[self.levels[a]] - self.level_rank[self.levels[b]])
+            kind = "stairs" if "stairs" in (self.types[a], self.types[b]) else "elevator"
+            planar = float(np.hypot(*(np.asarray(xa) - np.asarray(xb))))
+            g.adj[na].append((nb, planar, kind, ("V", span), span))
+            g.adj[nb].append((na, planar, kind, ("V", span), span))
+        # inside each piece: all pairs of its nodes
+        npc = max(1, len(g.pieces))
+        for m, pc in enumerate(g.pieces.values()):
+            if m % 16 == 0:
+                progress.step(80.0 + 20.0 * m / npc)
+            pc.solve()
+            kind = self.types[pc.area_index]
+            for x in range(len(pc.entries)):
+                nx, vx, dx = pc.entries[x]
+                for y in range(x + 1, len(pc.entries)):
+                    ny, vy, dy = pc.entries[y]
+                    if nx == ny:
+                        continue
+                    c = pc.D[vx, vy]
+                    if not math.isfinite(c):
+                        continue
+                    cost = dx + c + dy
+                    g.adj[nx].append((ny, cost, kind, (pc.key, vx, vy), 0))
+                    g.adj[ny].append((nx, cost, kind, (pc.key, vy, vx), 0))
+        g.build_s = time.perf_counter() - t0
+        progress.step(100, f"routing graph for a robot radius of {r:.2f} m: {len(g.pos)} nodes, "
+                           f"{sum(len(a) for a in g.adj) // 2} edges, {len(g.pieces)} area pieces, "
+                           f"{len(g.closed)} passages closed, built in {g.build_s:.2f} s")
+        return g
+
+    def _entry(self, g: _Graph, k: int, x, far: bool = False):
+        """(piece, point in it, distance) where a node at x enters area k, or None."""
+        from shapely.geometry import Point
+        from shapely.ops import nearest_points
+
+        best = None
+        pt = Point(float(x[0]), float(x[1]))
+        for pc in g.pieces_by_area.get(k, []):
+            d = pc.poly.distance(pt)
+            if best is None or d < best[0]:
+                best = (d, pc)
+        if best is None:
+            return None
+        d, pc = best
+        if d > (np.inf if far else SNAP):
+            return None
+        if d <= 1e-7:
+            return pc, np.array([pt.x, pt.y]), 0.0
+        q = nearest_points(pc.poly, pt)[0]
+        return pc, np.array([q.x, q.y]), float(d)
+
+    # ------------------------------------------------------------------ queries
+    def levels_known(self) -> List[str]:
+        return list(self.level_list)
+
+    def _check_level(self, level, what):
+        if level in (None, ""):
+            return None
+        lev = str(level).strip()
+        if lev in self.level_rank:
+            return lev
+        f = _as_float(lev)
+        if f is not None:
+            for s in self.level_list:
+                if _as_float(s) == f:
+                    return s
+        raise InputError(f"{what}: level '{level}' is not in the map; its levels are {', '.join(self.level_list)}")
+
+    def find_area(self, name: str, level=None) -> int:
+        """Index of the area called ``name`` (case-insensitive; on ``level`` when several floors use it)."""
+        lev = self._check_level(level, f"area '{name}'")
+        key = str(name).strip().lower()
+        ks = [k for k, a in enumerate(self.areas) if a.name.strip().lower() == key
+              and (lev is None or self.levels[k] == lev)]
+        if not ks:
+            ks = [k for k, a in enumerate(self.areas) if str(a.id) == str(name).strip()]
+        if not ks:
+            close = sorted({a.name for a in self.areas if key and key[:3] in a.name.lower()})[:8]
+            raise InputError(f"no area named '{name}'{f' on level {lev}' if lev else ''}"
+                             f"{'; similar: ' + ', '.join(close) if close else ''}")
+        if len(ks) > 1:
+            raise InputError(f"{len(ks)} areas are named '{name}' (levels {', '.join(self.levels[k] for k in ks)}); "
+                             "give the level too")
+        return ks[0]
+
+    def area_point(self, k: int, robot_radius: float = DEFAULT_ROBOT_RADIUS) -> Tuple[float, float]:
+        """A point well inside area k where the robot fits (the most interior point of its largest piece)."""
+        from shapely.ops import polylabel
+
+        g = self.graph(robot_radius)
+        pcs = g.pieces_by_area.get(k, [])
+        if not pcs:
+            raise InputError(f"area '{self.areas[k].name}' (level {self.levels[k]}) has no room for a robot of "
+                             f"radius {robot_radius:.2f} m")
+        pc = max(pcs, key=lambda p: p.poly.area)
+        pt = polylabel(pc.poly, tolerance=0.05)
+        if not pc.poly.covers(pt):
+            pt = pc.poly.representative_point()
+        return float(pt.x), float(pt.y)
+
+    def locate(self, xy, level=None, robot_radius: float = DEFAULT_ROBOT_RADIUS, what: str = "start"):
+        """(piece, snapped point, snap distance) for a point; snaps up to SNAP metres, else InputError."""
+        from shapely.geometry import Point
+
+        lev = self._check_level(level, what)
+        g = self.graph(robot_radius)
+        x, y = float(xy[0]), float(xy[1])
+        if not (math.isfinite(x) and math.isfinite(y)):
+            raise InputError(f"{what}: the point ({xy[0]}, {xy[1]}) is not a valid coordinate")
+        pt = Point(x, y)
+        # the common case first: the point lies in a piece of the robot's free space
+        if g.piece_tree is None:
+            import shapely
+
+            g.piece_list = list(g.pieces.values())
+            g.piece_tree = shapely.STRtree([pc.tol_poly for pc in g.piece_list])
+        hits = [g.piece_list[int(i)] for i in g.piece_tree.query(pt, predicate="intersects")]
+        hits = [pc for pc in hits if lev is None or pc.level == lev]
+        if hits and (lev is not None or len({pc.level for pc in hits}) == 1):
+            pc = min(hits, key=lambda p: self.areas[p.area_index].polygon.area)
+            return pc, np.array([x, y]), 0.0
+        if self._tree is None:
+            import shapely
+
+            self._tree = shapely.STRtree([a.polygon for a in self.areas])
+            for a in self.areas:
+                shapely.prepare(a.polygon)
+        near = [int(k) for k in self._tree.query(pt, predicate="dwithin", distance=SNAP)]
+        cands = [k for k in near if lev is None or self.levels[k] == lev]
+        inside = [k for k in cands if self.areas[k].polygon.covers(pt)]
+        if lev is None and len({self.levels[k] for k in inside}) > 1:
+            raise InputError(f"{what}: the point lies in areas on levels "
+                             f"{', '.join(sorted({self.levels[k] for k in inside}))}; give its level")
+        order = sorted(inside, key=lambda k: self.areas[k].polygon.area)
+        for k in order:  # inside an area: its pieces first
+            for pc in g.pieces_by_area.get(k, []):
+                if pc.tol_poly.covers(pt):
+                    return pc, np.array([x, y]), 0.0
+        best = None
+        for k in order + [k for k in cands if k not in inside]:
+            if self.areas[k].polygon.distance(pt) > SNAP:
+                continue
+            for pc in g.pieces_by_area.get(k, []):
+                d = pc.poly.distance(pt)
+                if d <= SNAP and (best is None or d < best[0] - 1e-9):
+                    best = (d, pc)
+        if best is None:
+            near = [k for k in range(len(self.areas)) if lev is None or self.levels[k] == lev]
+            near = sorted(near, key=lambda k: self.areas[k].polygon.distance(pt))[:1]
+            hint = ""
+            if near:
+                k = near[0]
+                hint = (f"; the nearest area is '{self.areas[k].name}' (level {self.levels[k]}), "
+                        f"{self.areas[k].polygon.distance(pt):.1f} m away")
+            where = "inside an area but too close to its walls for" if inside else "outside every area reachable by"
+            raise InputError(f"{what} ({x:.2f}, {y:.2f}){f' on level {lev}' if lev else ''} is {where} a robot of "
+                             f"radius {robot_radius:.2f} m (more than {SNAP:.0f} m from the free space){hint}")
+        from shapely.ops import nearest_points
+
+        d, pc = best
+        q = nearest_points(pc.poly, pt)[0]
+        # step a hair inside so that the visibility test sees the point as in the piece
+        return pc, np.array([q.x, q.y]), float(d)
+
+    def route(self, start, goal, start_level=None, goal_level=None, robot_radius: float = DEFAULT_ROBOT_RADIUS,
+              avoid: Sequence[str] = (), vertical_cost: float = DEFAULT_VERTICAL_COST, progress=None) -> RouteResult:
+        """Shortest route from ``start`` to ``goal``: each an (x, y) point in the map frame (with its level,
+        needed when the point lies in areas of several levels) or an area name (str)."""
+        progress = ensure(progress)
+        if not (math.isfinite(float(vertical_cost)) and float(vertical_cost) >= 0):
+            raise InputError(f"VERTICAL_COST must be a non-negative number of metres, got {vertical_cost}")
+        vc = float(vertical_cost)
+        avoid_set = set()
+        for a in avoid or ():
+            a = str(a).strip().lower()
+            if not a or a == "none":
+                continue
+            a = {"stair": "stairs", "lift": "elevator", "lifts": "elevator", "elevators": "elevator"}.get(a, a)
+            if a not in AVOIDABLE:
+                raise InputError(f"AVOID: unknown area type '{a}'; use one of {', '.join(AVOIDABLE)}")
+            avoid_set.add(a)
+        g = self.graph(robot_radius, progress=progress.sub(0, 90))
+        ends = []
+        for what, p, lev in (("start", start, start_level), ("goal", goal, goal_level)):
+            if isinstance(p, str):
+                k = self.find_area(p, lev)
+                p = self.area_point(k, robot_radius)
+                lev = self.levels[k]
+            ends.append(self.locate(p, lev, robot_radius, what))
+        self._landmarks(g, vc)  # once per map and vertical cost, not part of the query
+        t0 = time.perf_counter()
+        res = self._search(g, ends[0], ends[1], vc, avoid_set, robot_radius)
+        res.query_ms = (time.perf_counter() - t0) * 1000.0
+        progress.step(100, f"route: {res.length:.2f} m, {res.level_changes} level changes, "
+                           f"{len(res.areas)} areas, {len(res.passages)} passages ({res.query_ms:.2f} ms)")
+        return res
+
+    # ------------------------------------------------------------------ A*
+    def _search(self, g: _Graph, s_end, t_end, vc: float, avoid: set, robot_radius: float) -> RouteResult:
+        """A* from the start point to the goal point over the passage nodes (see the module docstring)."""
+        spc, sp, ssnap = s_end
+        tpc, tp, tsnap = t_end
+        sd, svia = spc.point_costs(sp)
+        td, tvia = tpc.point_costs(tp)
+        s_edges = [(n, float(sd[vi]) + d, vi) for (n, vi, d) in spc.entries if math.isfinite(sd[vi])]
+        t_in: Dict[int, Tuple[float, int]] = {}
+        for (n, vi, d) in tpc.entries:
+            if math.isfinite(td[vi]) and (n not in t_in or td[vi] + d < t_in[n][0]):
+                t_in[n] = (float(td[vi]) + d, vi)
+        inf = math.inf
+        ub, came_t = inf, None  # best complete route so far: cost, (last node or None, detail)
+        if spc is tpc:
+            if spc.visible_from(sp, tp[None, :])[0]:
+                ub, came_t = float(np.hypot(*(tp - sp))), (None, None)
+            if len(spc.V):
+                tot = sd + td
+                v = int(np.argmin(tot))
+                if tot[v] < ub - 1e-12:
+                    ub, came_t = float(tot[v]), (None, v)
+        csr = g.csr()
+        n_nodes = len(g.pos)
+        h = self._heuristic(g, tp, self.level_rank[tpc.level], t_in, vc, avoid)
+        # a first upper bound through the best landmark: prunes nodes that cannot beat it
+        prune = ub
+        dl = self._landmarks(g, vc)
+        if len(dl) and s_edges and t_in and not avoid:  # (a route via a landmark may cross avoided areas)
+            sn = np.array([e[0] for e in s_edges])
+            sc = np.array([e[1] for e in s_edges])
+            tn = np.fromiter(t_in.keys(), int)
+            tc = np.array([t_in[m][0] for m in t_in])
+            via = np.min(dl[:, sn] + sc[None, :], axis=1) + np.min(dl[:, tn] + tc[None, :], axis=1)
+            prune = min(prune, float(np.min(via)) * (1 + 1e-9) + 1e-9)
+        best = np.full(n_nodes, inf)
+        came_n = np.full(n_nodes, -1, np.int64)  # -1: reached from the start point
+        came_e = np.full(n_nodes, -1, np.int64)
+        s_vi: Dict[int, int] = {}
+        heap = []
+        for (m, c, vi) in s_edges:
+            if c < best[m] and c + h[m] < prune:
+                best[m] = c
+                s_vi[m] = vi
+                heapq.heappush(heap, (c + h[m], c, m))
+        indptr, nbr, cost, span, kcode = csr["indptr"], csr["nbr"], csr["cost"], csr["span"], csr["kcode"]
+        amask = np.array([KIND_CODES_INV[i] in avoid for i in range(len(KIND_CODES_INV))]) if avoid else None
+        expanded = 0
+        while heap:
+            f, c, n = heapq.heappop(heap)
+            if f >= ub - 1e-12:
+                break  # nothing left can beat the route found
+            if c > best[n]:
+                continue
+            expanded += 1
+            te = t_in.get(n)
+            if te is not None and c + te[0] < ub - 1e-12:
+                ub, came_t = c + te[0], (n, te[1])
+                prune = min(prune, ub)
+            lo, hi = indptr[n], indptr[n + 1]
+            if lo == hi:
+                continue
+            m = nbr[lo:hi]
+            nc = c + cost[lo:hi]
+            if vc:
+                nc = nc + vc * span[lo:hi]
+            fm = nc + h[m]
+            ok = (nc < best[m] - 1e-12) & (fm < prune)
+            if amask is not None:
+                ok &= ~amask[kcode[lo:hi]]
+            for j in np.nonzero(ok)[0].tolist():
+                mm = int(m[j])
+                best[mm] = nc[j]
+                came_n[mm] = n
+                came_e[mm] = lo + j
+                heapq.heappush(heap, (float(fm[j]), float(nc[j]), mm))
+        if came_t is None:
+            raise self._no_route(g, spc, tpc, avoid, robot_radius)
+        # the chain of nodes
+        nodes = []
+        n = came_t[0]
+        while n is not None and n >= 0:
+            nodes.append(n)
+            n = int(came_n[n]) if came_n[n] >= 0 else None
+        nodes.reverse()
+        return self._rebuild(g, csr, nodes, came_e, s_vi, came_t, spc, sp, svia, tpc, tp, tvia, ssnap, tsnap,
+                             ub, expanded)
+
+    def _landmarks(self, g: _Graph, vc: float) -> np.ndarray:
+        """Shortest distances from a few landmark nodes to every node (ALT heuristic), cached per vertical
+        cost. (K, n) array, inf where unreachable. Computed on the whole graph, avoided areas included: the
+        bounds stay admissible for every ``avoid`` (removing edges only lengthens routes), and joining the
+        goal point to its area's nodes cannot shorten a route between two nodes (in-area paths obey the
+        triangle inequality), so the goal's landmark distances follow from its entry nodes."""
+        key = round(vc, 6)
+        got = g.alt.get(key)
+        if got is not None:
+            return got
+        from scipy.sparse import coo_matrix
+        from scipy.sparse.csgraph import dijkstra
+
+        n = len(g.pos)
+        if n == 0:
+            g.alt[key] = np.zeros((0, 0))
+            return g.alt[key]
+        rows, cols, w = [], [], []
+        for a, lst in enumerate(g.adj):
+            for (m, c, kind, data, span) in lst:
+                rows.append(a)
+                cols.append(m)
+                w.append(c + vc * span + 1e-12)
+        mat = coo_matrix((w, (rows, cols)), shape=(n, n)).tocsr()
+        k = min(LANDMARKS, n)
+        chosen = [0]
+        dist = [dijkstra(mat, directed=True, indices=0)]
+        near = np.where(np.isfinite(dist[0]), dist[0], 1e18)
+        for _ in range(k - 1):
+            nxt = int(np.argmax(near))
+            if near[nxt] <= 0:
+                break
+            chosen.append(nxt)
+            d = dijkstra(mat, directed=True, indices=nxt)
+            dist.append(d)
+            near = np.minimum(near, np.where(np.isfinite(d), d, 1e18))
+        d = np.vstack(dist)
+        d[~np.isfinite(d)] = _FAR
+        g.alt[key] = d
+        return g.alt[key]
+
+    def _heuristic(self, g: _Graph, tp, grank: int, t_in, vc: float, avoid: set) -> List[float]:
+        """Admissible lower bound of the remaining cost per node: the larger of the planar straight
+        line + vc x levels to cross, and the landmark (ALT) triangle bounds."""
+        n = len(g.pos)
+        if n == 0:
+            return []
+        P = g.pos_array()
+        h = np.hypot(P[:, 0] - tp[0], P[:, 1] - tp[1]) + vc * np.abs(g.rank_array() - grank)
+        dl = self._landmarks(g, vc)  # unreachable = _FAR (finite: FAR - FAR = 0, no NaN)
+        if len(dl) and t_in:
+            tn = np.fromiter(t_in.keys(), int)
+            tc = np.array([t_in[m][0] for m in t_in])
+            dlt = np.min(dl[:, tn] + tc[None, :], axis=1)
+            h = np.maximum(h, np.abs(dlt[:, None] - dl).max(axis=0))
+            h[h >= 0.5 * _FAR] = math.inf
+        elif not t_in:
+            h = np.full(n, math.inf)
+        return h
+
+    def _rebuild(self, g, csr, nodes, came_e, s_vi, came_t, spc, sp, svia, tpc, tp, tvia, ssnap, tsnap, cost,
+                 expanded):
+        pts: List[Tuple[float, float]] = []
+        lvls: List[str] = []
+        area_seq: List[int] = []
+        pass_seq: List[int] = []
+
+        def add(xy, lev):
+            xy = (float(xy[0]), float(xy[1]))
+            if pts and lvls[-1] == lev and abs(pts[-1][0] - xy[0]) < 1e-9 and abs(pts[-1][1] - xy[1]) < 1e-9:
+                return
+            pts.append(xy)
+            lvls.append(lev)
+
+        def add_area(k):
+            if not area_seq or area_seq[-1] != k:
+                area_seq.append(k)
+
+        def add_passage(node):
+            i = g.passage[node]
+            if i >= 0 and (not pass_seq or pass_seq[-1] != i):
+                pass_seq.append(i)
+
+        def piece_path(pc, a, b):
+            for v in pc.vertex_path(a, b):
+                add(pc.V[v], pc.level)
+
+        add(sp, spc.level)
+        add_area(spc.area_index)
+        if not nodes:  # start and goal in one piece
+            v = came_t[1]
+            if v is not None:
+                piece_path(spc, int(svia[v]), v)
+                piece_path(tpc, v, int(tvia[v]))
+        else:
+            vi = s_vi[nodes[0]]
+            piece_path(spc, int(svia[vi]), vi)
+            add(g.pos[nodes[0]], g.level[nodes[0]])
+            add_passage(nodes[0])
+            for n in nodes[1:]:
+                data = g.edata[int(csr["eid"][came_e[n]])]
+                if data[0] == "V":
+                    add(g.pos[n], g.level[n])
+                else:
+                    key, vx, vy = data
+                    pc = g.pieces[key]
+                    add_area(pc.area_index)
+                    piece_path(pc, vx, vy)
+                    add(g.pos[n], g.level[n])
+                add_passage(n)
+            add_area(tpc.area_index)
+            vi = came_t[1]
+            piece_path(tpc, vi, int(tvia[vi]))
+        add(tp, tpc.level)
+        if len(pts) == 1:
+            pts.append(pts[0])
+            lvls.append(lvls[0])
+        P = np.asarray(pts, float)
+        length = float(np.hypot(*np.diff(P, axis=0).T).sum())
+        changes = sum(1 for a, b in zip(lvls, lvls[1:]) if a != b)
+        z = np.array([self._elevation(lv) for lv in lvls])
+        return RouteResult(points=P, levels=lvls, z=z, length=length, cost=float(cost), level_changes=changes,
+                           areas=[self.areas[k].name for k in area_seq], area_ids=[self.areas[k].id for k in area_seq],
+                           passages=[self._passage_name(i) for i in pass_seq],
+                           passage_ids=[self.passages[i].id for i in pass_seq],
+                           start=(float(sp[0]), float(sp[1])), goal=(float(tp[0]), float(tp[1])),
+                           start_snap=ssnap, goal_snap=tsnap, query_ms=0.0, expanded=expanded,
+                           warnings=[f"start moved {ssnap:.2f} m into the free space"] * (ssnap > 0.005)
+                           + [f"goal moved {tsnap:.2f} m into the free space"] * (tsnap > 0.005))
+
+    def _passage_name(self, i: int) -> str:
+        p = self.passages[i]
+        return p.name or str(p.id)
+
+    def _elevation(self, level: str) -> float:
+        """z of a level: level number x that level's height (rank x height for non-numeric levels)."""
+        cache = self.__dict__.setdefault("_elev", {})
+        if level not in cache:
+            hs = [h for k, h in enumerate(self.heights) if self.levels[k] == level]
+            h = float(np.median(hs)) if hs else DEFAULT_HEIGHT
+            f = _as_float(level)
+            cache[level] = (f if f is not None else float(self.level_rank.get(level, 0))) * h
+        return cache[level]
+
+    def elevation(self, level: str) -> float:
+        return self._elevation(level)
+
+    # ------------------------------------------------------------------ diagnostics
+    def components(self, robot_radius: float = DEFAULT_ROBOT_RADIUS, avoid: Sequence[str] = ()) -> List[List[int]]:
+        """Connected parts of the map for this robot: lists of area indices (largest first)."""
+        g = self.graph(robot_radius)
+        return [sorted(c) for c in self._area_components(g, set(avoid))[0]]
+
+    def _area_components(self, g: _Graph, avoid: set):
+        parent = list(range(len(self.areas)))
+
+        def find(x):
+            while parent[x] != x:
+                parent[x] = parent[parent[x]]
+                x = parent[x]
+            return x
+
+        def union(a, b):
+            ra, rb = find(a), find(b)
+            if ra != rb:
+                parent[ra] = rb
+
+        node_area: Dict[int, List[int]] = {}
+        for pc in g.pieces.values():
+            if self.types[pc.area_index] in avoid:
+                continue
+            for (n, vi, d) in pc.entries:
+                node_area.setdefault(n, []).append(pc.area_index)
+        for n, ks in node_area.items():
+            for k in ks[1:]:
+                union(ks[0], k)
+        for n, lst in enumerate(g.adj):
+            for (m, c, kind, data, span) in lst:
+                if span and kind not in avoid and n in node_area and m in node_area:
+                    union(node_area[n][0], node_area[m][0])
+        comps: Dict[int, List[int]] = {}
+        for k in range(len(self.areas)):
+            comps.setdefault(find(k), []).append(k)
+        out = sorted(comps.values(), key=len, reverse=True)
+        of = {}
+        for ci, c in enumerate(out):
+            for k in c:
+                of[k] = ci
+        return out, of
+
+    def _no_route(self, g: _Graph, spc, tpc, avoid: set, robot_radius: float) -> RouteError:
+        comps, of = self._area_components(g, avoid)
+        a, b = spc.area_index, tpc.area_index
+        ca, cb = of[a], of[b]
+
+        def desc(ci, k):
+            ks = comps[ci]
+            names = [self.areas[j].name for j in ks[:6]]
+            lv = sorted({self.levels[j] for j in ks})
+            return (f"part #{ci + 1} ({len(ks)} area{'s' if len(ks) != 1 else ''} on level{'s' if len(lv) > 1 else ''} "
+                    f"{', '.join(lv)}: {', '.join(names)}{' ...' if len(ks) > 6 else ''})")
+
+        if ca == cb:
+            # same part of the graph, different piece of one area: the area itself is cut by the radius
+            msg = (f"no route from '{self.areas[a].name}' to '{self.areas[b].name}' for a robot of radius "
+                   f"{robot_radius:.2f} m: a narrowing inside an area is too tight for it")
+        else:
+            msg = (f"no route for a robot of radius {robot_radius:.2f} m"
+                   f"{' avoiding ' + ', '.join(sorted(avoid)) if avoid else ''}: the start (area "
+                   f"'{self.areas[a].name}', level {self.levels[a]}) is in {desc(ca, a)}, the goal (area "
+                   f"'{self.areas[b].name}', level {self.levels[b]}) in {desc(cb, b)}; the map has "
+                   f"{len(comps)} separate parts for this robot")
+        between = []
+        for i, reason in (g.closed if ca != cb else []):
+            if i < 0:
+                continue
+            p = self.passages[i]
+            x, y = self.index[p.from_id], self.index[p.to_id]
+            if {of[x], of[y]} == {ca, cb}:
+                between.append(f"'{self._passage_name(i)}' ({reason})")
+        if between:
+            msg += "; closed for this robot between them: " + ", ".join(between[:6])
+        elif any(g.passage[n] >= 0 for n in range(len(g.pos))) and avoid:
+            msg += f"; try without AVOID={','.join(sorted(avoid))}"
+        return RouteError(msg, {"start": [self.areas[k].name for k in comps[ca]],
+                                "goal": [self.areas[k].name for k in comps[cb]], "count": len(comps)})
+
+    def summary(self, robot_radius: float = DEFAULT_ROBOT_RADIUS) -> Dict[str, object]:
+        g = self.graph(robot_radius)
+        return {"areas": len(self.areas), "passages": len(self.passages), "levels": list(self.level_list),
+                "vertical_passages": len(self.vertical), "implicit_links": len(self.implicit),
+                "nodes": len(g.pos), "edges": sum(len(a) for a in g.adj) // 2, "pieces": len(g.pieces),
+                "closed": len(g.closed), "build_s": g.build_s, "warnings": list(self.warnings)}
+
+
+# =========================================================================== reader helpers
+def _lonlat_centre(areas):
+    xs, ys = [], []
+    for a in areas:
+        b = a.polygon.bounds
+        xs += [b[0], b[2]]
+        ys += [b[1], b[3]]
+    return (0.5 * (min(xs) + max(xs)), 0.5 * (min(ys) + max(ys)))
+
+
+def _resolve_by_level(areas, passages, warnings):
+    """Re-resolve passage ends given by name when the name is used on several levels (maps that repeat
+    'E1-ST-09' on each floor): the area on the passage's level, else the nearest to the passage."""
+    by_name: Dict[str, List[Area]] = {}
+    for a in areas:
+        if a.name:
+            by_name.setdefault(a.name, []).append(a)
+    fixed = 0
+    out = []
+    for p in passages:
+        lev = _level_of(p.tags, "")
+        ends = []
+        for key, cur in (("osmAG:from", p.from_id), ("osmAG:to", p.to_id)):
+            v = str((p.tags or {}).get(key, "")).strip()
+            cands = by_name.get(v, [])
+            if len(cands) <= 1:
+                ends.append(cur)
+                continue
+            same = [a for a in cands if _level_of(a.tags, "") == lev] or cands
+            best = min(same, key=lambda a: a.polygon.distance(p.line))
+            ends.append(best.id)
+        if ends[0] == ends[1]:  # both ends named alike: a vertical link between same-named shafts
+            v = str((p.tags or {}).get("osmAG:to", "")).strip()
+            others = [a for a in by_name.get(v, []) if a.id != ends[0]]
+            if others:
+                ends[1] = min(others, key=lambda a: a.polygon.distance(p.line)).id
+        if (ends[0], ends[1]) != (p.from_id, p.to_id):
+            fixed += 1
+            import copy
+
+            p = copy.copy(p)
+            p.from_id, p.to_id = ends
+        out.append(p)
+    if fixed:
+        warnings.append(f"{fixed} passages name areas that several levels share; joined to the area on the "
+                        "passage's own level")
+    return out
+
+
+__all__ = ["RouteMap", "RouteResult", "RouteError", "infer_area_type", "DEFAULT_ROBOT_RADIUS",
+           "DEFAULT_VERTICAL_COST", "SNAP", "AVOIDABLE"]

@@ -1,0 +1,341 @@
+"""Route planning over the osmAG graph (algorithms/routing.py): synthetic maps and the shared osmAG maps."""
+import math
+
+import numpy as np
+import pytest
+from shapely.geometry import LineString, box
+
+from algorithms.errors import Canceled, InputError
+from algorithms.model import Area, Passage
+from algorithms.progress import RecordingProgress
+from algorithms.routing import RouteError, RouteMap, infer_area_type
+
+
+def area(i, poly, name, level="1", atype="room"):
+    return Area(id=i, polygon=poly, type=atype, name=name, tags={"level": level, "height": "3"})
+
+
+def passage(i, a, b, p0, p1, name=None, level="1"):
+    return Passage(id=i, from_id=a, to_id=b, line=LineString([p0, p1]), name=name or f"P{i}", tags={"level": level})
+
+
+def clearance_ok(points, obstacles, r):
+    """Every segment of the path keeps at least r from the obstacle geometry, but for the 45 degree chords
+    that approximate the grown wall corners (they cut 7.6 % of r into the disc)."""
+    return LineString(points).distance(obstacles) >= r * (1 - 0.077) - 1e-6
+
+
+# --------------------------------------------------------------------------- one area
+def u_room():
+    # 10 x 10 room with a wall tongue from the top (x 4..6, y 3..10): the straight line is blocked
+    return box(0, 0, 10, 10).difference(box(4, 3, 6, 10))
+
+
+@pytest.mark.parametrize("r", [0.0, 0.3, 0.5])
+def test_u_shaped_room_goes_around_the_tongue(r):
+    rm = RouteMap.from_areas([area(1, u_room(), "U")], [])
+    res = rm.route((2, 8), (8, 8), robot_radius=r)
+    # exact: tangent from the start to the disc of radius r around the tongue's corner (4, 3), the arc,
+    # 2 m under the tongue, and the mirror image (the wall corners are grown by 45 degree chords)
+    rr = max(r, 0.01)
+    d = math.hypot(2, 5)
+    exact = 2 * (math.sqrt(d * d - rr * rr) + rr * (math.atan2(5, 2) + math.asin(rr / d))) + 2
+    assert exact * 0.995 <= res.length <= exact + 1e-6
+    assert res.points[:, 1].min() <= 3.0 - r + 0.02  # it went below the tongue
+    walls = u_room().boundary
+    assert clearance_ok(res.points, walls, max(r, 0.01))
+    assert res.areas == ["U"] and res.passages == []
+    assert res.levels == ["1"] * len(res.points)
+
+
+def test_start_near_a_wall_snaps_and_far_outside_is_an_error():
+    rm = RouteMap.from_areas([area(1, box(0, 0, 10, 5), "Room")], [])
+    res = rm.route((-0.4, 2), (9, 2), robot_radius=0.3)  # 0.4 m outside the room: snapped by 0.7 m
+    assert res.start_snap == pytest.approx(0.7, abs=0.01)
+    assert res.start[0] == pytest.approx(0.3, abs=0.01)
+    assert res.length == pytest.approx(8.7, abs=0.02)
+    with pytest.raises(InputError, match=r"outside every area.*nearest area is 'Room'.*3\.0 m away"):
+        rm.route((-3, 2), (9, 2), robot_radius=0.3)
+    with pytest.raises(InputError, match="level '7' is not in the map; its levels are 1"):
+        rm.route((1, 1), (9, 2), start_level="7")
+    with pytest.raises(InputError, match="ROBOT_RADIUS"):
+        rm.route((1, 1), (9, 2), robot_radius=-1)
+    with pytest.raises(InputError, match="no area named 'Kitchen'"):
+        rm.route("Kitchen", (9, 2))
+
+
+# --------------------------------------------------------------------------- passages
+def two_rooms(door_width):
+    """Two 5 x 4 rooms side by side sharing the wall x = 5, with a door of ``door_width`` centred at y = 2."""
+    a = area(1, box(0, 0, 5, 4), "West")
+    b = area(2, box(5, 0, 10, 4), "East")
+    p = passage(10, 1, 2, (5, 2 - door_width / 2), (5, 2 + door_width / 2), "Door")
+    return [a, b], [p]
+
+
+def test_route_through_a_door_and_radius_closing_it():
+    areas, passages = two_rooms(0.8)
+    rm = RouteMap.from_areas(areas, passages)
+    res = rm.route((1, 3.5), (9, 0.5), robot_radius=0.3)
+    assert res.areas == ["West", "East"] and res.passages == ["Door"]
+    # the path bends at the door's usable span (y in 1.9..2.1) and keeps 0.3 m from the jambs
+    jambs = areas[0].polygon.boundary.difference(passages[0].line.buffer(1e-6))
+    assert clearance_ok(res.points, jambs, 0.3)
+    assert res.length == pytest.approx(math.hypot(8, 3), abs=0.01)  # the straight line fits through
+    # a goal behind the wall: the path bends around the upper jamb's disc
+    bent = rm.route((1, 3.5), (9, 3.5), robot_radius=0.3)
+    d = math.hypot(4, 1.1)
+    assert 2 * math.sqrt(d * d - 0.09) <= bent.length <= 2 * math.hypot(4, 1.4) + 1e-6
+    assert clearance_ok(bent.points, jambs, 0.3)
+    with pytest.raises(RouteError) as exc:
+        rm.route((1, 3.5), (9, 0.5), robot_radius=0.45)
+    msg = str(exc.value)
+    assert "'Door' (0.80 m wide, the robot needs 0.90 m)" in msg
+    assert "'West'" in msg and "'East'" in msg and "2 separate parts" in msg
+    assert exc.value.components["start"] == ["West"] and exc.value.components["goal"] == ["East"]
+
+
+def test_unreachable_goal_names_both_components():
+    areas = [area(1, box(0, 0, 4, 4), "A"), area(2, box(4, 0, 8, 4), "B"), area(3, box(20, 0, 24, 4), "C"),
+             area(4, box(24, 0, 28, 4), "D")]
+    passages = [passage(10, 1, 2, (4, 1), (4, 3)), passage(11, 3, 4, (24, 1), (24, 3))]
+    rm = RouteMap.from_areas(areas, passages)
+    parts = r"part #\d \(2 areas on level 1: A, B\).*part #\d \(2 areas on level 1: C, D\)"
+    with pytest.raises(RouteError, match=parts):
+        rm.route("A", "D")
+    assert sorted(map(len, rm.components(0.3))) == [2, 2]
+
+
+def test_wide_opening_is_crossed_where_the_straight_line_crosses_it():
+    # two halves of a hall split by a 6 m wide opening: the straight route must not be forced to its middle
+    areas = [area(1, box(0, 0, 6, 6), "H1", atype="corridor"), area(2, box(6, 0, 12, 6), "H2", atype="corridor")]
+    passages = [passage(10, 1, 2, (6, 0), (6, 6), "Split")]
+    rm = RouteMap.from_areas(areas, passages)
+    res = rm.route((1, 5), (11, 4.6), robot_radius=0.3)
+    assert res.length <= math.hypot(10, 0.4) * 1.005
+
+
+def test_concave_corridor_route_is_optimal_against_a_fine_visibility_reference():
+    # an L-shaped corridor split into two areas at the bend, rooms off it: compare with brute force
+    c1 = box(0, 0, 20, 2)
+    c2 = box(18, 2, 20, 20)
+    rooms = [box(2, -5, 8, 0), box(10, -5, 16, 0), box(20, 10, 26, 16)]
+    areas = [area(1, c1, "C1", atype="corridor"), area(2, c2, "C2", atype="corridor")]
+    passages = [passage(10, 1, 2, (18, 2), (20, 2), "Bend")]
+    for k, r in enumerate(rooms):
+        areas.append(area(3 + k, r, f"R{k}"))
+    passages += [passage(20, 3, 1, (4, 0), (5, 0), "D0"), passage(21, 4, 1, (12, 0), (13, 0), "D1"),
+                 passage(22, 5, 2, (20, 12), (20, 13), "D2")]
+    rm = RouteMap.from_areas(areas, passages)
+    res = rm.route("R0", "R2", robot_radius=0.3)
+    assert res.areas == ["R0", "C1", "C2", "R2"]
+    assert res.passages == ["D0", "Bend", "D2"]
+    # obstacle-free straight segments: the path never leaves the union of the areas by more than a hair
+    free = areas[0].polygon
+    for a in areas[1:]:
+        free = free.union(a.polygon)
+    assert free.buffer(1e-6).covers(LineString(res.points))
+    # A* (landmarks + straight line) finds the same cost as plain Dijkstra over the graph
+    check_astar_matches_dijkstra(rm, 0.3)
+
+
+def check_astar_matches_dijkstra(rm, r, vc=15.0, avoid=(), pairs=20, seed=0):
+    from scipy.sparse import coo_matrix
+    from scipy.sparse.csgraph import dijkstra
+
+    g = rm.graph(r)
+    n = len(g.pos)
+    rows, cols, w = [], [], []
+    for a, lst in enumerate(g.adj):
+        for (m, c, kind, data, span) in lst:
+            if kind in avoid:
+                continue
+            rows.append(a)
+            cols.append(m)
+            w.append(c + vc * span + 1e-12)
+    # start/goal as extra nodes n, n+1
+    rng = np.random.default_rng(seed)
+    ks = [k for k in range(len(rm.areas)) if g.pieces_by_area.get(k)]
+    for _ in range(pairs):
+        a, b = rng.choice(ks, 2, replace=False)
+        try:
+            res = rm.route(rm.area_point(a, r), rm.area_point(b, r), rm.levels[a], rm.levels[b], robot_radius=r,
+                           vertical_cost=vc, avoid=avoid)
+        except RouteError:
+            continue
+        s = rm.locate(rm.area_point(a, r), rm.levels[a], r)
+        t = rm.locate(rm.area_point(b, r), rm.levels[b], r)
+        sd, _ = s[0].point_costs(s[1])
+        td, _ = t[0].point_costs(t[1])
+        R, C, W = list(rows), list(cols), list(w)
+        for (m, vi, d) in s[0].entries:
+            if math.isfinite(sd[vi]):
+                R.append(n), C.append(m), W.append(sd[vi] + d + 1e-12)
+        for (m, vi, d) in t[0].entries:
+            if math.isfinite(td[vi]):
+                R.append(m), C.append(n + 1), W.append(td[vi] + d + 1e-12)
+        mat = coo_matrix((W, (R, C)), shape=(n + 2, n + 2)).tocsr()
+        ref = dijkstra(mat, directed=True, indices=n)[n + 1]
+        if s[0] is t[0]:
+            ref = min(ref, res.cost)  # same piece: the direct in-area path is not in the node graph
+        assert res.cost == pytest.approx(ref, rel=1e-6, abs=1e-6)
+
+
+# --------------------------------------------------------------------------- several levels
+def two_floors(implicit=False):
+    """Two floors: a corridor with a stair at the west end and a lift at the east end on each level."""
+    areas, passages = [], []
+    for lv, base in (("1", 0), ("2", 100)):
+        corr = area(base + 1, box(0, 0, 40, 3), f"Corridor {lv}", lv, "corridor")
+        st = area(base + 2, box(0, 3, 4, 8), "ST-01" if implicit else f"Stair {lv}", lv,
+                  "room" if implicit else "stairs")
+        lift = area(base + 3, box(36, 3, 39, 6), "E-P1" if implicit else f"Lift {lv}", lv,
+                    "room" if implicit else "elevator")
+        office = area(base + 4, box(8, 3, 14, 8), f"Office {lv}", lv)
+        areas += [corr, st, lift, office]
+        passages += [passage(base + 10, base + 2, base + 1, (1, 3), (3, 3), f"S{lv}", lv),
+                     passage(base + 11, base + 3, base + 1, (37, 3), (38.5, 3), f"L{lv}", lv),
+                     passage(base + 12, base + 4, base + 1, (10, 3), (11, 3), f"O{lv}", lv)]
+    if not implicit:
+        passages += [passage(200, 2, 102, (1.5, 5), (2.5, 5), "Stair 1-2", "2"),
+                     passage(201, 3, 103, (37, 4.5), (38, 4.5), "Lift 1-2", "2")]
+    return areas, passages
+
+
+def test_cross_floor_route_uses_stairs_or_lift_and_avoid_stairs_detours():
+    areas, passages = two_floors()
+    rm = RouteMap.from_areas(areas, passages)
+    assert rm.level_list == ["1", "2"] and len(rm.vertical) == 2
+    res = rm.route("Office 1", "Office 2", robot_radius=0.3, vertical_cost=10)
+    assert "Stair 1-2" in res.passages and res.level_changes == 1
+    assert res.levels[0] == "1" and res.levels[-1] == "2"
+    assert res.z[0] == pytest.approx(3.0) and res.z[-1] == pytest.approx(6.0)
+    assert res.cost == pytest.approx(res.length + 10, abs=1e-6)
+    wheel = rm.route("Office 1", "Office 2", robot_radius=0.3, vertical_cost=10, avoid=["stairs"])
+    assert "Lift 1-2" in wheel.passages and "Stair 1-2" not in wheel.passages
+    assert "Lift 1" in wheel.areas and not any(a.startswith("Stair") for a in wheel.areas)
+    assert wheel.length > res.length + 30  # the lift is 27 m farther: there and back
+    check_astar_matches_dijkstra(rm, 0.3, vc=10)
+    check_astar_matches_dijkstra(rm, 0.3, vc=10, avoid=("stairs",))
+    # a goal inside a stair well is still reached when stairs are avoided: by lift, then in through its door
+    into = rm.route("Office 1", "Stair 2", robot_radius=0.3, vertical_cost=10, avoid=["stairs"])
+    assert "Lift 1-2" in into.passages and into.areas[-1] == "Stair 2" and "Stair 1" not in into.areas
+    # only stairs lead up: a wheelchair route does not exist, and the message says why
+    no_lift = [p for p in passages if p.name != "Lift 1-2"]
+    rm2 = RouteMap.from_areas(areas, no_lift)
+    with pytest.raises(RouteError, match="avoiding stairs.*level 1.*level 2"):
+        rm2.route("Office 1", "Office 2", avoid=["stairs"])
+
+
+def test_same_named_shafts_on_two_levels_are_linked_and_typed_by_name():
+    areas, passages = two_floors(implicit=True)
+    pr = RecordingProgress()
+    rm = RouteMap.from_areas(areas, passages, progress=pr)
+    assert infer_area_type("room", "E1-ST-09") == "stairs" and infer_area_type("room", "E2-P3") == "elevator"
+    assert infer_area_type("room", "Office 12") == "room" and infer_area_type("room", "E1a-F2-PF2") == "room"
+    assert len(rm.implicit) == 2 and "vertical links added between same-named" in pr.text()
+    res = rm.route("Office 1", "Office 2", robot_radius=0.3, avoid=["stairs"])
+    assert res.level_changes == 1 and res.areas.count("E-P1") == 2
+
+
+def test_points_need_a_level_when_floors_overlap_and_cancel_is_honoured():
+    areas, passages = two_floors()
+    rm = RouteMap.from_areas(areas, passages)
+    with pytest.raises(InputError, match="levels 1, 2; give its level"):
+        rm.route((20, 1.5), (11, 5), goal_level="2")
+    res = rm.route((20, 1.5), (11, 5), start_level="1", goal_level="2")
+    assert res.level_changes == 1
+    with pytest.raises(Canceled):
+        RouteMap.from_areas(areas, passages).graph(0.2, progress=RecordingProgress(cancel_after=1))
+
+
+# --------------------------------------------------------------------------- osmAG files
+def test_route_on_an_osmag_file_we_wrote(tmp_path):
+    from algorithms.georef import LocalFrame
+    from algorithms.osmag import write_osmag
+
+    areas, passages = two_rooms(1.0)
+    path = tmp_path / "two.osm"
+    write_osmag(str(path), areas, passages, frame=LocalFrame(121.59, 31.18), variant="fix-id")
+    rm = RouteMap.from_osmag(str(path))
+    lon, lat = rm.frame.to_wgs84(np.array([1.0, 9.0]), np.array([3.5, 0.5]))
+    s = rm.frame.from_wgs84(lon[0], lat[0])
+    g = rm.frame.from_wgs84(lon[1], lat[1])
+    res = rm.route((float(s[0]), float(s[1])), (float(g[0]), float(g[1])), robot_radius=0.3)
+    assert res.length == pytest.approx(math.hypot(8, 3), abs=0.01)
+    assert res.areas == ["West", "East"]
+
+
+@pytest.mark.slow
+def test_other_tools_campus_map(shared_data):
+    path = shared_data / "osmag" / "fix_id_ShanghaiTech_merge_2.osm"
+    pr = RecordingProgress()
+    rm = RouteMap.from_osmag(str(path), progress=pr)
+    text = pr.text()
+    assert "56 passages point at areas missing from the file ('out', 'out1')" in text
+    assert rm.level_list == ["1", "2"]
+    s = rm.summary(0.3)
+    assert s["implicit_links"] >= 5  # its stairs/lifts are repeated per floor by name
+    big = rm.components(0.3)[0]
+    assert len(big) >= 0.75 * len(rm.areas)
+    names = [rm.areas[k].name for k in big]
+    assert any(rm.levels[k] == "1" for k in big) and any(rm.levels[k] == "2" for k in big)
+    # two areas of the main part, far apart and on different levels
+    k1 = max((k for k in big if rm.levels[k] == "1"), key=lambda k: rm.areas[k].polygon.centroid.x)
+    k2 = min((k for k in big if rm.levels[k] == "2"), key=lambda k: rm.areas[k].polygon.centroid.x)
+    res = rm.route(rm.area_point(k1), rm.area_point(k2), "1", "2", robot_radius=0.3)
+    assert res.level_changes == 1 and res.length > 50 and names
+    straight = math.hypot(*(np.asarray(rm.area_point(k1)) - rm.area_point(k2)))
+    assert res.length >= straight - 1e-6
+    wheel = rm.route(rm.area_point(k1), rm.area_point(k2), "1", "2", robot_radius=0.3, avoid=["stairs"])
+    assert wheel.cost >= res.cost - 1e-6
+    assert not any(infer_area_type("room", a) == "stairs" for a in wheel.areas[1:-1])
+
+
+@pytest.mark.slow
+def test_sample_floor_routes_match_grid_astar(tmp_path):
+    """Our pipeline's map of the sample building's floor 1 against 8-connected grid A* on its raster
+    (string-pulled), the benchmark's comparison on a few pairs."""
+    import importlib.util
+
+    from algorithms.pipeline import process_floor
+    from algorithms.sample_building import generate_building
+    from tests.conftest import REPO
+
+    spec = importlib.util.spec_from_file_location("bench_route", REPO / "scripts" / "bench_route.py")
+    bench = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(bench)
+    sb = generate_building(str(tmp_path), floors=1, seed=0)
+    fl = process_floor(sb["dxf"][0], level="1")
+    rm = RouteMap.from_areas(fl.refined.areas, fl.refined.passages)
+    gf = bench.GridFloor(fl.grid, fl.refined.areas, 0.3)
+    pairs = bench.sample_pairs(gf, rm, 6, np.random.default_rng(3), min_dist=10.0)
+    assert len(pairs) == 6
+    for ps, pg, a, b in pairs:
+        res = rm.route(a, b, robot_radius=0.3)
+        path, g8 = gf.astar(ps, pg)
+        any_angle = gf.smooth(path)
+        assert res.length <= any_angle * 1.02
+        assert res.length >= math.hypot(a[0] - b[0], a[1] - b[1]) - 1e-6
+        assert res.length >= any_angle * 0.95  # not through walls: at most the raster's rounding shorter
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("name", ["semantic_tags_SIST_1.osm", "show_sist_merge_v1.osm", "show_sist_f1_v5.osm"])
+def test_other_tools_maps_load_and_route_or_explain(shared_data, name):
+    pr = RecordingProgress()
+    rm = RouteMap.from_osmag(str(shared_data / "osmag" / name), progress=pr)
+    comps = rm.components(0.3)
+    big = comps[0]
+    if len(big) < 2:  # show_sist_f1_v5 has no passage at all: every room is its own part
+        assert name == "show_sist_f1_v5.osm" and len(comps) == len(rm.areas)
+        with pytest.raises(RouteError, match=f"the map has {len(comps)} separate parts"):
+            rm.route(rm.area_point(0), rm.area_point(1), rm.levels[0], rm.levels[1])
+        return
+    far = max(((a, b) for a in big[:40] for b in big[:40]),
+              key=lambda ab: rm.areas[ab[0]].polygon.centroid.distance(rm.areas[ab[1]].polygon.centroid))
+    a, b = far
+    res = rm.route(rm.area_point(a), rm.area_point(b), rm.levels[a], rm.levels[b])
+    assert res.areas[0] == rm.areas[a].name and res.areas[-1] == rm.areas[b].name
+    assert res.length >= math.hypot(*(np.asarray(rm.area_point(a)) - rm.area_point(b))) - 1e-6
+    assert res.level_changes == (rm.levels[a] != rm.levels[b])
