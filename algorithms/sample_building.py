@@ -1174,3 +1174,93 @@ def generate_delivered(out_dir: str, seed: int = 0, level: int = 1, spaghetti: b
     _write_ground_truth(gt_path, plan, rooms, doors)
     return {"dxf": dxf_path, "ground_truth": gt_path, "rooms": len(rooms), "doors": len(doors),
             "names": [r.name for r, _ in rooms], **info}
+
+# --------------------------------------------------------------------------- open facades (issue 8, item 5)
+OPEN_FACADE_WALL = 0.3  # metres
+
+
+def open_facade_plan(hall_width: float = 10.0, pillar_pitch: float = 5.0):
+    """The layout of ``generate_open_facade`` in metres: ``(walls, rooms, doors, labels)``.
+
+    Two wings of two rooms each (x 0..12 and x 12+w..24+w, y 0..12) flank an entrance hall
+    ("HALL DISTRIBUZIONE", ``hall_width`` wide, 12 m deep) that is open to the street on its whole
+    south side; behind them runs a 3 m portico corridor ("CORRIDOIO DI DISTRIBUZIONE") whose north
+    side is closed only by pillars every ``pillar_pitch`` m (and a dash-dot line in the drawing).
+    Every room has a door to the hall or the corridor, the hall one to the corridor: one connected
+    floor. ``walls``: shapely geometry of every wall and pillar; ``rooms``: name -> free polygon
+    (door openings belong to neither side); ``doors``: list of (name_a, name_b, LineString jamb to
+    jamb on the wall midline); ``labels``: name -> (x, y) of its text.
+    """
+    t = OPEN_FACADE_WALL
+    w = float(hall_width)
+    xe0, xe1 = 12.0 + w, 24.0 + w  # east wing
+    X1 = xe1
+    segs = []  # wall midlines (x0, y0, x1, y1)
+    segs += [(0, 0, 12, 0), (0, 0, 0, 15), (12, 0, 12, 12),  # west wing: south, west (up to the portico), east
+             (xe0, 0, X1, 0), (X1, 0, X1, 15), (xe0, 0, xe0, 12),  # east wing
+             (0, 12, X1, 12),  # the corridor's south wall (wings' and hall's north wall)
+             (0, 6, 12, 6), (xe0, 6, X1, 6)]  # partitions between the two rooms of each wing
+    walls = unary_union([LineString([(a, b), (c, d)]).buffer(t / 2.0, cap_style=3) for a, b, c, d in segs])
+    doors = [("W1", "HALL DISTRIBUZIONE", LineString([(12, 2.0), (12, 3.0)])),
+             ("E1", "HALL DISTRIBUZIONE", LineString([(xe0, 2.0), (xe0, 3.0)])),
+             ("W1", "W2", LineString([(8.0, 6), (9.0, 6)])),
+             ("E1", "E2", LineString([(xe0 + 3.0, 6), (xe0 + 4.0, 6)])),
+             ("W2", "CORRIDOIO DI DISTRIBUZIONE", LineString([(4.0, 12), (5.0, 12)])),
+             ("E2", "CORRIDOIO DI DISTRIBUZIONE", LineString([(X1 - 5.0, 12), (X1 - 4.0, 12)])),
+             ("HALL DISTRIBUZIONE", "CORRIDOIO DI DISTRIBUZIONE",
+              LineString([(12 + w / 2 - 1.0, 12), (12 + w / 2 + 1.0, 12)]))]
+    walls = walls.difference(unary_union([d.buffer(t, cap_style=2) for _, _, d in doors]))
+    # pillars of the portico (0.4 m squares) on its open north side, y = 15
+    n = max(1, int(round(X1 / pillar_pitch)))
+    pillars = [box(X1 * k / n - 0.2, 14.8, X1 * k / n + 0.2, 15.2) for k in range(1, n)]
+    walls = unary_union([walls] + pillars)
+    rooms = {"W1": box(t / 2, t / 2, 12 - t / 2, 6 - t / 2), "W2": box(t / 2, 6 + t / 2, 12 - t / 2, 12 - t / 2),
+             "E1": box(xe0 + t / 2, t / 2, X1 - t / 2, 6 - t / 2),
+             "E2": box(xe0 + t / 2, 6 + t / 2, X1 - t / 2, 12 - t / 2),
+             "HALL DISTRIBUZIONE": box(12 + t / 2, 0.0, xe0 - t / 2, 12 - t / 2),
+             "CORRIDOIO DI DISTRIBUZIONE": box(t / 2, 12 + t / 2, X1 - t / 2, 15.0)}
+    rooms = {k: v.difference(walls) for k, v in rooms.items()}
+    labels = {"W1": (6.0, 3.0), "W2": (6.0, 9.0), "E1": (xe0 + 6.0, 3.0), "E2": (xe0 + 6.0, 9.0),
+              "HALL DISTRIBUZIONE": (12 + w / 2, 6.0), "CORRIDOIO DI DISTRIBUZIONE": (X1 / 2 + 2.5, 13.6)}
+    return walls, rooms, doors, labels
+
+
+def generate_open_facade(out_dir: str, name: str = "open-facade", hall_width: float = 10.0,
+                         pillar_pitch: float = 5.0) -> dict:
+    """Write ``<out_dir>/<name>.dxf`` (metres, ``$INSUNITS`` = 6) of ``open_facade_plan``: walls and
+    pillars as solid hatches with their outlines on ``A-WALL``, the portico's closing line as a
+    DASHDOT line on ``A-ANNO-PROJ`` (a projection, not a wall), room names as TEXT on
+    ``A-ANNO-TEXT``, a title far outside. Returns ``{"dxf", "rooms" (name -> Polygon), "doors",
+    "labels"}``."""
+    import ezdxf
+
+    walls, rooms, doors, labels = open_facade_plan(hall_width, pillar_pitch)
+    os.makedirs(os.path.abspath(out_dir), exist_ok=True)
+    doc = ezdxf.new("R2018", setup=["linetypes"])
+    doc.ezdxf_metadata()["CREATED_BY_EZDXF"] = f"{ezdxf.__version__} @ cad2osmag open facade sample"
+    doc.header["$INSUNITS"] = 6
+    doc.layers.add("A-WALL", color=7)
+    doc.layers.add("A-ANNO-PROJ", color=8, linetype="DASHDOT")
+    doc.layers.add("A-ANNO-TEXT", color=2)
+    doc.layers.add("A-ANNO-TITL", color=2)
+    msp = doc.modelspace()
+    for poly in _pieces_m(walls):
+        _add_solid_hatch(msp, poly, "A-WALL")
+        msp.add_lwpolyline(list(poly.exterior.coords)[:-1], close=True, dxfattribs={"layer": "A-WALL"})
+    x1 = max(b.bounds[2] for b in rooms.values())
+    msp.add_line((0, 15.0), (x1, 15.0), dxfattribs={"layer": "A-ANNO-PROJ", "linetype": "DASHDOT"})
+    for text, (x, y) in labels.items():
+        msp.add_text(text, height=0.3, dxfattribs={"layer": "A-ANNO-TEXT"}).set_placement(
+            (x, y), align=ezdxf.enums.TextEntityAlignment.MIDDLE_CENTER)
+    msp.add_text("Open facade sample, scale 1:100", height=0.5,
+                 dxfattribs={"layer": "A-ANNO-TITL"}).set_placement((0.0, -6.0))
+    path = os.path.join(os.path.abspath(out_dir), f"{name}.dxf")
+    _save_deterministic(doc, path)
+    return {"dxf": path, "rooms": rooms, "doors": doors, "labels": labels}
+
+
+def _pieces_m(geom) -> List[Polygon]:
+    """Polygon pieces of a geometry in metres, in a stable order."""
+    geoms = list(geom.geoms) if hasattr(geom, "geoms") else [geom]
+    geoms = [g for g in geoms if g.area > 1e-6]
+    return sorted(geoms, key=lambda g: (round(g.bounds[0], 3), round(g.bounds[1], 3), round(g.area, 3)))

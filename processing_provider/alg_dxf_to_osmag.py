@@ -37,7 +37,8 @@ class DxfToOsmagAlgorithm(Cad2OsmagAlgorithm):
             "structural layers of the drawing are kept (walls, columns, "
             "glazing, stairs), rasterized, segmented into an Area Graph of rooms, corridors and the passages "
             "between them, refined (simplified polygons with shared borders) and written as an osmAG file "
-            "anchored on the Earth. ANCHOR is the position of the drawing origin (pick it on a basemap), "
+            "anchored on the Earth. With NAMES (on by default) the drawing's texts name, number and type the areas "
+            "(see 'Assign room names and types from texts'; NAME_RULES adapts the rules). ANCHOR is the position of the drawing origin (pick it on a basemap), "
             "ROTATION the direction of the drawing's +y axis in degrees clockwise from north. Each step is "
             "also available as its own algorithm for finer control.")
 
@@ -57,6 +58,10 @@ class DxfToOsmagAlgorithm(Cad2OsmagAlgorithm):
         self.addParameter(QgsProcessingParameterBoolean("INCLUDE_DOORS",
                                                         self.tr("Close doorways (rasterize door layers)"), False))
         add_plan_parameters(self)  # PLAN / PLAN_EXTENT: which plan of a whole sheet (cad_sheet)
+        self.addParameter(QgsProcessingParameterBoolean(
+            "NAMES", self.tr("Room names, numbers and types from the drawing's texts"), True))
+        self.addParameter(QgsProcessingParameterFile("NAME_RULES", self.tr("Name rules (JSON, optional)"),
+                                                     extension="json", optional=True))
         self.addParameter(QgsProcessingParameterString("LEVEL", self.tr("Level"), "1"))
         self.addParameter(QgsProcessingParameterNumber("HEIGHT", self.tr("Floor height (m)"),
                                                        QgsProcessingParameterNumber.Type.Double, 3.2, False, 0.1, 100))
@@ -113,6 +118,8 @@ class DxfToOsmagAlgorithm(Cad2OsmagAlgorithm):
             anchor_lon=lon, anchor_lat=lat,
             rotation_deg=self.parameterAsDouble(parameters, "ROTATION", context),
             variant=VARIANTS[self.parameterAsEnum(parameters, "VARIANT", context)],
+            names=self.parameterAsBool(parameters, "NAMES", context),
+            name_rules=self.parameterAsFile(parameters, "NAME_RULES", context) or None,
         )
         # the written file, as styled layers in WGS84 (GUI runs load them into the project)
         adest = pdest = None

@@ -24,7 +24,7 @@ from ..algorithms import cad_import
 from ..algorithms.cad_sheet import describe_plans
 from ..algorithms.layer_rules import load_rules
 from ..algorithms.rasterize import LOCAL_FRAME_WKT
-from .base import Cad2OsmagAlgorithm, FIELD_BOOL, FIELD_DOUBLE, FIELD_INT, FIELD_STRING, make_fields
+from .base import Cad2OsmagAlgorithm, FIELD_BOOL, FIELD_DOUBLE, FIELD_INT, FIELD_LONG, FIELD_STRING, make_fields
 
 UNIT_OPTIONS = ["", "mm", "cm", "m", "inch", "feet"]
 
@@ -44,7 +44,7 @@ def wall_fields():
 def text_fields():
     return make_fields(("text", FIELD_STRING), ("height", FIELD_DOUBLE), ("rotation", FIELD_DOUBLE),
                        ("layer", FIELD_STRING), ("entity", FIELD_STRING), ("block", FIELD_STRING),
-                       ("tag", FIELD_STRING), ("text_id", FIELD_INT))
+                       ("tag", FIELD_STRING), ("id", FIELD_LONG))
 
 
 def door_fields():
@@ -119,7 +119,7 @@ class ExtractStructureAlgorithm(Cad2OsmagAlgorithm):
             "Outputs, in metres in the drawing's own frame (a local engineering CRS, not georeferenced): "
             "WALLS (lines with fields layer, kind, entity, closed, filled, width; 'Rasterize structure' "
             "rebuilds the geometry from them; block, class), TEXTS (points with text, height, rotation, layer, "
-            "entity, block, tag = ATTRIB tag, text_id) and DOORS (doorway lines with source and width).")
+            "entity, block, tag = ATTRIB tag, id; 'Assign room names and types from texts' reads them) and DOORS (doorway lines with source and width).")
 
     INPUT = "INPUT"
     LAYER_RULES = "LAYER_RULES"
@@ -187,10 +187,12 @@ class ExtractStructureAlgorithm(Cad2OsmagAlgorithm):
                 return {}
         tf = text_fields()
         texts = []
-        for t in drawing.texts:
+        for k, t in enumerate(drawing.texts):
             f = QgsFeature(tf)
             f.setGeometry(QgsGeometry.fromPointXY(QgsPointXY(t.x, t.y)))
-            f.setAttributes([t.text, float(t.height), float(t.rotation), t.layer, t.entity, t.block, t.tag, int(t.id)])
+            # block, tag and id feed cad2osmag:assignnames (room tags, the ids listed in label_texts)
+            f.setAttributes([t.text, float(t.height), float(t.rotation), t.layer, t.entity, t.block or "",
+                             t.tag or "", int(t.id) if t.id is not None and t.id >= 0 else k])
             texts.append(f)
         df = door_fields()
         doors = []
