@@ -19,7 +19,10 @@ side by side. ``find_plans`` works on the imported structural geometry (metres, 
    15 % of the largest wall mass is a detail when it is less than a third of the largest extent, and
    ``other`` when larger (site outlines, glazing diagrams); a group under ``MIN_WALL`` metres of geometry
    or ``MIN_SIZE`` metres across is ``other`` (stray symbols, north arrows, scale bars). Islands inside a
-   larger group's box (free-standing columns in a hall) belong to it unless titled as a detail.
+   larger group's box (free-standing columns in a hall) belong to it unless titled as a detail; an
+   untitled group with less than half of the main plan's wall mass within 15 m (3 gaps) of it is a wing of
+   that plan (across a courtyard or an open hall) and joins it. Halves of a floor, of comparable wall mass,
+   stay apart.
 4. **Selection**: the plan with the largest wall mass is index 0 and is taken by default; the others
    follow by decreasing wall mass. ``plan`` picks another (an index, or an extent
    ``(xmin, ymin, xmax, ymax)`` in metres of the CAD frame). A sheet whose groups are all details, or
@@ -45,6 +48,8 @@ FRAME_FREE_SHARE = 0.85  # ...along this share of its length
 FRAME_ENCLOSED = 0.5  # share of the other geometry a frame encloses
 FRAME_FILLED = 0.1  # share of the frame's box the enclosed geometry spans at least
 DETAIL_WALL_SHARE = 0.15  # of the largest group's wall mass
+WING_SHARE = 0.5  # an untitled group with less wall than this share of the main plan...
+WING_GAP = 3.0  # ...within this many gaps of it is a wing of that plan (halves of a floor are comparable)
 DETAIL_SIZE_SHARE = 1.0 / 3.0  # of the largest group's extent (diagonal)
 MIN_WALL = 8.0  # metres of geometry: smaller groups are stray symbols
 MIN_SIZE = 3.0  # metres across
@@ -309,6 +314,15 @@ def find_plans(geoms: Sequence[CadGeometry], texts: Sequence[CadText], rules: La
     tk = _title_kinds(texts, rules)
     titles = [_title_of(tuple(ext[k]), tk, rules) for k in range(ncomp)]
     parent = np.arange(ncomp)
+    biggest0 = float(mass.max())
+    trees = {}
+
+    def near(k, b, dist):
+        if b not in trees:
+            trees[b] = cKDTree(allp[plab == b])
+        d, _ = trees[b].query(allp[plab == k], distance_upper_bound=dist)
+        return bool(np.isfinite(d).any())
+
     for k in np.argsort(-mass):
         if titles[k][1] in ("detail", "legend"):
             continue
@@ -316,6 +330,10 @@ def find_plans(geoms: Sequence[CadGeometry], texts: Sequence[CadText], rules: La
             if b == k or mass[b] <= mass[k] or parent[b] != b:
                 continue
             if ext[k, 0] >= ext[b, 0] and ext[k, 1] >= ext[b, 1] and ext[k, 2] <= ext[b, 2] and ext[k, 3] <= ext[b, 3]:
+                parent[k] = b
+                break
+            # a wing: much less wall than a main plan close by (a courtyard or an open hall between)
+            if not titles[k][1] and mass[k] < WING_SHARE * biggest0 <= mass[b] and near(k, b, WING_GAP * gap):
                 parent[k] = b
                 break
     if (parent != np.arange(ncomp)).any():

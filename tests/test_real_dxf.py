@@ -61,7 +61,10 @@ def test_archweb_rasters_show_the_building(archweb):
         xmin, ymin, xmax, ymax = g.extent
         size = max(xmax - xmin, ymax - ymin)
         assert 0.02 <= occ <= 0.40, (name, occ)
-        assert share >= 0.70, (name, share)  # free space is one large connected component
+        # free space is one large connected component. (Since whole sheets keep only their main plan, the
+        # kindergarten's raster no longer holds the second level and the sections, whose surroundings added
+        # outside space to that component: 0.65 there.)
+        assert share >= 0.60, (name, share)
         assert 5.0 <= size <= 500.0, (name, size)
         assert g.data.size <= 60e6
 

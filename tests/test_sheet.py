@@ -193,6 +193,19 @@ def test_two_halves_side_by_side_stay_two_plans(tmp_path):
     assert all(g.coords[:, 0].min() >= 39 for g in d1.geometries)
 
 
+def test_a_wing_across_a_courtyard_stays_with_its_plan(tmp_path):
+    """A small untitled group 10 m from a much larger plan (the cleaned SIST floors' north wing) is a wing
+    of that plan, not another plan."""
+    doc2 = _doc()
+    m2 = doc2.modelspace()
+    _building(m2, 0, w=60, h=30)
+    _box(m2, 0, 40, 24, 48)  # a 24 x 8 m wing 10 m north of it
+    m2.add_line((12, 40), (12, 48))
+    d0 = import_dxf(_save(doc2, tmp_path, "wing.dxf"))
+    assert len([p for p in d0.plans if p.kind == "plan"]) == 1
+    assert max(np.nanmax(g.coords[:, 1]) for g in d0.geometries) >= 47.9
+
+
 def test_free_standing_columns_in_a_hall_stay_with_the_plan(tmp_path):
     doc = _doc()
     msp = doc.modelspace()

@@ -81,9 +81,10 @@ SHEETS = {
     "sist-original/SIST-F3.dwg": (1, (160, 185), (125, 145)),  # 171 x 136
     "sist-original/SIST-F4.dwg": (1, (160, 185), (125, 145)),  # 171 x 135
     "sist-original/SIST-F5.dwg": (1, (160, 185), (130, 150)),  # 171 x 142
-    "library/A-A3-10-04.dwg": (1, (85, 105), (78, 95)),  # 95 x 87; the clover-shaped pavilion below: a detail
-    "library/A-A3-10-05.dwg": (1, (85, 105), (78, 95)),
-    "library/A-A3-10-06.dwg": (1, (85, 105), (72, 90)),  # 95 x 80
+    # 95 x 114: the clover-shaped pavilion just below the building (10 % of its walls) joins it as a wing
+    "library/A-A3-10-04.dwg": (1, (85, 105), (105, 125)),
+    "library/A-A3-10-05.dwg": (1, (85, 105), (105, 125)),
+    "library/A-A3-10-06.dwg": (1, (85, 105), (85, 100)),  # 95 x 92
 }
 
 
