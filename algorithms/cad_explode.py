@@ -256,12 +256,34 @@ def _transform_pieces(src: _Pieces, A: np.ndarray, t: np.ndarray, layer: str, ds
 _MTEXT_FALLBACK = re.compile(r"\\[A-Za-z][^;\\{}]*;|\\[PpNn~]|[{}]")
 
 
+# DXF R2000/R2004 (and older) store characters outside the file's code page as escapes that ezdxf
+# leaves in the text: \U+697C (Unicode) and \M+n8C9E (a double-byte character of an Asian code page n).
+_UNICODE_ESCAPE = re.compile(r"\\U\+([0-9A-Fa-f]{4})")
+_MIF_ESCAPE = re.compile(r"\\M\+([1-5])([0-9A-Fa-f]{4})")
+_MIF_CODEPAGES = {"1": "cp932", "2": "cp950", "3": "cp949", "4": "johab", "5": "gbk"}
+
+
+def _mif_char(m) -> str:
+    try:
+        return bytes.fromhex(m.group(2)).decode(_MIF_CODEPAGES[m.group(1)])
+    except (UnicodeDecodeError, LookupError, ValueError):
+        return m.group(0)
+
+
+def decode_escapes(txt: str) -> str:
+    """Text with DXF \\U+XXXX and \\M+nXXXX escapes turned into the characters they stand for."""
+    if "\\" not in txt:
+        return txt
+    txt = _UNICODE_ESCAPE.sub(lambda m: chr(int(m.group(1), 16)), txt)
+    return _MIF_ESCAPE.sub(_mif_char, txt)
+
+
 def _mtext_plain(e) -> str:
     try:
         txt = e.plain_text()
     except Exception:
         txt = _MTEXT_FALLBACK.sub(" ", e.text)
-    return " ".join(str(txt).split())
+    return " ".join(decode_escapes(str(txt)).split())
 
 
 def _text_plain(e) -> str:
@@ -269,7 +291,7 @@ def _text_plain(e) -> str:
         txt = e.plain_text()
     except Exception:
         txt = e.dxf.text
-    return " ".join(str(txt).split())
+    return " ".join(decode_escapes(str(txt)).split())
 
 
 # ------------------------------------------------------------------------------------------ exploder

@@ -619,3 +619,25 @@ def test_inspect_reports_each_warning_once(tmp_path):
     warned = [m for kind, m in rec.messages if kind == "warning"]
     assert any("no layer name matched a wall keyword" in m for m in warned)
     assert sorted(warned) == sorted(set(warned)) == sorted(drawing.repairs + drawing.warnings)
+
+
+def test_unicode_escapes_of_old_dxf_versions_are_decoded(tmp_path):
+    """DXF R2000/R2004 store CJK text as \\U+XXXX (and \\M+nXXXX) escapes; room names must come out as text."""
+    import ezdxf
+
+    from algorithms import cad_import
+    from algorithms.cad_explode import decode_escapes
+
+    assert decode_escapes(r"E1-ST-03 \U+697c\U+68af") == "E1-ST-03 楼梯"
+    assert decode_escapes(r"\M+5C2A5") == "楼"  # code page 5 = GBK
+    assert decode_escapes(r"a\M+9FFFFb") == r"a\M+9FFFFb"  # unknown code page: left as is
+    doc = ezdxf.new("R2000")
+    msp = doc.modelspace()
+    msp.add_lwpolyline([(0, 0), (10000, 0), (10000, 8000), (0, 8000)], close=True, dxfattribs={"layer": "A-WALL"})
+    msp.add_text("E1-ST-03 楼梯", dxfattribs={"layer": "A-ANNO"}).set_placement((2000, 2000))
+    msp.add_mtext("房间\\P101", dxfattribs={"layer": "A-ANNO"}).set_location((5000, 5000))
+    path = tmp_path / "r2000.dxf"
+    doc.saveas(path)
+    assert b"\\U+" in path.read_bytes()
+    texts = sorted(t.text for t in cad_import.import_dxf(str(path)).texts)
+    assert texts == ["E1-ST-03 楼梯", "房间 101"]
