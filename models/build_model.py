@@ -1,6 +1,6 @@
 """Builds models/cad_to_osmag.model3, the graphical model that chains the individual algorithms:
 
-    extractstructure -> rasterize -> segment (typing stairs/lifts from the structure) -> refine
+    extractstructure -> rasterize -> segment (typing stairs/lifts from the structure) -> refine -> assignnames
     -> georeference (anchor + rotation + scale) -> exportosmag
 
 Run from the repository root (it registers the provider headless and writes the file):
@@ -103,19 +103,25 @@ def build():
     v = Src.fromStaticValue
     child("extract", "cad2osmag:extractstructure", "Extract structure", (420, 60),
           {"INPUT": p("DXF"), "UNITS": v(0), "INCLUDE_DOORS": v(False),
-           "WALLS": v("TEMPORARY_OUTPUT"), "TEXTS": v("TEMPORARY_OUTPUT")})
+           "WALLS": v("TEMPORARY_OUTPUT"), "TEXTS": v("TEMPORARY_OUTPUT"), "DOORS": v("TEMPORARY_OUTPUT")})
     child("rasterize", "cad2osmag:rasterize", "Rasterize", (420, 160),
-          {"WALLS": o("extract", "WALLS"), "RESOLUTION": p("RESOLUTION"), "OCCUPANCY": v("TEMPORARY_OUTPUT")})
+          {"WALLS": o("extract", "WALLS"), "DOORS": o("extract", "DOORS"), "RESOLUTION": p("RESOLUTION"),
+           "OCCUPANCY": v("TEMPORARY_OUTPUT")})
     child("segment", "cad2osmag:segment", "Segment (Area Graph)", (420, 260),
           {"INPUT": o("rasterize", "OCCUPANCY"), "DOOR_WIDTH": p("DOOR_WIDTH"),
            "CORRIDOR_WIDTH": p("CORRIDOR_WIDTH"), "STRUCTURE": o("extract", "WALLS"),
+           "TEXTS": o("extract", "TEXTS"), "DOORS": o("extract", "DOORS"),
            "AREAS": v("TEMPORARY_OUTPUT"), "PASSAGES": v("TEMPORARY_OUTPUT"), "LABELS": v("TEMPORARY_OUTPUT")})
     child("refine", "cad2osmag:refine", "Refine areas", (420, 360),
           {"AREAS": o("segment", "AREAS"), "PASSAGES": o("segment", "PASSAGES"), "RESOLUTION": p("RESOLUTION"),
            "MIN_AREA": p("MIN_AREA"), "OUTPUT_AREAS": v("TEMPORARY_OUTPUT"),
            "OUTPUT_PASSAGES": v("TEMPORARY_OUTPUT")})
+    child("names", "cad2osmag:assignnames", "Room names and types", (420, 410),
+          {"AREAS": o("refine", "OUTPUT_AREAS"), "TEXTS": o("extract", "TEXTS"),
+           "PASSAGES": o("refine", "OUTPUT_PASSAGES"), "LEVEL": p("LEVEL"),
+           "OUTPUT_AREAS": v("TEMPORARY_OUTPUT"), "OUTPUT_PASSAGES": v("TEMPORARY_OUTPUT")})
     child("georef", "cad2osmag:georeference", "Georeference", (420, 460),
-          {"AREAS": o("refine", "OUTPUT_AREAS"), "PASSAGES": o("refine", "OUTPUT_PASSAGES"), "MODE": v(0),
+          {"AREAS": o("names", "OUTPUT_AREAS"), "PASSAGES": o("names", "OUTPUT_PASSAGES"), "MODE": v(0),
            "ANCHOR": p("ANCHOR"), "ROTATION": p("ROTATION"), "SCALE": p("SCALE"), "CAD_ANCHOR_X": v(0.0),
            "CAD_ANCHOR_Y": v(0.0), "TARGET_CRS": v("EPSG:4326")},
           outputs=[("OUTPUT_AREAS", "Areas", "osmAG areas (WGS84)"),

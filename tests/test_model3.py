@@ -14,7 +14,7 @@ from .conftest import REPO, plugin_package
 MODEL = REPO / "models" / "cad_to_osmag.model3"
 ANCHOR = (121.5906, 31.1790)
 CHAIN = ["cad2osmag:extractstructure", "cad2osmag:rasterize", "cad2osmag:segment", "cad2osmag:refine",
-         "cad2osmag:georeference", "cad2osmag:exportosmag"]
+         "cad2osmag:assignnames", "cad2osmag:georeference", "cad2osmag:exportosmag"]
 
 
 def test_model_file_chains_the_stages_in_order(qgis_app):
@@ -32,7 +32,8 @@ def test_model_file_chains_the_stages_in_order(qgis_app):
     assert deps["rasterize"] == {"extract"}
     assert deps["segment"] == {"rasterize", "extract"}
     assert deps["refine"] == {"segment"}
-    assert deps["georef"] == {"refine"}
+    assert deps["names"] == {"refine", "extract"}
+    assert deps["georef"] == {"names"}
     assert deps["export"] == {"georef"}
     names = {p.name() for p in model.parameterDefinitions()}
     assert {"DXF", "ANCHOR", "ROTATION", "SCALE", "LEVEL", "RESOLUTION", "DOOR_WIDTH", "CORRIDOR_WIDTH",
@@ -85,6 +86,9 @@ def test_model_runs_headless_on_the_sample_building(sample, tmp_path):
     kinds = {a.type for a in areas}
     assert {"room", "corridor", "stairs", "elevator"} <= kinds
     assert len(areas) >= 15 and len(passages) >= 15
+    # room names from the drawing's texts (assignnames), not generated ids
+    named = {a.name for a in areas if a.name and not a.name.startswith(("L1-", "1-"))}
+    assert len(named) >= 10, sorted(a.name for a in areas)
     # placed with the rotation: the building's long side (CAD x) points 30 degrees clockwise from east
     import math
 
