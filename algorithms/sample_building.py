@@ -1201,12 +1201,12 @@ def open_facade_plan(hall_width: float = 10.0, pillar_pitch: float = 5.0):
              (0, 12, X1, 12),  # the corridor's south wall (wings' and hall's north wall)
              (0, 6, 12, 6), (xe0, 6, X1, 6)]  # partitions between the two rooms of each wing
     walls = unary_union([LineString([(a, b), (c, d)]).buffer(t / 2.0, cap_style=3) for a, b, c, d in segs])
-    doors = [("W1", "HALL DISTRIBUZIONE", LineString([(12, 2.0), (12, 3.0)])),
-             ("E1", "HALL DISTRIBUZIONE", LineString([(xe0, 2.0), (xe0, 3.0)])),
-             ("W1", "W2", LineString([(8.0, 6), (9.0, 6)])),
-             ("E1", "E2", LineString([(xe0 + 3.0, 6), (xe0 + 4.0, 6)])),
-             ("W2", "CORRIDOIO DI DISTRIBUZIONE", LineString([(4.0, 12), (5.0, 12)])),
-             ("E2", "CORRIDOIO DI DISTRIBUZIONE", LineString([(X1 - 5.0, 12), (X1 - 4.0, 12)])),
+    doors = [("AULA 1", "HALL DISTRIBUZIONE", LineString([(12, 2.0), (12, 3.0)])),
+             ("UFFICIO 1", "HALL DISTRIBUZIONE", LineString([(xe0, 2.0), (xe0, 3.0)])),
+             ("AULA 1", "AULA 2", LineString([(8.0, 6), (9.0, 6)])),
+             ("UFFICIO 1", "UFFICIO 2", LineString([(xe0 + 3.0, 6), (xe0 + 4.0, 6)])),
+             ("AULA 2", "CORRIDOIO DI DISTRIBUZIONE", LineString([(4.0, 12), (5.0, 12)])),
+             ("UFFICIO 2", "CORRIDOIO DI DISTRIBUZIONE", LineString([(X1 - 5.0, 12), (X1 - 4.0, 12)])),
              ("HALL DISTRIBUZIONE", "CORRIDOIO DI DISTRIBUZIONE",
               LineString([(12 + w / 2 - 1.0, 12), (12 + w / 2 + 1.0, 12)]))]
     walls = walls.difference(unary_union([d.buffer(t, cap_style=2) for _, _, d in doors]))
@@ -1214,13 +1214,13 @@ def open_facade_plan(hall_width: float = 10.0, pillar_pitch: float = 5.0):
     n = max(1, int(round(X1 / pillar_pitch)))
     pillars = [box(X1 * k / n - 0.2, 14.8, X1 * k / n + 0.2, 15.2) for k in range(1, n)]
     walls = unary_union([walls] + pillars)
-    rooms = {"W1": box(t / 2, t / 2, 12 - t / 2, 6 - t / 2), "W2": box(t / 2, 6 + t / 2, 12 - t / 2, 12 - t / 2),
-             "E1": box(xe0 + t / 2, t / 2, X1 - t / 2, 6 - t / 2),
-             "E2": box(xe0 + t / 2, 6 + t / 2, X1 - t / 2, 12 - t / 2),
+    rooms = {"AULA 1": box(t / 2, t / 2, 12 - t / 2, 6 - t / 2), "AULA 2": box(t / 2, 6 + t / 2, 12 - t / 2, 12 - t / 2),
+             "UFFICIO 1": box(xe0 + t / 2, t / 2, X1 - t / 2, 6 - t / 2),
+             "UFFICIO 2": box(xe0 + t / 2, 6 + t / 2, X1 - t / 2, 12 - t / 2),
              "HALL DISTRIBUZIONE": box(12 + t / 2, 0.0, xe0 - t / 2, 12 - t / 2),
              "CORRIDOIO DI DISTRIBUZIONE": box(t / 2, 12 + t / 2, X1 - t / 2, 15.0)}
     rooms = {k: v.difference(walls) for k, v in rooms.items()}
-    labels = {"W1": (6.0, 3.0), "W2": (6.0, 9.0), "E1": (xe0 + 6.0, 3.0), "E2": (xe0 + 6.0, 9.0),
+    labels = {"AULA 1": (6.0, 3.0), "AULA 2": (6.0, 9.0), "UFFICIO 1": (xe0 + 6.0, 3.0), "UFFICIO 2": (xe0 + 6.0, 9.0),
               "HALL DISTRIBUZIONE": (12 + w / 2, 6.0), "CORRIDOIO DI DISTRIBUZIONE": (X1 / 2 + 2.5, 13.6)}
     return walls, rooms, doors, labels
 
