@@ -54,6 +54,7 @@ def classify_vertical_areas(areas: Sequence[Area], geometries: Sequence[CadGeome
     with ``shapes``, on areas holding a stair run or a lift cross drawn on any layer. Returns {id: type}."""
     density = dict(DENSITY, **(density or {}))
     changed: Dict[int, str] = {}
+    runs = None
     for kind, area_type in KIND_TO_TYPE.items():
         lines = _lines(geometries, kind)
         if not lines:
@@ -67,11 +68,30 @@ def classify_vertical_areas(areas: Sequence[Area], geometries: Sequence[CadGeome
                 continue
             inside = MultiLineString([lines[i] for i in hits]).intersection(a.polygon).length
             if inside / a.polygon.area >= density[area_type]:
-                a.type = area_type
-                changed[a.id] = area_type
+                typ = area_type
+                if area_type == "elevator":
+                    # one layer for stairs, lifts and railings ('A—楼梯、电梯、栏杆') is read as a lift layer:
+                    # an area of it holding a stair run (treads) is a stair
+                    if runs is None:
+                        runs = find_stair_runs([g for g in geometries if g.kind in ("stair", "elevator")])
+                    if _holds_run(a.polygon, runs):
+                        typ = "stairs"
+                a.type = typ
+                changed[a.id] = typ
     if shapes:
         changed.update(classify_by_symbol_shapes(areas, geometries))
     return changed
+
+
+def _holds_run(poly, runs) -> bool:
+    """``poly`` holds most of one of the stair ``runs`` and that run is a real part of it."""
+    for run in runs:
+        if not run.intersects(poly):
+            continue
+        ov = poly.intersection(run).area
+        if ov >= 0.5 * run.area and ov >= 0.15 * poly.area:
+            return True
+    return False
 
 
 def _segments(geometries: Sequence[CadGeometry]) -> np.ndarray:
