@@ -313,9 +313,12 @@ def anchor_name(a: Area) -> str:
         code = shaft_code(text)
         if code:
             return code
-    if re.fullmatch(r"L-?[\d.]+-[ASP]\d+", a.name or ""):
+    name = (a.name or "").strip()
+    # generated names ('L3-A012' of the writer, '4-25' of stage 5) and bare numbers ('1536') differ from floor
+    # to floor by construction: the anchor is anonymous and matched by position and shape
+    if re.fullmatch(r"L-?[\d.]+-[ASP]\d+", name) or not re.search(r"[^\W\d_]", name):
         return ""
-    return (a.name or "").strip()
+    return name
 
 
 def _reconcile_shaft_kinds(floors, warn) -> Dict[str, str]:

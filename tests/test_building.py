@@ -385,8 +385,8 @@ def test_anchor_name_prefers_the_shaft_code_in_ref_and_matches_across_spellings(
     a = Area(id=1, polygon=sq, type="stairs", name="走道", tags={"ref": "E1-ST-03"})
     b = Area(id=2, polygon=sq, type="stairs", name="E1 ST-03")
     lobby = Area(id=3, polygon=sq, type="elevator", name="电梯厅 E2-P1")
-    gen = Area(id=4, polygon=sq, type="stairs", name="L3-A12")
-    assert [building.anchor_name(x) for x in (a, b, lobby, gen)] == ["E1-ST-03", "E1-ST-03", "E2-P1", ""]
+    gen = [Area(id=4, polygon=sq, type="stairs", name=n) for n in ("L3-A012", "4-25", "4-25-2", "1536")]
+    assert [building.anchor_name(x) for x in [a, b, lobby] + gen] == ["E1-ST-03", "E1-ST-03", "E2-P1", "", "", "", ""]
     A = Anchor(0, "stairs", "E1-ST-03", np.zeros(2), 15.0, sq)
     B = Anchor(0, "stairs", "E1 ST 03", np.zeros(2), 15.0, sq)
     C = Anchor(0, "stairs", "E1-ST-04", np.zeros(2), 15.0, sq)

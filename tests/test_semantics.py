@@ -36,7 +36,7 @@ IGNORED = [("", "empty"), ("   ", "empty"), ("\x00\x07\u200f", "empty"), ("---",
            ("this is a long remark about the works to be carried out here", "long text"),
            ("1/A3-11", "axis"), ("A3`-L", "axis"), ("A-A3-40-04,05", "drawing reference"), ("5F板边线", "note"),
            ("1F顶板至5F底板开洞", "note"), ("i=1%", "dimension"), ("SCALE", "title block"),
-           ('("nullsurf" "")', "cad internals"), ("BYLAYER", "cad internals"), ("不上人平屋面", "note"),
+           ('("nullsurf" "")', "cad internals"), ("BYLAYER", "cad internals"), ("$DDT_AUDIT_GENERATED_(0)", "cad internals"), ("不上人平屋面", "note"),
            ("平 面 图", "title")]
 
 
@@ -123,7 +123,7 @@ def test_rules_file_errors_and_custom_rules(tmp_path):
 @pytest.mark.parametrize("name,ref,typ,room", [
     ("Stair A", "", "stairs", "stairs"), ("楼梯间", "", "stairs", "stairs"), ("Treppenhaus", "", "stairs", "stairs"),
     ("", "E1-ST-03", "stairs", "stairs"), ("", "E2-P1", "elevator", "elevator"), ("", "E1-FG-2", "elevator", "elevator"),
-    ("货梯", "", "elevator", "elevator"), ("ascensore", "", "elevator", "elevator"), ("电梯厅", "", "room", "lobby"),
+    ("货梯", "", "elevator", "elevator"), ("ascensore", "", "elevator", "elevator"), ("电梯厅", "", "room", "lobby"), ("电梯机房", "", "room", "technical"), ("候梯厅", "", "room", "lobby"),
     ("Flur", "", "corridor", ""), ("走廊", "", "corridor", ""), ("pasillo", "", "corridor", ""),
     ("卫生间", "", "room", "toilets"), ("bagno", "", "room", "toilets"), ("rest room", "", "room", "toilets"),
     ("Ufficio 03", "", "room", "office"), ("atrio", "", "room", "lobby"), ("sala riunioni", "", "room", "conference")])
