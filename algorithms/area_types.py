@@ -33,6 +33,7 @@ MIN_TREADS = 6
 TREAD_LENGTH = (0.8, 3.5)  # metres
 TREAD_SPACING = (0.2, 0.42)  # metres between consecutive treads
 CROSS_LENGTH = (1.2, 4.3)  # metres: diagonals of a 0.85..3 m car/shaft  # metres of symbol line per m² of area, at least
+MAX_LIFT_AREA = 30.0  # m²: the largest lift shaft (a group of cars); a larger area dense in lift-layer lines is not one
 KIND_TO_TYPE = {"stair": "stairs", "elevator": "elevator"}
 
 
@@ -76,6 +77,8 @@ def classify_vertical_areas(areas: Sequence[Area], geometries: Sequence[CadGeome
                         runs = find_stair_runs([g for g in geometries if g.kind in ("stair", "elevator")])
                     if _holds_run(a.polygon, runs):
                         typ = "stairs"
+                    elif a.polygon.area > MAX_LIFT_AREA:
+                        continue  # a room dense in railings or lift-lobby lines of that layer, not a shaft
                 a.type = typ
                 changed[a.id] = typ
     if shapes:

@@ -434,5 +434,9 @@ def test_stairs_on_a_combined_stair_and_lift_layer_are_stairs():
     shaft = Area(id=2, polygon=box(5, 0, 7, 2), type="room")
     geoms = [g([(0.2, y), (2.8, y)]) for y in np.arange(0.5, 4.6, 0.28)]  # treads
     geoms += [g([(5, 0), (7, 2)]), g([(5, 2), (7, 0)]), g([(5.1, 0.1), (6.9, 0.1), (6.9, 1.9), (5.1, 1.9), (5.1, 0.1)])]
-    changed = classify_vertical_areas([core, shaft], geoms)
-    assert changed == {1: "stairs", 2: "elevator"}
+    # railings of that layer criss-cross a gallery: dense lines, but a 130 m² room is no lift shaft
+    gallery = Area(id=3, polygon=box(10, 0, 23, 10), type="room")
+    geoms += [g([(10.5, y), (22.5, y)]) for y in np.arange(0.5, 10, 1.0)]
+    geoms += [g([(x, 0.5), (x, 9.5)]) for x in np.arange(10.5, 23, 1.0)]
+    changed = classify_vertical_areas([core, shaft, gallery], geoms)
+    assert changed == {1: "stairs", 2: "elevator"} and gallery.type == "room"
