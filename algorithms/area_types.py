@@ -34,6 +34,7 @@ TREAD_LENGTH = (0.8, 3.5)  # metres
 TREAD_SPACING = (0.2, 0.42)  # metres between consecutive treads
 CROSS_LENGTH = (1.2, 4.3)  # metres: diagonals of a 0.85..3 m car/shaft  # metres of symbol line per m² of area, at least
 MAX_LIFT_AREA = 30.0  # m²: the largest lift shaft (a group of cars); a larger area dense in lift-layer lines is not one
+MAX_LIFT_ELONGATION = 4.0  # long / short side: a shaft is compact, a strip along a railing is not
 KIND_TO_TYPE = {"stair": "stairs", "elevator": "elevator"}
 
 
@@ -77,13 +78,22 @@ def classify_vertical_areas(areas: Sequence[Area], geometries: Sequence[CadGeome
                         runs = find_stair_runs([g for g in geometries if g.kind in ("stair", "elevator")])
                     if _holds_run(a.polygon, runs):
                         typ = "stairs"
-                    elif a.polygon.area > MAX_LIFT_AREA:
-                        continue  # a room dense in railings or lift-lobby lines of that layer, not a shaft
+                    elif a.polygon.area > MAX_LIFT_AREA or _elongation(a.polygon) > MAX_LIFT_ELONGATION:
+                        continue  # a room or gallery dense in railings of that layer, not a shaft
                 a.type = typ
                 changed[a.id] = typ
     if shapes:
         changed.update(classify_by_symbol_shapes(areas, geometries))
     return changed
+
+
+def _elongation(poly) -> float:
+    r = poly.minimum_rotated_rectangle
+    if r.geom_type != "Polygon":
+        return float("inf")
+    xy = np.asarray(r.exterior.coords)
+    a, b = np.hypot(*(xy[1] - xy[0])), np.hypot(*(xy[2] - xy[1]))
+    return max(a, b) / max(min(a, b), 1e-9)
 
 
 def _holds_run(poly, runs) -> bool:

@@ -438,5 +438,8 @@ def test_stairs_on_a_combined_stair_and_lift_layer_are_stairs():
     gallery = Area(id=3, polygon=box(10, 0, 23, 10), type="room")
     geoms += [g([(10.5, y), (22.5, y)]) for y in np.arange(0.5, 10, 1.0)]
     geoms += [g([(x, 0.5), (x, 9.5)]) for x in np.arange(10.5, 23, 1.0)]
-    changed = classify_vertical_areas([core, shaft, gallery], geoms)
-    assert changed == {1: "stairs", 2: "elevator"} and gallery.type == "room"
+    # and a 12 x 2 m strip along a railing (dense, small) is no shaft either
+    strip = Area(id=4, polygon=box(0, 20, 12, 22), type="corridor")
+    geoms += [g([(0.2, 20.5 + d), (11.8, 20.5 + d)]) for d in (0.0, 0.1, 0.9, 1.0)]
+    changed = classify_vertical_areas([core, shaft, gallery, strip], geoms)
+    assert changed == {1: "stairs", 2: "elevator"} and (gallery.type, strip.type) == ("room", "corridor")
