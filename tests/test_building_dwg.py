@@ -123,14 +123,17 @@ def _check_building(b, levels, pinned_links, named_on_both):
         assert abs(deg) < 0.05, (lv, deg)
     for lv, med in st["median_residual"].items():
         assert med < 0.2, (lv, med, st["residuals"][lv])
-    # every pair of same-kind shafts that overlap on consecutive levels is linked
+    # every pair of same-kind shafts that overlap on consecutive levels is linked (one to one: a shaft split in
+    # two areas on one floor, flight and landing, links once)
     for lo, hi in zip(levels, levels[1:]):
         a_lo = [a for a in b["areas"] if a.tags.get("level") == lo and a.type in ("stairs", "elevator")]
         a_hi = [a for a in b["areas"] if a.tags.get("level") == hi and a.type in ("stairs", "elevator")]
-        overlapping = {a.name for a in a_lo for x in a_hi if a.type == x.type and
+        overlapping = {(a.name, x.name) for a in a_lo for x in a_hi if a.type == x.type and
                        a.polygon.intersection(x.polygon).area >= 0.3 * min(a.polygon.area, x.polygon.area)}
-        linked = {v[2] for v in st["vertical"] if (v[0], v[1]) == (lo, hi)}
-        assert overlapping <= linked, (lo, hi, overlapping - linked)
+        pairs = [(v[2], v[3]) for v in st["vertical"] if (v[0], v[1]) == (lo, hi)]
+        lows, highs = {p[0] for p in pairs}, {p[1] for p in pairs}
+        unlinked = {(x, y) for x, y in overlapping if x not in lows and y not in highs}
+        assert overlapping and not unlinked, (lo, hi, unlinked)
         got = b["links"].get((lo, hi), [])
         n_links, n_hand = pinned_links[(lo, hi)]
         assert len(got) >= n_links, (lo, hi, got)
