@@ -33,6 +33,8 @@ MIN_TREADS = 6
 TREAD_LENGTH = (0.8, 3.5)  # metres
 TREAD_SPACING = (0.2, 0.42)  # metres between consecutive treads
 CROSS_LENGTH = (1.2, 4.3)  # metres: diagonals of a 0.85..3 m car/shaft  # metres of symbol line per m² of area, at least
+MAX_LIFT_AREA = 30.0  # m²: the largest lift shaft (a group of cars); a larger area dense in lift-layer lines is not one
+MAX_LIFT_ELONGATION = 4.0  # long / short side: a shaft is compact, a strip along a railing is not
 KIND_TO_TYPE = {"stair": "stairs", "elevator": "elevator"}
 
 
@@ -54,6 +56,7 @@ def classify_vertical_areas(areas: Sequence[Area], geometries: Sequence[CadGeome
     with ``shapes``, on areas holding a stair run or a lift cross drawn on any layer. Returns {id: type}."""
     density = dict(DENSITY, **(density or {}))
     changed: Dict[int, str] = {}
+    runs = None
     for kind, area_type in KIND_TO_TYPE.items():
         lines = _lines(geometries, kind)
         if not lines:
@@ -67,11 +70,41 @@ def classify_vertical_areas(areas: Sequence[Area], geometries: Sequence[CadGeome
                 continue
             inside = MultiLineString([lines[i] for i in hits]).intersection(a.polygon).length
             if inside / a.polygon.area >= density[area_type]:
-                a.type = area_type
-                changed[a.id] = area_type
+                typ = area_type
+                if area_type == "elevator":
+                    # one layer for stairs, lifts and railings ('A—楼梯、电梯、栏杆') is read as a lift layer:
+                    # an area of it holding a stair run (treads) is a stair
+                    if runs is None:
+                        runs = find_stair_runs([g for g in geometries if g.kind in ("stair", "elevator")])
+                    if _holds_run(a.polygon, runs):
+                        typ = "stairs"
+                    elif a.polygon.area > MAX_LIFT_AREA or _elongation(a.polygon) > MAX_LIFT_ELONGATION:
+                        continue  # a room or gallery dense in railings of that layer, not a shaft
+                a.type = typ
+                changed[a.id] = typ
     if shapes:
         changed.update(classify_by_symbol_shapes(areas, geometries))
     return changed
+
+
+def _elongation(poly) -> float:
+    r = poly.minimum_rotated_rectangle
+    if r.geom_type != "Polygon":
+        return float("inf")
+    xy = np.asarray(r.exterior.coords)
+    a, b = np.hypot(*(xy[1] - xy[0])), np.hypot(*(xy[2] - xy[1]))
+    return max(a, b) / max(min(a, b), 1e-9)
+
+
+def _holds_run(poly, runs) -> bool:
+    """``poly`` holds most of one of the stair ``runs`` and that run is a real part of it."""
+    for run in runs:
+        if not run.intersects(poly):
+            continue
+        ov = poly.intersection(run).area
+        if ov >= 0.5 * run.area and ov >= 0.15 * poly.area:
+            return True
+    return False
 
 
 def _segments(geometries: Sequence[CadGeometry]) -> np.ndarray:

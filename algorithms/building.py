@@ -50,6 +50,11 @@ _STAIR_WORDS = re.compile(r"(stair|staircase|treppe|escal|scala|楼梯|樓梯|�
 _LIFT_WORDS = re.compile(r"(elevator|lift|aufzug|ascensor|ascensore|电梯|電梯|-EV\d|\bEV\d)", re.I)
 _NOT_SHAFT = re.compile(r"(lobby|hall|foyer|landing|machine|motor|厅|前室|机房|候梯)", re.I)  # rooms beside shafts
 _LIFT_CODE = re.compile(r"^[A-Z]{1,2}\d+[a-z]?-P\d{1,2}$")  # E1-P1, E2-P4: lift codes of Chinese drawings
+# A shaft code of Chinese/office drawings: building part, kind, number ('E1-ST-03', 'E1 ST 03', 'E2-P1',
+# 'A3-T2'). Drawn differently on different sheets ('E1-ST-03' / 'E1 ST-03' / 'e1_st_3'): compared by
+# ``shaft_code``, which spells them one way.
+_SHAFT_CODE = re.compile(r"(?<![A-Za-z0-9])([A-Z]{1,2}\d{0,2}[a-z]?)[-_ ]?(ST|LT|P|T|DT|KT|EV)[-_ ]?(\d{1,2}[a-z]?)(?![A-Za-z0-9])",
+                         re.I)
 _CN_DIGITS = {"零": 0, "一": 1, "二": 2, "两": 2, "三": 3, "四": 4, "五": 5, "六": 6, "七": 7, "八": 8, "九": 9,
               "十": 10}
 
@@ -89,6 +94,48 @@ def level_from_name(name: str) -> Optional[str]:
     return None
 
 
+_XREF_LEVEL = re.compile(r"(?:^|[-_ ])(?:(B)(\d{1,2})F?|(\d{1,2})F|(RF|ROOF|WD))(?=$|[-_ (（])", re.I)
+
+
+def level_from_layers(layer_names) -> Optional[str]:
+    """The level a whole sheet announces in its bound external references, or None. Drawing offices bind
+    one floor's xref per sheet, so its layers read ``E1-RI-1F$0$A-WALL``, ``A3-SYMB-3F-100$0$A-SYMB``:
+    the majority level of the xref prefixes (the part before ``$0$``) wins; ``B1``/``B1F`` -> -1,
+    ``RF``/roof -> ``'R'`` (the caller puts it above the highest floor). Only layers with a ``$`` count,
+    so a sheet without bound xrefs says nothing."""
+    import collections
+
+    votes = collections.Counter()
+    for name in layer_names:
+        name = str(name)
+        if "$" not in name:
+            continue
+        m = _XREF_LEVEL.search(name.split("$", 1)[0])
+        if not m:
+            continue
+        if m.group(1):
+            votes[str(-int(m.group(2)))] += 1
+        elif m.group(3):
+            votes[str(int(m.group(3)))] += 1
+        else:
+            votes["R"] += 1
+    if not votes:
+        return None
+    (best, nb), *rest = votes.most_common(2) + [(None, 0)]
+    return best if nb > rest[0][1] else None
+
+
+def level_from_sheet(path: str) -> Optional[str]:
+    """``level_from_layers`` of a DXF/DWG's layer table (read without filtering)."""
+    from . import cad_import
+
+    try:
+        d = cad_import.inspect_dxf(path)
+    except InputError:
+        return None
+    return level_from_layers([getattr(li, "name", li) for li in d.layers])
+
+
 def _level_value(level: str) -> float:
     return float(level)
 
@@ -115,6 +162,17 @@ class FloorData:
         return os.path.basename(self.source) or self.source
 
 
+def _valid_polygon(poly):
+    """A ring that touches itself after the round trip through lon/lat (7 decimals, ~1 cm) is repaired:
+    ``buffer(0)``, keeping the largest part if it splits (the slivers are below a few cm²)."""
+    if poly is None or poly.is_empty or poly.is_valid:
+        return poly
+    fixed = poly.buffer(0)
+    if fixed.geom_type == "MultiPolygon":
+        fixed = max(fixed.geoms, key=lambda g: g.area)
+    return fixed if fixed.geom_type == "Polygon" and not fixed.is_empty else poly
+
+
 def read_floor(path: str, frame, progress=None) -> FloorData:
     """An osmAG floor file -> :class:`FloorData` in ``frame`` (a LocalFrame; None = the file's root)."""
     from . import osmag
@@ -123,6 +181,8 @@ def read_floor(path: str, frame, progress=None) -> FloorData:
     if frame is None:
         frame = osmag.frame_from_root(root)
     areas, passages = osmag.to_frame(areas, passages, frame)
+    for a in areas:
+        a.polygon = _valid_polygon(a.polygon)
     dropped = [(wid, f"{key}='{val}' names no area of the file") for wid, key, val in report["dangling_refs"]
                if key in ("osmAG:from", "osmAG:to")]
     dropped += [(wid, f"missing nodes {miss[:3]}") for wid, miss in report["dangling_nodes"].items()
@@ -235,6 +295,62 @@ def anchor_kind(a: Area) -> Optional[str]:
     return None
 
 
+def shaft_code(text) -> str:
+    """The stair/lift code in ``text`` spelled one way ('E1 ST-3' -> 'E1-ST-03', 'e2_p1' -> 'E2-P1'), or ''."""
+    m = _SHAFT_CODE.search(str(text or ""))
+    if not m or not re.search(r"\d", m.group(1)) or not m.group(1)[:1].isalpha():
+        return ""
+    num = m.group(3)
+    num = num.zfill(2 + (not num[-1].isdigit())) if m.group(2).upper() in ("ST", "LT") else num.lstrip("0") or "0"
+    return f"{m.group(1).upper()}-{m.group(2).upper()}-{num.upper()}" if m.group(2).upper() in ("ST", "LT") \
+        else f"{m.group(1).upper()}-{m.group(2).upper()}{num.upper()}"
+
+
+def anchor_name(a: Area) -> str:
+    """The name an anchor is matched by across floors: its shaft code (from ``ref``, then the name: a stair
+    named '走道' with ref 'E1-ST-03', a lift lobby '电梯厅 E2-P1'), else its name ('' for generated names)."""
+    for text in ((a.tags or {}).get("ref"), a.ref, a.name):
+        code = shaft_code(text)
+        if code:
+            return code
+    name = (a.name or "").strip()
+    # generated names ('L3-A012' of the writer, '4-25' of stage 5) and bare numbers ('1536') differ from floor
+    # to floor by construction: the anchor is anonymous and matched by position and shape
+    if re.fullmatch(r"L-?[\d.]+-[ASP]\d+", name) or not re.search(r"[^\W\d_]", name):
+        return ""
+    return name
+
+
+def _reconcile_shaft_kinds(floors, warn) -> Dict[str, str]:
+    """One shaft code names one kind of shaft on every floor: when the floors disagree ('A3-T3' typed
+    stairs on one sheet from a few treads drawn in it, a lift on the two others), the majority kind over
+    the floors wins and the others are retyped, with a warning. Ties are left alone. Returns {code: kind}."""
+    import collections
+
+    seen: Dict[str, list] = collections.defaultdict(list)
+    for fl in floors:
+        for a in fl.areas:
+            k = anchor_kind(a)
+            code = anchor_name(a) if k else ""
+            if k and code and shaft_code(code) == code:
+                seen[code].append((fl, a, k))
+    fixed = {}
+    for code, items in seen.items():
+        votes = collections.Counter(k for _, _, k in items)
+        if len(votes) < 2:
+            continue
+        (best, nb), (_, second) = votes.most_common(2)
+        if nb == second:
+            continue
+        for fl, a, k in items:
+            if k != best:
+                a.type = best
+                warn(f"{code} is a {'lift' if best == 'elevator' else 'stair'} on {nb} floors but typed {k} on level "
+                     f"{fl.level} ('{a.name}'): retyped {best}")
+        fixed[code] = best
+    return fixed
+
+
 @dataclass
 class Anchor:
     index: int  # index into FloorData.areas
@@ -252,9 +368,7 @@ def floor_anchors(fl: FloorData) -> List[Anchor]:
         if k is None or a.polygon.is_empty:
             continue
         c = a.polygon.centroid
-        generated = re.fullmatch(r"L-?[\d.]+-[ASP]\d+", a.name or "") is not None
-        out.append(Anchor(i, k, "" if generated else (a.name or "").strip(), np.array([c.x, c.y]),
-                          float(a.polygon.area), a.polygon))
+        out.append(Anchor(i, k, anchor_name(a), np.array([c.x, c.y]), float(a.polygon.area), a.polygon))
     return out
 
 
@@ -312,6 +426,9 @@ def _compatible(a: Anchor, b: Anchor) -> bool:
 
 def _base_name(name: str) -> str:
     """A shaft's name without its level: 'Stair A (level 2)' -> 'stair a', 'E1-ST-03-3F' -> 'e1-st-03'."""
+    code = shaft_code(name)
+    if code:
+        return code.lower()
     n = re.sub(r"\s*\((?:level|L)\s*-?[\d.]+\)\s*$", "", name.strip(), flags=re.I)
     n = re.sub(r"[-_ ]?(?:\d+F|F\d+|L-?\d+)$", "", n, flags=re.I)
     return n.lower()
@@ -606,6 +723,7 @@ def fuse_floors(floors: Sequence[FloorData], out_path: str, frame, building_name
                 raise InputError(msg)
             warn(msg)
     progress.step(5, f"{n} floors: levels {', '.join(fl.level for fl in floors)}")
+    _reconcile_shaft_kinds(floors, warn)
     # ---- registration, outward from the floor with most anchors
     anchors = [floor_anchors(fl) for fl in floors]
     ref = max(range(n), key=lambda k: (len(anchors[k]), -k))
@@ -862,10 +980,23 @@ def convert_floors(dxf_paths: Sequence[str], out_dir: str, levels: Optional[Sequ
 
     progress = ensure(progress)
     jobs = []
+    lvs = []
     for k, dxf in enumerate(dxf_paths):
         lv = (levels[k] if levels is not None and k < len(levels) else None) or level_from_name(dxf)
         if lv is None:
-            raise InputError(f"the level of '{os.path.basename(dxf)}' is unknown: name it like '*-F3*' or give levels")
+            lv = level_from_sheet(dxf)
+            if lv is not None:
+                progress.info(f"{os.path.basename(dxf)}: level {'roof' if lv == 'R' else lv} from the sheet's "
+                              "bound external references")
+        if lv is None:
+            raise InputError(f"the level of '{os.path.basename(dxf)}' is unknown: neither its name ('*-F3*') nor "
+                             "its layers ('E1-RI-3F$0$...') say; give levels")
+        lvs.append(str(lv))
+    numeric = [float(v) for v in lvs if v != "R"]
+    for k, dxf in enumerate(dxf_paths):
+        lv = lvs[k]
+        if lv == "R":  # a roof plan: the level above the highest floor given
+            lv = str(int(max(numeric)) + 1 if numeric else 1)
         out = os.path.join(out_dir, os.path.splitext(os.path.basename(dxf))[0] + ".osm")
         jobs.append((dxf, out, lv, dict(convert_kwargs)))
     os.makedirs(out_dir, exist_ok=True)
@@ -893,5 +1024,5 @@ def convert_floors(dxf_paths: Sequence[str], out_dir: str, levels: Optional[Sequ
     return [results[k] for k in range(len(jobs))]
 
 
-__all__ = ["convert_floors", "floors_from_layers", "FloorData", "read_floor", "fuse_floors", "merge_floor_files", "level_from_name", "anchor_kind",
+__all__ = ["level_from_layers", "level_from_sheet", "shaft_code", "anchor_name", "convert_floors", "floors_from_layers", "FloorData", "read_floor", "fuse_floors", "merge_floor_files", "level_from_name", "anchor_kind",
            "register_anchors", "Rigid", "floor_anchors"]

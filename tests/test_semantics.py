@@ -25,7 +25,7 @@ IGNORED = [("", "empty"), ("   ", "empty"), ("\x00\x07\u200f", "empty"), ("---",
            ("1200", "dimension"), ("3,600", "dimension"), ("23.5 m²", "area"), ("mq 1.6", "area"),
            ("S=12.5㎡", "area"), ("-0.020", "elevation"), ("+4,200", "elevation"), ("±0.000", "elevation"),
            ("(178,900)", "elevation"), ("NPT + 0.20", "elevation"), ("N.P.T.=+0.20 m", "elevation"),
-           ("Level -6.000", "elevation"), ("FM乙1522", "door/window code"), ("SGFM甲1822", "door/window code"),
+           ("Level -6.000", "elevation"), ("FM乙1522", "door/window code"), ("FM乙", "door/window code"), ("甲级防火门", "door/window code"), ("SGFM甲1822", "door/window code"),
            ("M1021", "door/window code"), ("C1518", "door/window code"), ("D1", "door/window code"),
            ("上", "stair arrow"), ("下", "stair arrow"), ("UP", "stair arrow"), ("DN", "stair arrow"),
            ("A", "axis"), ("7\"", "axis"), ("А", "axis"), ("2", "axis"), ("1/A", "axis"),
@@ -36,7 +36,7 @@ IGNORED = [("", "empty"), ("   ", "empty"), ("\x00\x07\u200f", "empty"), ("---",
            ("this is a long remark about the works to be carried out here", "long text"),
            ("1/A3-11", "axis"), ("A3`-L", "axis"), ("A-A3-40-04,05", "drawing reference"), ("5F板边线", "note"),
            ("1F顶板至5F底板开洞", "note"), ("i=1%", "dimension"), ("SCALE", "title block"),
-           ('("nullsurf" "")', "cad internals"), ("BYLAYER", "cad internals"), ("不上人平屋面", "note"),
+           ('("nullsurf" "")', "cad internals"), ("BYLAYER", "cad internals"), ("$DDT_AUDIT_GENERATED_(0)", "cad internals"), ("不上人平屋面", "note"),
            ("平 面 图", "title")]
 
 
@@ -123,7 +123,7 @@ def test_rules_file_errors_and_custom_rules(tmp_path):
 @pytest.mark.parametrize("name,ref,typ,room", [
     ("Stair A", "", "stairs", "stairs"), ("楼梯间", "", "stairs", "stairs"), ("Treppenhaus", "", "stairs", "stairs"),
     ("", "E1-ST-03", "stairs", "stairs"), ("", "E2-P1", "elevator", "elevator"), ("", "E1-FG-2", "elevator", "elevator"),
-    ("货梯", "", "elevator", "elevator"), ("ascensore", "", "elevator", "elevator"), ("电梯厅", "", "room", "lobby"),
+    ("货梯", "", "elevator", "elevator"), ("ascensore", "", "elevator", "elevator"), ("电梯厅", "", "room", "lobby"), ("电梯机房", "", "room", "technical"), ("候梯厅", "", "room", "lobby"),
     ("Flur", "", "corridor", ""), ("走廊", "", "corridor", ""), ("pasillo", "", "corridor", ""),
     ("卫生间", "", "room", "toilets"), ("bagno", "", "room", "toilets"), ("rest room", "", "room", "toilets"),
     ("Ufficio 03", "", "room", "office"), ("atrio", "", "room", "lobby"), ("sala riunioni", "", "room", "conference")])
