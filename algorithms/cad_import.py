@@ -57,6 +57,9 @@ PLAUSIBLE_SIZE = (5.0, 500.0)  # metres across a floor
 TYPICAL_SIZE = 40.0  # metres; ties between plausible units go to the one closest (log scale) to this
 CHORD_TOL = 0.01  # metres
 MAX_SEGMENTS_PER_TURN = 1024
+# entities a drawing may explode into (nested blocks and MINSERT arrays multiply): a real floor explodes
+# into 10^4-10^5; a block bomb or 10^6 copies of one line stop with advice before filling the memory
+MAX_EXPLODED = 1_000_000
 
 SKIP_TYPES = {"DIMENSION", "ARC_DIMENSION", "LARGE_RADIAL_DIMENSION", "LEADER", "MLEADER", "MULTILEADER",
               "TOLERANCE", "POINT", "VIEWPORT", "IMAGE", "WIPEOUT", "ATTDEF", "XLINE", "RAY", "REGION",
@@ -282,6 +285,37 @@ def _transform_pieces(src: _Pieces, A: np.ndarray, t: np.ndarray, layer: str, ds
     dst.xrefs.extend(src.xrefs)
 
 
+def _minsert_offsets(e, rows: int, cols: int, ex, name: str) -> np.ndarray:
+    """WCS translations (x, y) of the copies of a MINSERT grid, as ezdxf's ``multi_insert`` places them
+    (offsets in the insert's OCS, rotated with the insert, not scaled; coinciding copies once), without
+    building one virtual INSERT per copy (10^6 of them took a minute)."""
+    cs = float(e.dxf.get("column_spacing", 0.0) or 0.0)
+    rs = float(e.dxf.get("row_spacing", 0.0) or 0.0)
+    ncol = cols if cs != 0.0 else 1
+    nrow = rows if rs != 0.0 else 1
+    if nrow * ncol > MAX_EXPLODED:  # stop before allocating the offsets
+        ex._spend(name, nrow * ncol, 1)
+    r, c = np.meshgrid(np.arange(nrow, dtype=np.float64), np.arange(ncol, dtype=np.float64), indexing="ij")
+    off = np.column_stack([c.ravel() * cs, r.ravel() * rs])  # row-major, like multi_insert
+    rot = math.radians(float(e.dxf.get("rotation", 0.0) or 0.0))
+    if rot:
+        cr, sr = math.cos(rot), math.sin(rot)
+        off = off @ np.array(((cr, sr), (-sr, cr)))
+    ux, uy = _ocs_axes_2d(_extrusion(e))
+    return off[:, :1] * ux + off[:, 1:2] * uy
+
+
+def _ocs_axes_2d(extrusion):
+    """x and y (of WCS) of the OCS axes ux, uy for an extrusion vector."""
+    try:
+        from ezdxf.math import OCS
+
+        ocs = OCS(extrusion)
+        return np.array(ocs.ux[:2], dtype=np.float64), np.array(ocs.uy[:2], dtype=np.float64)
+    except Exception:
+        return np.array((1.0, 0.0)), np.array((0.0, 1.0))
+
+
 # ------------------------------------------------------------------------------------------ text
 _MTEXT_FALLBACK = re.compile(r"\\[A-Za-z][^;\\{}]*;|\\[PpNn~]|[{}]")
 
@@ -315,6 +349,8 @@ class _Exploder:
         self.done = 0
         self.warnings: List[str] = []
         self._warned = set()
+        self.produced = 0  # entities added by exploding INSERTs (see MAX_EXPLODED)
+        self.attribs_per_copy = True  # ezdxf shifts a MINSERT's attributes to every copy
 
     def _warn_once(self, key, msg):
         if key not in self._warned:
@@ -529,29 +565,39 @@ class _Exploder:
             for r in rings:
                 out.add(r, layer, "HATCH", True, False)
 
+    def _spend(self, name: str, copies: int, pieces: int) -> None:
+        """Count the entities an INSERT adds and stop before a block bomb or a giant MINSERT array
+        (nested blocks multiply) allocates them."""
+        self.produced += copies * pieces
+        if self.produced > MAX_EXPLODED:
+            raise InputError(
+                f"exploding the blocks gives more than {MAX_EXPLODED:,} entities (the last INSERT: block '{name}', "
+                f"{copies:,} {'copy' if copies == 1 else 'copies'} of {pieces:,} entities): the drawing nests blocks "
+                "too deeply, repeats one entity massively or holds a huge MINSERT array; purge or explode those "
+                "blocks in CAD (OVERKILL removes duplicates) and export again")
+
     def _insert(self, e, layer, out):
         name = e.dxf.name
         if layer != "0" and not self.visible(layer, frozen_only=True):
             return
-        if e.dxf.get("row_count", 1) > 1 or e.dxf.get("column_count", 1) > 1:
-            inserts = list(e.multi_insert())
-        else:
-            inserts = [e]
-        blk = None
-        for ins in inserts:
-            m = ins.matrix44()
-            A = np.array(((m[0, 0], m[1, 0]), (m[0, 1], m[1, 1])), dtype=np.float64)
-            t = np.array((m[3, 0], m[3, 1]), dtype=np.float64)
-            if blk is None:
-                # an enlarged block needs a finer tolerance in its own units (powers of 2 keep the cache small)
-                s = float(np.linalg.norm(A, 2))
-                tol = self.tol / (2.0 ** math.ceil(math.log2(s))) if s > 1.0 + 1e-9 else self.tol
-                blk = self.block(name, tol)
-            _transform_pieces(blk, A, t, layer, out, self._inherited_ok)
-            # attributes are stored in the parent's coordinates already
-            for a in ins.attribs:
-                if a.is_invisible if hasattr(a, "is_invisible") else False:
-                    continue
+        rows = int(e.dxf.get("row_count", 1) or 1)
+        cols = int(e.dxf.get("column_count", 1) or 1)
+        offsets = np.zeros((1, 2))
+        if rows > 1 or cols > 1:
+            offsets = _minsert_offsets(e, rows, cols, self, name)
+        m = e.matrix44()
+        A = np.array(((m[0, 0], m[1, 0]), (m[0, 1], m[1, 1])), dtype=np.float64)
+        t = np.array((m[3, 0], m[3, 1]), dtype=np.float64)
+        # an enlarged block needs a finer tolerance in its own units (powers of 2 keep the cache small)
+        s = float(np.linalg.norm(A, 2))
+        tol = self.tol / (2.0 ** math.ceil(math.log2(s))) if s > 1.0 + 1e-9 else self.tol
+        blk = self.block(name, tol)
+        self._spend(name, len(offsets), len(blk) + len(blk.texts))
+        attribs = [a for a in e.attribs if not (a.is_invisible if hasattr(a, "is_invisible") else False)]
+        for k, d in enumerate(offsets):
+            _transform_pieces(blk, A, t + d, layer, out, self._inherited_ok)
+            # attributes are stored in the parent's coordinates already (a MINSERT shifts them per copy)
+            for a in attribs if (k == 0 or self.attribs_per_copy) else ():
                 alay = a.dxf.get("layer", "0") or "0"
                 if alay == "0":
                     alay = layer
@@ -562,7 +608,7 @@ class _Exploder:
                     p = a.dxf.insert
                     if (a.dxf.get("halign", 0) or a.dxf.get("valign", 0)) and a.dxf.hasattr("align_point"):
                         p = a.dxf.align_point
-                    out.texts.append((float(p[0]), float(p[1]), txt, float(a.dxf.get("height", 1.0)),
+                    out.texts.append((float(p[0]) + d[0], float(p[1]) + d[1], txt, float(a.dxf.get("height", 1.0)),
                                       float(a.dxf.get("rotation", 0.0)), alay, "ATTRIB"))
 
     def _inherited_ok(self, layer, etype) -> bool:
@@ -830,6 +876,10 @@ def _explode(path: str, tol_du: float, progress, doc=None, repairs=None) -> _Raw
 
     msp = doc.modelspace()
     n = len(msp)
+    if n > MAX_EXPLODED:
+        raise InputError(f"'{os.path.basename(path)}' holds {n:,} entities in model space, more than the "
+                         f"{MAX_EXPLODED:,} a floor plan needs: remove duplicates (OVERKILL) or copies in CAD, "
+                         "or export only the floor's layers")
     ex = _Exploder(doc, tol_du, visible, progress, n)
     out = _Pieces()
     ex.entities(msp, out, top=True)
@@ -1105,9 +1155,16 @@ def import_dxf(path: str, rules=None, layers: Optional[Sequence[str]] = None, un
     progress.step(85, "converting to metres")
     p = raw.pieces
     geoms = []
+    nonfinite = 0
     for i in idx:
         c = p.coords[i]
         if len(c) < 2 and not p.filled[i]:
+            continue
+        sep = np.isnan(c).all(axis=1) if p.filled[i] else np.zeros(len(c), bool)  # NaN rows separate rings
+        v = c[~sep]
+        if not bool(np.isfinite(v).all()) or abs(scale) * float(np.abs(v).max(initial=0.0)) > 1e15:
+            # NaN/inf, or a coordinate beyond any building (1e15 m) that overflows downstream
+            nonfinite += 1
             continue
         geoms.append(CadGeometry(layer=p.layer[i], kind=infos[p.layer[i]].kind, coords=c * scale,
                                  closed=p.closed[i], filled=p.filled[i], width=p.width[i] * scale,
@@ -1119,8 +1176,14 @@ def import_dxf(path: str, rules=None, layers: Optional[Sequence[str]] = None, un
             geoms = [g for k, g in enumerate(geoms) if k not in gone]
             progress.info(f"left out {len(swings)} door swing arcs and leaves drawn on non-door layers "
                           "(doorways stay open; set include_doors to close them)")
+    if nonfinite:
+        msg = (f"left out {nonfinite} entities with coordinates that are not finite numbers (NaN or infinite, "
+               "a damaged file or a broken block scale); check the drawing with AUDIT in CAD")
+        warnings.append(msg)
+        progress.warning(msg)
     texts = [CadText(x=t[0] * scale, y=t[1] * scale, text=t[2], height=t[3] * scale, rotation=t[4],
-                     layer=t[5], entity=t[6]) for t in p.texts]
+                     layer=t[5], entity=t[6]) for t in p.texts
+             if math.isfinite(t[0] * scale) and math.isfinite(t[1] * scale)]
     kept_layers = sorted({g.layer for g in geoms})
     progress.step(100, f"{len(geoms)} geometries on {len(kept_layers)} layers, {len(texts)} texts, unit {unit}")
     return CadDrawing(path=path, geometries=geoms, texts=texts, layers=infos, unit_name=unit, unit_scale=scale,
