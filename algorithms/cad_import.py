@@ -311,7 +311,8 @@ def _ocs_axes_2d(extrusion):
         from ezdxf.math import OCS
 
         ocs = OCS(extrusion)
-        return np.array(ocs.ux[:2], dtype=np.float64), np.array(ocs.uy[:2], dtype=np.float64)
+        ux, uy = ocs.to_wcs((1.0, 0.0, 0.0)), ocs.to_wcs((0.0, 1.0, 0.0))
+        return np.array((ux[0], ux[1]), dtype=np.float64), np.array((uy[0], uy[1]), dtype=np.float64)
     except Exception:
         return np.array((1.0, 0.0)), np.array((0.0, 1.0))
 
