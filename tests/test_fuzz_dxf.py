@@ -74,6 +74,8 @@ def mutated_dxf(draw):
 
 
 def _mutate(draw, kind, data: bytes) -> bytes:
+    if len(data) < 2:  # a "mixed" chain may have truncated everything already
+        return data
     if kind == "truncate":
         return data[:draw(st.integers(0, len(data)))]
     if kind == "flip":
@@ -84,7 +86,9 @@ def _mutate(draw, kind, data: bytes) -> bytes:
         return bytes(b)
     lines = _lines(data)
     if kind == "delete_section":
-        starts = [i for i in range(len(lines) - 3) if lines[i].strip() == b"SECTION" and lines[i + 1].strip() == b"2"]
+        starts = [i for i in range(1, len(lines) - 3) if lines[i].strip() == b"SECTION" and lines[i + 1].strip() == b"2"]
+        if not starts:
+            return data
         i = draw(st.sampled_from(starts))
         j = next((k for k in range(i, len(lines)) if lines[k].strip() == b"ENDSEC"), len(lines) - 1)
         return b"\n".join(lines[:i - 1] + lines[j + 1:])
@@ -94,6 +98,8 @@ def _mutate(draw, kind, data: bytes) -> bytes:
         return b"\n".join(lines[:i] + lines[i + n:])
     if kind == "coords":
         values = [i + 1 for i in range(0, len(lines) - 1) if lines[i].strip().decode("latin-1") in COORD_CODES]
+        if not values:
+            return data
         for _ in range(draw(st.integers(1, 12))):
             i = draw(st.sampled_from(values))
             lines[i] = draw(st.sampled_from(BAD_NUMBERS)).encode()
@@ -106,6 +112,8 @@ def _mutate(draw, kind, data: bytes) -> bytes:
     if kind == "duplicate":  # a run of entities pasted many times (copy-paste in place)
         ent = [i for i in range(len(lines)) if lines[i].strip() == b"ENTITIES"]
         if not ent:
+            return data
+        if ent[0] + 1 > len(lines) - 2:
             return data
         i = draw(st.integers(ent[0] + 1, len(lines) - 2))
         i -= (i - ent[0] - 1) % 2  # keep code/value pairs aligned
