@@ -6,10 +6,11 @@ ROOT  := $(abspath $(dir $(lastword $(MAKEFILE_LIST))))
 VENV  := $(ROOT)/.venv
 PY    := $(VENV)/bin/python
 APT_PACKAGES := qgis python3-qgis qgis-providers python3-venv python3-gdal gdal-bin osmium-tool xvfb \
-                python3-dev build-essential libproj-dev proj-bin
+                python3-dev build-essential libproj-dev proj-bin \
+                libeigen3-dev libopencv-core-dev libopencv-imgproc-dev
 STAMP := $(VENV)/.installed
 
-.PHONY: install demo test test-quick bench evaluate clean help
+.PHONY: install demo test test-quick bench evaluate evaluate-cad clean help
 
 help:
 	@echo "make demo        install what is missing, build the sample building and convert it (out/demo/)"
@@ -17,6 +18,9 @@ help:
 	@echo "make test-quick  the suite without the slow real-data tests"
 	@echo "make bench       per-stage wall time and peak memory on real data (docs/benchmarks.md)"
 	@echo "make evaluate    score segmentation on ../shared/data/grid_gt"
+	@echo "make evaluate-cad [DATA=dir]  convert every DXF/DWG of DATA (default: the shared ArchWeb plans and DWG"
+	@echo "                  sheets) and print per plan: conversion, room-name texts inside an area / naming an"
+	@echo "                  area of their own, largest component, areas, passages, named areas, conflicts"
 
 install: $(STAMP)
 
@@ -38,6 +42,10 @@ bench: install
 
 evaluate: install
 	$(PY) scripts/evaluate_grids.py
+
+DATA ?=
+evaluate-cad: install
+	$(PY) scripts/evaluate_cad.py $(if $(DATA),--data $(DATA),)
 
 clean:
 	rm -rf out .pytest_cache

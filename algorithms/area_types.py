@@ -7,17 +7,32 @@ by the density of symbol lines inside them (metres of line per square metre of f
 treads every ~0.3 m (about 3 m/m² over the run), a lift car its outline and two diagonals (about 1.5 m/m²
 in a 2 x 2 m shaft), whereas a hall that merely contains a stair keeps a low density and stays a room.
 Text labels refine this later (semantics stage).
+
+Many drawings put the symbols on other layers (treads on the wall layer, lift crosses on a generic
+layer), so the symbols are also found by their shape, whatever the layer:
+- a **stair run** is at least ``MIN_TREADS`` parallel segments of similar length (0.8–3.5 m), side by
+  side at a regular tread spacing (0.2–0.42 m) (:func:`find_stair_runs`);
+- a **lift symbol** is a cross: two segments of similar length (1.2–4.3 m) crossing near both their
+  midpoints at 40–140°, i.e. the diagonals of a car or shaft 1–3 m a side (:func:`find_lift_crosses`).
+An area that holds most of a stair run becomes ``stairs``; the smallest area holding a lift cross
+becomes ``elevator`` (when it is not much larger than the cross's box).
 """
 from __future__ import annotations
 
-from typing import Dict, Sequence
+import math
+from typing import Dict, List, Sequence
 
-from shapely.geometry import LineString, MultiLineString
+import numpy as np
+from shapely.geometry import LineString, MultiLineString, MultiPoint, Polygon
 from shapely.strtree import STRtree
 
 from .model import Area, CadGeometry
 
-DENSITY = {"stairs": 0.6, "elevator": 0.5}  # metres of symbol line per m² of area, at least
+DENSITY = {"stairs": 0.6, "elevator": 0.5}
+MIN_TREADS = 6
+TREAD_LENGTH = (0.8, 3.5)  # metres
+TREAD_SPACING = (0.2, 0.42)  # metres between consecutive treads
+CROSS_LENGTH = (1.2, 4.3)  # metres: diagonals of a 0.85..3 m car/shaft  # metres of symbol line per m² of area, at least
 KIND_TO_TYPE = {"stair": "stairs", "elevator": "elevator"}
 
 
@@ -34,8 +49,9 @@ def _lines(geometries: Sequence[CadGeometry], kind: str):
 
 
 def classify_vertical_areas(areas: Sequence[Area], geometries: Sequence[CadGeometry],
-                            density: Dict[str, float] = None) -> Dict[int, str]:
-    """Set ``type`` to "stairs"/"elevator" on areas dense in stair/lift symbols. Returns {id: type}."""
+                            density: Dict[str, float] = None, shapes: bool = True) -> Dict[int, str]:
+    """Set ``type`` to "stairs"/"elevator" on areas dense in stair/lift symbols (symbol layers), then,
+    with ``shapes``, on areas holding a stair run or a lift cross drawn on any layer. Returns {id: type}."""
     density = dict(DENSITY, **(density or {}))
     changed: Dict[int, str] = {}
     for kind, area_type in KIND_TO_TYPE.items():
@@ -53,4 +69,147 @@ def classify_vertical_areas(areas: Sequence[Area], geometries: Sequence[CadGeome
             if inside / a.polygon.area >= density[area_type]:
                 a.type = area_type
                 changed[a.id] = area_type
+    if shapes:
+        changed.update(classify_by_symbol_shapes(areas, geometries))
+    return changed
+
+
+def _segments(geometries: Sequence[CadGeometry]) -> np.ndarray:
+    """Every straight piece of every geometry as an (N, 2, 2) array (NaN rows split rings)."""
+    gap = np.full((1, 2), np.nan)
+    arrs = []
+    for g in geometries:
+        c = np.asarray(g.coords, float)
+        if len(c) < 2:
+            continue
+        if g.closed:
+            if np.isnan(c).any():  # several rings: close each one
+                for part in np.split(c, np.where(np.isnan(c).any(axis=1))[0]):
+                    part = part[~np.isnan(part).any(axis=1)]
+                    if len(part) >= 2:
+                        arrs += [part, part[:1], gap]
+                continue
+            arrs += [c, c[:1], gap]
+        else:
+            arrs += [c, gap]
+    if not arrs:
+        return np.zeros((0, 2, 2))
+    allc = np.concatenate(arrs)
+    seg = np.stack([allc[:-1], allc[1:]], axis=1)
+    return seg[~np.isnan(seg).any(axis=(1, 2))]
+
+
+def find_stair_runs(geometries: Sequence[CadGeometry], min_treads: int = MIN_TREADS, segments=None) -> List[Polygon]:
+    """Stair runs drawn as treads on any layer: clusters of >= ``min_treads`` parallel segments of similar
+    length side by side at a regular tread spacing. Returns each run's minimum rotated rectangle."""
+    from scipy.sparse import coo_matrix
+    from scipy.sparse.csgraph import connected_components
+    from scipy.spatial import cKDTree
+
+    S = _segments(geometries) if segments is None else segments
+    if len(S) < min_treads:
+        return []
+    L = np.linalg.norm(S[:, 1] - S[:, 0], axis=1)
+    m = (L >= TREAD_LENGTH[0]) & (L <= TREAD_LENGTH[1])
+    S, L = S[m], L[m]
+    if len(S) < min_treads:
+        return []
+    ang = np.arctan2(S[:, 1, 1] - S[:, 0, 1], S[:, 1, 0] - S[:, 0, 0]) % np.pi
+    mid = S.mean(axis=1)
+    pairs = cKDTree(mid).query_pairs(TREAD_SPACING[1] + 0.05, output_type="ndarray")
+    if len(pairs) == 0:
+        return []
+    i, j = pairs[:, 0], pairs[:, 1]
+    da = np.abs(ang[i] - ang[j])
+    da = np.minimum(da, np.pi - da)
+    dl = np.abs(L[i] - L[j]) / np.maximum(L[i], L[j])
+    u = np.stack([np.cos(ang[i]), np.sin(ang[i])], 1)
+    dm = mid[j] - mid[i]
+    along = np.abs((dm * u).sum(1))
+    perp = np.abs(dm[:, 0] * u[:, 1] - dm[:, 1] * u[:, 0])
+    ok = (da < math.radians(3)) & (dl < 0.15) & (perp >= TREAD_SPACING[0]) & (perp <= TREAD_SPACING[1]) & \
+        (along < 0.3 * np.minimum(L[i], L[j]))
+    n = len(S)
+    _, lab = connected_components(coo_matrix((np.ones(int(ok.sum())), (i[ok], j[ok])), shape=(n, n)), directed=False)
+    runs = []
+    for c in np.unique(lab):
+        idx = np.where(lab == c)[0]
+        if len(idx) < min_treads:
+            continue
+        # regular spacing: offsets along the run's normal, sorted, have a steady step
+        a0 = ang[idx[0]]
+        normal = np.array([-math.sin(a0), math.cos(a0)])
+        off = np.sort(mid[idx] @ normal)
+        steps = np.diff(off)
+        steps = steps[steps > 0.05]
+        if len(steps) < min_treads - 1 or np.std(steps) > 0.25 * np.mean(steps):
+            continue
+        runs.append(MultiPoint(S[idx].reshape(-1, 2)).minimum_rotated_rectangle)
+    return runs
+
+
+def find_lift_crosses(geometries: Sequence[CadGeometry], segments=None) -> List[Polygon]:
+    """Lift symbols drawn as a cross on any layer: two segments of similar length crossing near both
+    their midpoints at 40-140 degrees. Returns the box the cross spans (its four end points)."""
+    from scipy.spatial import cKDTree
+
+    S = _segments(geometries) if segments is None else segments
+    if len(S) < 2:
+        return []
+    L = np.linalg.norm(S[:, 1] - S[:, 0], axis=1)
+    m = (L >= CROSS_LENGTH[0]) & (L <= CROSS_LENGTH[1])
+    S, L = S[m], L[m]
+    if len(S) < 2:
+        return []
+    mid = S.mean(axis=1)
+    pairs = cKDTree(mid).query_pairs(0.15 * CROSS_LENGTH[1], output_type="ndarray")
+    out, used = [], set()
+    for i, j in pairs.tolist():
+        if i in used or j in used:
+            continue
+        if abs(L[i] - L[j]) > 0.15 * max(L[i], L[j]):
+            continue
+        if np.hypot(*(mid[i] - mid[j])) > 0.1 * min(L[i], L[j]):
+            continue
+        di, dj = (S[i, 1] - S[i, 0]) / L[i], (S[j, 1] - S[j, 0]) / L[j]
+        cosang = abs(float(di @ dj))
+        if cosang > math.cos(math.radians(40)):
+            continue
+        box = MultiPoint(np.vstack([S[i], S[j]])).convex_hull
+        if box.geom_type != "Polygon" or not (0.7 <= box.area <= 9.5):
+            continue
+        used.update((i, j))
+        out.append(box)
+    return out
+
+
+def classify_by_symbol_shapes(areas: Sequence[Area], geometries: Sequence[CadGeometry]) -> Dict[int, str]:
+    """Type areas from stair runs and lift crosses found by shape on any layer (see the module doc).
+    Areas already typed stairs/elevator are left alone. Returns {id: type}."""
+    changed: Dict[int, str] = {}
+    cand = [a for a in areas if a.type not in ("stairs", "elevator") and a.polygon.area > 0]
+    if not cand:
+        return changed
+    tree = STRtree([a.polygon for a in cand])
+    segs = _segments(geometries)
+    for run in find_stair_runs(geometries, segments=segs):
+        hits = tree.query(run, predicate="intersects")
+        best, share = None, 0.0
+        for h in hits:
+            a = cand[int(h)]
+            ov = a.polygon.intersection(run).area
+            if ov > share:
+                best, share = a, ov
+        # the area holds most of the run, and the run is a real part of the area (not a hall with a stair)
+        if best is not None and share >= 0.5 * run.area and share >= 0.25 * best.polygon.area:
+            best.type = "stairs"
+            changed[best.id] = "stairs"
+    for box in find_lift_crosses(geometries, segments=segs):
+        c = box.centroid
+        hits = [cand[int(h)] for h in tree.query(c, predicate="intersects")]
+        hits = [a for a in hits if a.id not in changed and a.polygon.area <= 4.0 * box.area]
+        if hits:
+            a = min(hits, key=lambda x: x.polygon.area)
+            a.type = "elevator"
+            changed[a.id] = "elevator"
     return changed

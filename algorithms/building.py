@@ -1,152 +1,897 @@
-"""Combine per-floor osmAG files into one building file.
+"""Multi-floor fusion (pipeline stage 8): osmAG floors -> one osmAG building with vertical passages.
 
-Floors converted with the same anchor share one local frame, so their files can be merged as they are:
-ids are renumbered (negative, unique per element type across the building), one root node is kept,
-and a building structure area that encloses every floor becomes the ``osmAG:parent`` of each floor's
-outline. References in the fix-id variant (way ids in ``osmAG:parent/from/to``) are renumbered too.
-Aligning floors on their stairs/lifts and adding vertical passages is the multi-floor fusion stage's job.
+1. **Floors and levels.** Each floor comes from an osmAG file (either variant) or from areas/passages
+   already in memory (:class:`FloorData`). Its level is, in this order: the LEVELS given by the user,
+   the ``level`` tags of its areas, the file name (``*-F3*``, ``*_L-1*``, ``*B1*``, ``*3F*``,
+   ``*三层*``, ``*地下一层*``). A floor without a level, or two floors with one level, stop with an
+   error that names the files.
+2. **Vertical anchors** are the areas typed ``stairs``/``elevator`` (from symbols, layers, room names
+   or manual tags), or named like one (``stair``, ``楼梯``, ``lift``, ``电梯``, ``E1-ST-03``...).
+3. **Registration.** Floors of one building are often drawn in different frames (kilometres apart).
+   Going out from the reference floor (the one with the most anchors), each floor is registered onto its
+   nearest registered floor: anchors are matched by name first, else by type and shape, and a rigid
+   transform is estimated by consensus (RANSAC over every pair of compatible matches, rotation from two
+   anchors, translation from one): a wrong match never moves a floor, it is an outlier. The consensus
+   is refined by least squares on the anchor centroids and polished on the shapes of the matched
+   anchors (the centroid of their overlap); the residual per anchor and overall (RMS) is reported.
+   Floors without a usable anchor match fall back to footprint registration (translation by
+   cross-correlation of the area outlines, as ``rasterize.floor_offsets`` does for walls), with a
+   warning.
+4. **Stitching.** On consecutive converted levels, anchors of the same type that overlap (overlap ≥
+   ``MIN_SHAFT_OVERLAP`` of the smaller) are joined by a vertical passage: a two-node way inside both
+   shafts, with the upper floor's level and height (``../shared/docs/osmag-format.md``).
+5. **Hierarchy.** One building structure area (the union of the floor outlines) is the parent of one
+   ``structure`` area per level (the floor's outline, computed when the floor has none), which is the
+   parent of that floor's areas. Ids are renumbered across the building, names made unique
+   (a repeated name gets `` (level N)``). Every area of every floor is written (areas in = areas out).
+   Passages whose ``osmAG:from``/``to`` name no area are reported with their way ids and left out.
 """
 from __future__ import annotations
 
 import math
 import os
-import xml.etree.ElementTree as ET
-from typing import Dict, List, Sequence
+import re
+from dataclasses import dataclass, field
+from typing import Dict, List, Optional, Sequence, Tuple
 
-from shapely.geometry import Polygon
-from shapely.ops import unary_union
+import numpy as np
 
 from .errors import InputError
-from .io_utils import atomic_write
+from .model import Area, Passage
 from .progress import ensure
 
-REF_KEYS = ("osmAG:parent", "osmAG:from", "osmAG:to")
-ROOT_TOLERANCE_DEG = 1e-9  # ~0.1 mm: floors must share the root node to share a frame
+ANCHOR_TYPES = ("stairs", "elevator")
+MATCH_TOLERANCE = 1.5  # metres: an anchor lands on its partner within this after the transform
+MIN_SHAFT_OVERLAP = 0.3  # overlap / smaller shaft area for two anchors to be one shaft
+MIN_FLOOR_OVERLAP = 0.2  # overlap / smaller floor outline for two floors to belong to one building
+DEFAULT_HEIGHT = 3.2
+
+_STAIR_WORDS = re.compile(r"(stair|staircase|treppe|escal|scala|楼梯|樓梯|梯间|-ST-|^ST\d|\bST-?\d)", re.I)
+_LIFT_WORDS = re.compile(r"(elevator|lift|aufzug|ascensor|ascensore|电梯|電梯|-EV\d|\bEV\d)", re.I)
+_NOT_SHAFT = re.compile(r"(lobby|hall|foyer|landing|machine|motor|厅|前室|机房|候梯)", re.I)  # rooms beside shafts
+_LIFT_CODE = re.compile(r"^[A-Z]{1,2}\d+[a-z]?-P\d{1,2}$")  # E1-P1, E2-P4: lift codes of Chinese drawings
+_CN_DIGITS = {"零": 0, "一": 1, "二": 2, "两": 2, "三": 3, "四": 4, "五": 5, "六": 6, "七": 7, "八": 8, "九": 9,
+              "十": 10}
 
 
-def _tags(elem) -> Dict[str, str]:
-    return {t.get("k"): t.get("v") for t in elem.findall("tag")}
+# =========================================================================== levels
+def _cn_number(s: str) -> Optional[int]:
+    if s.isdigit():
+        return int(s)
+    if not s or any(ch not in _CN_DIGITS for ch in s):
+        return None
+    if s == "十":
+        return 10
+    if "十" in s:
+        a, _, b = s.partition("十")
+        return (_CN_DIGITS[a] if a else 1) * 10 + (_CN_DIGITS[b] if b else 0)
+    return _CN_DIGITS[s] if len(s) == 1 else None
 
 
-def _set_tag(elem, key, value):
-    for t in elem.findall("tag"):
-        if t.get("k") == key:
-            t.set("v", value)
-            return
-    ET.SubElement(elem, "tag", {"k": key, "v": value})
+def level_from_name(name: str) -> Optional[str]:
+    """The level a file name announces, or None: ``SIST-F3`` -> 3, ``plan_L-1`` -> -1, ``B2`` -> -2,
+    ``3F`` -> 3, ``三层`` -> 3, ``地下一层`` -> -1, ``floor-2`` -> 2, ``level_0`` -> 0."""
+    stem = os.path.splitext(os.path.basename(str(name)))[0]
+    m = re.search(r"地下([零一二两三四五六七八九十\d]+)[层樓楼]", stem)
+    if m and _cn_number(m.group(1)) is not None:
+        return str(-_cn_number(m.group(1)))
+    m = re.search(r"([零一二两三四五六七八九十\d]+)[层樓楼]", stem)
+    if m and _cn_number(m.group(1)) is not None:
+        return str(_cn_number(m.group(1)))
+    sep = r"(?:^|[^A-Za-z0-9])"
+    for pat, sign in ((sep + r"(?:level|floor|etage|piso|piano)[ _-]?(-?\d+)(?![0-9])", 1),
+                      (sep + r"[LF][ _]?(-?\d+)(?![0-9])", 1),
+                      (sep + r"B(\d+)(?![0-9])", -1),
+                      (sep + r"(-?\d+)F(?![A-Za-z0-9])", 1)):
+        m = re.search(pat, stem, re.I)
+        if m:
+            return str(sign * int(m.group(1)))
+    return None
+
+
+def _level_value(level: str) -> float:
+    return float(level)
+
+
+# =========================================================================== floors
+@dataclass
+class FloorData:
+    """One floor to fuse. Geometries in ``frame``'s metres (x east, y north) once loaded."""
+
+    source: str
+    areas: List[Area]
+    passages: List[Passage]
+    outline: Optional[Area] = None  # the floor's structure area (parent of its areas)
+    structures: List[Area] = field(default_factory=list)  # other structure areas of the floor
+    parents: Dict[int, int] = field(default_factory=dict)  # area id -> parent area id, as read
+    level: Optional[str] = None
+    height: Optional[float] = None
+    tag_level: Optional[str] = None
+    dropped_passages: List[Tuple[int, str]] = field(default_factory=list)  # (way id, why)
+    frame: object = None  # the LocalFrame the geometries are in
+
+    @property
+    def label(self) -> str:
+        return os.path.basename(self.source) or self.source
+
+
+def read_floor(path: str, frame, progress=None) -> FloorData:
+    """An osmAG floor file -> :class:`FloorData` in ``frame`` (a LocalFrame; None = the file's root)."""
+    from . import osmag
+
+    areas, passages, root, report = osmag.read_osmag(path, progress=progress)
+    if frame is None:
+        frame = osmag.frame_from_root(root)
+    areas, passages = osmag.to_frame(areas, passages, frame)
+    dropped = [(wid, f"{key}='{val}' names no area of the file") for wid, key, val in report["dangling_refs"]
+               if key in ("osmAG:from", "osmAG:to")]
+    dropped += [(wid, f"missing nodes {miss[:3]}") for wid, miss in report["dangling_nodes"].items()
+                if wid not in {a.id for a in areas}]
+    levels = [str(a.tags.get("level", "")).strip() for a in areas if a.type != "structure"]
+    levels = [lv for lv in levels if lv]
+    tag_level = None
+    if levels:
+        common = max(set(levels), key=levels.count)
+        tag_level = common
+    heights = []
+    for a in areas:
+        try:
+            heights.append(float(a.tags.get("height")))
+        except (TypeError, ValueError):
+            pass
+    fl = FloorData(source=path, areas=[], passages=list(passages), parents=dict(report["parents"]), frame=frame,
+                   tag_level=tag_level, height=(max(set(heights), key=heights.count) if heights else None),
+                   dropped_passages=sorted(set(dropped)))
+    ids = {a.id for a in areas}
+    _split_structures(fl, [a for a in areas if a.type == "structure"], ids)
+    fl.areas = [a for a in areas if a.type != "structure"]
+    return fl
+
+
+def _split_structures(fl: FloorData, structures: List[Area], ids) -> None:
+    """The floor's outline is its one structure area without a parent in the floor; with several (wings
+    drawn as separate structures), a new outline is computed around them all and they become its
+    children."""
+    top = [a for a in structures if fl.parents.get(a.id) not in ids]
+    if len(top) == 1:
+        fl.outline = top[0]
+        fl.structures = [a for a in structures if a is not top[0]]
+    else:
+        fl.outline = None
+        fl.structures = list(structures)
+
+
+def floors_from_layers(areas: Sequence[Area], passages: Sequence[Passage], frame, source: str = "layers",
+                       level: Optional[str] = None) -> List[FloorData]:
+    """Areas/passages in WGS84 lon/lat (e.g. QGIS layers made by loadosmag), split into one floor per
+    ``level`` tag (or all on ``level``) and converted into ``frame``. ``osmAG:parent`` tags naming an
+    area (by name or id) of the same floor become its parent."""
+    from . import osmag
+
+    areas, passages = osmag.to_frame(areas, passages, frame)
+    groups: Dict[str, List[Area]] = {}
+    for a in areas:
+        lv = str(level or (a.tags or {}).get("level", "") or "").strip()
+        if a.type == "structure" and (";" in lv or not lv):
+            continue  # a building outline (several levels, or none): the fusion makes a new one
+        groups.setdefault(lv, []).append(a)
+    out = []
+    for lv, group in groups.items():
+        ids = {a.id for a in group}
+        by_name = {a.name: a.id for a in group if a.name}
+        fl = FloorData(source=f"{source} (level {lv or '?'})", areas=[], passages=[], tag_level=lv or None)
+        for a in group:
+            pv = str((a.tags or {}).get("osmAG:parent", "") or "").strip()
+            pid = by_name.get(pv)
+            if pid is None:
+                try:
+                    pid = int(float(pv)) if pv else None
+                except ValueError:
+                    pid = None
+            if pid in ids:
+                fl.parents[a.id] = pid
+        _split_structures(fl, [a for a in group if a.type == "structure"], ids)
+        fl.areas = [a for a in group if a.type != "structure"]
+        for p in passages:
+            if p.from_id in ids and p.to_id in ids:
+                fl.passages.append(p)
+            elif (p.from_id in ids) != (p.to_id in ids):
+                continue  # a vertical passage of a merged file: the fusion links the shafts again
+        heights = [float(a.tags["height"]) for a in group if _is_float((a.tags or {}).get("height"))]
+        fl.height = max(set(heights), key=heights.count) if heights else None
+        out.append(fl)
+    known = {p.id for fl in out for p in fl.passages}
+    for p in passages:
+        if p.id not in known and not any(p.from_id in {a.id for a in fl.areas + fl.structures} for fl in out):
+            out[0].dropped_passages.append((p.id, f"from {p.from_id} to {p.to_id}: no such area"))
+    return out
+
+
+def _is_float(v) -> bool:
+    try:
+        float(v)
+        return True
+    except (TypeError, ValueError):
+        return False
+
+
+def anchor_kind(a: Area) -> Optional[str]:
+    """``stairs``/``elevator`` for a vertical anchor (type, else name/ref/tags), else None."""
+    if a.type in ANCHOR_TYPES:
+        return a.type
+    tags = a.tags or {}
+    if tags.get("stairs") == "yes" or tags.get("highway") in ("steps", "stairs") or tags.get("room") == "stairs":
+        return "stairs"
+    if tags.get("highway") == "elevator" or tags.get("elevator") == "yes" or tags.get("room") == "elevator":
+        return "elevator"
+    for text in (a.name, a.ref, tags.get("ref", "")):
+        text = str(text or "")
+        if not text or _NOT_SHAFT.search(text):
+            continue
+        if _STAIR_WORDS.search(text):
+            return "stairs"
+        if _LIFT_WORDS.search(text) or _LIFT_CODE.match(text.strip()):
+            return "elevator"
+    return None
+
+
+@dataclass
+class Anchor:
+    index: int  # index into FloorData.areas
+    kind: str
+    name: str
+    xy: np.ndarray  # centroid
+    size: float  # area in m²
+    polygon: object
+
+
+def floor_anchors(fl: FloorData) -> List[Anchor]:
+    out = []
+    for i, a in enumerate(fl.areas):
+        k = anchor_kind(a)
+        if k is None or a.polygon.is_empty:
+            continue
+        c = a.polygon.centroid
+        generated = re.fullmatch(r"L-?[\d.]+-[ASP]\d+", a.name or "") is not None
+        out.append(Anchor(i, k, "" if generated else (a.name or "").strip(), np.array([c.x, c.y]),
+                          float(a.polygon.area), a.polygon))
+    return out
+
+
+# =========================================================================== registration
+@dataclass
+class Rigid:
+    """x' = R(theta) x + t"""
+
+    theta: float = 0.0
+    tx: float = 0.0
+    ty: float = 0.0
+
+    def apply(self, xy: np.ndarray) -> np.ndarray:
+        c, s = math.cos(self.theta), math.sin(self.theta)
+        xy = np.asarray(xy, float)
+        return np.stack([c * xy[..., 0] - s * xy[..., 1] + self.tx, s * xy[..., 0] + c * xy[..., 1] + self.ty], -1)
+
+    def geometry(self, g):
+        from shapely import affinity
+
+        c, s = math.cos(self.theta), math.sin(self.theta)
+        return affinity.affine_transform(g, [c, -s, s, c, self.tx, self.ty])
+
+    def then(self, other: "Rigid") -> "Rigid":
+        """self followed by other."""
+        t = other.apply(np.array([self.tx, self.ty]))
+        return Rigid(self.theta + other.theta, float(t[0]), float(t[1]))
+
+    @property
+    def degrees(self) -> float:
+        return math.degrees(math.atan2(math.sin(self.theta), math.cos(self.theta)))
+
+
+def _fit_rigid(src: np.ndarray, dst: np.ndarray, rotate: bool = True) -> Rigid:
+    """Least-squares rigid transform src -> dst (Kabsch in 2D); translation only without rotate."""
+    cs, cd = src.mean(0), dst.mean(0)
+    if not rotate or len(src) < 2:
+        d = cd - cs
+        return Rigid(0.0, float(d[0]), float(d[1]))
+    a, b = src - cs, dst - cd
+    theta = math.atan2(float((a[:, 0] * b[:, 1] - a[:, 1] * b[:, 0]).sum()), float((a * b).sum()))
+    c, s = math.cos(theta), math.sin(theta)
+    t = cd - np.array([c * cs[0] - s * cs[1], s * cs[0] + c * cs[1]])
+    return Rigid(theta, float(t[0]), float(t[1]))
+
+
+def _compatible(a: Anchor, b: Anchor) -> bool:
+    if a.kind != b.kind:
+        return False
+    if a.name and b.name and _base_name(a.name) != _base_name(b.name):
+        return False
+    r = a.size / max(b.size, 1e-9)
+    return 0.4 <= r <= 2.5
+
+
+def _base_name(name: str) -> str:
+    """A shaft's name without its level: 'Stair A (level 2)' -> 'stair a', 'E1-ST-03-3F' -> 'e1-st-03'."""
+    n = re.sub(r"\s*\((?:level|L)\s*-?[\d.]+\)\s*$", "", name.strip(), flags=re.I)
+    n = re.sub(r"[-_ ]?(?:\d+F|F\d+|L-?\d+)$", "", n, flags=re.I)
+    return n.lower()
+
+
+def register_anchors(moving: Sequence[Anchor], fixed: Sequence[Anchor], tol: float = MATCH_TOLERANCE,
+                     rotate: bool = True):
+    """Robust rigid transform that brings ``moving`` anchors onto ``fixed`` ones.
+
+    Hypotheses: every compatible pair (translation only; rotation from the floors' shared drawing
+    orientation) and every two compatible pairs whose spacing agrees within ``tol`` (rotation and
+    translation). Each is scored by its consensus (anchors landing within ``tol`` of a compatible
+    partner, one-to-one); ties go to the smaller rotation, then the smaller residual. The winner is
+    refit by least squares on its inliers. Returns ``(Rigid, matches [(i_moving, i_fixed, residual)])``
+    or ``(None, [])`` when no anchor pair is compatible.
+    """
+    from scipy.spatial import cKDTree
+
+    if not moving or not fixed:
+        return None, []
+    M = np.array([a.xy for a in moving])
+    F = np.array([b.xy for b in fixed])
+    comp = [(i, j) for i, a in enumerate(moving) for j, b in enumerate(fixed) if _compatible(a, b)]
+    if not comp:
+        return None, []
+    named = [(i, j) for i, j in comp if moving[i].name and fixed[j].name and
+             _base_name(moving[i].name) == _base_name(fixed[j].name)]
+    tree = cKDTree(F)
+
+    compat = np.zeros((len(moving), len(fixed)), bool)
+    for i, j in comp:
+        compat[i, j] = True
+
+    def consensus(T: Rigid):
+        P = T.apply(M)
+        pairs = []
+        for i, js in enumerate(tree.query_ball_point(P, tol)):
+            for j in js:
+                if compat[i, j]:
+                    pairs.append((float(np.hypot(*(P[i] - F[j]))), i, j))
+        pairs.sort()
+        used_i, used_j, out = set(), set(), []
+        for d, i, j in pairs:
+            if i not in used_i and j not in used_j:
+                used_i.add(i)
+                used_j.add(j)
+                out.append((i, j, d))
+        return out
+
+    hyps: List[Rigid] = []
+    for i, j in comp:
+        d = F[j] - M[i]
+        hyps.append(Rigid(0.0, float(d[0]), float(d[1])))
+    if rotate and len(comp) <= 400:
+        for x in range(len(comp)):
+            i1, j1 = comp[x]
+            for y in range(x + 1, len(comp)):
+                i2, j2 = comp[y]
+                if i1 == i2 or j1 == j2:
+                    continue
+                dm, df = np.hypot(*(M[i2] - M[i1])), np.hypot(*(F[j2] - F[j1]))
+                if dm < 2 * tol or abs(dm - df) > tol:
+                    continue
+                hyps.append(_fit_rigid(M[[i1, i2]], F[[j1, j2]]))
+    best, best_key = None, None
+    named_set = set(named)
+    for T in hyps:
+        inl = consensus(T)
+        res = math.sqrt(sum(d * d for _, _, d in inl) / len(inl)) if inl else math.inf
+        n_named = sum((i, j) in named_set for i, j, _ in inl)
+        key = (-n_named, -len(inl), round(res, 1), round(abs(T.degrees), 1), res)
+        if best_key is None or key < best_key:
+            best, best_key = T, key
+    inl = consensus(best)
+    if not inl:
+        return None, []
+    src = M[[i for i, _, _ in inl]]
+    dst = F[[j for _, j, _ in inl]]
+    # least squares on the consensus; the rotation is kept when the inliers spread enough to fix it and
+    # it explains the data clearly better than a pure shift (floors are usually drawn the same way up)
+    T = _fit_rigid(src, dst, rotate=False)
+    spread = float(np.max(np.linalg.norm(src - src.mean(0), axis=1))) if len(src) >= 2 else 0.0
+    if rotate and spread >= 1.0:
+        TR = _fit_rigid(src, dst, rotate=True)
+
+        def rms_of(X):
+            return float(np.sqrt(np.mean(np.sum((X.apply(src) - dst) ** 2, axis=1))))
+
+        if rms_of(T) - rms_of(TR) > 0.1:
+            T = TR
+    rot_ok = rotate and spread >= 1.0 and T.theta != 0.0
+    T = _robust_refit(T, src, dst, rotate=rot_ok)
+    T = _polish_on_shapes(T, [(moving[i].polygon, fixed[j].polygon) for i, j, _ in inl], rotate=rot_ok)
+    P = T.apply(src)
+    matches = [(i, j, float(np.hypot(*(p - q)))) for (i, j, _), p, q in zip(inl, P, dst)]
+    return T, matches
+
+
+def _robust_refit(T: Rigid, src: np.ndarray, dst: np.ndarray, rotate: bool, c: float = 0.15,
+                  iterations: int = 20) -> Rigid:
+    """Iteratively reweighted least squares (Cauchy weights, scale ``c`` metres) from ``T``: a shaft
+    drawn differently on two floors (a landing included on one of them) moves its centroid by a metre;
+    it is kept as a match but no longer drags the floor, which follows the shafts that agree."""
+    if len(src) < 2:
+        return T
+    for _ in range(iterations):
+        r = np.linalg.norm(T.apply(src) - dst, axis=1)
+        w = 1.0 / (1.0 + (r / c) ** 2)
+        cs = (src * w[:, None]).sum(0) / w.sum()
+        cd = (dst * w[:, None]).sum(0) / w.sum()
+        theta = T.theta
+        if rotate:
+            a, b = (src - cs) * np.sqrt(w)[:, None], (dst - cd) * np.sqrt(w)[:, None]
+            theta = math.atan2(float((a[:, 0] * b[:, 1] - a[:, 1] * b[:, 0]).sum()), float((a * b).sum()))
+        co, si = math.cos(theta), math.sin(theta)
+        t = cd - np.array([co * cs[0] - si * cs[1], si * cs[0] + co * cs[1]])
+        new = Rigid(theta, float(t[0]), float(t[1]))
+        if abs(new.tx - T.tx) < 1e-6 and abs(new.ty - T.ty) < 1e-6 and abs(new.theta - T.theta) < 1e-9:
+            return new
+        T = new
+    return T
+
+
+def _polish_on_shapes(T: Rigid, pairs, rotate: bool, max_move: float = MATCH_TOLERANCE) -> Rigid:
+    """Refine ``T`` on the shapes of the matched shafts: minimise the mean non-overlap (1 - Dice) of each
+    moved shaft with its partner (Nelder-Mead from ``T``). Shafts drawn alike on both floors then lie
+    exactly on each other, and one drawn differently (a landing included on one floor) costs about the
+    same wherever it is, so it cannot pull. Kept only when it lowers the cost and moves less than
+    ``max_move``."""
+    from scipy.optimize import minimize
+
+    if not pairs:
+        return T
+
+    import shapely
+
+    PM = np.empty(len(pairs), dtype=object)
+    PM[:] = [pm for pm, _ in pairs]
+    PF = np.empty(len(pairs), dtype=object)
+    PF[:] = [pf for _, pf in pairs]
+    denom = np.maximum(shapely.area(PM) + shapely.area(PF), 1e-9)  # a rigid move keeps the area
+
+    def cost(v):
+        th = v[2] if rotate else T.theta
+        co, si = math.cos(th), math.sin(th)
+        rot = np.array([[co, si], [-si, co]])
+        G = shapely.transform(PM, lambda xy: xy @ rot + (v[0], v[1]))
+        return float(np.mean(1.0 - 2.0 * shapely.area(shapely.intersection(G, PF)) / denom))
+
+    x0 = np.array([T.tx, T.ty, T.theta])
+    c0 = cost(x0)
+    simplex = np.array([x0, x0 + [0.3, 0, 0], x0 + [0, 0.3, 0], x0 + [0, 0, math.radians(0.3)]])
+    if not rotate:
+        x0, simplex = x0[:2], simplex[:3, :2]
+        simplex[1:] = x0 + np.array([[0.3, 0], [0, 0.3]])
+    try:
+        res = minimize(cost, x0, method="Nelder-Mead",
+                       options={"initial_simplex": simplex, "xatol": 1e-4, "fatol": 1e-7, "maxiter": 400})
+    except Exception:  # noqa: BLE001 - a degenerate shape: keep the point fit
+        return T
+    if not res.success and res.fun >= c0:
+        return T
+    v = res.x
+    R = Rigid(float(v[2]) if rotate else T.theta, float(v[0]), float(v[1]))
+    moved = float(np.max(np.linalg.norm(R.apply(np.array([[0.0, 0.0]])) - T.apply(np.array([[0.0, 0.0]])), axis=1)))
+    # judge the move where the shafts are, not at the frame origin kilometres away
+    pts = np.array([[pm.centroid.x, pm.centroid.y] for pm, _ in pairs])
+    moved = float(np.max(np.linalg.norm(R.apply(pts) - T.apply(pts), axis=1)))
+    if res.fun < c0 - 1e-6 and moved <= max_move:
+        return R
+    return T
+
+
+def _outline_geometries(fl: FloorData, T: Optional[Rigid] = None):
+    from .model import CadGeometry
+
+    out = []
+    for a in fl.areas:
+        g = T.geometry(a.polygon) if T is not None else a.polygon
+        out.append(CadGeometry(layer="outline", kind="wall", coords=np.asarray(g.exterior.coords), closed=True))
+    return out
+
+
+def register_footprint(moving: FloorData, fixed: FloorData, T_fixed: Rigid, progress=None) -> Rigid:
+    """Translation that lays ``moving``'s area outlines over ``fixed``'s (already moved by T_fixed):
+    FFT cross-correlation of the outlines (rasterize.floor_offsets). Same orientation assumed."""
+    from .rasterize import floor_offsets
+
+    sets = [_outline_geometries(fixed, T_fixed), _outline_geometries(moving)]
+    if not sets[0] or not sets[1]:
+        raise InputError(f"floor '{moving.label}' or '{fixed.label}' has no areas to register by outline")
+    offs = floor_offsets(sets, reference=0, resolution=0.25, progress=progress)
+    dx, dy = offs[1]
+    return Rigid(0.0, float(dx), float(dy))
+
+
+# =========================================================================== fusion
+def _outline_of(fl: FloorData):
+    from shapely.ops import unary_union
+
+    from .pipeline import floor_outline
+
+    if fl.outline is not None:
+        return fl.outline.polygon
+    parts = fl.areas + fl.structures
+    return floor_outline(parts) or unary_union([a.polygon for a in parts]).convex_hull
+
+
+def _shaft_segment(poly):
+    """A short segment (≤ 1 m) around the pole of inaccessibility of ``poly``: inside it."""
+    from shapely.geometry import LineString
+    from shapely.ops import polylabel
+
+    try:
+        c = polylabel(poly, tolerance=0.02)
+    except Exception:  # noqa: BLE001 - degenerate polygon
+        c = poly.representative_point()
+    r = poly.exterior.distance(c)
+    h = max(min(0.5, 0.8 * r), 0.01)
+    seg = LineString([(c.x - h, c.y), (c.x + h, c.y)])
+    if not poly.contains(seg):
+        seg = LineString([(c.x, c.y - h), (c.x, c.y + h)])
+    return seg
+
+
+def fuse_floors(floors: Sequence[FloorData], out_path: str, frame, building_name: str = "Building",
+                levels: Optional[Sequence[str]] = None, heights: Optional[Sequence[float]] = None,
+                variant: str = "semantic", register: bool = True, strict_passages: bool = False,
+                progress=None) -> Dict[str, object]:
+    """Fuse floors (already in ``frame``'s metres) into one osmAG building file at ``out_path``.
+
+    ``levels``/``heights``: per floor (None entries: from tags / file name / default 3.2 m). Returns
+    figures: ``levels``, ``transforms`` {level: (dx, dy, degrees, method)}, ``residuals`` {level:
+    [(anchor, partner, metres)]} (distance of the shafts' centroids after registration: a shaft drawn
+    differently on the two floors shows its difference here), ``rms`` and ``median_residual`` {level:
+    metres}, ``overall_rms``, ``vertical`` [(lower area, upper area, kind)],
+    ``areas_in``/``areas_out``, ``passages``, ``dropped_passages``, ``warnings``, plus the writer's stats.
+    Raises InputError (nothing written) for unknown or repeated levels, floors that do not overlap,
+    passages to missing areas with ``strict_passages``.
+    """
+    from shapely.ops import unary_union
+
+    from . import osmag
+
+    progress = ensure(progress)
+    floors = list(floors)
+    if not floors:
+        raise InputError("no floors to merge: give at least one osmAG floor")
+    warnings: List[str] = []
+
+    def warn(msg):
+        warnings.append(msg)
+        progress.warning(msg)
+
+    # ---- levels
+    if levels is not None and len([lv for lv in levels if str(lv).strip()]) not in (0, len(floors)):
+        raise InputError(f"LEVELS gives {len([lv for lv in levels if str(lv).strip()])} levels for "
+                         f"{len(floors)} floors; give one level per floor, in the order of the floors")
+    for k, fl in enumerate(floors):
+        given = str(levels[k]).strip() if levels is not None and k < len(levels) and levels[k] is not None else ""
+        lv = given or fl.level or fl.tag_level or level_from_name(fl.source)
+        if not lv:
+            raise InputError(f"the level of floor '{fl.label}' is unknown: its areas have no level tag and its "
+                             "name does not say (like '*-F3*', '*_L-1*' or '*三层*'); give LEVELS")
+        try:
+            fl.level = osmag.check_level(lv)
+        except InputError as exc:
+            raise InputError(f"floor '{fl.label}': {exc}") from None
+        if heights is not None and k < len(heights) and heights[k]:
+            fl.height = float(heights[k])
+        fl.height = float(fl.height or DEFAULT_HEIGHT)
+        if fl.height <= 0:
+            raise InputError(f"floor '{fl.label}': height must be positive, got {fl.height}")
+    by_level: Dict[float, FloorData] = {}
+    for fl in floors:
+        v = _level_value(fl.level)
+        if v in by_level:
+            raise InputError(f"floors '{by_level[v].label}' and '{fl.label}' both claim level {fl.level}; give "
+                             "LEVELS (one per floor) or fix the level tags / file names")
+        by_level[v] = fl
+    order = sorted(by_level)
+    floors = [by_level[v] for v in order]
+    n = len(floors)
+    for fl in floors:
+        if fl.dropped_passages:
+            ids = ", ".join(str(w) for w, _ in fl.dropped_passages[:20])
+            more = f" (+{len(fl.dropped_passages) - 20} more)" if len(fl.dropped_passages) > 20 else ""
+            msg = (f"floor '{fl.label}' (level {fl.level}): {len(fl.dropped_passages)} passages reference areas "
+                   f"that are not in the file and are left out: ways {ids}{more}; e.g. "
+                   f"{fl.dropped_passages[0][1]}")
+            if strict_passages:
+                raise InputError(msg)
+            warn(msg)
+    progress.step(5, f"{n} floors: levels {', '.join(fl.level for fl in floors)}")
+    # ---- registration, outward from the floor with most anchors
+    anchors = [floor_anchors(fl) for fl in floors]
+    ref = max(range(n), key=lambda k: (len(anchors[k]), -k))
+    T: Dict[int, Rigid] = {ref: Rigid()}
+    transforms: Dict[str, tuple] = {floors[ref].level: (0.0, 0.0, 0.0, "reference")}
+    residuals: Dict[str, list] = {}
+    rms: Dict[str, float] = {}
+    medians: Dict[str, float] = {}
+    todo = sorted((k for k in range(n) if k != ref), key=lambda k: abs(k - ref))
+    for step_i, k in enumerate(todo):
+        progress.step(10 + 40.0 * step_i / max(len(todo), 1))
+        done = sorted(T, key=lambda j: abs(j - k))
+        fl = floors[k]
+        got = None
+        if register:
+            for j in done:
+                fixed = [Anchor(a.index, a.kind, a.name, T[j].apply(a.xy), a.size, T[j].geometry(a.polygon))
+                         for a in anchors[j]]
+                R, matches = register_anchors(anchors[k], fixed)
+                if R is None:
+                    continue
+                if len(matches) >= 2 or len(anchors[k]) == 1 or len(fixed) == 1:
+                    got = (R, matches, j)
+                    break
+                if got is None:
+                    got = (R, matches, j)  # one match only: keep looking for a better-supported partner
+            if got is not None:
+                R, matches, j = got
+                T[k] = R
+                res = [(fl.areas[anchors[k][i].index].name or str(fl.areas[anchors[k][i].index].id),
+                        floors[j].areas[anchors[j][jj].index].name or str(floors[j].areas[anchors[j][jj].index].id),
+                        round(d, 3)) for i, jj, d in matches]
+                residuals[fl.level] = res
+                rms[fl.level] = float(math.sqrt(np.mean([d * d for _, _, d in res]))) if res else 0.0
+                medians[fl.level] = float(np.median([d for _, _, d in res])) if res else 0.0
+                transforms[fl.level] = (R.tx, R.ty, R.degrees, f"anchors ({len(matches)} matched)")
+                progress.info(f"level {fl.level}: registered on level {floors[j].level} by {len(matches)} anchors, "
+                              f"shift ({R.tx:.2f}, {R.ty:.2f}) m, rotation {R.degrees:.2f}°, residual RMS "
+                              f"{rms[fl.level]:.3f} m, median {medians[fl.level]:.3f} m (" + ", ".join(f"{a}: {d:.3f} m" for a, _, d in res) + ")")
+                if len(matches) == 1:
+                    warn(f"level {fl.level}: only one anchor matched ({res[0][0]}); translation only, no check "
+                         "against a second anchor")
+            else:
+                j = done[0]
+                R = register_footprint(fl, floors[j], T[j], progress=None)
+                T[k] = R
+                transforms[fl.level] = (R.tx, R.ty, 0.0, "footprint")
+                warn(f"level {fl.level} ('{fl.label}'): no stair/lift anchor matches level {floors[j].level}; "
+                     f"registered by its outline instead (shift {R.tx:.2f}, {R.ty:.2f} m, no rotation): check it, "
+                     "or type the stairs and lifts (names, symbols or osmAG:areatype) and merge again")
+        else:
+            T[k] = Rigid()
+            transforms[fl.level] = (0.0, 0.0, 0.0, "none")
+    # ---- apply
+    for k, fl in enumerate(floors):
+        R = T[k]
+        if R.theta == 0 and R.tx == 0 and R.ty == 0:
+            continue
+        for a in fl.areas + fl.structures + ([fl.outline] if fl.outline is not None else []):
+            a.polygon = R.geometry(a.polygon)
+        for p in fl.passages:
+            p.line = R.geometry(p.line)
+    progress.step(55)
+    # ---- floor outlines and overlap check
+    outlines = []
+    for fl in floors:
+        poly = _outline_of(fl)
+        if fl.outline is None:
+            fl.outline = Area(id=0, polygon=poly, type="structure", name=f"Level {fl.level}")
+        outlines.append(fl.outline.polygon)
+    for k in range(n):
+        if n == 1:
+            break
+        best = max((outlines[k].intersection(outlines[j]).area / max(min(outlines[k].area, outlines[j].area), 1e-9)
+                    for j in range(n) if j != k), default=0.0)
+        if best < MIN_FLOOR_OVERLAP:
+            raise InputError(f"floor '{floors[k].label}' (level {floors[k].level}) does not overlap any other floor "
+                             f"after registration (best overlap {best:.0%}); are they floors of one building? "
+                             "Type the shared stairs/lifts or convert the floors with the same anchor")
+    # ---- ids: renumber across the building
+    new_id = 1
+    id_map: List[Dict[int, int]] = []
+    for fl in floors:
+        m: Dict[int, int] = {}
+        for a in [fl.outline] + fl.structures + fl.areas:
+            m[a.id] = new_id
+            new_id += 1
+        id_map.append(m)
+    parents: Dict[int, int] = {}
+    names_seen: Dict[str, int] = {}
+    for fl in floors:
+        for a in [fl.outline] + fl.structures + fl.areas:
+            if a.name:
+                names_seen[a.name] = names_seen.get(a.name, 0) + 1
+    layers: List[osmag.FloorLayer] = []
+    copies: List[List[Area]] = []
+    passages_out = 0
+    for fl, m in zip(floors, id_map):
+        def cp(a: Area, typ=None) -> Area:
+            nm = a.name
+            if nm and names_seen.get(nm, 0) > 1:
+                nm = f"{nm} (level {fl.level})"
+            tags = {kk: vv for kk, vv in (a.tags or {}).items() if kk != "osmAG:parent"}
+            return Area(id=m[a.id], polygon=a.polygon, type=typ or a.type, name=nm, tags=tags, ref=a.ref,
+                        max_clearance=a.max_clearance, component=a.component)
+
+        outline = cp(fl.outline, "structure")
+        structs = [cp(a, "structure") for a in fl.structures]
+        areas = [cp(a) for a in fl.areas]
+        copies.append(areas)
+        for a in fl.structures + fl.areas:
+            pid = fl.parents.get(a.id)
+            parents[m[a.id]] = m[pid] if pid in m else outline.id
+        passages = []
+        for p in fl.passages:
+            if p.from_id in m and p.to_id in m:
+                passages.append(Passage(id=len(passages) + 1 + passages_out, from_id=m[p.from_id], to_id=m[p.to_id],
+                                        line=p.line, name=p.name,
+                                        tags={kk: vv for kk, vv in (p.tags or {}).items()
+                                              if kk not in ("osmAG:from", "osmAG:to", "osmAG:type", "level", "name")}))
+        passages_out += len(passages)
+        layers.append(osmag.FloorLayer(fl.level, areas, passages, [outline] + structs, fl.height))
+    # ---- vertical passages between consecutive converted levels
+    vertical: List[Passage] = []
+    links = []
+    for k in range(n - 1):
+        lo, hi = floors[k], floors[k + 1]
+        if _level_value(hi.level) - _level_value(lo.level) > 1:
+            warn(f"levels {lo.level} and {hi.level} are consecutive in this set but not adjacent: their shafts "
+                 "are linked directly")
+        al, ah = floor_anchors(lo), floor_anchors(hi)
+        cands = []
+        for x in al:
+            for y in ah:
+                if x.kind != y.kind:
+                    continue
+                inter = x.polygon.intersection(y.polygon)
+                if inter.is_empty:
+                    continue
+                ov = inter.area / max(min(x.size, y.size), 1e-9)
+                if ov >= MIN_SHAFT_OVERLAP:
+                    cands.append((ov, x, y, inter))
+        cands.sort(key=lambda c: -c[0])
+        used_l, used_h = set(), set()
+        for ov, x, y, inter in cands:
+            if x.index in used_l or y.index in used_h:
+                continue
+            used_l.add(x.index)
+            used_h.add(y.index)
+            inter_poly = max(getattr(inter, "geoms", [inter]), key=lambda g: getattr(g, "area", 0))
+            a_lo, a_hi = copies[k][x.index], copies[k + 1][y.index]
+            n_kind = 1 + sum(1 for lk in links if lk[0] == lo.level and lk[1] == hi.level and lk[4] == x.kind)
+            vertical.append(Passage(id=passages_out + len(vertical) + 1, from_id=a_lo.id, to_id=a_hi.id,
+                                    line=_shaft_segment(inter_poly),
+                                    name=f"{'Stairs' if x.kind == 'stairs' else 'Lift'} {n_kind} L{lo.level}-L{hi.level}",
+                                    tags={"osmAG:vertical": "yes",
+                                          ("stairs" if x.kind == "stairs" else "elevator"): "yes"}))
+            links.append((lo.level, hi.level, a_lo.name or str(a_lo.id), a_hi.name or str(a_hi.id), x.kind,
+                          round(ov, 3)))
+        unlinked = [a for a in al if a.index not in used_l] + [a for a in ah if a.index not in used_h]
+        progress.info(f"levels {lo.level}-{hi.level}: {len(used_l)} shafts linked "
+                      f"({sum(1 for a in al if a.index in used_l and a.kind == 'stairs')} stairs, "
+                      f"{sum(1 for a in al if a.index in used_l and a.kind == 'elevator')} lifts); "
+                      f"{len(unlinked)} anchors without a partner")
+    progress.step(65)
+    # ---- building outline
+    union = unary_union([o.buffer(0) for o in outlines])
+    from shapely.geometry import Polygon
+
+    if union.geom_type == "Polygon":
+        shell = Polygon(union.exterior)
+    else:
+        shell = Polygon(union.convex_hull.exterior)
+    bid = new_id
+    top = Area(id=bid, polygon=shell, type="structure", name=building_name,
+               tags={"building": "yes", "level": ";".join(fl.level for fl in floors),
+                     "min_level": floors[0].level, "max_level": floors[-1].level,
+                     "building:levels": str(n)})
+    for lay in layers:
+        parents[lay.structure_areas[0].id] = bid
+    written = osmag.write_osmag_levels(out_path, layers, frame=frame, variant=variant, top_areas=[top],
+                                       vertical_passages=vertical, parents=parents, progress=progress.sub(70, 100))
+    areas_in = sum(len(fl.areas) + len(fl.structures) + (1 if fl.outline is not None else 0) for fl in floors)
+    stats = {k: v for k, v in written.items() if k not in ("way_ids", "names")}
+    stats.update({"floors": n, "levels": [fl.level for fl in floors], "transforms": transforms,
+                  "residuals": residuals, "rms": rms, "median_residual": medians, "vertical": links, "reference": floors[ref].level,
+                  "areas_in": areas_in, "areas_out": written["areas"] + written["structure_areas"] - 1,
+                  "dropped_passages": {fl.level: fl.dropped_passages for fl in floors if fl.dropped_passages},
+                  "warnings": warnings + written["warnings"],
+                  "overall_rms": (float(math.sqrt(np.mean([d * d for r in residuals.values() for _, _, d in r])))
+                                  if any(residuals.values()) else None)})
+    progress.info(f"building '{building_name}': {n} floors, {len(vertical)} vertical passages, "
+                  f"{stats['areas_out']} areas (+1 building), {written['passages']} passages")
+    return stats
+
+
+def is_fix_id(path: str) -> bool:
+    """True when the file references areas by way id (fix-id variant)."""
+    try:
+        with open(path, encoding="utf-8", errors="replace") as fh:
+            head = fh.read(1_000_000)
+    except OSError:
+        return False
+    return bool(re.search(r'k=["\']osmAG:(?:from|to|parent)["\'] v=["\']-?\d+["\']', head))
 
 
 def merge_floor_files(paths: Sequence[str], out_path: str, building_name: str = "Building",
+                      levels: Optional[Sequence[str]] = None, heights: Optional[Sequence[float]] = None,
+                      variant: Optional[str] = None, register: bool = True, strict_passages: bool = False,
                       progress=None) -> Dict[str, object]:
-    """Merge osmAG floor files (same root node) into ``out_path``. Returns figures for the log."""
+    """osmAG floor files -> one building file (see the module docstring). ``variant`` None: fix-id if
+    any input is fix-id, else semantic. The output frame is the first file's root node."""
+    from . import osmag
+
     progress = ensure(progress)
+    paths = [str(p) for p in paths if str(p).strip()]
     if not paths:
-        raise InputError("no floor files to merge")
-    root_pos = None
-    next_node, next_way = -1, -1
-    out_nodes: List[ET.Element] = []
-    out_ways: List[ET.Element] = []
-    floor_outlines: List[Polygon] = []
-    floor_ways: List[ET.Element] = []
-    levels: List[str] = []
+        raise InputError("no floor files to merge: give at least one osmAG floor file")
+    frame = None
+    floors = []
     fixid = False
     for i, path in enumerate(paths):
-        progress.step(100.0 * i / len(paths), f"merging {os.path.basename(path)}")
-        try:
-            osm = ET.parse(path).getroot()
-        except (ET.ParseError, OSError) as exc:
-            raise InputError(f"cannot read osmAG floor file '{path}': {exc}") from exc
-        nodes = {n.get("id"): n for n in osm.findall("node")}
-        roots = [n for n in nodes.values() if _tags(n).get("name") == "root"]
-        if len(roots) != 1:
-            raise InputError(f"'{os.path.basename(path)}' has {len(roots)} root nodes; an osmAG file has exactly one")
-        pos = (float(roots[0].get("lon")), float(roots[0].get("lat")))
-        if root_pos is None:
-            root_pos = pos
-            root = ET.Element("node", {"id": str(next_node), "lat": roots[0].get("lat"), "lon": roots[0].get("lon"),
-                                       "version": "1", "visible": "true"})
-            ET.SubElement(root, "tag", {"k": "name", "v": "root"})
-            out_nodes.append(root)
-            next_node -= 1
-        elif max(abs(pos[0] - root_pos[0]), abs(pos[1] - root_pos[1])) > ROOT_TOLERANCE_DEG:
-            raise InputError(f"'{os.path.basename(path)}' has its root node at {pos}, not at {root_pos}: "
-                             "convert every floor with the same anchor before merging")
-        node_map: Dict[str, str] = {}
-        for nid, n in nodes.items():
-            if n is roots[0]:
-                continue
-            node_map[nid] = str(next_node)
-            n.set("id", str(next_node))
-            out_nodes.append(n)
-            next_node -= 1
-        way_map: Dict[str, str] = {}
-        ways = osm.findall("way")
-        for w in ways:
-            way_map[w.get("id")] = str(next_way)
-            next_way -= 1
-        coords = {n.get("id"): (float(n.get("lon")), float(n.get("lat"))) for n in out_nodes}
-        for w in ways:
-            w.set("id", way_map[w.get("id")])
-            for nd in w.findall("nd"):
-                ref = nd.get("ref")
-                if ref not in node_map:
-                    raise InputError(f"way {w.get('id')} of '{os.path.basename(path)}' references missing node {ref}")
-                nd.set("ref", node_map[ref])
-            tags = _tags(w)
-            for key in REF_KEYS:
-                if key in tags and tags[key] in way_map:  # fix-id variant
-                    _set_tag(w, key, way_map[tags[key]])
-                    fixid = True
-            if tags.get("osmAG:areatype") == "structure" and not tags.get("osmAG:parent"):
-                ring = [coords[nd.get("ref")] for nd in w.findall("nd")]
-                if len(ring) >= 4:
-                    floor_outlines.append(Polygon(ring))
-                    floor_ways.append(w)
-            if tags.get("level") and tags["level"] not in levels:
-                levels.append(tags["level"])
-            out_ways.append(w)
-    if not floor_ways:
-        raise InputError("the floor files have no floor outline (structure area without parent) to attach "
-                         "to the building")
-    # the building outline: the union of the floor outlines (it contains each of them)
-    outline = unary_union([p.buffer(0) for p in floor_outlines])
-    parts = list(getattr(outline, "geoms", [outline]))
-    shell = Polygon(max(parts, key=lambda p: p.area).exterior) if len(parts) == 1 else outline.convex_hull
-    ring = list(shell.exterior.coords)[:-1]
-    building_way = ET.Element("way", {"id": str(next_way), "version": "1", "visible": "true"})
-    first = None
-    for lon, lat in ring:
-        n = ET.Element("node", {"id": str(next_node), "lat": f"{lat:.10f}", "lon": f"{lon:.10f}",
-                                "version": "1", "visible": "true"})
-        out_nodes.append(n)
-        ET.SubElement(building_way, "nd", {"ref": str(next_node)})
-        first = first or str(next_node)
-        next_node -= 1
-    ET.SubElement(building_way, "nd", {"ref": first})
-    level_list = sorted(levels, key=lambda s: (float(s) if _is_number(s) else math.inf, s))
-    for k, v in (("osmAG:type", "area"), ("osmAG:areatype", "structure"), ("indoor", "area"),
-                 ("area", "yes"), ("building", "yes"), ("name", building_name), ("level", ";".join(level_list))):
-        ET.SubElement(building_way, "tag", {"k": k, "v": v})
-    for w in floor_ways:
-        _set_tag(w, "osmAG:parent", building_way.get("id") if fixid else building_name)
-    osm_out = ET.Element("osm", {"version": "0.6", "generator": "cad2osmag"})
-    osm_out.extend(out_nodes)
-    osm_out.append(building_way)
-    osm_out.extend(out_ways)
-    ET.indent(osm_out)
-    with atomic_write(out_path) as fh:
-        fh.write('<?xml version="1.0" encoding="UTF-8"?>\n')
-        fh.write(ET.tostring(osm_out, encoding="unicode"))
-        fh.write("\n")
-    progress.step(100, f"building: {len(paths)} floors, {len(out_ways) + 1} ways, {len(out_nodes)} nodes "
-                       f"written to {out_path}")
-    return {"floors": len(paths), "ways": len(out_ways) + 1, "nodes": len(out_nodes), "levels": level_list,
-            "variant": "fix-id" if fixid else "semantic"}
+        progress.step(5.0 * i / len(paths), f"reading {os.path.basename(path)}")
+        if not os.path.isfile(path):
+            raise InputError(f"floor file '{path}' does not exist")
+        fl = read_floor(path, frame)
+        frame = frame or fl.frame
+        floors.append(fl)
+        fixid = fixid or is_fix_id(path)
+    variant = variant or ("fix-id" if fixid else "semantic")
+    return fuse_floors(floors, out_path, frame, building_name=building_name, levels=levels, heights=heights,
+                       variant=variant, register=register, strict_passages=strict_passages,
+                       progress=progress.sub(5, 100))
 
 
-def _is_number(s: str) -> bool:
-    try:
-        float(s)
-        return True
-    except ValueError:
-        return False
+def _convert_one(args):
+    from . import pipeline
+
+    dxf, out, level, kwargs = args
+    import time as _t
+
+    t0 = _t.perf_counter()
+    stats = pipeline.convert_dxf(dxf, out, level=level, **kwargs)
+    return out, _t.perf_counter() - t0, stats.get("areas"), stats.get("passages")
+
+
+def convert_floors(dxf_paths: Sequence[str], out_dir: str, levels: Optional[Sequence[str]] = None,
+                   workers: int = 2, progress=None, **convert_kwargs) -> List[Tuple[str, float, int, int]]:
+    """Convert DXF floors to osmAG files in ``out_dir`` (``<stem>.osm``), ``workers`` at a time in a
+    process pool (each floor is independent). Levels: ``levels``, else from the file names. Returns
+    [(osm path, seconds, areas, passages)] in input order. Every floor gets the same anchor (the
+    ``anchor_lon``/``anchor_lat`` keyword, default 0/0), so the fusion only has to register them."""
+    import concurrent.futures as cf
+
+    progress = ensure(progress)
+    jobs = []
+    for k, dxf in enumerate(dxf_paths):
+        lv = (levels[k] if levels is not None and k < len(levels) else None) or level_from_name(dxf)
+        if lv is None:
+            raise InputError(f"the level of '{os.path.basename(dxf)}' is unknown: name it like '*-F3*' or give levels")
+        out = os.path.join(out_dir, os.path.splitext(os.path.basename(dxf))[0] + ".osm")
+        jobs.append((dxf, out, lv, dict(convert_kwargs)))
+    os.makedirs(out_dir, exist_ok=True)
+    results: Dict[int, tuple] = {}
+    if workers <= 1 or len(jobs) == 1:
+        for k, job in enumerate(jobs):
+            progress.check()
+            results[k] = _convert_one(job)
+            progress.step(100.0 * (k + 1) / len(jobs), f"{os.path.basename(job[0])}: {results[k][1]:.1f} s")
+    else:
+        import multiprocessing as mp
+
+        ctx = mp.get_context("spawn")  # no fork of a process that may hold QGIS/Qt state
+        with cf.ProcessPoolExecutor(max_workers=workers, mp_context=ctx) as ex:
+            futs = {ex.submit(_convert_one, job): k for k, job in enumerate(jobs)}
+            for f in cf.as_completed(futs):
+                k = futs[f]
+                results[k] = f.result()
+                progress.step(100.0 * len(results) / len(jobs),
+                              f"{os.path.basename(jobs[k][0])}: {results[k][1]:.1f} s")
+                if progress.is_canceled():
+                    for other in futs:
+                        other.cancel()
+                    progress.check()
+    return [results[k] for k in range(len(jobs))]
+
+
+__all__ = ["convert_floors", "floors_from_layers", "FloorData", "read_floor", "fuse_floors", "merge_floor_files", "level_from_name", "anchor_kind",
+           "register_anchors", "Rigid", "floor_anchors"]

@@ -32,6 +32,8 @@ class CadGeometry:
     filled: bool = False  # solid hatch / SOLID / wide polyline outline: rasterize as a filled polygon
     width: float = 0.0  # constant polyline width in metres (0 = hairline)
     entity: str = ""  # source DXF type, e.g. "LWPOLYLINE"
+    block: str = ""  # innermost named block it was exploded from ("" = model space)
+    cls: str = ""  # class found by cad_classify: wall | door | window | furniture | hatch | "" (not classified)
 
 
 @dataclass
@@ -83,6 +85,7 @@ class LayerInfo:
     counts: Dict[str, int] = field(default_factory=dict)  # DXF type -> count after explosion
     kind: Optional[str] = None  # matched category, None when the rules drop the layer
     rule: str = ""  # the keyword that matched
+    matched: str = ""  # the meaningful part of the name the rules matched ("A-WALL" of "E1-RI-1F$0$A-WALL")
     frozen: bool = False
     off: bool = False
 
@@ -106,6 +109,7 @@ class CadDrawing:
     plans: List["PlanInfo"] = field(default_factory=list)  # groups found on the sheet; selected one kept
     classes: Dict[str, int] = field(default_factory=dict)  # entity class counts (wall, door, furniture..)
     undecoded: Dict[str, int] = field(default_factory=dict)  # entity types the reader could not decode
+    timings: Dict[str, float] = field(default_factory=dict)  # import stages (read, explode, classify, plans), s
 
 
 # --------------------------------------------------------------------------- stage 2: raster

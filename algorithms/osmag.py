@@ -33,6 +33,7 @@ from __future__ import annotations
 import math
 import os
 import xml.etree.ElementTree as ET
+from dataclasses import dataclass
 from typing import Dict, List, Optional, Sequence, Tuple
 from xml.sax.saxutils import quoteattr
 
@@ -62,11 +63,39 @@ def generated_name(level: str, kind: str, ident: int) -> str:
 
 
 # =========================================================================== writing
+@dataclass
+class FloorLayer:
+    """One level of a multi-level file for :func:`write_osmag_levels`: its areas (ids unique across the
+    whole file), passages, structure areas (the floor outline), ``level`` (a number as a string) and
+    ``height`` (metres)."""
+
+    level: str
+    areas: Sequence[Area]
+    passages: Sequence[Passage] = ()
+    structure_areas: Sequence[Area] = ()
+    height: float = 3.2
+
+
+def check_level(level) -> str:
+    """``level`` as the string written to the file; it must be a number (``1``, ``-1``, ``0.5``)."""
+    s = str(level).strip()
+    if not s:
+        raise InputError("LEVEL must not be empty (e.g. '1' or '-1')")
+    try:
+        v = float(s)
+    except ValueError:
+        raise InputError(f"level '{s}' is not a number; osmAG levels are numbers such as 1, 0 or -1 "
+                         "(give LEVEL, or name the floor file like '*-F3*' / '*_L-1*')") from None
+    if not np.isfinite(v):
+        raise InputError(f"level '{s}' is not a finite number")
+    return s.lstrip("+")
+
+
 def write_osmag(path: str, areas: Sequence[Area], passages: Sequence[Passage] = (), frame=None,
                 level: str = "1", height: float = 3.2, variant: str = "semantic",
                 structure_areas: Sequence[Area] = (), crs=None, root: Optional[Tuple[float, float]] = None,
                 progress=None) -> dict:
-    """Write an osmAG file; see the module docstring for the format.
+    """Write a one-floor osmAG file; see the module docstring for the format.
 
     ``areas``/``structure_areas``: :class:`Area` with shapely polygons; ``passages``: :class:`Passage`
     whose ``from_id``/``to_id`` are area ids. Georeference: ``frame`` (a
@@ -79,6 +108,29 @@ def write_osmag(path: str, areas: Sequence[Area], passages: Sequence[Passage] = 
     Raises InputError (nothing written) for empty/invalid polygons, passages referencing missing areas,
     an unknown variant, a missing georeference.
     """
+    level = check_level(level)
+    if not areas and not structure_areas:
+        raise InputError("nothing to export: no areas")
+    return write_osmag_levels(path, [FloorLayer(level, list(areas), list(passages), list(structure_areas),
+                                                height)], frame=frame, crs=crs, variant=variant, root=root,
+                              progress=progress)
+
+
+def write_osmag_levels(path: str, floors: Sequence[FloorLayer], frame=None, crs=None, variant: str = "semantic",
+                       root: Optional[Tuple[float, float]] = None, top_areas: Sequence[Area] = (),
+                       vertical_passages: Sequence[Passage] = (), parents: Optional[Dict[int, int]] = None,
+                       progress=None) -> dict:
+    """Write one osmAG file holding several levels (a building).
+
+    Each floor's areas share nodes among themselves only (floors above one another never share a
+    node). ``top_areas`` are structure areas above the floors (the building outline; their ``tags``
+    may carry ``level`` such as ``1;2;3``); a floor's structure area without a parent gets the smallest
+    top area containing it as ``osmAG:parent``. ``vertical_passages`` join areas of different floors
+    (stairs/lift shafts): a two-node way of their own (``line``, in the frame), tagged with the upper
+    floor's ``level`` and ``height`` (the osmAG spec of June 2025). ``parents`` ({area id: parent area
+    id}) overrides the parent otherwise found from tags/containment. Area ids must be unique across the
+    whole file. Stats as :func:`write_osmag`, plus ``levels`` and ``vertical_passages``.
+    """
     import shapely
     from shapely.geometry import MultiPolygon, Polygon
 
@@ -88,23 +140,44 @@ def write_osmag(path: str, areas: Sequence[Area], passages: Sequence[Passage] = 
     progress = ensure(progress)
     if variant not in VARIANTS:
         raise InputError(f"unknown osmAG variant {variant!r}; use 'semantic' or 'fix-id'")
-    level = str(level).strip()
-    if not level:
-        raise InputError("LEVEL must not be empty (e.g. '1' or '-1')")
-    if not (height and float(height) > 0):
-        raise InputError(f"HEIGHT must be a positive number of metres, got {height}")
     if (frame is None) == (crs is None):
         raise InputError("the areas carry no georeference: give a LocalFrame (anchor, rotation) for CAD-frame "
                          "geometries, or the CRS they are in; georeference the layers first")
-    all_areas = list(structure_areas) + list(areas)
-    if not areas and not structure_areas:
+    floors = list(floors)
+    if not floors:
+        raise InputError("nothing to export: no floors")
+    levels = []
+    for fl in floors:
+        fl.level = check_level(fl.level)
+        if not (fl.height and float(fl.height) > 0):
+            raise InputError(f"HEIGHT must be a positive number of metres, got {fl.height} (level {fl.level})")
+        levels.append(fl.level)
+    dup_levels = sorted({lv for lv in levels if levels.count(lv) > 1})
+    if dup_levels:
+        raise InputError(f"levels {dup_levels} are given to more than one floor; every floor needs its own level")
+    top_areas = list(top_areas)
+    # every area of the file, in way order: top areas, then per floor its structure areas and areas
+    all_areas: List[Area] = list(top_areas)
+    area_floor: List[int] = [-1] * len(top_areas)  # floor index per area, -1 = top area
+    is_struct: List[bool] = [True] * len(top_areas)
+    for fi, fl in enumerate(floors):
+        for a in fl.structure_areas:
+            all_areas.append(a)
+            area_floor.append(fi)
+            is_struct.append(True)
+        for a in fl.areas:
+            all_areas.append(a)
+            area_floor.append(fi)
+            is_struct.append(False)
+    if not all_areas:
         raise InputError("nothing to export: no areas")
-    n_struct = len(structure_areas)
     warnings: List[str] = []
     # ---- validate geometries and references
     ids = [a.id for a in all_areas]
-    dup = sorted({i for i in ids if ids.count(i) > 1})
-    if dup:
+    if len(set(ids)) != len(ids):
+        from collections import Counter
+
+        dup = sorted(i for i, c in Counter(ids).items() if c > 1)
         raise InputError(f"duplicate area ids {dup}; every area (and structure area) needs a unique id")
     empty = [a.id for a in all_areas if a.polygon is None or a.polygon.is_empty]
     if empty:
@@ -123,11 +196,17 @@ def write_osmag(path: str, areas: Sequence[Area], passages: Sequence[Passage] = 
             raise InputError(f"area {a.id} has an invalid polygon ({shapely.is_valid_reason(g)}); fix it "
                              "(QGIS 'Fix geometries') and export again")
         polys.append(g)
-    idset = set(ids)
-    bad = [f"{p.id} ({p.from_id}->{p.to_id})" for p in passages if p.from_id not in idset or p.to_id not in idset]
+    by_id = {a.id: k for k, a in enumerate(all_areas)}
+    bad = []
+    for fi, fl in enumerate(floors):
+        for p in fl.passages:
+            if p.from_id not in by_id or p.to_id not in by_id:
+                bad.append(f"{p.id} ({p.from_id}->{p.to_id})")
+    bad += [f"{p.id} ({p.from_id}->{p.to_id})" for p in vertical_passages
+            if p.from_id not in by_id or p.to_id not in by_id]
     if bad:
         raise InputError(f"passages reference missing areas: {', '.join(bad)}; delete them or add the areas")
-    for p in passages:
+    for p in [p for fl in floors for p in fl.passages] + list(vertical_passages):
         if p.line is None or p.line.is_empty or len(p.line.coords) < 2:
             raise InputError(f"passage {p.id} has no line geometry (needs 2 points)")
     # ---- coordinates -> WGS84
@@ -142,23 +221,49 @@ def write_osmag(path: str, areas: Sequence[Area], passages: Sequence[Passage] = 
 
         def to_ll(x, y):
             return to_wgs84_points(x, y, c)
-    pxy = np.array([[p.line.coords[0][:2], p.line.coords[-1][:2]] for p in passages], dtype=float).reshape(-1, 2)
-    part = _Partition(polys, pxy, q)
-    n_ins = part.node()
-    holes = int(part.ring_hole.sum())
+    # one partition (shared-node table) per floor; top areas and vertical passages get their own nodes
+    groups: List[List[int]] = [[k for k in range(len(all_areas)) if area_floor[k] == fi] for fi in range(len(floors))]
+    group_passages: List[List[Passage]] = [list(fl.passages) for fl in floors]
+    if top_areas:
+        groups.insert(0, list(range(len(top_areas))))
+        group_passages.insert(0, [])
+    if vertical_passages:
+        groups.append([])
+        group_passages.append(list(vertical_passages))
+    V_all, ring_of_area, pend = [], {}, []  # global vertex table, area index -> ring, passage ends
+    holes = n_ins = 0
+    offset = 0
+    for g_areas, g_pass in zip(groups, group_passages):
+        pxy = np.array([[p.line.coords[0][:2], p.line.coords[-1][:2]] for p in g_pass],
+                       dtype=float).reshape(-1, 2)
+        if not g_areas and not len(pxy):
+            continue
+        if g_areas:
+            part = _Partition([polys[k] for k in g_areas], pxy, q)
+            n_ins += part.node()
+            holes += int(part.ring_hole.sum())
+            for ri, (f, h) in enumerate(zip(part.ring_face, part.ring_hole)):
+                if not h:
+                    ring_of_area[g_areas[int(f)]] = part.rings[ri] + offset
+            V_all.append(part.V)
+            pend.append(part.extra_ids.reshape(-1, 2) + offset)
+            offset += len(part.V)
+        else:  # vertical passages: two new nodes each
+            V_all.append(pxy)
+            pend.append(np.arange(len(pxy)).reshape(-1, 2) + offset)
+            offset += len(pxy)
+    V = np.concatenate(V_all) if V_all else np.zeros((0, 2))
+    pe = np.concatenate(pend) if pend else np.zeros((0, 2), np.int64)
+    all_passages: List[Passage] = [p for g in group_passages for p in g]
+    n_vertical = len(vertical_passages)
     if holes:  # by design, so an info line rather than a warning
         progress.info(f"osmAG: {holes} holes (pillars) left out: an osmAG area is one closed way")
-    ext_rings: Dict[int, np.ndarray] = {}
-    for ri, (f, h) in enumerate(zip(part.ring_face, part.ring_hole)):
-        if not h:
-            ext_rings[int(f)] = part.rings[ri]
-    used = np.zeros(len(part.V), bool)
-    for r in ext_rings.values():
+    used = np.zeros(len(V), bool)
+    for r in ring_of_area.values():
         used[r] = True
-    pe = part.extra_ids.reshape(-1, 2)
     used[pe.reshape(-1)] = True
-    lon, lat = to_ll(part.V[:, 0], part.V[:, 1])
-    lon, lat = np.asarray(lon, float), np.asarray(lat, float)
+    lon, lat = to_ll(V[:, 0], V[:, 1])
+    lon, lat = np.atleast_1d(np.asarray(lon, float)), np.atleast_1d(np.asarray(lat, float))
     if not (np.all(np.isfinite(lon[used])) and np.all(np.isfinite(lat[used]))):
         raise InputError("some coordinates cannot be converted to WGS84; check the layer CRS / georeference")
     if root is None:
@@ -167,18 +272,20 @@ def write_osmag(path: str, areas: Sequence[Area], passages: Sequence[Passage] = 
     if lat[used].min() <= -90 or lat[used].max() >= 90:
         raise InputError("converted coordinates fall outside valid latitudes; check the georeference")
     progress.step(40, f"osmAG: {int(used.sum())} nodes ({n_ins} inserted to share borders)")
-    # ---- node ids
-    # nodes numbered in order of first use (structure areas, areas, passages): reproducible files
-    node_id = np.zeros(len(part.V), np.int64)
-    seq = np.concatenate([ext_rings[k] for k in range(len(all_areas))] + [pe.reshape(-1)])
+    # ---- node ids, numbered in order of first use (areas in way order, then passages): reproducible
+    node_id = np.zeros(len(V), np.int64)
+    seq = np.concatenate([ring_of_area[k] for k in range(len(all_areas))] + [pe.reshape(-1)])
     _, first = np.unique(seq, return_index=True)
     order = seq[np.sort(first)]
     node_id[order] = -2 - np.arange(len(order))
+    door_nodes = set(pe[:len(all_passages) - n_vertical].reshape(-1).tolist())
     # ---- names, way ids
+    multi = len(floors) > 1
+    area_level = [floors[area_floor[k]].level if area_floor[k] >= 0 else "" for k in range(len(all_areas))]
     names: List[str] = []
     seen: Dict[str, int] = {}
     for k, a in enumerate(all_areas):
-        gen = generated_name(level, "S" if k < n_struct else "A", a.id)
+        gen = generated_name(area_level[k] or "B", "S" if is_struct[k] else "A", a.id)
         nm = (a.name or "").strip() or gen
         if nm in seen:
             warnings.append(f"area {a.id}: name '{nm}' already used by area {all_areas[seen[nm]].id}; "
@@ -187,7 +294,6 @@ def write_osmag(path: str, areas: Sequence[Area], passages: Sequence[Passage] = 
         seen[nm] = k
         names.append(nm)
     way_id = {a.id: -1 - k for k, a in enumerate(all_areas)}
-    by_id = {a.id: k for k, a in enumerate(all_areas)}
     # ---- parents
     parent: Dict[int, int] = {}
     name_to_k = {n: k for k, n in enumerate(names)}
@@ -195,8 +301,10 @@ def write_osmag(path: str, areas: Sequence[Area], passages: Sequence[Passage] = 
     for k, a in enumerate(all_areas):
         if a.name:
             src_names.setdefault(a.name, k)
-    struct_idx = list(range(n_struct))
     for k, a in enumerate(all_areas):
+        if parents and a.id in parents and parents[a.id] in by_id and by_id[parents[a.id]] != k:
+            parent[k] = by_id[parents[a.id]]
+            continue
         explicit = str(a.tags.get("osmAG:parent", "")).strip() if a.tags else ""
         if explicit:
             pk = name_to_k.get(explicit, src_names.get(explicit))
@@ -205,27 +313,40 @@ def write_osmag(path: str, areas: Sequence[Area], passages: Sequence[Passage] = 
                     pk = by_id.get(int(explicit))
                 except ValueError:
                     pk = None
-                if pk is None:
-                    # a fix-id file read back: the tag holds the old way id of the parent
-                    for j, b in enumerate(all_areas):
-                        if str(b.id) == explicit:
-                            pk = j
             if pk is not None and pk != k:
                 parent[k] = pk
                 continue
             warnings.append(f"area {a.id}: parent '{explicit}' is not among the exported areas; parent dropped")
-        if struct_idx:
-            rp = polys[k].representative_point()
-            cands = [j for j in struct_idx if j != k and polys[j].area > polys[k].area and polys[j].covers(rp)]
+        if area_floor[k] >= 0:  # the smallest structure area of its floor (or a top area) containing it
+            cands = [j for j in range(len(all_areas))
+                     if is_struct[j] and j != k and (area_floor[j] == area_floor[k] or area_floor[j] < 0)]
             if cands:
-                parent[k] = min(cands, key=lambda j: polys[j].area)
+                rp = polys[k].representative_point()
+                inside = [j for j in cands if polys[j].area > polys[k].area and polys[j].covers(rp)]
+                same = [j for j in inside if area_floor[j] == area_floor[k]]
+                if same:
+                    parent[k] = min(same, key=lambda j: polys[j].area)
+                elif is_struct[k] and len(top_areas) == 1:
+                    parent[k] = 0  # a floor outline under the building
+                elif inside:
+                    parent[k] = min(inside, key=lambda j: polys[j].area)
     # ---- passages
     pnames = []
-    for p in passages:
-        pnames.append((p.name or "").strip() or generated_name(level, "P", p.id))
-    for k, p in enumerate(passages):
+    pname_seen: Dict[str, int] = {}
+    for k, p in enumerate(all_passages):
+        if k >= len(all_passages) - n_vertical:
+            lv = area_level[max(by_id[p.from_id], by_id[p.to_id], key=lambda j: float(area_level[j] or 0))]
+        else:
+            lv = area_level[by_id[p.from_id]]
+        gen = generated_name(lv, "P", p.id)
+        nm = (p.name or "").strip() or gen
+        if nm in pname_seen and multi:
+            nm = f"{nm} [{gen}]"
+        pname_seen[nm] = k
+        pnames.append(nm)
+    for k, p in enumerate(all_passages[:len(all_passages) - n_vertical]):
         for aid in (p.from_id, p.to_id):
-            ring = ext_rings[by_id[aid]]
+            ring = ring_of_area[by_id[aid]]
             for j in range(2):
                 if not np.any(ring == pe[k, j]):
                     warnings.append(f"passage {p.id} ({pnames[k]}): end point {j + 1} is not on the border of "
@@ -235,22 +356,29 @@ def write_osmag(path: str, areas: Sequence[Area], passages: Sequence[Passage] = 
         return names[k] if variant == "semantic" else str(way_id[all_areas[k].id])
 
     # ---- XML
-    hstr = _fmt_num(float(height))
     lines: List[str] = ['<?xml version="1.0" encoding="UTF-8"?>',
                         f'<osm version="0.6" generator="{GENERATOR}">']
     new = 'action="modify" visible="true"'  # how JOSM writes new objects; older osmAG parsers need both
-    lines.append(f'  <node id="-1" {new} lat="{root[1]:.10f}" lon="{root[0]:.10f}">')
+    # the root node carries the frame's origin as the osmAG authors' parser wants it (it aborts without
+    # root/alt/qx/qy/qz): the local frame is x east, y north, so no rotation
+    lines.append(f'  <node id="-1" {new} lat="{root[1]:.10f}" lon="{root[0]:.10f}" root="true" alt="0" '
+                 'x="0" y="0" z="0" qx="0" qy="0" qz="0">')
     lines.append('    <tag k="name" v="root"/>')
     lines.append('  </node>')
     for i in order.tolist():
-        lines.append(f'  <node id="{node_id[i]}" {new} lat="{lat[i]:.10f}" lon="{lon[i]:.10f}"/>')
+        if i in door_nodes:
+            lines.append(f'  <node id="{node_id[i]}" {new} lat="{lat[i]:.10f}" lon="{lon[i]:.10f}">')
+            lines.append('    <tag k="door" v="yes"/>')
+            lines.append('  </node>')
+        else:
+            lines.append(f'  <node id="{node_id[i]}" {new} lat="{lat[i]:.10f}" lon="{lon[i]:.10f}"/>')
 
     def tag(k, v):
         return f"    <tag k={quoteattr(str(k))} v={quoteattr(str(v))}/>"
 
-    shared = np.zeros(len(part.V), np.int64)
+    shared = np.zeros(len(V), np.int64)
     for k, a in enumerate(all_areas):
-        ring = ext_rings[k]
+        ring = ring_of_area[k]
         shared[np.unique(ring)] += 1
         refs = np.append(ring, ring[0])
         lines.append(f'  <way id="{way_id[a.id]}" {new}>')
@@ -258,35 +386,50 @@ def write_osmag(path: str, areas: Sequence[Area], passages: Sequence[Passage] = 
         atype = a.type if a.type in AREA_TYPES else "room"
         if a.type not in AREA_TYPES:
             warnings.append(f"area {a.id}: unknown type '{a.type}' written as room")
-        if k < n_struct:
+        if is_struct[k]:
             atype = "structure"
+        atags = a.tags or {}
         lines.append(tag("osmAG:type", "area"))
         lines.append(tag("osmAG:areatype", atype))
         lines.append(tag("osmAG:areaType", atype))  # the spelling of the published osmAG parsers
-        lines.append(tag("indoor", "corridor" if atype == "corridor" else "room"))
-        lines.append(tag("level", level))
-        lines.append(tag("height", hstr))
+        indoor = str(atags.get("indoor") or "").strip() or {"corridor": "corridor", "structure": "area"}.get(atype, "room")
+        lines.append(tag("indoor", indoor))
+        if area_floor[k] >= 0:
+            fl = floors[area_floor[k]]
+            lines.append(tag("level", fl.level))
+            lines.append(tag("height", _fmt_num(float(fl.height))))
+        elif atags.get("level"):
+            lines.append(tag("level", atags["level"]))
         lines.append(tag("name", names[k]))
         if k in parent:
             lines.append(tag("osmAG:parent", ref(parent[k])))
         lines.append(tag("area", "yes"))
-        for kk, vv in sorted((a.tags or {}).items()):
+        if (a.ref or "").strip() and not atags.get("ref"):
+            lines.append(tag("ref", a.ref.strip()))
+        for kk, vv in sorted(atags.items()):
             if kk not in _CORE_AREA_KEYS and vv not in (None, ""):
                 lines.append(tag(kk, vv))
         lines.append("  </way>")
     wid = -1 - len(all_areas)
-    for k, p in enumerate(passages):
+    for k, p in enumerate(all_passages):
         a0, a1 = int(pe[k, 0]), int(pe[k, 1])
+        kf, kt = by_id[p.from_id], by_id[p.to_id]
+        vertical = k >= len(all_passages) - n_vertical
         lines.append(f'  <way id="{wid - k}" {new}>')
         lines.append(f'    <nd ref="{node_id[a0]}"/>')
         lines.append(f'    <nd ref="{node_id[a1]}"/>')
         lines.append(tag("osmAG:type", "passage"))
-        lines.append(tag("osmAG:from", ref(by_id[p.from_id])))
-        lines.append(tag("osmAG:to", ref(by_id[p.to_id])))
-        lines.append(tag("level", level))
+        lines.append(tag("osmAG:from", ref(kf)))
+        lines.append(tag("osmAG:to", ref(kt)))
+        if vertical:  # the upper floor's level and height
+            up = max((kf, kt), key=lambda j: float(area_level[j] or 0))
+            lines.append(tag("level", area_level[up]))
+            lines.append(tag("height", _fmt_num(float(floors[area_floor[up]].height))))
+        else:
+            lines.append(tag("level", area_level[kf]))
         lines.append(tag("name", pnames[k]))
         for kk, vv in sorted((p.tags or {}).items()):
-            if kk not in _CORE_PASSAGE_KEYS and vv not in (None, ""):
+            if kk not in _CORE_PASSAGE_KEYS and kk != "height" and vv not in (None, ""):
                 lines.append(tag(kk, vv))
         lines.append("  </way>")
     lines.append("</osm>")
@@ -295,11 +438,15 @@ def write_osmag(path: str, areas: Sequence[Area], passages: Sequence[Passage] = 
         fh.write("\n".join(lines) + "\n")
     for w in warnings:
         progress.warning(w)
-    stats = {"path": os.path.abspath(path), "nodes": int(len(order)) + 1, "areas": len(areas),
-             "structure_areas": n_struct, "passages": len(passages), "shared_nodes": int((shared >= 2).sum()),
-             "holes_dropped": holes, "vertices_inserted": n_ins, "root": (float(root[0]), float(root[1])),
-             "variant": variant, "warnings": warnings}
-    progress.step(100, f"osmAG: wrote {len(all_areas)} areas ({n_struct} structure), {len(passages)} passages, "
+    n_struct = sum(is_struct)
+    stats = {"path": os.path.abspath(path), "nodes": int(len(order)) + 1, "areas": len(all_areas) - n_struct,
+             "structure_areas": n_struct, "passages": len(all_passages), "vertical_passages": n_vertical,
+             "shared_nodes": int((shared >= 2).sum()), "holes_dropped": holes, "vertices_inserted": n_ins,
+             "root": (float(root[0]), float(root[1])), "variant": variant, "levels": levels,
+             "way_ids": {a.id: way_id[a.id] for a in all_areas}, "names": {a.id: names[k] for k, a in enumerate(all_areas)},
+             "warnings": warnings}
+    progress.step(100, f"osmAG: wrote {len(all_areas)} areas ({n_struct} structure), {len(all_passages)} passages"
+                       f"{f' ({n_vertical} vertical)' if n_vertical else ''}, "
                        f"{stats['nodes']} nodes ({stats['shared_nodes']} shared) to {path}")
     return stats
 
@@ -515,16 +662,19 @@ def to_frame(areas: Sequence[Area], passages: Sequence[Passage], frame) -> Tuple
     """Copies of lon/lat areas and passages (as read) converted into ``frame``'s CAD/local metres."""
     import copy
 
+    geoms = np.empty(len(areas) + len(passages), dtype=object)
+    geoms[:] = [a.polygon for a in areas] + [p.line for p in passages]
+    moved = frame.geometry_from_crs(geoms) if len(geoms) else geoms  # one projection call for everything
     out_a, out_p = [], []
-    for a in areas:
+    for k, a in enumerate(areas):
         b = copy.copy(a)
-        b.polygon = frame.geometry_from_crs(a.polygon)
+        b.polygon = moved[k]
         out_a.append(b)
-    for p in passages:
+    for k, p in enumerate(passages):
         b = copy.copy(p)
-        b.line = frame.geometry_from_crs(p.line)
+        b.line = moved[len(areas) + k]
         out_p.append(b)
     return out_a, out_p
 
 
-__all__ = ["write_osmag", "read_osmag", "frame_from_root", "to_frame", "generated_name", "AREA_TYPES", "VARIANTS"]
+__all__ = ["write_osmag", "write_osmag_levels", "FloorLayer", "check_level", "read_osmag", "frame_from_root", "to_frame", "generated_name", "AREA_TYPES", "VARIANTS"]

@@ -14,9 +14,10 @@ from typing import Dict, Optional, Sequence
 from shapely.geometry import Polygon
 from shapely.ops import unary_union
 
-from . import cad_import, osmag, rasterize, refine, segmentation
+from . import cad_import, osmag, rasterize, refine, segmentation, semantics
 from .area_types import classify_vertical_areas
 from .georef import LocalFrame
+from .errors import Canceled, InputError
 from .model import Area, AreaGraph, CadDrawing, OccupancyGrid
 from .progress import ensure
 
@@ -33,6 +34,7 @@ class FloorResult:
     refined: AreaGraph
     floor_area: Optional[Area]
     stats: Dict[str, object] = field(default_factory=dict)
+    names: Optional[object] = None  # semantics.NamesReport when room names ran
 
 
 def floor_outline(areas: Sequence[Area], wall_gap: float = 0.8) -> Optional[Polygon]:
@@ -54,44 +56,64 @@ def floor_outline(areas: Sequence[Area], wall_gap: float = 0.8) -> Optional[Poly
         gap *= 2.0
 
 
-def process_floor(dxf_path: str, *, rules=None, layers=None, units=None, include_doors: bool = False,
+def process_floor(dxf_path: str, *, rules=None, layers=None, units=None, include_doors: bool = False, plan=None,
                   resolution: float = rasterize.DEFAULT_RESOLUTION, extent=None,
                   door_width: float = segmentation.DEFAULT_DOOR_WIDTH,
                   corridor_width: float = segmentation.DEFAULT_CORRIDOR_WIDTH,
                   delta: float = segmentation.DEFAULT_DELTA, prune: float = segmentation.DEFAULT_PRUNE,
                   epsilon_px: float = refine.EPSILON_PX, min_area: float = refine.MIN_AREA_M2,
-                  level: str = "1", progress=None) -> FloorResult:
-    """Run stages 1-4 on one DXF floor; nothing is written."""
+                  level: str = "1", names: bool = True, name_rules=None, progress=None) -> FloorResult:
+    """Run stages 1-5 on one DXF floor (stage 5, room names and types, unless ``names`` is False);
+    nothing is written."""
     progress = ensure(progress)
     timings: Dict[str, float] = {}
 
     def timed(name, start, end, func, *args, **kwargs):
         t0 = time.perf_counter()
-        out = func(*args, progress=progress.sub(start, end), **kwargs)
+        try:
+            out = func(*args, progress=progress.sub(start, end), **kwargs)
+        except (InputError, Canceled):
+            raise
+        except Exception as exc:  # GEOS topology errors and the like: name the stage, never a raw traceback
+            if type(exc).__module__.split(".")[0] not in ("shapely", "cv2", "osgeo"):
+                raise
+            raise InputError(f"the {name} stage failed on this drawing's geometry ({type(exc).__name__}: {exc}); "
+                             "please report the drawing") from exc
         timings[name] = time.perf_counter() - t0
         return out
 
     drawing = timed("cad_import", 0, 25, cad_import.import_dxf, dxf_path, rules=rules, layers=layers,
-                    units=units, include_doors=include_doors)
+                    units=units, include_doors=include_doors, plan=plan)
     grid = timed("rasterize", 25, 35, rasterize.rasterize, drawing.geometries, resolution=resolution,
-                 extent=extent)
+                 extent=extent, door_hints=drawing.doors)
     seg = timed("segment", 35, 80, segmentation.segment, grid, door_width=door_width,
-                corridor_width=corridor_width, delta=delta, prune=prune)
+                corridor_width=corridor_width, delta=delta, prune=prune,
+                inside_points=segmentation.room_name_points(drawing.texts, name_rules), door_hints=drawing.doors, footprint=True)
     vertical = classify_vertical_areas(seg.areas, drawing.geometries)
     if vertical:
         progress.info(f"{len(vertical)} stair/lift areas recognised from their symbols")
+    protected = semantics.protect_labelled_areas(seg.areas, drawing.texts, min_area, name_rules) if names else {}
     refined, rstats = timed("refine", 80, 95, refine.refine, seg, grid.resolution, epsilon_px=epsilon_px,
-                            min_area=min_area)
+                            min_area=min_area, keep_types=refine.KEEP_TYPES + (semantics.PROTECTED_TYPE,))
+    semantics.restore_types(protected, seg.areas, refined.areas)
+    names_report = None
+    if names:
+        names_report = timed("names", 95, 98, semantics.assign_names, refined.areas, drawing.texts, level,
+                             rules=name_rules, grid=grid, passages=refined.passages)
+        progress.info(names_report.summary())
     outline = floor_outline(refined.areas)
     floor_area = None
     if outline is not None:
         floor_area = Area(id=0, polygon=outline, type="structure", name=f"Level {level}")
     stats = {"timings": timings, "refine": rstats, "segment": dict(seg.stats),
              "texts": len(drawing.texts), "geometries": len(drawing.geometries), "unit": drawing.unit_name,
-             "raster_shape": grid.shape, "areas": len(refined.areas), "passages": len(refined.passages)}
+             "raster_shape": grid.shape, "areas": len(refined.areas), "passages": len(refined.passages),
+             "components": rstats.get("components", 1), "largest_component_share": rstats.get("largest_component_share", 1.0)}
+    if names_report is not None:
+        stats["names"] = names_report.counts()
     progress.info(f"floor {level}: {len(refined.areas)} areas, {len(refined.passages)} passages "
                   f"({rstats.get('vertex_reduction', 0):.0%} fewer vertices after refinement)")
-    return FloorResult(drawing, grid, seg, refined, floor_area, stats)
+    return FloorResult(drawing, grid, seg, refined, floor_area, stats, names_report)
 
 
 def convert_dxf(dxf_path: str, out_osm: str, *, preview_png: Optional[str] = None,
@@ -108,7 +130,8 @@ def convert_dxf(dxf_path: str, out_osm: str, *, preview_png: Optional[str] = Non
     floor = process_floor(dxf_path, level=level, progress=progress.sub(0, 90), **floor_kwargs)
     structure = [floor.floor_area] if floor.floor_area is not None else []
     t0 = time.perf_counter()
-    written = osmag.write_osmag(out_osm, floor.refined.areas, floor.refined.passages, frame=frame, level=level,
+    written = osmag.write_osmag(out_osm, semantics.for_osm(floor.refined.areas), floor.refined.passages,
+                                frame=frame, level=level,
                                 height=height, variant=variant, structure_areas=structure,
                                 progress=progress.sub(90, 97))
     floor.stats["timings"]["export"] = time.perf_counter() - t0

@@ -293,11 +293,40 @@ def repair(img: np.ndarray, kernel: int) -> np.ndarray:
     return out
 
 
+DOOR_CLEAR_DEPTH = 0.6  # metres across a door hint that are kept free (walls up to this thick)
+DOOR_JAMB_INSET = 0.05  # metres kept occupied at each jamb, so the jambs stay walls
+
+
+def door_opening_mask(door_hints, shape, origin_x: float, origin_y: float, resolution: float,
+                      depth: float = DOOR_CLEAR_DEPTH) -> np.ndarray:
+    """Boolean mask of the door openings of ``door_hints`` (``model.DoorHint``, jamb-to-jamb
+    segments in metres): a rectangle ``depth`` deep centred on each segment, inset by
+    ``DOOR_JAMB_INSET`` at both jambs. Hints shorter than 0.3 m or longer than 4 m are ignored
+    (no doorway; a misread block)."""
+    import cv2
+
+    mask = np.zeros(shape, np.uint8)
+    for h in door_hints or ():
+        a = np.array((h.x0, h.y0), float)
+        b = np.array((h.x1, h.y1), float)
+        if not (np.isfinite(a).all() and np.isfinite(b).all()):
+            continue
+        L = float(np.hypot(*(b - a)))
+        if not 0.3 <= L <= 4.0:
+            continue
+        u = (b - a) / L
+        nrm = np.array((-u[1], u[0])) * depth / 2.0
+        a2, b2 = a + u * DOOR_JAMB_INSET, b - u * DOOR_JAMB_INSET
+        quad = np.array([a2 + nrm, b2 + nrm, b2 - nrm, a2 - nrm])
+        cv2.fillConvexPoly(mask, _to_px(quad, origin_x, origin_y, resolution), 1, lineType=cv2.LINE_8, shift=SHIFT)
+    return mask.view(bool)
+
+
 def rasterize(geometries: Sequence[CadGeometry], resolution: float = DEFAULT_RESOLUTION,
               padding: float = DEFAULT_PADDING, percentiles=DEFAULT_PERCENTILES, kernel: int = DEFAULT_KERNEL,
               extent: Optional[Sequence[float]] = None, max_pixels: float = DEFAULT_MAX_PIXELS,
               stroke: float = DEFAULT_STROKE, free_kinds: Sequence[str] = DEFAULT_FREE_KINDS,
-              progress=None) -> OccupancyGrid:
+              door_hints=None, progress=None) -> OccupancyGrid:
     """Rasterize geometries (metres) into an occupancy grid.
 
     Geometries whose kind is in ``free_kinds`` (by default stair treads and lift symbols) count for
@@ -306,6 +335,10 @@ def rasterize(geometries: Sequence[CadGeometry], resolution: float = DEFAULT_RES
 
     ``extent`` (xmin, ymin, xmax, ymax), when given, is used as is (no percentiles, no padding),
     snapped outward to the resolution: use it with ``common_extent`` for multi-floor sets.
+
+    ``door_hints`` (``model.DoorHint``: doorways found by the CAD import) are kept open: their
+    openings are cleared after the repair (``door_opening_mask``), whatever door leaves or wall
+    hatches were drawn across them.
     """
     progress = ensure(progress)
     if not (resolution and resolution > 0):
@@ -332,6 +365,11 @@ def rasterize(geometries: Sequence[CadGeometry], resolution: float = DEFAULT_RES
                     progress.sub(5, 70))
     progress.step(70, "closing gaps and removing specks")
     img = repair(img, int(kernel))
+    if door_hints:
+        opening = door_opening_mask(door_hints, img.shape, ox, oy, resolution)
+        progress.info(f"{len(door_hints)} door hints kept open ({int(np.count_nonzero(opening & (img > 0)))} "
+                      "occupied pixels cleared)")
+        img[opening] = FREE
     share = float(np.count_nonzero(img)) / img.size
     if share < MIN_OCCUPIED_SHARE:
         raise InputError(

@@ -97,12 +97,18 @@ def _overlapping_pairs(arr, valid, resolution: float):
     (including duplicates and polygons lying inside others)."""
     import shapely
 
-    tree = shapely.STRtree(arr)
-    o1, o2 = tree.query(arr, predicate="overlaps")
-    c1, c2 = tree.query(arr, predicate="contains")  # also catches duplicates and areas inside areas
-    i1 = np.concatenate([o1, np.minimum(c1, c2)])
-    i2 = np.concatenate([o2, np.maximum(c1, c2)])
-    keep = (i1 < i2) & valid[i1] & valid[i2]
+    # GEOS predicates on an invalid polygon raise TopologyException (side location conflict):
+    # only valid polygons are compared; invalid ones are offenders of their own
+    idx = np.flatnonzero(valid)
+    if len(idx) < 2:
+        return []
+    sub = arr[idx]
+    tree = shapely.STRtree(sub)
+    o1, o2 = tree.query(sub, predicate="overlaps")
+    c1, c2 = tree.query(sub, predicate="contains")  # also catches duplicates and areas inside areas
+    i1 = idx[np.concatenate([o1, np.minimum(c1, c2)]).astype(np.int64)]
+    i2 = idx[np.concatenate([o2, np.maximum(c1, c2)]).astype(np.int64)]
+    keep = i1 < i2
     pairs = sorted(set(zip(i1[keep].tolist(), i2[keep].tolist())))
     if not pairs:
         return []
@@ -338,7 +344,9 @@ def refine(graph: AreaGraph, resolution: float, epsilon_px: float = EPSILON_PX,
     ``vertex_reduction`` (fraction), ``epsilon_m`` (= epsilon_px · resolution, the bound),
     ``max_deviation_dp_m`` (after Douglas–Peucker), ``max_deviation_m`` (after spike removal too),
     ``spikes_removed``, ``merged``, ``dropped``, ``passages_removed``, ``arcs``, ``arcs_fallback``
-    (arcs simplified less to keep polygons valid), ``vertices_inserted`` (noding), ``time_s``.
+    (arcs simplified less to keep polygons valid), ``vertices_inserted`` (noding), ``components`` and
+    ``largest_component_share`` (connected components of the refined area graph; every output area
+    carries its ``component``, 0 = the largest, and the others are logged), ``time_s``.
     Input areas are never modified.
     """
     import shapely
@@ -569,6 +577,12 @@ def refine(graph: AreaGraph, resolution: float, epsilon_px: float = EPSILON_PX,
         b.line = LineString([part.V[ia], part.V[ib]])
         out_passages.append(b)
 
+    # connectivity after merging: components of the refined graph (Area.component, 0 = largest)
+    from .segmentation import assign_components, report_components
+
+    comps = assign_components(out_areas, out_passages)
+    report_components(comps, progress, "refine")
+
     # 5. figures --------------------------------------------------------------------------------
     v_after = int(sum(len(p.exterior.coords) - 1 + sum(len(r.coords) - 1 for r in p.interiors) for p in polys))
     changed = [i for i in range(len(arc_v)) if len(arc_fin[i]) != len(arc_xy0[i]) or len(arc_dp[i]) != len(arc_xy0[i])]
@@ -591,6 +605,7 @@ def refine(graph: AreaGraph, resolution: float, epsilon_px: float = EPSILON_PX,
         "dropped_ids": minfo["dropped_ids"], "merged_into": minfo["merged_into"],
         "passages_removed": minfo["passages_removed"], "passages_snapped": snapped,
         "arcs": len(arc_v), "arcs_fallback": len(fallback_arcs), "vertices_inserted": n_ins,
+        "components": len(comps), "largest_component_share": comps[0]["share"] if comps else 1.0,
         "time_s": time.perf_counter() - t0,
     }
     progress.step(100, f"refine: vertices {v_before} -> {v_after} (-{100 * stats['vertex_reduction']:.1f} %), "

@@ -1037,3 +1037,230 @@ def ground_truth_envelope(path: str) -> Polygon:
         if f["properties"].get("kind") == "envelope":
             return shape(f["geometry"])
     raise InputError(f"{path}: no envelope feature")
+
+
+# --------------------------------------------------------------------------- drawings as delivered
+SHEET_GAP = 12000  # mm between the plan and the views beside it on the sheet variant
+DETAIL_SCALE = 2.0  # the enlarged stair detail is drawn at twice the plan's scale (1:50 beside 1:100)
+
+
+def _to_layer_zero(doc) -> None:
+    """Spaghetti: every entity of model space and of every block on layer "0"; the grid axes go (a
+    spaghetti plan has no axis layer to leave out, and axes on "0" are not what is being tested)."""
+    msp = doc.modelspace()
+    for e in list(msp):
+        if e.dxf.get("layer", "0") == "S-GRID":
+            msp.delete_entity(e)
+    for blk in doc.blocks:
+        if blk.name.lower().startswith(("*model_space", "*paper_space")):
+            continue
+        for e in blk:
+            e.dxf.layer = "0"
+    for e in msp:
+        e.dxf.layer = "0"
+        if e.dxftype() == "INSERT":
+            for a in e.attribs:
+                a.dxf.layer = "0"
+
+
+def _explode_doors(doc) -> None:
+    """Door blocks replaced by their loose arcs and leaves (no block name left to tell they are doors)."""
+    msp = doc.modelspace()
+    for blk in [doc.blocks.get("OFFICE_MODULE")]:
+        if blk is None:
+            continue
+        for e in list(blk):
+            if e.dxftype() == "INSERT" and e.dxf.name.upper().startswith("DOOR"):
+                for v in e.virtual_entities():
+                    blk.add_entity(v)
+                blk.delete_entity(e)
+    for e in list(msp):
+        if e.dxftype() == "INSERT" and e.dxf.name.upper().startswith("DOOR"):
+            e.explode()
+
+
+def _draw_sheet_views(doc, level: int) -> dict:
+    """Title frame with title block, an enlarged stair detail and a legend beside the plan (mm)."""
+    msp = doc.modelspace()
+    sx0, sy0, sx1, sy1 = STAIR
+    # enlarged detail of the stair core: its enclosure walls and treads at DETAIL_SCALE, right of the plan
+    dx0, dy0 = WIDTH + SHEET_GAP, 2000
+    k = DETAIL_SCALE
+    t = T_CORE
+    outer = [(sx0 - t, sy0 - t), (sx1 + t, sy0 - t), (sx1 + t, sy1 + t), (sx0 - t, sy1 + t)]
+    inner = [(sx0, sy0), (sx1, sy0), (sx1, sy1), (sx0, sy1)]
+
+    def place(p):
+        return (dx0 + (p[0] - sx0 + t) * k, dy0 + (p[1] - sy0 + t) * k)
+
+    for ring in (outer, inner):
+        pts = [place(p) for p in ring]
+        # the door side (south) is open between 1/3 and 2/3 of the width
+        msp.add_lwpolyline(pts, close=True, dxfattribs={"layer": "A-WALL"})
+    for j in range(1, 16):
+        y = sy0 + 1500 + j * 275
+        msp.add_line(place((sx0, y)), place((sx1, y)), dxfattribs={"layer": "A-STAIR"})
+    det = (dx0, dy0, dx0 + (sx1 - sx0 + 2 * t) * k, dy0 + (sy1 - sy0 + 2 * t) * k)
+    msp.add_text("楼梯放大详图 STAIR A ENLARGED DETAIL 1:50", height=500,
+                 dxfattribs={"layer": "A-ANNO-TITL", "style": "ARIAL"}).set_placement((det[0], det[1] - 1500))
+    # legend: wall and glazing swatches with labels, titled, on their own layer
+    lx0, ly0 = det[0], det[3] + 6000
+    msp.add_text("LEGEND", height=500, dxfattribs={"layer": "A-ANNO-TITL", "style": "ARIAL"}).set_placement(
+        (lx0, ly0 + 3200))
+    for j, (lab, lay) in enumerate((("WALL", "LEGEND-A-WALL"), ("GLAZING", "LEGEND-A-GLAZ"))):
+        y = ly0 + 1600 * j
+        msp.add_lwpolyline([(lx0, y), (lx0 + 1500, y), (lx0 + 1500, y + 600), (lx0, y + 600)], close=True,
+                           dxfattribs={"layer": lay})
+        msp.add_text(lab, height=300, dxfattribs={"layer": "A-ANNO-TEXT", "style": "ARIAL"}).set_placement(
+            (lx0 + 2000, y + 100))
+    # plan title below the plan
+    msp.add_text(f"{level}层平面图 LEVEL {level} FLOOR PLAN 1:100", height=800,
+                 dxfattribs={"layer": "A-ANNO-TITL", "style": "ARIAL"}).set_placement((0, -5000))
+    # the sheet frame (a bare rectangle on layer 0) and the title block (on the frame layer 图框)
+    fx0, fy0 = -8000, -14000
+    fx1, fy1 = det[2] + 8000, DEPTH + 8000
+    msp.add_lwpolyline([(fx0, fy0), (fx1, fy0), (fx1, fy1), (fx0, fy1)], close=True, dxfattribs={"layer": "0"})
+    tb = (fx1 - 18000, fy0, fx1, fy0 + 5000)
+    if "图框" not in doc.layers:
+        doc.layers.add("图框", color=7)
+    msp.add_lwpolyline([(tb[0], tb[1]), (tb[2], tb[1]), (tb[2], tb[3]), (tb[0], tb[3])], close=True,
+                       dxfattribs={"layer": "图框"})
+    for j in range(1, 3):
+        msp.add_line((tb[0], tb[1] + j * 1600), (tb[2], tb[1] + j * 1600), dxfattribs={"layer": "图框"})
+    msp.add_text("cad2osmag sample sheet", height=600, dxfattribs={"layer": "图框", "style": "ARIAL"}).set_placement(
+        (tb[0] + 500, tb[1] + 3500))
+    return {"plan_extent": (0.0, 0.0, WIDTH / 1000.0, DEPTH / 1000.0),
+            "detail_extent": tuple(v / 1000.0 for v in det),
+            "frame": (fx0 / 1000.0, fy0 / 1000.0, fx1 / 1000.0, fy1 / 1000.0)}
+
+
+def generate_delivered(out_dir: str, seed: int = 0, level: int = 1, spaghetti: bool = False,
+                       explode_doors: bool = False, sheet: bool = False, name: str = "delivered") -> dict:
+    """One floor of the sample building drawn the way drawings are delivered, for the sheet and
+    spaghetti rules of the CAD import (the regular ``generate_building`` output is unchanged):
+
+    * ``spaghetti``: every entity on layer "0" (walls, door blocks, furniture blocks, sanitary fittings,
+      floor hatches, texts); grid axes left out;
+    * ``explode_doors``: door blocks replaced by loose swing arcs and leaves;
+    * ``sheet``: a title frame (bare rectangle on layer 0) with a title block (layer 图框), an enlarged
+      stair detail (1:50, walls on A-WALL, titled "楼梯放大详图 …") and a legend (swatches on
+      LEGEND-* layers) beside the plan, and a plan title "<n>层平面图 …" below it.
+
+    Writes ``<out_dir>/<name>.dxf`` and its ground truth; returns ``{"dxf", "ground_truth", "rooms",
+    "doors", "names", "plan_extent", "detail_extent", "frame"}`` (extents in metres, CAD frame)."""
+    try:
+        seed, level = int(seed), int(level)
+    except (TypeError, ValueError):
+        raise InputError("seed and level must be integers")
+    if not name or any(ch in name for ch in "/\\:*?\"<>|"):
+        raise InputError(f"invalid file name prefix {name!r}")
+    out_dir = os.path.abspath(out_dir)
+    os.makedirs(out_dir, exist_ok=True)
+    plan = _plan_floor(level, seed)
+    rooms, doors = _gt_features(plan)
+    doc = _new_doc()
+    _define_blocks(doc)
+    _draw_floor(doc, plan, rooms, random.Random(seed * 31 + level))
+    info = {"plan_extent": (0.0, 0.0, WIDTH / 1000.0, DEPTH / 1000.0)}
+    if sheet:
+        info = _draw_sheet_views(doc, level)
+    if explode_doors:
+        _explode_doors(doc)
+    if spaghetti:
+        _to_layer_zero(doc)
+    dxf_path = os.path.join(out_dir, f"{name}.dxf")
+    gt_path = os.path.join(out_dir, f"{name}.gt.geojson")
+    _save_deterministic(doc, dxf_path)
+    _write_ground_truth(gt_path, plan, rooms, doors)
+    return {"dxf": dxf_path, "ground_truth": gt_path, "rooms": len(rooms), "doors": len(doors),
+            "names": [r.name for r, _ in rooms], **info}
+
+# --------------------------------------------------------------------------- open facades (issue 8, item 5)
+OPEN_FACADE_WALL = 0.3  # metres
+
+
+def open_facade_plan(hall_width: float = 10.0, pillar_pitch: float = 5.0):
+    """The layout of ``generate_open_facade`` in metres: ``(walls, rooms, doors, labels)``.
+
+    Two wings of two rooms each (x 0..12 and x 12+w..24+w, y 0..12) flank an entrance hall
+    ("HALL DISTRIBUZIONE", ``hall_width`` wide, 12 m deep) that is open to the street on its whole
+    south side; behind them runs a 3 m portico corridor ("CORRIDOIO DI DISTRIBUZIONE") whose north
+    side is closed only by pillars every ``pillar_pitch`` m (and a dash-dot line in the drawing).
+    Every room has a door to the hall or the corridor, the hall one to the corridor: one connected
+    floor. ``walls``: shapely geometry of every wall and pillar; ``rooms``: name -> free polygon
+    (door openings belong to neither side); ``doors``: list of (name_a, name_b, LineString jamb to
+    jamb on the wall midline); ``labels``: name -> (x, y) of its text.
+    """
+    t = OPEN_FACADE_WALL
+    w = float(hall_width)
+    xe0, xe1 = 12.0 + w, 24.0 + w  # east wing
+    X1 = xe1
+    segs = []  # wall midlines (x0, y0, x1, y1)
+    segs += [(0, 0, 12, 0), (0, 0, 0, 15), (12, 0, 12, 12),  # west wing: south, west (up to the portico), east
+             (xe0, 0, X1, 0), (X1, 0, X1, 15), (xe0, 0, xe0, 12),  # east wing
+             (0, 12, X1, 12),  # the corridor's south wall (wings' and hall's north wall)
+             (0, 6, 12, 6), (xe0, 6, X1, 6)]  # partitions between the two rooms of each wing
+    walls = unary_union([LineString([(a, b), (c, d)]).buffer(t / 2.0, cap_style=3) for a, b, c, d in segs])
+    doors = [("W1", "HALL DISTRIBUZIONE", LineString([(12, 2.0), (12, 3.0)])),
+             ("E1", "HALL DISTRIBUZIONE", LineString([(xe0, 2.0), (xe0, 3.0)])),
+             ("W1", "W2", LineString([(8.0, 6), (9.0, 6)])),
+             ("E1", "E2", LineString([(xe0 + 3.0, 6), (xe0 + 4.0, 6)])),
+             ("W2", "CORRIDOIO DI DISTRIBUZIONE", LineString([(4.0, 12), (5.0, 12)])),
+             ("E2", "CORRIDOIO DI DISTRIBUZIONE", LineString([(X1 - 5.0, 12), (X1 - 4.0, 12)])),
+             ("HALL DISTRIBUZIONE", "CORRIDOIO DI DISTRIBUZIONE",
+              LineString([(12 + w / 2 - 1.0, 12), (12 + w / 2 + 1.0, 12)]))]
+    walls = walls.difference(unary_union([d.buffer(t, cap_style=2) for _, _, d in doors]))
+    # pillars of the portico (0.4 m squares) on its open north side, y = 15
+    n = max(1, int(round(X1 / pillar_pitch)))
+    pillars = [box(X1 * k / n - 0.2, 14.8, X1 * k / n + 0.2, 15.2) for k in range(1, n)]
+    walls = unary_union([walls] + pillars)
+    rooms = {"W1": box(t / 2, t / 2, 12 - t / 2, 6 - t / 2), "W2": box(t / 2, 6 + t / 2, 12 - t / 2, 12 - t / 2),
+             "E1": box(xe0 + t / 2, t / 2, X1 - t / 2, 6 - t / 2),
+             "E2": box(xe0 + t / 2, 6 + t / 2, X1 - t / 2, 12 - t / 2),
+             "HALL DISTRIBUZIONE": box(12 + t / 2, 0.0, xe0 - t / 2, 12 - t / 2),
+             "CORRIDOIO DI DISTRIBUZIONE": box(t / 2, 12 + t / 2, X1 - t / 2, 15.0)}
+    rooms = {k: v.difference(walls) for k, v in rooms.items()}
+    labels = {"W1": (6.0, 3.0), "W2": (6.0, 9.0), "E1": (xe0 + 6.0, 3.0), "E2": (xe0 + 6.0, 9.0),
+              "HALL DISTRIBUZIONE": (12 + w / 2, 6.0), "CORRIDOIO DI DISTRIBUZIONE": (X1 / 2 + 2.5, 13.6)}
+    return walls, rooms, doors, labels
+
+
+def generate_open_facade(out_dir: str, name: str = "open-facade", hall_width: float = 10.0,
+                         pillar_pitch: float = 5.0) -> dict:
+    """Write ``<out_dir>/<name>.dxf`` (metres, ``$INSUNITS`` = 6) of ``open_facade_plan``: walls and
+    pillars as solid hatches with their outlines on ``A-WALL``, the portico's closing line as a
+    DASHDOT line on ``A-ANNO-PROJ`` (a projection, not a wall), room names as TEXT on
+    ``A-ANNO-TEXT``, a title far outside. Returns ``{"dxf", "rooms" (name -> Polygon), "doors",
+    "labels"}``."""
+    import ezdxf
+
+    walls, rooms, doors, labels = open_facade_plan(hall_width, pillar_pitch)
+    os.makedirs(os.path.abspath(out_dir), exist_ok=True)
+    doc = ezdxf.new("R2018", setup=["linetypes"])
+    doc.ezdxf_metadata()["CREATED_BY_EZDXF"] = f"{ezdxf.__version__} @ cad2osmag open facade sample"
+    doc.header["$INSUNITS"] = 6
+    doc.layers.add("A-WALL", color=7)
+    doc.layers.add("A-ANNO-PROJ", color=8, linetype="DASHDOT")
+    doc.layers.add("A-ANNO-TEXT", color=2)
+    doc.layers.add("A-ANNO-TITL", color=2)
+    msp = doc.modelspace()
+    for poly in _pieces_m(walls):
+        _add_solid_hatch(msp, poly, "A-WALL")
+        msp.add_lwpolyline(list(poly.exterior.coords)[:-1], close=True, dxfattribs={"layer": "A-WALL"})
+    x1 = max(b.bounds[2] for b in rooms.values())
+    msp.add_line((0, 15.0), (x1, 15.0), dxfattribs={"layer": "A-ANNO-PROJ", "linetype": "DASHDOT"})
+    for text, (x, y) in labels.items():
+        msp.add_text(text, height=0.3, dxfattribs={"layer": "A-ANNO-TEXT"}).set_placement(
+            (x, y), align=ezdxf.enums.TextEntityAlignment.MIDDLE_CENTER)
+    msp.add_text("Open facade sample, scale 1:100", height=0.5,
+                 dxfattribs={"layer": "A-ANNO-TITL"}).set_placement((0.0, -6.0))
+    path = os.path.join(os.path.abspath(out_dir), f"{name}.dxf")
+    _save_deterministic(doc, path)
+    return {"dxf": path, "rooms": rooms, "doors": doors, "labels": labels}
+
+
+def _pieces_m(geom) -> List[Polygon]:
+    """Polygon pieces of a geometry in metres, in a stable order."""
+    geoms = list(geom.geoms) if hasattr(geom, "geoms") else [geom]
+    geoms = [g for g in geoms if g.area > 1e-6]
+    return sorted(geoms, key=lambda g: (round(g.bounds[0], 3), round(g.bounds[1], 3), round(g.area, 3)))

@@ -8,9 +8,16 @@ Steps (``AreaGraph.stats`` keeps the wall time of each):
 
 ``interior``
     Building envelope. A disk of radius ``envelope_gap / 2`` rolled through the free space from
-    outside the image marks everything it can reach as *outside*; facade openings narrower than
-    ``envelope_gap`` (doors, glazing, drawing gaps) are therefore bridged and the interior is the
-    rest of the free space. Outside space is never an area. Unknown cells are never free.
+    outside the image marks everything it can reach as *open to the outside*; facade openings
+    narrower than ``envelope_gap`` (doors, glazing, drawing gaps) are therefore bridged. Space open
+    to the outside is still inside where there is evidence (``building_interior``): the footprint
+    of the plan (what a disk of ``FOOTPRINT_FACTOR`` x ``envelope_gap`` cannot reach, where it opens
+    onto a real room through a doorway and is a space of its own: halls and porticoes open between
+    wings, bites of the disk into rooms behind undrawn windows) and room-name points
+    (``inside_points``: the space holding a name is inside at the smallest footprint scale that
+    encloses it). Claimed space is closed at the chord between the facade wall ends. Only space
+    without evidence that is open to the outside is outside; it is never an area. Unknown cells
+    are never free. ``door_hints`` (doorways found in the drawing) are kept free.
 ``skeleton``
     Clearance (Euclidean distance to the nearest wall) and the skeleton of the free space as a
     graph (``skeleton.skeleton_graph``): the space is thinned to its one-pixel medial axis -- the
@@ -56,7 +63,12 @@ Steps (``AreaGraph.stats`` keeps the wall time of each):
     their border vertices exactly.
 ``passages``
     One passage per connected piece of the border between two areas: the segment between the two
-    ends of the shared border (where it meets walls), its length is the passage width.
+    ends of the shared border (where it meets walls), its length is the passage width. Door hints
+    the segmentation missed (the areas on both sides are not joined) become passages too.
+``components``
+    Connected components of the area graph: every area's ``component`` (0 = the largest by
+    area); the others are logged with their area ids, names and size, so no room is silently
+    orphaned (``assign_components``, ``report_components``).
 """
 from __future__ import annotations
 
@@ -67,7 +79,7 @@ from typing import Dict, List, Optional, Tuple
 import numpy as np
 
 from .errors import InputError
-from .model import FREE, Area, AreaGraph, OccupancyGrid, Passage
+from .model import FREE, UNKNOWN, Area, AreaGraph, OccupancyGrid, Passage
 from .progress import Progress, ensure
 from .skeleton import SkeletonGraph, nearest_seed_regions, skeleton_graph  # noqa: F401  (re-exported)
 
@@ -85,6 +97,11 @@ PASS3_ELONGATION = 8.0  # length >= 8 x mean width: a corridor, whatever narrowi
 CORRIDOR_ELONGATION = 4.0  # area / (2 * max clearance)^2 above which an area is a corridor
 MIN_INTERIOR_COMPONENT_M2 = 1.0  # smaller free pockets inside the envelope are dropped
 OUTSIDE_CONTACT = 0.35  # areas whose outline is open to the outside for this fraction are exterior recesses
+FOOTPRINT_FACTOR = 3.0  # footprint of the plan: openings up to 3 x ENVELOPE_GAP are bridged for evidence
+CLAIM_FACTOR = 1.5  # space claimed at footprint scale D is at most (1.5 D)^2 (larger: landscape, sheet gaps)
+BITE_CONTACT = 0.3  # a piece whose outline runs along interior space for this fraction is a bite into a room
+DEEP_SPACE = 0.3  # a piece with area >= this x chord^2 of its opening is a space (hall, porch), not a corner
+MIN_CONTACT_M = 0.5  # space open to the outside must open onto the interior this wide (a doorway) to be claimed
 MIN_PASSAGE_M = 0.2  # shorter extra contacts between two areas that also touch elsewhere are no passage
 
 
@@ -137,31 +154,270 @@ def _edt(mask: np.ndarray) -> np.ndarray:
                                  cv2.DIST_L2, cv2.DIST_MASK_PRECISE)
 
 
+def _outside_centres(dist_padded: np.ndarray, rc: float) -> np.ndarray:
+    """Centres (padded frame) of the disks of radius ``rc`` px that can roll in from outside the image."""
+    import cv2
+
+    centers = (dist_padded > rc).view(np.uint8)
+    _, lab = cv2.connectedComponents(centers, connectivity=8, ltype=cv2.CV_32S)
+    outside_id = lab[0, 0]
+    return (lab == outside_id) if outside_id else np.zeros(lab.shape, bool)
+
+
+def _reach(centres: np.ndarray, rc: float, pad: int) -> np.ndarray:
+    """Pixels within ``rc`` of an outside disk centre (unpadded frame): swept by the rolling disk."""
+    return ~(_edt(~centres)[pad:-pad, pad:-pad] > rc)
+
+
+def _coarse_reach(passable: np.ndarray, rc: float, target_px: float = 32.0) -> np.ndarray:
+    """``_reach`` of a large disk (radius ``rc`` px) computed on a raster coarsened so that the
+    radius is about ``target_px`` cells (a cell is passable only when all its pixels are), then
+    brought back to full resolution and grown by a cell: exact to a cell, which the chord closure
+    absorbs."""
+    import cv2
+
+    f = max(1, int(rc // target_px))
+    rows, cols = passable.shape
+    if f > 1:
+        rr, cc = -(-rows // f), -(-cols // f)
+        big = np.ones((rr * f, cc * f), bool)
+        big[:rows, :cols] = passable
+        coarse = big.reshape(rr, f, cc, f).all(axis=(1, 3))
+    else:
+        coarse = passable
+    r = rc / f
+    pad = int(math.ceil(r)) + 2
+    reach = _reach(_outside_centres(_edt(np.pad(coarse, pad, mode="constant", constant_values=True)), r), r, pad)
+    if f > 1:
+        reach = cv2.resize(reach.view(np.uint8), (cc * f, rr * f), interpolation=cv2.INTER_NEAREST)[:rows, :cols]
+        # coarse walls are up to a cell thicker: grow the reach back by a cell (it only decides which
+        # pixels already open to the outside are candidates, so it cannot cross into enclosed rooms)
+        reach = cv2.dilate(np.ascontiguousarray(reach), np.ones((2 * f + 1, 2 * f + 1), np.uint8)).view(bool)
+    return reach
+
+
+def _opens_onto(lab: np.ndarray, n: int, lab0: np.ndarray, n0: int, big0: np.ndarray, min_contact: int
+                ) -> np.ndarray:
+    """Which candidate pieces (``lab`` 1..n-1) open onto the enclosed interior: pieces and interior
+    pockets (``lab0`` 1..n0-1) touching along at least ``min_contact`` pixel edges are linked, and a
+    piece is kept when its links reach an interior component that is a real space (``big0``), not a
+    corner the outside disk left (the pieces of a portico between pillars reach the rooms through
+    the strip along its back wall and through each other)."""
+    from scipy.sparse import coo_matrix
+    from scipy.sparse.csgraph import connected_components
+
+    # the pieces are 4-connected components of the candidates, so they never touch each other:
+    # only piece-pocket contacts link them
+    ca, cb = [], []
+    for src, nb, _ in _boundary_pairs(lab):
+        b = lab0.ravel()[nb]
+        m = b > 0
+        ca.append(lab.ravel()[src[m]])
+        cb.append(b[m])
+    ca = np.concatenate(ca).astype(np.int64)
+    cb = np.concatenate(cb).astype(np.int64)
+    if len(ca) == 0:
+        return np.zeros(n, bool)
+    pair, cnt = np.unique(ca * n0 + cb, return_counts=True)
+    pair = pair[cnt >= min_contact]
+    ea, eb = pair // n0, pair % n0
+    g = coo_matrix((np.ones(len(pair)), (ea, n + eb)), shape=(n + n0, n + n0))
+    _, comp = connected_components(g, directed=False)
+    good = np.zeros(comp.max() + 1, bool)
+    good[comp[n + np.flatnonzero(big0)]] = True
+    keep = good[comp[:n]]
+    keep[0] = False
+    return keep
+
+
+def _boundary_pairs(lab: np.ndarray):
+    """The 4-neighbour pairs leaving the pieces of ``lab`` (> 0): yields (flat index of the piece
+    pixel, flat index of its neighbour outside the piece, direction) for the four directions. Only
+    the pieces' boundary pixels are visited (fast on large rasters with small pieces)."""
+    import cv2
+
+    rows, cols = lab.shape
+    m = (lab > 0).view(np.uint8)
+    inner = cv2.erode(m, np.array([[0, 1, 0], [1, 1, 1], [0, 1, 0]], np.uint8), borderType=cv2.BORDER_CONSTANT,
+                      borderValue=0)
+    bd = np.flatnonzero((m & (1 - inner)).ravel())
+    r, c = np.divmod(bd, cols)
+    flat = lab.ravel()
+    for dr, dc in ((-1, 0), (1, 0), (0, -1), (0, 1)):
+        ok = (r + dr >= 0) & (r + dr < rows) & (c + dc >= 0) & (c + dc < cols)
+        src = bd[ok]
+        nb = src + dr * cols + dc
+        keep = flat[nb] != flat[src]
+        yield src[keep], nb[keep], (dr, dc)
+
+
+def _space_shaped(lab: np.ndarray, n: int, interior0: np.ndarray, out_free: np.ndarray) -> np.ndarray:
+    """Which candidate pieces are spaces rather than corners of the outside: a piece is kept when it
+    is a bite of the outside disk into a room (at least ``BITE_CONTACT`` of its outline runs along
+    ``interior0``, the enclosed rooms) or when it is deep behind its opening (area >= ``DEEP_SPACE`` x chord^2,
+    the chord measured across its cut to the outside): halls and porches between wings are, the
+    triangle the footprint disk leaves in a concave corner of the outside (a courtyard corner
+    in front of a door) is not."""
+    total = np.zeros(n, np.int64)
+    contact = np.zeros(n, np.int64)
+    cols = lab.shape[1]
+    big = max(lab.shape) + 1
+    cmin = np.full((n, 2), big, np.int64)
+    cmax = np.full((n, 2), -1, np.int64)
+    flat = lab.ravel()
+    i0 = interior0.ravel()
+    of = out_free.ravel()
+    for src, nb, _ in _boundary_pairs(lab):
+        ids = flat[src]
+        total += np.bincount(ids, minlength=n)
+        contact += np.bincount(ids[i0[nb]], minlength=n)
+        cut = of[nb]
+        if cut.any():
+            rc = np.stack(np.divmod(src[cut], cols), 1)
+            np.minimum.at(cmin, ids[cut], rc)
+            np.maximum.at(cmax, ids[cut], rc)
+    area = np.bincount(flat, minlength=n).astype(np.float64)
+    span = np.where(cmax[:, :1] >= 0, cmax - cmin + 1, 0).astype(np.float64)
+    chord2 = (span ** 2).sum(axis=1)
+    ok = (contact >= BITE_CONTACT * np.maximum(total, 1)) | (area >= DEEP_SPACE * chord2)
+    ok[0] = False
+    return ok
+
+
+def _chord_pockets(claimed: np.ndarray, free_out: np.ndarray, max_chord: float = 0.0) -> np.ndarray:
+    """Close claimed space at the chord of its openings, not at the arc of the rolling disk.
+
+    The disk that stopped at an opening leaves an arc-shaped cut between ``claimed`` and the
+    remaining outside free space ``free_out``; the convex hull of each cut piece is the lens
+    between the arc and the chord joining the two facade wall ends. Returns the free pixels of
+    those lenses (to be claimed too). ``max_chord`` > 0: only cut pieces at most that long (px)."""
+    import cv2
+
+    cut = free_out & (cv2.dilate(claimed.view(np.uint8), np.ones((3, 3), np.uint8)).view(bool))
+    n, lab, st, _ = cv2.connectedComponentsWithStats(cut.view(np.uint8), connectivity=8, ltype=cv2.CV_32S)
+    out = np.zeros(claimed.shape, np.uint8)
+    for k in range(1, n):
+        if st[k, cv2.CC_STAT_AREA] < 3:
+            continue
+        x0, y0, w, h = (int(v) for v in st[k, :4])
+        if max_chord > 0 and math.hypot(w, h) > max_chord:
+            continue
+        rr, cc = np.nonzero(lab[y0:y0 + h, x0:x0 + w] == k)
+        pts = np.stack([cc + x0, rr + y0], axis=1).astype(np.int32)
+        cv2.fillConvexPoly(out, cv2.convexHull(pts), 1)
+    return out.view(bool) & free_out
+
+
 def building_interior(free: np.ndarray, resolution: float, envelope_gap: float = DEFAULT_ENVELOPE_GAP,
-                      unknown: Optional[np.ndarray] = None) -> Tuple[np.ndarray, np.ndarray]:
+                      unknown: Optional[np.ndarray] = None, inside_points=None,
+                      footprint_gap: Optional[float] = None, info: Optional[dict] = None,
+                      footprint: bool = False) -> Tuple[np.ndarray, np.ndarray]:
     """Free space inside the building envelope.
 
-    Returns ``(interior_free, envelope)``: ``envelope`` is everything a disk of diameter
-    ``envelope_gap`` cannot reach from outside the image through free (or ``unknown``: unexplored,
-    no evidence of a building) space, walls included; ``interior_free`` its free pixels without
-    pockets smaller than ``MIN_INTERIOR_COMPONENT_M2``.
+    Returns ``(interior_free, envelope)``: ``envelope`` is everything that is not outside, walls
+    included; ``interior_free`` its free pixels without pockets smaller than
+    ``MIN_INTERIOR_COMPONENT_M2``.
+
+    *Open to the outside* is what a disk of diameter ``envelope_gap`` reaches rolling in from
+    outside the image through free (or ``unknown``: unexplored, no evidence of a building) space.
+    Space open to the outside is still inside when there is evidence of it:
+
+    * facade openings narrower than ``envelope_gap`` close at the chord between their wall ends,
+      not at the arc of the disk (no bites into the rooms behind them);
+    * with ``footprint``, the footprint of the plan: space that a disk of diameter ``footprint_gap`` (default
+      ``FOOTPRINT_FACTOR`` x ``envelope_gap``) cannot reach -- halls, porches and loggias open
+      between two wings, facades whose windows are not drawn -- and that opens onto the enclosed
+      interior (a doorway, at least ``MIN_CONTACT_M`` of contact), so that landscape pockets
+      bounded only by walls stay outside;
+    * ``inside_points`` ((x, y) pixel coordinates, col/row, of room-name texts): the space holding
+      one is inside whatever its facade, at the smallest footprint scale (x1, x2) that encloses it.
+
+    Claimed space enclosed at the footprint scale D is at most (``CLAIM_FACTOR`` x D)^2, at the
+    larger scale at most D^2: larger pockets are forecourts, the street or the gap between two
+    drawings of a sheet.
+
+    Claimed space is closed at the chord between the two facade wall ends of its opening, never
+    at the arc of the rolling disk (no bites). ``info`` (a dict) receives figures for the log.
     """
     import cv2
 
-    rc = max(1.0, envelope_gap / 2.0 / resolution)
-    pad = int(math.ceil(rc)) + 2
+    info = {} if info is None else info
     passable = free if unknown is None else (free | unknown)
-    padded = np.pad(passable, pad, mode="constant", constant_values=True)
-    dist = _edt(padded)
-    centers = (dist > rc).view(np.uint8)
-    n, lab = cv2.connectedComponents(centers, connectivity=8, ltype=cv2.CV_32S)
-    outside_id = lab[0, 0]
-    if outside_id == 0:  # cannot happen with the padding, kept for safety
-        envelope = np.ones(free.shape, bool)
-    else:
-        not_centers = (lab != outside_id).view(np.uint8)
-        reach = _edt(not_centers)[pad:-pad, pad:-pad]
-        envelope = reach > rc  # outside = within rc of an outside disk centre
+    rc0 = max(1.0, envelope_gap / 2.0 / resolution)
+    fgap = FOOTPRINT_FACTOR * envelope_gap if footprint_gap is None else float(footprint_gap)
+    scales = [rc0]
+    if fgap > envelope_gap:
+        rcf = fgap / 2.0 / resolution
+        # a disk wider than the map proves nothing: larger scales are not used
+        scales += [r for r in (rcf, 2.0 * rcf) if 2.0 * r <= max(free.shape)]
+    # the envelope and the footprint scale exactly (their arcs decide bites), larger scales coarsely
+    pad = int(math.ceil(scales[1] if len(scales) > 1 else rc0)) + 2
+    dist = _edt(np.pad(passable, pad, mode="constant", constant_values=True))
+    reach0 = _reach(_outside_centres(dist, rc0), rc0, pad)
+    interior0 = free & ~reach0
+    # what the disk leaves in the corners of the outside (up to rc0^2: corners of 50 degrees and more)
+    # is no interior a doorway could open onto
+    n0, lab0, st0, _ = cv2.connectedComponentsWithStats(interior0.view(np.uint8), connectivity=4, ltype=cv2.CV_32S)
+    big0 = st0[:, cv2.CC_STAT_AREA] >= rc0 * rc0
+    big0[0] = False
+    # facade openings narrower than the envelope gap close at their chord, not at the disk's arc
+    claimed = _chord_pockets(big0[lab0], free & reach0, max_chord=2.2 * rc0)
+    if claimed.any():
+        interior0 = interior0 | claimed
+        n0, lab0, st0, _ = cv2.connectedComponentsWithStats(interior0.view(np.uint8), connectivity=4,
+                                                            ltype=cv2.CV_32S)
+        big0 = st0[:, cv2.CC_STAT_AREA] >= rc0 * rc0
+        big0[0] = False
+    pts = np.zeros((0, 2), np.int64)
+    if inside_points is not None and len(inside_points):
+        pts = np.rint(np.asarray(inside_points, dtype=np.float64).reshape(-1, 2) - 0.5).astype(np.int64)
+        ok = (pts[:, 0] >= 0) & (pts[:, 0] < free.shape[1]) & (pts[:, 1] >= 0) & (pts[:, 1] < free.shape[0])
+        pts = pts[ok]
+    open_pts = [tuple(p) for p in pts.tolist() if free[p[1], p[0]] and reach0[p[1], p[0]]]
+    info["inside_points"] = int(len(pts))
+    info["inside_points_open"] = len(open_pts)
+    claimed_pts = 0
+    min_contact = max(1, int(round(MIN_CONTACT_M / resolution)))
+    for k, rc in enumerate(scales[1:]):
+        if not open_pts and (k > 0 or not footprint):
+            break
+        reach = _reach(_outside_centres(dist, rc), rc, pad) if k == 0 else _coarse_reach(passable, rc)
+        if k == 0:
+            del dist
+        cand = free & reach0 & ~reach & ~claimed
+        if not cand.any():
+            continue
+        n, lab = cv2.connectedComponents(cand.view(np.uint8), connectivity=4, ltype=cv2.CV_32S)
+        keep = np.zeros(n, bool)
+        if k == 0 and not footprint:
+            keep[:] = False
+        elif k == 0:  # footprint: keep what opens onto the enclosed interior and is a space of its own
+            keep = _opens_onto(lab, n, lab0, n0, big0, min_contact) & _space_shaped(lab, n, big0[lab0],
+                                                                                     free & reach)
+        rest = []
+        for c, r in open_pts:
+            if lab[r, c] > 0:
+                keep[lab[r, c]] = True
+                claimed_pts += 1
+            else:
+                rest.append((c, r))
+        open_pts = rest
+        keep[0] = False
+        # a space proven enclosed by a disk of diameter D is believed up to (CLAIM_FACTOR x D)^2:
+        # larger ones are the gaps between drawings on a sheet, forecourts, the street
+        size = np.bincount(lab.ravel(), minlength=n)
+        keep &= size <= ((CLAIM_FACTOR if k == 0 else 1.0) * 2.0 * rc) ** 2
+        if not keep.any():
+            continue
+        got = keep[lab]
+        got |= _chord_pockets(got, free & reach0 & ~claimed & ~got)
+        claimed |= got
+    info["inside_points_claimed"] = claimed_pts
+    info["inside_points_outside"] = len(open_pts)
+    info["claimed_px"] = int(claimed.sum())
+    info["claimed"] = claimed
+    info["inside_pixels"] = pts
+    envelope = ~reach0 | claimed
     interior = free & envelope
     # drop tiny pockets (exterior corners the disk could not reach, drawing slivers)
     n, lab, st, _ = cv2.connectedComponentsWithStats(interior.view(np.uint8), connectivity=4, ltype=cv2.CV_32S)
@@ -425,9 +681,12 @@ def _single_pieces(labels: np.ndarray) -> np.ndarray:
     return labels
 
 
-def _drop_outside_pockets(labels: np.ndarray, outside: np.ndarray, group_peak: np.ndarray):
+def _drop_outside_pockets(labels: np.ndarray, outside: np.ndarray, group_peak: np.ndarray,
+                          claimed: Optional[np.ndarray] = None, inside_pixels=None):
     """Remove areas that are mostly open to the outside (exterior recesses the envelope disk could
-    not reach) and renumber the rest 1..n in the same order. Returns (labels, peaks, dropped px)."""
+    not reach) and renumber the rest 1..n in the same order. Areas with evidence of being inside
+    are kept: those holding an inside point (a room name) and those mostly made of space claimed
+    on evidence (``claimed``). Returns (labels, peaks, dropped px)."""
     n = int(labels.max())
     if n == 0 or not outside.any():
         return labels, group_peak, 0
@@ -440,6 +699,12 @@ def _drop_outside_pockets(labels: np.ndarray, outside: np.ndarray, group_peak: n
         total += np.bincount(a[diff], minlength=n + 1) + np.bincount(b[diff], minlength=n + 1)
         open_ += np.bincount(a[(a > 0) & ob], minlength=n + 1) + np.bincount(b[(b > 0) & oa], minlength=n + 1)
     drop = open_ >= OUTSIDE_CONTACT * np.maximum(total, 1)
+    if claimed is not None and claimed.any():
+        size = np.bincount(labels.ravel(), minlength=n + 1)
+        got = np.bincount(labels[claimed], minlength=n + 1)
+        drop &= ~(got >= 0.5 * np.maximum(size, 1))
+    if inside_pixels is not None and len(inside_pixels):
+        drop[labels[inside_pixels[:, 1], inside_pixels[:, 0]]] = False
     drop[0] = False
     if not drop.any():
         return labels, group_peak, 0
@@ -565,11 +830,106 @@ def build_passages(labels: np.ndarray, grid: OccupancyGrid) -> List[Passage]:
     return passages
 
 
-# --------------------------------------------------------------------------- main entry
+def hint_passages(labels: np.ndarray, grid: OccupancyGrid, door_hints, passages: List[Passage],
+                  probe_m: float = 1.0) -> List[Passage]:
+    """Passages for door hints that segmentation missed: for each hint (jamb-to-jamb segment), the
+    first area met on each side along the normal through its middle (up to ``probe_m``); when the
+    two areas differ and no passage joins them yet, a passage along the hint is added (tag
+    ``cad2osmag:source=door_hint``). Returns the added passages (ids continue ``passages``)."""
+    from shapely.geometry import LineString
+
+    have = {(min(p.from_id, p.to_id), max(p.from_id, p.to_id)) for p in passages}
+    next_id = max((p.id for p in passages), default=0) + 1
+    rows, cols = labels.shape
+    steps = np.arange(1, int(probe_m / grid.resolution) + 1) * grid.resolution
+    out: List[Passage] = []
+    for h in door_hints or ():
+        a = np.array((h.x0, h.y0), float)
+        b = np.array((h.x1, h.y1), float)
+        L = float(np.hypot(*(b - a)))
+        if not (np.isfinite(L) and L > 0):
+            continue
+        u = (b - a) / L
+        nrm = np.array((-u[1], u[0]))
+        mid = (a + b) / 2.0
+        side = []
+        for sgn in (1.0, -1.0):
+            pts = mid[None, :] + sgn * steps[:, None] * nrm[None, :]
+            c, r = grid.world_to_pixel(pts[:, 0], pts[:, 1])
+            c, r = np.floor(c).astype(np.int64), np.floor(r).astype(np.int64)
+            ok = (c >= 0) & (c < cols) & (r >= 0) & (r < rows)
+            lab = labels[r[ok], c[ok]]
+            lab = lab[lab > 0]
+            side.append(int(lab[0]) if len(lab) else 0)
+        x, y = side
+        if x == 0 or y == 0 or x == y or (min(x, y), max(x, y)) in have:
+            continue
+        have.add((min(x, y), max(x, y)))
+        out.append(Passage(id=next_id, from_id=min(x, y), to_id=max(x, y),
+                           line=LineString([tuple(a), tuple(b)]), tags={"cad2osmag:source": "door_hint"}))
+        next_id += 1
+    return out
+
+
+def assign_components(areas: List[Area], passages: List[Passage]) -> List[dict]:
+    """Connected components of the area graph (areas joined by passages). Sets ``Area.component``
+    (0 = the largest by area, then by decreasing area) and returns one dict per component:
+    ``{"component", "ids", "names", "area_m2", "share"}``."""
+    from scipy.sparse import coo_matrix
+    from scipy.sparse.csgraph import connected_components
+
+    if not areas:
+        return []
+    index = {a.id: i for i, a in enumerate(areas)}
+    e = [(index[p.from_id], index[p.to_id]) for p in passages if p.from_id in index and p.to_id in index]
+    n = len(areas)
+    g = coo_matrix((np.ones(len(e)), ([x for x, _ in e], [y for _, y in e])), shape=(n, n))
+    _, comp = connected_components(g, directed=False)
+    sizes = np.bincount(comp, weights=[a.area for a in areas])
+    first = np.full(len(sizes), n)
+    np.minimum.at(first, comp, np.arange(n))
+    order = sorted(range(len(sizes)), key=lambda k: (-sizes[k], first[k]))
+    rank = {k: i for i, k in enumerate(order)}
+    total = float(sizes.sum()) or 1.0
+    out = []
+    for k in order:
+        members = [areas[i] for i in np.flatnonzero(comp == k)]
+        for a in members:
+            a.component = rank[k]
+        out.append({"component": rank[k], "ids": [a.id for a in members], "names": [a.name for a in members if a.name],
+                    "area_m2": float(sizes[k]), "share": float(sizes[k]) / total})
+    return out
+
+
+def report_components(components: List[dict], progress, stage: str = "segmentation") -> None:
+    """Log the components of the area graph: every one but the largest, with ids, names and size."""
+    if len(components) <= 1:
+        if components:
+            progress.info(f"{stage}: the area graph is connected (one component)")
+        return
+    progress.warning(f"{stage}: the area graph has {len(components)} connected components; the largest holds "
+                     f"{components[0]['share']:.1%} of the area. The others (field 'component' of the areas) "
+                     "are rooms no passage reaches: closed shafts or ducts, or doorways the drawing closes")
+    for c in components[1:]:
+        ids = ", ".join(str(i) for i in c["ids"][:12]) + (" ..." if len(c["ids"]) > 12 else "")
+        names = f" ({', '.join(c['names'][:5])})" if c["names"] else ""
+        progress.info(f"  component {c['component']}: areas {ids}{names}, {c['area_m2']:.1f} m2")
+
+
+def room_name_points(texts, rules=None) -> np.ndarray:
+    """(x, y) metres of the texts that name or number a room, as an (n, 2) array: the classification of
+    stage 5 (``semantics.classify_text``: dimensions, elevations, codes, titles... are not names)."""
+    from .semantics import room_name_points as named
+
+    pts = [(x, y) for x, y, _ in named(texts, rules)]
+    return np.asarray(pts, dtype=np.float64).reshape(-1, 2)
+
+
 def segment(grid: OccupancyGrid, door_width: float = DEFAULT_DOOR_WIDTH,
             corridor_width: float = DEFAULT_CORRIDOR_WIDTH, delta: float = DEFAULT_DELTA,
             prune: float = DEFAULT_PRUNE, progress: Optional[Progress] = None,
-            envelope_gap: float = DEFAULT_ENVELOPE_GAP) -> AreaGraph:
+            envelope_gap: float = DEFAULT_ENVELOPE_GAP, inside_points=None, door_hints=None,
+            footprint: bool = False) -> AreaGraph:
     """Segment the free space of ``grid`` into an Area Graph.
 
     Returns an ``AreaGraph`` whose areas carry exact pixel-edge polygons (world metres), whose
@@ -578,6 +938,15 @@ def segment(grid: OccupancyGrid, door_width: float = DEFAULT_DOOR_WIDTH,
     ``skeleton.SkeletonGraph``, on the grid) and ``stats`` (per-step seconds, alpha, interior
     area, skeleton_nodes / _edges / _junctions / _dead_ends / _pruned, regions...). Raises
     ``InputError`` for unusable input.
+
+    ``inside_points``: (x, y) world metres of room-name texts, evidence that the space holding each
+    is inside the building whatever its facade (``building_interior``). ``footprint``: the plan's
+    footprint is evidence too (``FOOTPRINT_FACTOR``; for CAD plans, whose outline is drawn: on a
+    robot map the free space beside the rooms is where the scan ended, not a porch). ``door_hints``
+    (``model.DoorHint``): doorways found in the drawing; their openings are kept free and they
+    become passages where the areas on both sides are not joined otherwise (``hint_passages``).
+    Every area gets its ``component`` in the area graph (0 = the largest); ``stats`` has
+    ``components`` and ``largest_component_share``, and the other components are logged.
     """
     progress = ensure(progress)
     t_all = time.perf_counter()
@@ -591,9 +960,29 @@ def segment(grid: OccupancyGrid, door_width: float = DEFAULT_DOOR_WIDTH,
 
     t = time.perf_counter()
     free = data == FREE
+    if door_hints:
+        from .rasterize import door_opening_mask
+
+        free = free | (door_opening_mask(door_hints, free.shape, grid.origin_x, grid.origin_y, res)
+                       & (data != FREE) & (data != UNKNOWN))
+    pix_pts = None
+    if inside_points is not None and len(inside_points):
+        xy = np.asarray(inside_points, dtype=np.float64).reshape(-1, 2)
+        pix_pts = np.stack(grid.world_to_pixel(xy[:, 0], xy[:, 1]), axis=1)
     # unknown cells are not passable for the envelope disk either: some maps draw walls in grey
-    interior, envelope = building_interior(free, res, envelope_gap)
+    info: dict = {}
+    interior, envelope = building_interior(free, res, envelope_gap, inside_points=pix_pts, info=info,
+                                           footprint=footprint)
     del envelope
+    stats["claimed_open_m2"] = info.get("claimed_px", 0) * res * res
+    stats["inside_points"] = float(info.get("inside_points", 0))
+    stats["inside_points_outside"] = float(info.get("inside_points_outside", 0))
+    if info.get("claimed_px"):
+        progress.info(f"space open to the outside kept inside on evidence (footprint, doorways, "
+                      f"{info.get('inside_points_claimed', 0)} room names): {stats['claimed_open_m2']:.1f} m2")
+    if info.get("inside_points_outside"):
+        progress.warning(f"{info['inside_points_outside']} of {info['inside_points']} room-name points lie in space "
+                         "open to the outside at every footprint scale (no wall closes it); they are not areas")
     stats["interior_s"] = time.perf_counter() - t
     stats["free_area_m2"] = float(free.sum()) * res * res
     stats["interior_area_m2"] = float(interior.sum()) * res * res
@@ -648,7 +1037,9 @@ def segment(grid: OccupancyGrid, door_width: float = DEFAULT_DOOR_WIDTH,
     group_peak[0] = 0
     del cells
     labels = _single_pieces(labels)
-    labels, group_peak, dropped_px = _drop_outside_pockets(labels, free & ~interior, group_peak)
+    labels, group_peak, dropped_px = _drop_outside_pockets(labels, free & ~interior, group_peak,
+                                                           info.get("claimed"), info.get("inside_pixels"))
+    info.pop("claimed", None)
     if dropped_px:
         stats["interior_area_m2"] -= dropped_px * res * res
         stats["outside_pockets_m2"] = dropped_px * res * res
@@ -662,6 +1053,12 @@ def segment(grid: OccupancyGrid, door_width: float = DEFAULT_DOOR_WIDTH,
 
     t = time.perf_counter()
     passages = build_passages(labels, grid)
+    if door_hints:
+        extra = hint_passages(labels, grid, door_hints, passages)
+        passages += extra
+        stats["hint_passages"] = float(len(extra))
+        if extra:
+            progress.info(f"{len(extra)} passages added from door hints the segmentation missed")
     stats["passages_s"] = time.perf_counter() - t
 
     ids = sorted(polys)
@@ -673,6 +1070,10 @@ def segment(grid: OccupancyGrid, door_width: float = DEFAULT_DOOR_WIDTH,
         elong = poly.area / max((2.0 * clear_m) ** 2, res * res)
         typ = "corridor" if elong >= CORRIDOR_ELONGATION else "room"
         areas.append(Area(id=int(lid), polygon=poly, type=typ, max_clearance=clear_m))
+    comps = assign_components(areas, passages)
+    stats["components"] = float(len(comps))
+    stats["largest_component_share"] = comps[0]["share"] if comps else 1.0
+    report_components(comps, progress, "segmentation")
     stats["areas"] = float(len(areas))
     stats["passages"] = float(len(passages))
     stats["total_s"] = time.perf_counter() - t_all

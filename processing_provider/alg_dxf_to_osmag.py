@@ -16,6 +16,7 @@ from qgis.core import (
 )
 
 from ..algorithms import pipeline
+from .alg_extract_structure import add_plan_parameters, plan_argument
 from .alg_load_osmag import osmag_to_sinks
 from .base import Cad2OsmagAlgorithm
 
@@ -36,7 +37,8 @@ class DxfToOsmagAlgorithm(Cad2OsmagAlgorithm):
             "structural layers of the drawing are kept (walls, columns, "
             "glazing, stairs), rasterized, segmented into an Area Graph of rooms, corridors and the passages "
             "between them, refined (simplified polygons with shared borders) and written as an osmAG file "
-            "anchored on the Earth. ANCHOR is the position of the drawing origin (pick it on a basemap), "
+            "anchored on the Earth. With NAMES (on by default) the drawing's texts name, number and type the areas "
+            "(see 'Assign room names and types from texts'; NAME_RULES adapts the rules). ANCHOR is the position of the drawing origin (pick it on a basemap), "
             "ROTATION the direction of the drawing's +y axis in degrees clockwise from north. Each step is "
             "also available as its own algorithm for finer control.")
 
@@ -55,6 +57,11 @@ class DxfToOsmagAlgorithm(Cad2OsmagAlgorithm):
                                                        QgsProcessingParameterNumber.Type.Double, 10.0, False, 0, 1000))
         self.addParameter(QgsProcessingParameterBoolean("INCLUDE_DOORS",
                                                         self.tr("Close doorways (rasterize door layers)"), False))
+        add_plan_parameters(self)  # PLAN / PLAN_EXTENT: which plan of a whole sheet (cad_sheet)
+        self.addParameter(QgsProcessingParameterBoolean(
+            "NAMES", self.tr("Room names, numbers and types from the drawing's texts"), True))
+        self.addParameter(QgsProcessingParameterFile("NAME_RULES", self.tr("Name rules (JSON, optional)"),
+                                                     extension="json", optional=True))
         self.addParameter(QgsProcessingParameterString("LEVEL", self.tr("Level"), "1"))
         self.addParameter(QgsProcessingParameterNumber("HEIGHT", self.tr("Floor height (m)"),
                                                        QgsProcessingParameterNumber.Type.Double, 3.2, False, 0.1, 100))
@@ -101,6 +108,7 @@ class DxfToOsmagAlgorithm(Cad2OsmagAlgorithm):
             rules=self.parameterAsFile(parameters, "LAYER_RULES", context) or None,
             units=None if units == "auto" else units,
             include_doors=self.parameterAsBool(parameters, "INCLUDE_DOORS", context),
+            plan=plan_argument(self, parameters, context),
             resolution=self.parameterAsDouble(parameters, "RESOLUTION", context),
             door_width=self.parameterAsDouble(parameters, "DOOR_WIDTH", context),
             corridor_width=self.parameterAsDouble(parameters, "CORRIDOR_WIDTH", context),
@@ -110,6 +118,8 @@ class DxfToOsmagAlgorithm(Cad2OsmagAlgorithm):
             anchor_lon=lon, anchor_lat=lat,
             rotation_deg=self.parameterAsDouble(parameters, "ROTATION", context),
             variant=VARIANTS[self.parameterAsEnum(parameters, "VARIANT", context)],
+            names=self.parameterAsBool(parameters, "NAMES", context),
+            name_rules=self.parameterAsFile(parameters, "NAME_RULES", context) or None,
         )
         # the written file, as styled layers in WGS84 (GUI runs load them into the project)
         adest = pdest = None

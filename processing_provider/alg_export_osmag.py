@@ -11,6 +11,7 @@ from qgis.core import (
 )
 
 from ..algorithms.osmag import VARIANTS
+from ..algorithms.semantics import for_osm
 from .alg_georeference import is_cad_frame, qgs_crs_to_pyproj
 from .alg_refine import read_areas, read_passages
 from .base import Cad2OsmagAlgorithm
@@ -96,7 +97,9 @@ class ExportOsmagAlgorithm(Cad2OsmagAlgorithm):
                 raise QgsProcessingException(self.tr(
                     "{} is in {} but AREAS is in {}; reproject it to the CRS of AREAS first").format(
                         what, other.sourceCrs().authid() or "no CRS", crs.authid() or "no CRS"))
-        areas = read_areas(src)
+        # label_score / label_texts / label_conflict are layer fields for the user, not osmAG tags (a conflict
+        # becomes a fixme); edited name, ref and type are written as they are
+        areas = for_osm(read_areas(src))
         structure = read_areas(ssrc, what="STRUCTURE") if ssrc is not None else []
         for s in structure:
             s.type = "structure"

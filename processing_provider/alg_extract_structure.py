@@ -13,6 +13,7 @@ from qgis.core import (
     QgsProcessingOutputString,
     QgsProcessingParameterBoolean,
     QgsProcessingParameterEnum,
+    QgsProcessingParameterExtent,
     QgsProcessingParameterFeatureSink,
     QgsProcessingParameterFile,
     QgsProcessingParameterString,
@@ -20,9 +21,10 @@ from qgis.core import (
 )
 
 from ..algorithms import cad_import
+from ..algorithms.cad_sheet import describe_plans
 from ..algorithms.layer_rules import load_rules
 from ..algorithms.rasterize import LOCAL_FRAME_WKT
-from .base import Cad2OsmagAlgorithm, FIELD_BOOL, FIELD_DOUBLE, FIELD_STRING, make_fields
+from .base import Cad2OsmagAlgorithm, FIELD_BOOL, FIELD_DOUBLE, FIELD_INT, FIELD_LONG, FIELD_STRING, make_fields
 
 UNIT_OPTIONS = ["", "mm", "cm", "m", "inch", "feet"]
 
@@ -35,12 +37,39 @@ def local_frame_crs():
 
 def wall_fields():
     return make_fields(("layer", FIELD_STRING), ("kind", FIELD_STRING), ("entity", FIELD_STRING),
-                       ("closed", FIELD_BOOL), ("filled", FIELD_BOOL), ("width", FIELD_DOUBLE))
+                       ("closed", FIELD_BOOL), ("filled", FIELD_BOOL), ("width", FIELD_DOUBLE),
+                       ("block", FIELD_STRING), ("class", FIELD_STRING))
 
 
 def text_fields():
     return make_fields(("text", FIELD_STRING), ("height", FIELD_DOUBLE), ("rotation", FIELD_DOUBLE),
-                       ("layer", FIELD_STRING), ("entity", FIELD_STRING))
+                       ("layer", FIELD_STRING), ("entity", FIELD_STRING), ("block", FIELD_STRING),
+                       ("tag", FIELD_STRING), ("id", FIELD_LONG))
+
+
+def door_fields():
+    return make_fields(("source", FIELD_STRING), ("width", FIELD_DOUBLE))
+
+
+def add_plan_parameters(alg):
+    """The PLAN (index or extent text) and PLAN_EXTENT (drawn on the canvas) parameters, shared by
+    extractstructure and dxftoosmag."""
+    alg.addParameter(QgsProcessingParameterString(
+        "PLAN", alg.tr("Plan on the sheet (empty = main plan; an index of the log's plan list, "
+                       "or xmin,ymin,xmax,ymax in metres)"), optional=True))
+    alg.addParameter(QgsProcessingParameterExtent(
+        "PLAN_EXTENT", alg.tr("Plan extent (drawn on the canvas over the extracted structure; wins over PLAN)"),
+        optional=True))
+
+
+def plan_argument(alg, parameters, context):
+    """The ``plan`` argument of import_dxf from PLAN / PLAN_EXTENT (None = the main plan)."""
+    if parameters.get("PLAN_EXTENT") not in (None, ""):
+        rect = alg.parameterAsExtent(parameters, "PLAN_EXTENT", context)
+        if rect is not None and not rect.isNull() and rect.width() > 0 and rect.height() > 0:
+            return (rect.xMinimum(), rect.yMinimum(), rect.xMaximum(), rect.yMaximum())
+    txt = (alg.parameterAsString(parameters, "PLAN", context) or "").strip()
+    return txt or None
 
 
 def geometry_to_qgs(coords, closed):
@@ -80,10 +109,17 @@ class ExtractStructureAlgorithm(Cad2OsmagAlgorithm):
             "LAYERS: explicit layer names (separated by ';') that override the rules. "
             "UNITS: the header's $INSUNITS is only a hint; by default the unit is chosen so that the building "
             "is 5-500 m across (a warning names both units). Door layers are left out unless INCLUDE_DOORS "
-            "is set, so that doorways stay open.\n"
+            "is set, so that doorways stay open; door swings and door blocks (by name, in many languages) are "
+            "found on any layer and written as DOORS (jamb to jamb); furniture blocks, free-standing furniture "
+            "on layer 0 and pattern hatches are left out (the log counts every class).\n"
+            "Whole sheets: title frames, title blocks and legends are left out and the structure is grouped "
+            "into plans (groups more than 5 m apart); the main plan (largest wall mass) is kept, the log lists "
+            "every group with its index, extent, title and kind (plan / detail / legend). PLAN picks another "
+            "(an index, or xmin,ymin,xmax,ymax in metres); PLAN_EXTENT is the same extent drawn on the canvas.\n"
             "Outputs, in metres in the drawing's own frame (a local engineering CRS, not georeferenced): "
             "WALLS (lines with fields layer, kind, entity, closed, filled, width; 'Rasterize structure' "
-            "rebuilds the geometry from them) and TEXTS (points with text, height, rotation, layer, entity).")
+            "rebuilds the geometry from them; block, class), TEXTS (points with text, height, rotation, layer, "
+            "entity, block, tag = ATTRIB tag, id; 'Assign room names and types from texts' reads them) and DOORS (doorway lines with source and width).")
 
     INPUT = "INPUT"
     LAYER_RULES = "LAYER_RULES"
@@ -92,6 +128,7 @@ class ExtractStructureAlgorithm(Cad2OsmagAlgorithm):
     INCLUDE_DOORS = "INCLUDE_DOORS"
     WALLS = "WALLS"
     TEXTS = "TEXTS"
+    DOORS = "DOORS"
 
     def initAlgorithm(self, config=None):  # noqa: N802
         self.addParameter(QgsProcessingParameterFile(self.INPUT, self.tr("DXF or DWG drawing"), fileFilter=CAD_FILTER))
@@ -106,10 +143,18 @@ class ExtractStructureAlgorithm(Cad2OsmagAlgorithm):
             defaultValue=0))
         self.addParameter(QgsProcessingParameterBoolean(
             self.INCLUDE_DOORS, self.tr("Include doors (rasterize doorways as closed)"), defaultValue=False))
+        add_plan_parameters(self)
         self.addParameter(QgsProcessingParameterFeatureSink(
             self.WALLS, self.tr("Structure lines"), QgsProcessing.SourceType.TypeVectorLine))
         self.addParameter(QgsProcessingParameterFeatureSink(
             self.TEXTS, self.tr("Texts"), QgsProcessing.SourceType.TypeVectorPoint))
+        self.addParameter(QgsProcessingParameterFeatureSink(
+            self.DOORS, self.tr("Doorways found (door swings and door blocks)"),
+            QgsProcessing.SourceType.TypeVectorLine, optional=True, createByDefault=False))
+        self.addOutput(QgsProcessingOutputString("PLANS", self.tr("Plans found on the sheet")))
+        self.addOutput(QgsProcessingOutputNumber("PLAN_COUNT", self.tr("Number of groups found on the sheet")))
+        self.addOutput(QgsProcessingOutputNumber("DOOR_COUNT", self.tr("Number of doorways found")))
+        self.addOutput(QgsProcessingOutputString("CLASSES", self.tr("Entity counts per class")))
         self.addOutput(QgsProcessingOutputString("UNIT", self.tr("Unit used")))
         self.addOutput(QgsProcessingOutputNumber("UNIT_SCALE", self.tr("Drawing units to metres")))
         self.addOutput(QgsProcessingOutputNumber("GEOMETRY_COUNT", self.tr("Number of structure features")))
@@ -124,8 +169,9 @@ class ExtractStructureAlgorithm(Cad2OsmagAlgorithm):
         include_doors = self.parameterAsBool(parameters, self.INCLUDE_DOORS, context)
 
         rules = self.call(feedback, _load_rules, rules_path)
+        plan = plan_argument(self, parameters, context)
         drawing = self.call(feedback, cad_import.import_dxf, path, rules=rules, layers=layers, units=units or None,
-                            include_doors=include_doors)
+                            include_doors=include_doors, plan=plan)
         # import_dxf already reported every repair through the feedback
 
         # build every feature before creating the sinks, so a failure leaves no half-written output
@@ -134,17 +180,27 @@ class ExtractStructureAlgorithm(Cad2OsmagAlgorithm):
         for g in drawing.geometries:
             f = QgsFeature(wf)
             f.setGeometry(geometry_to_qgs(g.coords, g.closed))
-            f.setAttributes([g.layer, g.kind, g.entity, bool(g.closed), bool(g.filled), float(g.width)])
+            f.setAttributes([g.layer, g.kind, g.entity, bool(g.closed), bool(g.filled), float(g.width), g.block,
+                             g.cls])
             walls.append(f)
             if feedback.isCanceled():
                 return {}
         tf = text_fields()
         texts = []
-        for t in drawing.texts:
+        for k, t in enumerate(drawing.texts):
             f = QgsFeature(tf)
             f.setGeometry(QgsGeometry.fromPointXY(QgsPointXY(t.x, t.y)))
-            f.setAttributes([t.text, float(t.height), float(t.rotation), t.layer, t.entity])
+            # block, tag and id feed cad2osmag:assignnames (room tags, the ids listed in label_texts)
+            f.setAttributes([t.text, float(t.height), float(t.rotation), t.layer, t.entity, t.block or "",
+                             t.tag or "", int(t.id) if t.id is not None and t.id >= 0 else k])
             texts.append(f)
+        df = door_fields()
+        doors = []
+        for d in drawing.doors:
+            f = QgsFeature(df)
+            f.setGeometry(QgsGeometry(QgsLineString([QgsPoint(d.x0, d.y0), QgsPoint(d.x1, d.y1)])))
+            f.setAttributes([d.source, float(d.width)])
+            doors.append(f)
 
         crs = local_frame_crs()
         (wsink, wdest) = self.parameterAsSink(parameters, self.WALLS, context, wf, QgsWkbTypes.Type.MultiLineString, crs)
@@ -153,11 +209,25 @@ class ExtractStructureAlgorithm(Cad2OsmagAlgorithm):
         (tsink, tdest) = self.parameterAsSink(parameters, self.TEXTS, context, tf, QgsWkbTypes.Type.Point, crs)
         for f in texts:
             tsink.addFeature(f, QgsFeatureSink.Flag.FastInsert)
+        ddest = None
+        if parameters.get(self.DOORS) is not None:
+            (dsink, ddest) = self.parameterAsSink(parameters, self.DOORS, context, df, QgsWkbTypes.Type.LineString, crs)
+            if dsink is not None:
+                for f in doors:
+                    dsink.addFeature(f, QgsFeatureSink.Flag.FastInsert)
+        classes = "; ".join(f"{k}={v}" for k, v in sorted(drawing.classes.items()))
+        feedback.pushInfo(self.tr("Entity classes: {}; {} doorways found").format(classes or "-", len(doors)))
+        plans = describe_plans(drawing.plans)
+        feedback.pushInfo(self.tr("Sheet: {}").format(plans))
         kept = sorted({g.layer for g in drawing.geometries})
         feedback.pushInfo(self.tr("Kept {} features on layers: {}; {} texts; unit {} (header: {})").format(
             len(walls), ", ".join(kept), len(texts), drawing.unit_name, drawing.header_unit))
-        return {self.WALLS: wdest, self.TEXTS: tdest, "UNIT": drawing.unit_name,
-                "UNIT_SCALE": drawing.unit_scale, "GEOMETRY_COUNT": len(walls), "TEXT_COUNT": len(texts)}
+        out = {self.WALLS: wdest, self.TEXTS: tdest, "UNIT": drawing.unit_name,
+               "UNIT_SCALE": drawing.unit_scale, "GEOMETRY_COUNT": len(walls), "TEXT_COUNT": len(texts),
+               "PLANS": plans, "PLAN_COUNT": len(drawing.plans), "DOOR_COUNT": len(doors), "CLASSES": classes}
+        if ddest is not None:
+            out[self.DOORS] = ddest
+        return out
 
 
 def _load_rules(path, progress=None):

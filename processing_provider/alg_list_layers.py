@@ -36,6 +36,8 @@ class ListLayersAlgorithm(Cad2OsmagAlgorithm):
             "and whether the layer rules keep it (kind and matching keyword; door layers are listed with kind "
             "'door' but not kept, since doorways stay open unless doors are included). Use the table to choose the "
             "LAYERS of 'Extract structure from DXF/DWG' or to write your own LAYER_RULES JSON file.\n"
+            "Layer names as delivered: the rules match the meaningful part of a name (the prefix of a bound "
+            "external reference, as in E1-RI-1F$0$A-WALL, is ignored); the 'matched' column shows it.\n"
             "Output: a table without geometry (save it as CSV, or keep it as a memory layer).")
 
     INPUT = "INPUT"
@@ -60,7 +62,7 @@ class ListLayersAlgorithm(Cad2OsmagAlgorithm):
         drawing = self.call(feedback, cad_import.inspect_dxf, path, rules)  # reports repairs and warnings
         infos = sorted(drawing.layers.values(), key=lambda i: i.name.lower())
 
-        fields = make_fields(("layer", FIELD_STRING), ("kind", FIELD_STRING), ("kept", FIELD_BOOL),
+        fields = make_fields(("layer", FIELD_STRING), ("matched", FIELD_STRING), ("kind", FIELD_STRING), ("kept", FIELD_BOOL),
                              ("rule", FIELD_STRING), ("frozen", FIELD_BOOL), ("off", FIELD_BOOL),
                              ("total", FIELD_INT), *(("n_" + col.lower(), FIELD_INT) for col in COUNT_COLUMNS))
         fields.append(QgsField("n_other", FIELD_INT))
@@ -71,7 +73,7 @@ class ListLayersAlgorithm(Cad2OsmagAlgorithm):
             f = QgsFeature(fields)
             counts = info.counts
             other = sum(v for k, v in counts.items() if k not in COUNT_COLUMNS)
-            attrs = [info.name, info.kind or "", cad_import.layer_kept(info, rules), info.rule, bool(info.frozen), bool(info.off),
+            attrs = [info.name, info.matched or info.name, info.kind or "", cad_import.layer_kept(info, rules), info.rule, bool(info.frozen), bool(info.off),
                      int(sum(counts.values()))]
             attrs += [int(counts.get(c, 0)) for c in COUNT_COLUMNS]
             attrs += [int(other), "; ".join(f"{k}={v}" for k, v in sorted(counts.items()))]

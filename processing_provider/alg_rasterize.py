@@ -44,6 +44,23 @@ def _parts(geom):
     return out
 
 
+def _door_hints(source):
+    """DOORS line source -> list of DoorHint (first to last vertex of each line)."""
+    from ..algorithms.model import DoorHint
+
+    hints = []
+    if source is None:
+        return hints
+    for f in source.getFeatures():
+        g = f.geometry()
+        if g is None or g.isEmpty():
+            continue
+        line = g.asPolyline() if not g.isMultipart() else [v for part in g.asMultiPolyline() for v in part]
+        if len(line) >= 2:
+            hints.append(DoorHint(line[0].x(), line[0].y(), line[-1].x(), line[-1].y(), "layer"))
+    return hints
+
+
 def features_to_geometries(source, feedback=None, transform=None):
     """Rebuild CadGeometry from a WALLS-like layer (fields layer, kind, entity, closed, filled, width are
     used when present; polygons are filled)."""
@@ -148,6 +165,9 @@ class RasterizeAlgorithm(Cad2OsmagAlgorithm):
             defaultValue=0))
         self.addParameter(QgsProcessingParameterBoolean(
             "STAIRS_AS_OBSTACLES", self.tr("Draw stair and lift symbols as obstacles"), False))
+        self.addParameter(QgsProcessingParameterFeatureSource(
+            "DOORS", self.tr("Doorways (jamb-to-jamb lines) kept open (optional)"),
+            [QgsProcessing.SourceType.TypeVectorLine], optional=True))
         self.addParameter(QgsProcessingParameterRasterDestination(self.OCCUPANCY, self.tr("Occupancy raster")))
         self.addOutput(QgsProcessingOutputNumber("WIDTH", self.tr("Raster width (pixels)")))
         self.addOutput(QgsProcessingOutputNumber("HEIGHT", self.tr("Raster height (pixels)")))
@@ -205,7 +225,8 @@ class RasterizeAlgorithm(Cad2OsmagAlgorithm):
         grid = self.call(feedback, ras.rasterize, geoms, resolution=res, padding=padding, percentiles=pct,
                          kernel=kernel, extent=extent, max_pixels=max_px, stroke=stroke,
                          free_kinds=() if self.parameterAsBool(parameters, "STAIRS_AS_OBSTACLES", context)
-                         else ras.DEFAULT_FREE_KINDS)
+                         else ras.DEFAULT_FREE_KINDS, door_hints=_door_hints(
+                             self.parameterAsSource(parameters, "DOORS", context)))
         out = self.parameterAsOutputLayer(parameters, self.OCCUPANCY, context)
         wkt = crs.toWkt(QgsCoordinateReferenceSystem.WktVariant.WKT_PREFERRED_GDAL) if crs.isValid() else ""
         try:

@@ -28,7 +28,7 @@ from .base import Cad2OsmagAlgorithm, FIELD_DOUBLE, FIELD_LONG, FIELD_STRING, fr
 AREA_ID_FIELDS = ("id", "osm_id", "area_id", "fid")
 AREA_TYPE_FIELDS = ("type", "osmAG:areatype", "osmAG:areaType", "areatype")
 INTERNAL_AREA_FIELDS = {"id", "osm_id", "area_id", "fid", "type", "area_m2", "perimeter_m", "max_clearance",
-                        "areatype"}
+                        "areatype", "component"}
 INTERNAL_PASSAGE_FIELDS = {"id", "osm_id", "fid", "from_id", "to_id", "width_m"}
 
 
@@ -115,7 +115,7 @@ def read_passages(source, areas):
 
 def area_fields(extra_keys=()):
     return make_fields(("id", FIELD_LONG), ("type", FIELD_STRING), ("name", FIELD_STRING),
-                       ("max_clearance", FIELD_DOUBLE), ("area_m2", FIELD_DOUBLE),
+                       ("max_clearance", FIELD_DOUBLE), ("area_m2", FIELD_DOUBLE), ("component", FIELD_LONG),
                        *((k, FIELD_STRING) for k in extra_keys))
 
 
@@ -142,8 +142,9 @@ def write_areas(sink, fields, areas, metric=True):
         f["name"] = a.name or None
         f["max_clearance"] = float(a.max_clearance)
         f["area_m2"] = float(a.polygon.area) if metric else None
+        f["component"] = int(a.component)
         for k, v in (a.tags or {}).items():
-            if fields.indexOf(k) >= 0 and k not in ("id", "type", "name", "max_clearance", "area_m2"):
+            if fields.indexOf(k) >= 0 and k not in ("id", "type", "name", "max_clearance", "area_m2", "component"):
                 f[k] = str(v)
         if not sink.addFeature(f, QgsFeatureSink.Flag.FastInsert):
             raise QgsProcessingException(f"cannot write area {a.id} to the output layer")
@@ -223,7 +224,9 @@ class RefineAlgorithm(Cad2OsmagAlgorithm):
                             ("MAX_DEVIATION", "Maximum deviation from the unsimplified areas (m)"),
                             ("EPSILON_M", "Tolerance ε·r (m)"), ("AREA_COUNT", "Areas written"),
                             ("PASSAGE_COUNT", "Passages written"), ("MERGED", "Small areas merged"),
-                            ("DROPPED", "Isolated small areas dropped")):
+                            ("DROPPED", "Isolated small areas dropped"),
+                            ("COMPONENTS", "Connected components of the area graph"),
+                            ("LARGEST_COMPONENT_SHARE", "Share of the area in the largest component")):
             self.addOutput(QgsProcessingOutputNumber(name, self.tr(label)))
 
     def processAlgorithm(self, parameters, context, feedback):  # noqa: N802
@@ -265,5 +268,6 @@ class RefineAlgorithm(Cad2OsmagAlgorithm):
             "VERTICES_BEFORE": stats["vertices_before"], "VERTICES_AFTER": stats["vertices_after"],
             "VERTEX_REDUCTION": 100.0 * stats["vertex_reduction"], "MAX_DEVIATION": stats["max_deviation_m"],
             "EPSILON_M": stats["epsilon_m"], "AREA_COUNT": len(out.areas), "PASSAGE_COUNT": len(out.passages),
-            "MERGED": stats["merged"], "DROPPED": stats["dropped"]})
+            "MERGED": stats["merged"], "DROPPED": stats["dropped"], "COMPONENTS": stats["components"],
+            "LARGEST_COMPONENT_SHARE": stats["largest_component_share"]})
         return result

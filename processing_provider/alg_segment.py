@@ -9,6 +9,7 @@ from qgis.core import (
     QgsProcessing,
     QgsProcessingException,
     QgsProcessingOutputNumber,
+    QgsProcessingParameterEnum,
     QgsProcessingParameterFeatureSink,
     QgsProcessingParameterFeatureSource,
     QgsProcessingParameterNumber,
@@ -32,6 +33,50 @@ def _area_fields():
     return fields
 
 
+def _is_cad_raster(path):
+    """True for an occupancy GeoTIFF written by cad2osmag (a rasterized CAD plan)."""
+    if not str(path).lower().endswith((".tif", ".tiff")):
+        return False
+    from osgeo import gdal
+
+    from ..algorithms.raster_io import OCCUPANCY_TAG
+
+    ds = gdal.Open(str(path))
+    return ds is not None and OCCUPANCY_TAG in (ds.GetMetadata() or {})
+
+
+def _texts_and_doors(texts, doors):
+    """Optional TEXTS (points with a 'text' field) and DOORS (lines) sources -> (inside points
+    (n, 2) or None, list of DoorHint)."""
+    import numpy as np
+
+    from ..algorithms.model import CadText, DoorHint
+
+    pts = None
+    if texts is not None:
+        names = texts.fields().names()
+        field = "text" if "text" in names else (names[0] if names else None)
+        cad = []
+        for f in texts.getFeatures():
+            g = f.geometry()
+            if g is None or g.isEmpty():
+                continue
+            p = g.asPoint() if not g.isMultipart() else g.asMultiPoint()[0]
+            txt = str(f[field]) if field is not None and f[field] is not None else ""
+            cad.append(CadText(p.x(), p.y(), txt, 0.0, 0.0, ""))
+        pts = segmentation.room_name_points(cad)
+    hints = []
+    if doors is not None:
+        for f in doors.getFeatures():
+            g = f.geometry()
+            if g is None or g.isEmpty():
+                continue
+            line = g.asPolyline() if not g.isMultipart() else [v for part in g.asMultiPolyline() for v in part]
+            if len(line) >= 2:
+                hints.append(DoorHint(line[0].x(), line[0].y(), line[-1].x(), line[-1].y(), "layer"))
+    return (None if pts is None else np.asarray(pts)), hints
+
+
 class SegmentAlgorithm(Cad2OsmagAlgorithm):
     NAME = "segment"
     DISPLAY_NAME = "Segment occupancy grid into an Area Graph"
@@ -52,7 +97,15 @@ class SegmentAlgorithm(Cad2OsmagAlgorithm):
             "type room/corridor, area, perimeter, max clearance), PASSAGES (a segment across every "
             "opening between two areas, ends on the walls: from, to, width), LABELS (area ids on the "
             "input grid, 0 outside areas) and, when asked for, SKELETON (one line per skeleton edge: id, "
-            "length, min and max clearance).")
+            "length, min and max clearance). Space open to the outside is still inside where there is evidence: "
+            "the plan's footprint (openings up to 3 x ENVELOPE_GAP, closed at the chord between the facade wall "
+            "ends, where it opens onto the interior through a doorway) and the optional TEXTS (room names, from "
+            "'Extract structure': the space holding one is never outside). FOOTPRINT: by default the footprint is "
+            "used for rasters made by 'Rasterize' (CAD plans), not for images and ROS maps (robot maps, whose free "
+            "space beside the rooms is where the scan ended). The optional DOORS (jamb-to-jamb "
+            "lines) are kept open and become passages where the segmentation missed them. Every area has a "
+            "'component' field: its connected component in the area graph (0 = the largest); the log lists the "
+            "others (rooms no passage reaches).")
 
     INPUT = "INPUT"
     RESOLUTION = "RESOLUTION"
@@ -90,6 +143,16 @@ class SegmentAlgorithm(Cad2OsmagAlgorithm):
         self.addParameter(QgsProcessingParameterFeatureSource(
             "STRUCTURE", self.tr("Structure lines of the drawing (WALLS of 'Extract structure'), to recognise "
                                  "stairs and lifts"), [QgsProcessing.SourceType.TypeVectorLine], optional=True))
+        self.addParameter(QgsProcessingParameterEnum(
+            "FOOTPRINT", self.tr("Use the plan's footprint as evidence of inside space"),
+            options=[self.tr("automatic (CAD rasters from 'Rasterize': yes; images and ROS maps: no)"),
+                     self.tr("yes"), self.tr("no")], defaultValue=0))
+        self.addParameter(QgsProcessingParameterFeatureSource(
+            "TEXTS", self.tr("Room names (TEXTS of 'Extract structure'): evidence of inside space"),
+            [QgsProcessing.SourceType.TypeVectorPoint], optional=True))
+        self.addParameter(QgsProcessingParameterFeatureSource(
+            "DOORS", self.tr("Doorways (jamb-to-jamb lines) kept open and made passages"),
+            [QgsProcessing.SourceType.TypeVectorLine], optional=True))
         self.addParameter(QgsProcessingParameterFeatureSink(
             self.AREAS, self.tr("Areas"), QgsProcessing.SourceType.TypeVectorPolygon))
         self.addParameter(QgsProcessingParameterFeatureSink(
@@ -100,6 +163,8 @@ class SegmentAlgorithm(Cad2OsmagAlgorithm):
             optional=True, createByDefault=False))
         for name, label in (("AREA_COUNT", "Areas"), ("ROOM_COUNT", "Rooms"), ("CORRIDOR_COUNT", "Corridors"),
                             ("PASSAGE_COUNT", "Passages"), ("INTERIOR_AREA_M2", "Free area inside the building (m²)"),
+                            ("COMPONENTS", "Connected components of the area graph"),
+                            ("LARGEST_COMPONENT_SHARE", "Share of the area in the largest component"),
                             ("ALPHA", "alpha (px²)"), ("SECONDS", "Segmentation time (s)")):
             self.addOutput(QgsProcessingOutputNumber(name, self.tr(label)))
 
@@ -136,7 +201,15 @@ class SegmentAlgorithm(Cad2OsmagAlgorithm):
         if res > 0 and path.lower().endswith((".tif", ".tiff")) and abs(grid.resolution - res) > 1e-9:
             feedback.pushInfo(self.tr("RESOLUTION ignored: the GeoTIFF carries {} m/px").format(grid.resolution))
         feedback.pushInfo(self.tr("Grid {} x {} px at {} m/px").format(grid.shape[1], grid.shape[0], grid.resolution))
-        ag = self.call(feedback, segmentation.segment, grid,
+        inside_points, door_hints = _texts_and_doors(self.parameterAsSource(parameters, "TEXTS", context),
+                                                     self.parameterAsSource(parameters, "DOORS", context))
+        if inside_points is not None:
+            feedback.pushInfo(self.tr("{} room-name points used as evidence of inside space").format(len(inside_points)))
+        choice = self.parameterAsEnum(parameters, "FOOTPRINT", context)
+        footprint = choice == 1 or (choice == 0 and _is_cad_raster(path))
+        feedback.pushInfo(self.tr("Footprint evidence: {}").format(self.tr("yes") if footprint else self.tr("no")))
+        ag = self.call(feedback, segmentation.segment, grid, inside_points=inside_points, door_hints=door_hints,
+                       footprint=footprint,
                        door_width=self.parameterAsDouble(parameters, self.DOOR_WIDTH, context),
                        corridor_width=self.parameterAsDouble(parameters, self.CORRIDOR_WIDTH, context),
                        delta=self.parameterAsDouble(parameters, self.DELTA, context),
@@ -188,6 +261,7 @@ class SegmentAlgorithm(Cad2OsmagAlgorithm):
             f["max_clearance"] = round(float(a.max_clearance), 4)
             f["area_m2"] = float(a.area)
             f["perimeter_m"] = float(a.perimeter)
+            f["component"] = int(a.component)
             if not sink_a.addFeature(f, QgsFeatureSink.Flag.FastInsert):
                 raise QgsProcessingException(self.tr("cannot write area {}").format(a.id))
         for p in ag.passages:
@@ -232,6 +306,8 @@ class SegmentAlgorithm(Cad2OsmagAlgorithm):
             "CORRIDOR_COUNT": sum(a.type == "corridor" for a in ag.areas),
             "PASSAGE_COUNT": len(ag.passages),
             "INTERIOR_AREA_M2": float(st["interior_area_m2"]),
+            "COMPONENTS": int(st.get("components", 1)),
+            "LARGEST_COMPONENT_SHARE": float(st.get("largest_component_share", 1.0)),
             "ALPHA": float(st["alpha_px2"]),
             "SECONDS": float(st["total_s"]),
         }

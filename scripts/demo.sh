@@ -46,9 +46,9 @@ for k in 1 2 3; do
   [ "$k" = 1 ] && extra=(PREVIEW="$OUT/preview.png")
   LOGSUFFIX="-$k" run dxftoosmag INPUT="$OUT/dxf/sample-F$k.dxf" LEVEL=$k ANCHOR="$ANCHOR" ROTATION=$ROTATION \
       OUTPUT="$OUT/floor-$k.osm" "${extra[@]}"
-  floors+=(FLOORS="$OUT/floor-$k.osm")
+  floors+=(INPUT="$OUT/floor-$k.osm")
 done
-run mergefloors "${floors[@]}" NAME="Sample building" OUTPUT="$OUT/building.osm"
+run mergefloors "${floors[@]}" BUILDING="Sample building" OUTPUT="$OUT/building.osm"
 run loadosmag INPUT="$OUT/building.osm" OUTPUT_AREAS="$S/building_areas.gpkg" OUTPUT_PASSAGES="$S/building_passages.gpkg"
 
 echo

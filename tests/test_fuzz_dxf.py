@@ -23,7 +23,7 @@ import pytest
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
-from algorithms import cad_import, osmag, pipeline
+from algorithms import cad_explode, cad_import, osmag, pipeline
 from algorithms.errors import InputError
 
 from .conftest import REPO
@@ -368,6 +368,6 @@ def test_minsert_grid_equals_ezdxf_multi_insert(tmp_path, rotation, extrusion):
 
 
 def test_model_space_with_too_many_entities_is_refused(tmp_path, monkeypatch):
-    monkeypatch.setattr(cad_import, "MAX_EXPLODED", 100)  # the same rule as 10^6 LINEs, on a small file
+    monkeypatch.setattr(cad_explode, "MAX_EXPLODED", 100)  # the same rule as 10^6 LINEs, on a small file
     with pytest.raises(InputError, match=r"holds \d[\d,]* entities in model space.*OVERKILL"):
         cad_import.import_dxf(str(base_dxf()))

@@ -64,7 +64,8 @@ def test_format_rules(written, refined):
         assert refs[0] == refs[-1] and len(refs) >= 4
         assert tags["level"] == "1" and tags["height"] == "3.2"
         assert tags["osmAG:areatype"] in ("room", "corridor", "structure")
-        assert tags["indoor"] == ("corridor" if tags["osmAG:areatype"] == "corridor" else "room")
+        assert tags["indoor"] == {"corridor": "corridor", "structure": "area"}.get(tags["osmAG:areatype"], "room")
+        assert tags["osmAG:areaType"] == tags["osmAG:areatype"]
         if tags["name"] != "Floor 1":
             assert tags["osmAG:parent"] == "Floor 1"
     assert areas[names["L1-A003"]][1]["osmAG:areatype"] == "corridor"
@@ -76,6 +77,40 @@ def test_format_rules(written, refined):
             arefs = areas[names[tags[key]]][0]
             assert refs[0] in arefs and refs[1] in arefs
     assert stats["holes_dropped"] >= 1  # the pillars
+    # what the osmAG authors' C++ parser demands of the root node, and JOSM's attributes everywhere
+    r = roots[0]
+    assert r.get("root") == "true" and all(r.get(k) is not None for k in ("alt", "qx", "qy", "qz"))
+    assert list(root).index(r) == 0  # the root node comes first (nodes before it would abort that parser)
+    for el in list(nodes.values()) + list(root.iter("way")):
+        assert el.get("action") == "modify" and el.get("visible") == "true"
+    # renderer-friendly tags: door=yes on every passage end node, and only there
+    door_nodes = {i for i, n in nodes.items() if any(t.get("k") == "door" and t.get("v") == "yes" for t in n)}
+    ends = {r for refs, _ in passages.values() for r in refs}
+    assert door_nodes == ends and len(ends) >= 2 * len(passages) - 2
+    # areas are written before the passages that reference them
+    kinds = [w[1]["osmAG:type"] for w in ways.values()]
+    order = [dict((t.get("k"), t.get("v")) for t in w.iter("tag"))["osmAG:type"] for w in root.iter("way")]
+    assert order == sorted(order)  # "area" < "passage"
+
+
+def test_level_must_be_numeric_and_ref_and_indoor_are_written(tmp_path):
+    from shapely.geometry import box
+
+    path = tmp_path / "r.osm"
+    with pytest.raises(InputError, match="level 'F3' is not a number"):
+        write_osmag(str(path), [Area(1, box(0, 0, 4, 4))], frame=FRAME, level="F3")
+    assert not path.exists()
+    areas = [Area(1, box(0, 0, 4, 4), type="stairs", ref="E1-ST-03"),
+             Area(2, box(4, 0, 8, 4), type="room", tags={"indoor": "area"}),
+             Area(3, box(0, 4, 8, 6), type="corridor")]
+    write_osmag(str(path), areas, [Passage(1, 1, 3, LineString([(1, 4), (2, 4)]))], frame=FRAME, level="-1")
+    _, _, ways = _parse(path)
+    tags = {w[1].get("name"): w[1] for w in ways.values()}
+    assert tags["L-1-A001"]["ref"] == "E1-ST-03" and tags["L-1-A001"]["indoor"] == "room"
+    assert tags["L-1-A001"]["osmAG:areatype"] == "stairs"
+    assert tags["L-1-A002"]["indoor"] == "area" and "ref" not in tags["L-1-A002"]
+    assert tags["L-1-A003"]["indoor"] == "corridor"
+    assert tags["L-1-P001"]["level"] == "-1"
 
 
 def test_osmium_accepts(written):

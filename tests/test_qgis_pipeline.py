@@ -49,7 +49,7 @@ def test_dxftoosmag_and_mergefloors_headless(sample, tmp_path):
     assert {f.GetField("osmAG:areatype") for f in layer} >= {"room", "corridor", "stairs", "elevator", "structure"}
     pds = ogr.Open(str(tmp_path / "passages.gpkg"))
     assert pds.GetLayer(0).GetFeatureCount() > 10
-    _, res, _ = run_alg("mergefloors", {"FLOORS": files, "NAME": "Block B", "OUTPUT": str(tmp_path / "b.osm")})
+    _, res, _ = run_alg("mergefloors", {"INPUT": files, "BUILDING": "Block B", "OUTPUT": str(tmp_path / "b.osm")})
     assert res["FLOOR_COUNT"] == 2
     areas, _, _, report = osmag.read_osmag(str(tmp_path / "b.osm"))
     assert [a.tags["level"] for a in areas if a.name == "Block B"] == ["1;2"]

@@ -276,3 +276,19 @@ def test_self_touching_ring_is_repaired_not_passed_on():
     out, _ = refine(graph, 0.05, min_area=0, progress=rec)
     assert all(a.polygon.is_valid for a in out.areas)
     assert any(kind == "warning" and "area 2 touches itself" in msg for kind, msg in rec.messages)
+
+
+def test_overlap_check_skips_invalid_polygons_instead_of_raising():
+    """CASONA_DE_YANAHUARA: a polygon made invalid by simplification made the GEOS 'overlaps'
+    query raise a raw TopologyException; invalid polygons are offenders of their own, never queried."""
+    from algorithms.refine import _overlapping_pairs
+
+    bowtie = Polygon([(0, 0), (2, 2), (2, 0), (0, 2)])  # self-intersecting
+    a = Polygon([(0, 0), (1, 0), (1, 1), (0, 1)])
+    b = Polygon([(0.5, 0), (1.5, 0), (1.5, 1), (0.5, 1)])  # overlaps a
+    arr = np.array([a, bowtie, b], dtype=object)
+    valid = shapely.is_valid(arr)
+    assert not valid[1]
+    pairs = _overlapping_pairs(arr, valid, 0.05)
+    assert [(x, y) for x, y, _ in pairs] == [(0, 2)]
+    assert pairs[0][2] == pytest.approx(0.5)

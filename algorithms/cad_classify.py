@@ -1,0 +1,266 @@
+"""Classifying drawing entities by what the drawing says: door swings (arc + leaf), door and furniture
+blocks, pattern hatches."""
+from __future__ import annotations
+
+import math
+from typing import Dict, Iterable, List, Optional, Sequence, Tuple
+
+import numpy as np
+
+from .model import CadGeometry, DoorHint
+
+
+DOOR_RADIUS = (0.5, 1.6)  # metres: leaf width of a swing door
+DOOR_SWEEP = (60.0, 100.0)  # degrees: a swing arc is (about) a quarter circle, often drawn a bit short
+
+
+def _circle_from_3(p0, p1, p2):
+    ax, ay = p0
+    bx, by = p1
+    cx, cy = p2
+    d = 2.0 * (ax * (by - cy) + bx * (cy - ay) + cx * (ay - by))
+    if abs(d) < 1e-12:
+        return None
+    ux = ((ax * ax + ay * ay) * (by - cy) + (bx * bx + by * by) * (cy - ay) + (cx * cx + cy * cy) * (ay - by)) / d
+    uy = ((ax * ax + ay * ay) * (cx - bx) + (bx * bx + by * by) * (ax - cx) + (cx * cx + cy * cy) * (bx - ax)) / d
+    return ux, uy, math.hypot(ax - ux, ay - uy)
+
+
+def find_door_swings(geoms: Sequence[CadGeometry]) -> List[int]:
+    """Indices of door swing arcs (quarter arcs of 0.5-1.6 m radius) and of the door leaves hinged at
+    their centre (a line or thin rectangle from the centre to an end of the arc). On wall layers an arc
+    counts as a swing only together with its leaf: a rounded wall corner is a wall."""
+    return _swings(geoms, False)[0]
+
+
+# ------------------------------------------------------------------------------------------ door hints
+def door_swings(geoms: Sequence[CadGeometry], candidates: Optional[Sequence[int]] = None,
+                leaf_required: bool = False) -> Tuple[List[int], List[DoorHint]]:
+    """Door swings among ``geoms`` (or only among ``candidates``): the indices to leave out (arcs and
+    leaves, as ``find_door_swings``) and one DoorHint per swing with its leaf: the doorway from the hinge
+    (arc centre) to the arc end where the closed leaf lies (the end the open leaf does not reach).
+    The two halves of a double door become one hint from hinge to hinge."""
+    sub_idx = list(range(len(geoms))) if candidates is None else list(candidates)
+    sub = [geoms[i] for i in sub_idx]
+    drop_local, pairs = _swings(sub, leaf_required)
+    hints = []
+    for (cx, cy, closed_end) in pairs:
+        hints.append(DoorHint(float(cx), float(cy), float(closed_end[0]), float(closed_end[1]), "swing"))
+    return sorted(sub_idx[i] for i in drop_local), merge_double_doors(hints)
+
+
+def merge_double_doors(hints: List[DoorHint], tol: float = 0.12) -> List[DoorHint]:
+    """Two hints whose closed-leaf ends meet and that point in opposite directions are one double door."""
+    used = set()
+    out = []
+    for i, a in enumerate(hints):
+        if i in used:
+            continue
+        for j in range(i + 1, len(hints)):
+            if j in used:
+                continue
+            b = hints[j]
+            if math.hypot(a.x1 - b.x1, a.y1 - b.y1) <= tol:
+                ua = np.array((a.x1 - a.x0, a.y1 - a.y0))
+                ub = np.array((b.x1 - b.x0, b.y1 - b.y0))
+                if np.dot(ua, ub) < -0.9 * np.linalg.norm(ua) * np.linalg.norm(ub):
+                    used.update((i, j))
+                    out.append(DoorHint(a.x0, a.y0, b.x0, b.y0, a.source))
+                    break
+        else:
+            out.append(a)
+            continue
+    return out
+
+
+def _swings(geoms: Sequence[CadGeometry], leaf_required: bool):
+    """Core of find_door_swings: (indices to drop, [(cx, cy, closed-leaf end)] per arc with a leaf)."""
+    arcs = []  # (index, cx, cy, r, end points)
+    for i, g in enumerate(geoms):
+        if g.entity not in ("ARC", "LWPOLYLINE", "POLYLINE") or g.kind == "column" or g.closed or len(g.coords) < 5:
+            continue
+        c = g.coords
+        circ = _circle_from_3(c[0], c[len(c) // 2], c[-1])
+        if circ is None:
+            continue
+        cx, cy, r = circ
+        if not (DOOR_RADIUS[0] <= r <= DOOR_RADIUS[1]):
+            continue
+        if np.max(np.abs(np.hypot(c[:, 0] - cx, c[:, 1] - cy) - r)) > 0.02:
+            continue
+        a = np.unwrap(np.arctan2(c[:, 1] - cy, c[:, 0] - cx))
+        sweep = abs(math.degrees(a[-1] - a[0]))
+        if DOOR_SWEEP[0] <= sweep <= DOOR_SWEEP[1]:
+            arcs.append((i, cx, cy, r, c[0], c[-1]))
+    if not arcs:
+        return [], []
+    from scipy.spatial import cKDTree
+
+    centres = np.array([(a[1], a[2]) for a in arcs])
+    tree = cKDTree(centres)
+    arc_set = {a[0] for a in arcs}
+    with_leaf = {}
+    drop = set()
+    # leaves: short lines / thin rectangles with a vertex at an arc centre (vectorised prefilter)
+    short = [i for i, g in enumerate(geoms) if 2 <= len(g.coords) <= 5 and i not in arc_set
+             and g.kind != "column" and not g.filled]
+    if short:
+        verts = np.concatenate([geoms[i].coords for i in short])
+        owner = np.repeat(np.asarray(short), [len(geoms[i].coords) for i in short])
+        fin = np.isfinite(verts).all(axis=1)
+        dist, _ = tree.query(np.where(fin[:, None], verts, 1e18), distance_upper_bound=0.16)
+        near = sorted(set(owner[np.isfinite(dist)].tolist()))
+    else:
+        near = []
+    for i in near:
+        g = geoms[i]
+        c = g.coords
+        if not np.isfinite(c).all():
+            continue
+        for k in set(j for lst in tree.query_ball_point(c, 0.16) for j in lst):
+            ai, cx, cy, r, e0, e1 = arcs[k]
+            d = np.hypot(c[:, 0] - cx, c[:, 1] - cy)
+            if d.min() > 0.1 * r or not (0.85 * r <= d.max() <= 1.15 * r):
+                continue
+            far = c[int(np.argmax(d))]
+            d0, d1 = math.hypot(*(far - e0)), math.hypot(*(far - e1))
+            if min(d0, d1) <= 0.15 * r:
+                drop.add(i)
+                with_leaf[ai] = (cx, cy, e1 if d0 <= d1 else e0)
+                break
+    hints = list(with_leaf.values())
+    # swings drawn without a leaf: the hinge is at a wall end (a jamb) and so is the arc end where the
+    # closed leaf lies; the open end stands in the room. Such arcs are doors with a hint.
+    lone = [a for a in arcs if a[0] not in with_leaf]
+    if lone:
+        ends = [g.coords[[0, -1]] for i, g in enumerate(geoms) if i not in arc_set and len(g.coords) >= 2
+                and np.isfinite(g.coords[[0, -1]]).all()]
+        if ends:
+            etree = cKDTree(np.concatenate(ends))
+            for ai, cx, cy, r, e0, e1 in lone:
+                tol = 0.1 * r
+                if not etree.query_ball_point((cx, cy), tol):
+                    continue
+                n0, n1 = bool(etree.query_ball_point(e0, tol)), bool(etree.query_ball_point(e1, tol))
+                if n0 != n1:
+                    hints.append((cx, cy, e0 if n0 else e1))
+                    with_leaf[ai] = hints[-1]
+    drop |= {i for i in arc_set if i in with_leaf or (geoms[i].kind != "wall" and not leaf_required)}
+    return sorted(drop), hints
+
+
+# ------------------------------------------------------------------------------------------ spaghetti
+HATCH_THICK = 0.8  # metres: a pattern hatch region thicker than this (2 * area / perimeter) is a floor finish
+FURNITURE_MAX = 2.5  # metres: the larger side of a free-standing closed outline taken for furniture
+FURNITURE_MIN = 0.35  # metres: its smaller side (thinner closed outlines are wall pieces)
+TOUCH = 0.05  # metres
+
+
+def _thickness(coords: np.ndarray) -> float:
+    c = coords[np.isfinite(coords).all(axis=1)]
+    if len(c) < 3:
+        return 0.0
+    x, y = c[:, 0], c[:, 1]
+    area = 0.5 * abs(float(np.dot(x, np.roll(y, -1)) - np.dot(y, np.roll(x, -1))))
+    per = float(np.hypot(*(np.roll(c, -1, axis=0) - c).T).sum())
+    return 2.0 * area / per if per > 0 else 0.0
+
+
+def classify_entities(geoms: Sequence[CadGeometry], chains: Sequence[str], rules, include_doors: bool = False,
+                      weak_layers: Iterable[str] = (), drop_door_swings: bool = True):
+    """Classify the imported geometry by what the drawing says, for drawings whose layers do not.
+
+    * block names (rules ``blocks``): door / window / furniture, the innermost matching block decides;
+      door and furniture geometry is left out (doors kept when ``include_doors``);
+    * door swings (quarter arc + leaf, see ``door_swings``) anywhere: left out, and each becomes a DoorHint
+      from jamb to jamb; swings inside door blocks give hints too;
+    * pattern (non-solid) hatches thicker than HATCH_THICK (tiles, flooring) are never walls;
+    * on ``weak_layers`` (layer "0", fallback layers): closed compact outlines (0.35-2.5 m) that touch no
+      other geometry, and what lies inside them, are furniture (unless filled or hatched: a column).
+
+    Returns ``(keep mask, classes {class: count}, door hints)``."""
+    from .cad_explode import BLOCK_SEP
+
+    n = len(geoms)
+    cls = [""] * n
+    for i, g in enumerate(geoms):
+        chain = chains[i] if i < len(chains) else ""
+        if chain:
+            c, _ = rules.block_class(chain.split(BLOCK_SEP))
+            if c:
+                cls[i] = c
+    for i, g in enumerate(geoms):
+        if g.kind == "door" and cls[i] != "furniture":
+            cls[i] = "door"  # door layers: their swings give door hints
+        elif not cls[i] and g.entity == "HATCH" and not g.filled and _thickness(g.coords) >= HATCH_THICK:
+            cls[i] = "hatch"
+    hints: List[DoorHint] = []
+    door_idx = [i for i in range(n) if cls[i] == "door"]
+    if door_idx:
+        _, h = door_swings(geoms, door_idx, leaf_required=True)
+        for d in h:
+            d.source = "block"
+        hints.extend(h)
+    if drop_door_swings and not include_doors:
+        rest = [i for i in range(n) if not cls[i]]
+        drop, h = door_swings(geoms, rest)
+        for i in drop:
+            cls[i] = "door"
+        hints.extend(h)
+    weak = set(weak_layers)
+    if weak:
+        _free_furniture(geoms, cls, weak)
+    keep = np.array([c in ("", "window") or (c == "door" and include_doors) for c in cls], dtype=bool)
+    for i, g in enumerate(geoms):
+        g.cls = cls[i] or ("wall" if g.kind in ("wall", "reference") else g.kind)
+    classes: Dict[str, int] = {}
+    for i, g in enumerate(geoms):
+        classes[g.cls] = classes.get(g.cls, 0) + 1
+    return keep, classes, hints
+
+
+def _free_furniture(geoms: Sequence[CadGeometry], cls: List[str], weak: set) -> None:
+    from shapely import STRtree
+    from shapely.geometry import LineString, Polygon
+
+    cand = []
+    for i, g in enumerate(geoms):
+        if cls[i] or g.layer not in weak or g.filled or not (g.closed or g.entity == "CIRCLE"):
+            continue
+        c = g.coords
+        if len(c) < 3 or not np.isfinite(c).all():
+            continue
+        span = c.max(axis=0) - c.min(axis=0)
+        if span.max() <= FURNITURE_MAX and span.min() >= FURNITURE_MIN:
+            cand.append(i)
+    if not cand:
+        return
+    lines, idx = [], []
+    for i, g in enumerate(geoms):
+        c = g.coords[np.isfinite(g.coords).all(axis=1)]
+        if len(c) >= 2 and not cls[i]:
+            lines.append(LineString(c))
+            idx.append(i)
+    tree = STRtree(lines)
+    cset = set(cand)
+    for i in cand:
+        poly = Polygon(geoms[i].coords)
+        if not poly.is_valid:
+            poly = poly.buffer(0)
+        zone = poly.buffer(TOUCH)
+        hits = [idx[j] for j in tree.query(zone, predicate="intersects")]
+        inside_poly = poly.buffer(-TOUCH) if poly.area > 0 else poly
+        touching = [j for j in hits if j != i and j not in cset and not inside_poly.contains(_line(geoms[j]))]
+        if touching or any(geoms[j].filled or geoms[j].kind == "column" for j in hits if j != i):
+            continue  # a hatched / filled outline is a column, not furniture
+        cls[i] = "furniture"
+        for j in hits:
+            if j != i and not cls[j] and inside_poly.contains(_line(geoms[j])):
+                cls[j] = "furniture"
+
+
+def _line(g: CadGeometry):
+    from shapely.geometry import LineString, Point
+
+    c = g.coords[np.isfinite(g.coords).all(axis=1)]
+    return LineString(c) if len(c) >= 2 else Point(c[0])

@@ -1,0 +1,637 @@
+"""Block explosion and flattening: every entity of model space, INSERTs exploded recursively with their
+transforms, curves flattened to a chord tolerance, texts (TEXT, MTEXT, ATTRIB) kept with their position,
+in drawing units. See cad_import for the conventions."""
+from __future__ import annotations
+
+import math
+import os
+import re
+from dataclasses import dataclass, field
+from typing import Dict, Iterable, List, Optional, Tuple
+
+import numpy as np
+
+from .cad_read import _layer_states, _read_doc
+from .cad_units import _header_unit
+from .errors import InputError
+
+MAX_SEGMENTS_PER_TURN = 1024
+# entities a drawing may explode into (nested blocks and MINSERT arrays multiply): a real floor explodes
+# into 10^4-10^5; a block bomb or 10^6 copies of one line stop with advice before filling the memory
+MAX_EXPLODED = 1_000_000
+
+SKIP_TYPES = {"DIMENSION", "ARC_DIMENSION", "LARGE_RADIAL_DIMENSION", "LEADER", "MLEADER", "MULTILEADER",
+              "TOLERANCE", "POINT", "VIEWPORT", "IMAGE", "WIPEOUT", "ATTDEF", "XLINE", "RAY", "REGION",
+              "3DSOLID", "BODY", "SURFACE", "OLE2FRAME", "OLEFRAME", "UNDERLAY", "PDFUNDERLAY",
+              "DWFUNDERLAY", "DGNUNDERLAY", "ACAD_TABLE", "ACAD_PROXY_ENTITY", "SEQEND", "VERTEX",
+              "SHAPE", "MESH", "LIGHT", "SUN", "HELIX"}
+TEXT_TYPES = {"TEXT", "MTEXT", "ATTRIB"}
+
+
+# ------------------------------------------------------------------------------------------ flattening
+def _n_segments(radius: float, sweep: float, tol: float) -> int:
+    """Segments so that the sagitta of each chord is <= tol."""
+    sweep = abs(sweep)
+    if radius <= 0 or sweep <= 0:
+        return 1
+    if tol >= radius:
+        step = math.pi / 2
+    else:
+        step = 2.0 * math.acos(1.0 - tol / radius)
+    step = max(step, 2 * math.pi / MAX_SEGMENTS_PER_TURN)
+    return max(2, min(int(math.ceil(sweep / step)), int(MAX_SEGMENTS_PER_TURN * sweep / (2 * math.pi)) + 2))
+
+
+def _arc_points(cx, cy, r, a0, a1, tol, full=False):
+    """Points of a CCW arc from angle a0 to a1 (radians)."""
+    if full:
+        sweep = 2 * math.pi
+    else:
+        sweep = (a1 - a0) % (2 * math.pi)
+        if sweep < 1e-12:
+            sweep = 2 * math.pi
+    n = _n_segments(r, sweep, tol)
+    t = a0 + np.linspace(0.0, sweep, n + 1)
+    pts = np.column_stack((cx + r * np.cos(t), cy + r * np.sin(t)))
+    if full:
+        pts = pts[:-1]
+    return pts
+
+
+def _bulge_polyline(xy: np.ndarray, bulges: np.ndarray, closed: bool, tol: float) -> np.ndarray:
+    """Flatten a polyline with bulges (xy: (N, 2), bulges: (N,))."""
+    n = len(xy)
+    if n == 0 or not np.any(bulges):
+        return xy
+    out = []
+    last = n if closed else n - 1
+    for i in range(last):
+        p0 = xy[i]
+        p1 = xy[(i + 1) % n]
+        b = bulges[i]
+        out.append(p0[None, :])
+        if b == 0.0:
+            continue
+        dx, dy = p1[0] - p0[0], p1[1] - p0[1]
+        chord = math.hypot(dx, dy)
+        if chord < 1e-12:
+            continue
+        theta = 4.0 * math.atan(b)  # included angle, signed (positive = CCW)
+        r = chord / (2.0 * math.sin(abs(theta) / 2.0))
+        # centre: from the chord midpoint, perpendicular, at distance d
+        d = r * math.cos(theta / 2.0) * (1.0 if b > 0 else -1.0)
+        mx, my = (p0[0] + p1[0]) / 2.0, (p0[1] + p1[1]) / 2.0
+        ux, uy = -dy / chord, dx / chord  # left normal
+        cx, cy = mx + ux * d, my + uy * d
+        a0 = math.atan2(p0[1] - cy, p0[0] - cx)
+        m = _n_segments(r, abs(theta), tol)
+        t = a0 + np.linspace(0.0, theta, m + 1)[1:-1]
+        if len(t):
+            out.append(np.column_stack((cx + r * np.cos(t), cy + r * np.sin(t))))
+    if not closed:
+        out.append(xy[-1][None, :])
+    return np.concatenate(out, axis=0)
+
+
+def _ocs_to_wcs(pts: np.ndarray, extrusion) -> np.ndarray:
+    ex = tuple(extrusion) if extrusion is not None else (0.0, 0.0, 1.0)
+    if abs(ex[0]) < 1e-9 and abs(ex[1]) < 1e-9:
+        if ex[2] >= 0:
+            return pts
+        out = pts.copy()
+        out[:, 0] = -out[:, 0]
+        return out
+    from ezdxf.math import OCS
+
+    ocs = OCS(ex)
+    p3 = [(float(x), float(y), 0.0) for x, y in pts]
+    return np.array([(v.x, v.y) for v in ocs.points_to_wcs(p3)], dtype=np.float64)
+
+
+def _extrusion(e):
+    try:
+        return e.dxf.extrusion if e.dxf.hasattr("extrusion") else None
+    except Exception:  # pragma: no cover - defensive
+        return None
+
+
+def _edge_points(edge, tol: float) -> Optional[np.ndarray]:
+    et = type(edge).__name__
+    if et == "LineEdge":
+        return np.array(((edge.start[0], edge.start[1]), (edge.end[0], edge.end[1])), dtype=np.float64)
+    if et == "ArcEdge":  # ezdxf gives the angles in counter-clockwise orientation
+        return _arc_points(edge.center[0], edge.center[1], float(edge.radius), math.radians(edge.start_angle),
+                           math.radians(edge.end_angle), tol,
+                           full=abs(abs(edge.end_angle - edge.start_angle) - 360.0) < 1e-9)
+    tool = edge.construction_tool()
+    if et == "EllipseEdge":
+        return np.array([(v.x, v.y) for v in tool.flattening(tol)], dtype=np.float64)
+    if et == "SplineEdge":
+        return np.array([(v.x, v.y) for v in tool.flattening(tol)], dtype=np.float64)
+    return None
+
+
+def _chain(pieces: List[np.ndarray], eps: float) -> List[np.ndarray]:
+    """Join edge polylines end to start (reversing where needed) into closed rings."""
+    rings = []
+    todo = [p for p in pieces if p is not None and len(p) >= 2]
+    while todo:
+        cur = [todo.pop(0)]
+        start = cur[0][0]
+        end = cur[0][-1]
+        while todo and np.hypot(*(end - start)) > eps:
+            heads = np.array([p[0] for p in todo])
+            tails = np.array([p[-1] for p in todo])
+            dh = np.hypot(heads[:, 0] - end[0], heads[:, 1] - end[1])
+            dt = np.hypot(tails[:, 0] - end[0], tails[:, 1] - end[1])
+            i, j = int(np.argmin(dh)), int(np.argmin(dt))
+            if dh[i] <= eps and dh[i] <= dt[j]:
+                nxt = todo.pop(i)
+            elif dt[j] <= eps:
+                nxt = todo.pop(j)[::-1]
+            else:
+                break
+            cur.append(nxt[1:])
+            end = nxt[-1]
+        ring = np.concatenate(cur, axis=0)
+        if len(ring) >= 3:
+            rings.append(ring)
+    return rings
+
+
+def _boundary_rings(bpath, tol: float) -> List[np.ndarray]:
+    """Closed rings of one HATCH boundary path (edges chained by their end points)."""
+    if type(bpath).__name__ == "PolylinePath":
+        v = np.array([(p[0], p[1], p[2] if len(p) > 2 else 0.0) for p in bpath.vertices], dtype=np.float64)
+        if len(v) < 2:
+            return []
+        return [_bulge_polyline(v[:, :2], v[:, 2], True, tol)]
+    pieces = [_edge_points(ed, tol) for ed in getattr(bpath, "edges", [])]
+    pieces = [p for p in pieces if p is not None and len(p) >= 2]
+    if not pieces:
+        return []
+    allp = np.concatenate(pieces)
+    eps = max(1e-6 * float(np.max(np.abs(allp))), tol * 0.5)
+    return _chain(pieces, eps)
+
+
+# ------------------------------------------------------------------------------------------ containers
+@dataclass
+class _Pieces:
+    """Flattened geometry of one block (or of the model space), in the block's coordinates."""
+
+    coords: List[np.ndarray] = field(default_factory=list)
+    layer: List[str] = field(default_factory=list)
+    etype: List[str] = field(default_factory=list)
+    closed: List[bool] = field(default_factory=list)
+    filled: List[bool] = field(default_factory=list)
+    width: List[float] = field(default_factory=list)
+    # texts: (x, y, text, height, rotation_deg, layer, etype, blocks, tag); ``blocks`` as for ``block`` below
+    texts: List[tuple] = field(default_factory=list)
+    # the chain of block names a piece was exploded from, outermost first, joined by BLOCK_SEP ("" = model space)
+    block: List[str] = field(default_factory=list)
+    counts: List[tuple] = field(default_factory=list)  # (layer, etype, n) for entities without geometry
+    xrefs: List[str] = field(default_factory=list)
+
+    def add(self, coords, layer, etype, closed=False, filled=False, width=0.0, block=""):
+        self.block.append(block)
+        self.coords.append(coords)
+        self.layer.append(layer)
+        self.etype.append(etype)
+        self.closed.append(closed)
+        self.filled.append(filled)
+        self.width.append(width)
+
+    def __len__(self):
+        return len(self.coords)
+
+
+BLOCK_SEP = "\x1f"
+
+
+def _chain_name(name: str, inner: str) -> str:
+    return f"{name}{BLOCK_SEP}{inner}" if inner else name
+
+
+def innermost_block(chain: str) -> str:
+    """The innermost named block of a chain (anonymous blocks such as ``*U12`` only when nothing else)."""
+    if not chain:
+        return ""
+    parts = chain.split(BLOCK_SEP)
+    named = [p for p in parts if not p.startswith("*")]
+    return named[-1] if named else parts[-1]
+
+
+def _transform_pieces(src: _Pieces, A: np.ndarray, t: np.ndarray, layer: str, dst: _Pieces,
+                      layer_ok, name: str = "") -> None:
+    """Append ``src`` transformed by x' = A @ x + t to ``dst``; layer "0" takes ``layer``."""
+    n = len(src.coords)
+    if n:
+        lens = np.fromiter((len(c) for c in src.coords), dtype=np.int64, count=n)
+        allc = np.concatenate(src.coords, axis=0) @ A.T + t
+        splits = np.split(allc, np.cumsum(lens)[:-1])
+        s = math.sqrt(abs(float(np.linalg.det(A))))
+        for i in range(n):
+            lay = src.layer[i]
+            if lay == "0":
+                lay = layer
+            if not layer_ok(lay, src.etype[i]):
+                continue
+            w = src.width[i]
+            dst.add(splits[i], lay, src.etype[i], src.closed[i], src.filled[i], w * s if w else 0.0,
+                    _chain_name(name, src.block[i]))
+    if src.texts:
+        s = math.sqrt(abs(float(np.linalg.det(A))))
+        rot = math.degrees(math.atan2(A[1, 0], A[0, 0]))
+        for (x, y, text, h, r, lay, et, blocks, tag) in src.texts:
+            if lay == "0":
+                lay = layer
+            if not layer_ok(lay, et):
+                continue
+            p = A @ np.array((x, y)) + t
+            dst.texts.append((float(p[0]), float(p[1]), text, h * s, (r + rot) % 360.0, lay, et,
+                              _chain_name(name, blocks), tag))
+    for (lay, et, k) in src.counts:
+        dst.counts.append((layer if lay == "0" else lay, et, k))
+    dst.xrefs.extend(src.xrefs)
+
+
+def _minsert_offsets(e, rows: int, cols: int, ex, name: str) -> np.ndarray:
+    """WCS translations (x, y) of the copies of a MINSERT grid, as ezdxf's ``multi_insert`` places them
+    (offsets in the insert's OCS, rotated with the insert, not scaled; coinciding copies once), without
+    building one virtual INSERT per copy (10^6 of them took a minute)."""
+    cs = float(e.dxf.get("column_spacing", 0.0) or 0.0)
+    rs = float(e.dxf.get("row_spacing", 0.0) or 0.0)
+    ncol = cols if cs != 0.0 else 1
+    nrow = rows if rs != 0.0 else 1
+    if nrow * ncol > MAX_EXPLODED:  # stop before allocating the offsets
+        ex._spend(name, nrow * ncol, 1)
+    r, c = np.meshgrid(np.arange(nrow, dtype=np.float64), np.arange(ncol, dtype=np.float64), indexing="ij")
+    off = np.column_stack([c.ravel() * cs, r.ravel() * rs])  # row-major, like multi_insert
+    rot = math.radians(float(e.dxf.get("rotation", 0.0) or 0.0))
+    if rot:
+        cr, sr = math.cos(rot), math.sin(rot)
+        off = off @ np.array(((cr, sr), (-sr, cr)))
+    ux, uy = _ocs_axes_2d(_extrusion(e))
+    return off[:, :1] * ux + off[:, 1:2] * uy
+
+
+def _ocs_axes_2d(extrusion):
+    """x and y (of WCS) of the OCS axes ux, uy for an extrusion vector."""
+    try:
+        from ezdxf.math import OCS
+
+        ocs = OCS(extrusion)
+        ux, uy = ocs.to_wcs((1.0, 0.0, 0.0)), ocs.to_wcs((0.0, 1.0, 0.0))
+        return np.array((ux[0], ux[1]), dtype=np.float64), np.array((uy[0], uy[1]), dtype=np.float64)
+    except Exception:
+        return np.array((1.0, 0.0)), np.array((0.0, 1.0))
+
+
+# ------------------------------------------------------------------------------------------ text
+_MTEXT_FALLBACK = re.compile(r"\\[A-Za-z][^;\\{}]*;|\\[PpNn~]|[{}]")
+
+
+def _mtext_plain(e) -> str:
+    try:
+        txt = e.plain_text()
+    except Exception:
+        txt = _MTEXT_FALLBACK.sub(" ", e.text)
+    return " ".join(str(txt).split())
+
+
+def _text_plain(e) -> str:
+    try:
+        txt = e.plain_text()
+    except Exception:
+        txt = e.dxf.text
+    return " ".join(str(txt).split())
+
+
+# ------------------------------------------------------------------------------------------ exploder
+class _Exploder:
+    def __init__(self, doc, tol: float, visible_layer, progress=None, total=0):
+        self.doc = doc
+        self.tol = tol
+        self.visible = visible_layer  # name -> bool (not frozen / off)
+        self.cache: Dict[str, _Pieces] = {}
+        self.stack: List[str] = []
+        self.progress = progress
+        self.total = max(1, total)
+        self.done = 0
+        self.warnings: List[str] = []
+        self._warned = set()
+        self.produced = 0  # entities added by exploding INSERTs (see MAX_EXPLODED)
+
+    def _warn_once(self, key, msg):
+        if key not in self._warned:
+            self._warned.add(key)
+            self.warnings.append(msg)
+
+    # layer test used while flattening a block: entities on invisible non-"0" layers are dropped early
+    def _keep_layer(self, layer: str) -> bool:
+        return layer == "0" or self.visible(layer)
+
+    def block(self, name: str, tol: Optional[float] = None) -> _Pieces:
+        """Flattened content of a block in its own coordinates, curves at chord error ``tol`` (block
+        units; defaults to the current tolerance), cached per (name, tol)."""
+        tol = self.tol if tol is None else tol
+        key = (name, tol)
+        got = self.cache.get(key)
+        if got is not None:
+            return got
+        if name in self.stack:
+            self._warn_once(("cycle", name), f"block '{name}' contains itself; the recursive reference was skipped")
+            return _Pieces()
+        blk = self.doc.blocks.get(name)
+        out = _Pieces()
+        if blk is None:
+            self._warn_once(("missing", name), f"block '{name}' is referenced but not defined; skipped")
+            self.cache[key] = out
+            return out
+        if blk.block.is_xref:
+            path = blk.block.dxf.get("xref_path", "") or name
+            out.xrefs.append(path)
+            self.cache[key] = out
+            return out
+        self.stack.append(name)
+        saved, self.tol = self.tol, tol
+        try:
+            self.entities(blk, out, top=False)
+        finally:
+            self.stack.pop()
+            self.tol = saved
+        self.cache[key] = out
+        return out
+
+    def entities(self, entities: Iterable, out: _Pieces, top: bool) -> None:
+        for e in entities:
+            if top:
+                self.done += 1
+                if self.progress is not None and self.done % 2000 == 0:
+                    self.progress.step(100.0 * self.done / self.total)
+            try:
+                self.entity(e, out)
+            except InputError:
+                raise
+            except Exception as exc:  # a broken entity must not stop the import
+                et = e.dxftype() if hasattr(e, "dxftype") else type(e).__name__
+                self._warn_once(("bad", et), f"skipped a broken {et} entity ({type(exc).__name__}: {exc})")
+
+    def entity(self, e, out: _Pieces) -> None:
+        et = e.dxftype()
+        layer = e.dxf.get("layer", "0") or "0"
+        if not self._keep_layer(layer):
+            return
+        tol = self.tol
+        if et == "LINE":
+            s, t = e.dxf.start, e.dxf.end
+            out.add(np.array(((s[0], s[1]), (t[0], t[1])), dtype=np.float64), layer, et)
+        elif et == "LWPOLYLINE":
+            pts = np.array(e.get_points("xyseb"), dtype=np.float64).reshape(-1, 5)
+            if len(pts) == 0:
+                return
+            closed = bool(e.closed)
+            xy = _bulge_polyline(pts[:, :2], pts[:, 4], closed, tol)
+            xy = _ocs_to_wcs(xy, _extrusion(e))
+            w = float(e.dxf.get("const_width", 0.0) or 0.0)
+            if w == 0.0:
+                w = float(np.max(pts[:, 2:4])) if len(pts) else 0.0
+            out.add(xy, layer, et, closed, False, abs(w))
+        elif et == "POLYLINE":
+            self._polyline(e, layer, out)
+        elif et == "ARC":
+            c = e.dxf.center
+            r = float(e.dxf.radius)
+            xy = _arc_points(c[0], c[1], r, math.radians(e.dxf.start_angle), math.radians(e.dxf.end_angle), tol)
+            out.add(_ocs_to_wcs(xy, _extrusion(e)), layer, et)
+        elif et == "CIRCLE":
+            c = e.dxf.center
+            xy = _arc_points(c[0], c[1], float(e.dxf.radius), 0.0, 0.0, tol, full=True)
+            out.add(_ocs_to_wcs(xy, _extrusion(e)), layer, et, True)
+        elif et == "ELLIPSE":
+            self._ellipse(e, layer, out)
+        elif et == "SPLINE":
+            try:
+                xy = np.array([(v.x, v.y) for v in e.flattening(tol)], dtype=np.float64)
+            except Exception:
+                xy = np.array([(v[0], v[1]) for v in e.control_points], dtype=np.float64)
+            if len(xy) >= 2:
+                out.add(xy, layer, et, bool(e.closed))
+        elif et in ("SOLID", "TRACE"):
+            v = [e.dxf.get(f"vtx{i}") for i in range(4)]
+            v = [p for p in v if p is not None]
+            if len(v) == 4:
+                quad = [v[0], v[1], v[3], v[2]]
+                if (v[3][0], v[3][1]) == (v[2][0], v[2][1]):
+                    quad = [v[0], v[1], v[2]]
+            else:
+                quad = v
+            xy = _ocs_to_wcs(np.array([(p[0], p[1]) for p in quad], dtype=np.float64), _extrusion(e))
+            out.add(xy, layer, et, True, True)
+        elif et == "3DFACE":
+            v = [e.dxf.get(f"vtx{i}") for i in range(4)]
+            xy = np.array([(p[0], p[1]) for p in v if p is not None], dtype=np.float64)
+            out.add(xy, layer, et, True, False)
+        elif et == "HATCH":
+            self._hatch(e, layer, out)
+        elif et == "INSERT":
+            self._insert(e, layer, out)
+        elif et == "TEXT":
+            txt = _text_plain(e)
+            if txt:
+                p = e.dxf.insert
+                if (e.dxf.get("halign", 0) or e.dxf.get("valign", 0)) and e.dxf.hasattr("align_point"):
+                    p = e.dxf.align_point
+                xy = _ocs_to_wcs(np.array([[p[0], p[1]]]), _extrusion(e))[0]
+                out.texts.append((float(xy[0]), float(xy[1]), txt, float(e.dxf.get("height", 1.0)),
+                                  float(e.dxf.get("rotation", 0.0)), layer, et, "", ""))
+        elif et == "MTEXT":
+            txt = _mtext_plain(e)
+            if txt:
+                p = e.dxf.insert
+                try:
+                    rot = float(e.get_rotation())
+                except Exception:
+                    rot = float(e.dxf.get("rotation", 0.0))
+                out.texts.append((float(p[0]), float(p[1]), txt, float(e.dxf.get("char_height", 1.0)), rot,
+                                  layer, et, "", ""))
+        elif et in SKIP_TYPES:
+            out.counts.append((layer, et, 1))
+        elif et in ("MLINE",):
+            for v in e.virtual_entities():
+                self.entity(v, out)
+        else:
+            out.counts.append((layer, et, 1))
+            self._warn_once(("type", et), f"entity type {et} is not supported and was ignored")
+
+    def _polyline(self, e, layer, out):
+        mode = e.get_mode()
+        if mode in ("AcDb2dPolyline", "AcDb3dPolyline"):
+            verts = list(e.vertices)
+            if not verts:
+                return
+            pts = np.array([(v.dxf.location[0], v.dxf.location[1], v.dxf.get("bulge", 0.0) or 0.0,
+                             v.dxf.get("start_width", 0.0) or 0.0, v.dxf.get("end_width", 0.0) or 0.0)
+                            for v in verts], dtype=np.float64)
+            closed = bool(e.is_closed)
+            if mode == "AcDb2dPolyline":
+                xy = _bulge_polyline(pts[:, :2], pts[:, 2], closed, self.tol)
+                xy = _ocs_to_wcs(xy, _extrusion(e))
+                w = float(e.dxf.get("default_start_width", 0.0) or 0.0)
+                w = max(w, float(np.max(pts[:, 3:5])))
+            else:
+                xy, w = pts[:, :2], 0.0
+            out.add(xy, layer, "POLYLINE", closed, False, abs(w))
+        else:  # polyface / polygon mesh: outlines of the faces
+            for v in e.virtual_entities():
+                self.entity(v, out)
+
+    def _ellipse(self, e, layer, out):
+        c = np.array(e.dxf.center, dtype=np.float64)[:2]
+        major = np.array(e.dxf.major_axis, dtype=np.float64)
+        ex = e.dxf.get("extrusion", (0, 0, 1))
+        ratio = float(e.dxf.ratio)
+        a = float(np.linalg.norm(major[:2])) if abs(major[2]) < 1e-9 else float(np.linalg.norm(major))
+        p0, p1 = float(e.dxf.start_param), float(e.dxf.end_param)
+        sweep = (p1 - p0) % (2 * math.pi)
+        full = sweep < 1e-9 or abs(sweep - 2 * math.pi) < 1e-9
+        if full:
+            sweep = 2 * math.pi
+        if abs(ex[0]) > 1e-9 or abs(ex[1]) > 1e-9 or abs(major[2]) > 1e-9:
+            xy = np.array([(v.x, v.y) for v in e.flattening(self.tol)], dtype=np.float64)
+        else:
+            n = _n_segments(a, sweep, self.tol)
+            t = p0 + np.linspace(0.0, sweep, n + 1)
+            if full:
+                t = t[:-1]
+            mj = major[:2]
+            mn = np.array((-mj[1], mj[0])) * ratio
+            if ex[2] < 0:
+                mn = -mn
+            xy = c[None, :] + np.cos(t)[:, None] * mj[None, :] + np.sin(t)[:, None] * mn[None, :]
+        out.add(xy, layer, "ELLIPSE", full)
+
+    def _hatch(self, e, layer, out):
+        solid = bool(e.dxf.get("solid_fill", 0))
+        rings = []
+        for bpath in e.paths.paths:
+            try:
+                rings.extend(_boundary_rings(bpath, self.tol))
+            except Exception:
+                continue
+        ex = _extrusion(e)
+        rings = [_ocs_to_wcs(r, ex) for r in rings if len(r) >= 3]
+        if not rings:
+            return
+        if solid:
+            if len(rings) == 1:
+                out.add(rings[0], layer, "HATCH", True, True)
+            else:
+                sep = np.full((1, 2), np.nan)
+                parts = []
+                for r in rings:
+                    parts.extend((r, sep))
+                out.add(np.concatenate(parts[:-1], axis=0), layer, "HATCH", True, True)
+        else:
+            for r in rings:
+                out.add(r, layer, "HATCH", True, False)
+
+    def _spend(self, name: str, copies: int, pieces: int) -> None:
+        """Count the entities an INSERT adds and stop before a block bomb or a giant MINSERT array
+        (nested blocks multiply) allocates them."""
+        self.produced += copies * pieces
+        if self.produced > MAX_EXPLODED:
+            raise InputError(
+                f"exploding the blocks gives more than {MAX_EXPLODED:,} entities (the last INSERT: block '{name}', "
+                f"{copies:,} {'copy' if copies == 1 else 'copies'} of {pieces:,} entities): the drawing nests blocks "
+                "too deeply, repeats one entity massively or holds a huge MINSERT array; purge or explode those "
+                "blocks in CAD (OVERKILL removes duplicates) and export again")
+
+    def _insert(self, e, layer, out):
+        name = e.dxf.name
+        if layer != "0" and not self.visible(layer, frozen_only=True):
+            return
+        rows = int(e.dxf.get("row_count", 1) or 1)
+        cols = int(e.dxf.get("column_count", 1) or 1)
+        offsets = np.zeros((1, 2))
+        if rows > 1 or cols > 1:
+            offsets = _minsert_offsets(e, rows, cols, self, name)
+        m = e.matrix44()
+        A = np.array(((m[0, 0], m[1, 0]), (m[0, 1], m[1, 1])), dtype=np.float64)
+        t = np.array((m[3, 0], m[3, 1]), dtype=np.float64)
+        # an enlarged block needs a finer tolerance in its own units (powers of 2 keep the cache small)
+        s = float(np.linalg.norm(A, 2))
+        tol = self.tol / (2.0 ** math.ceil(math.log2(s))) if s > 1.0 + 1e-9 else self.tol
+        blk = self.block(name, tol)
+        self._spend(name, len(offsets), len(blk) + len(blk.texts))
+        attribs = [a for a in e.attribs if not (a.is_invisible if hasattr(a, "is_invisible") else False)]
+        for d in offsets:
+            _transform_pieces(blk, A, t + d, layer, out, self._inherited_ok, name)
+            # attributes are stored in the parent's coordinates already (a MINSERT shifts them per copy)
+            for a in attribs:
+                alay = a.dxf.get("layer", "0") or "0"
+                if alay == "0":
+                    alay = layer
+                if not self._keep_layer(alay):
+                    continue
+                txt = _text_plain(a)
+                if txt:
+                    p = a.dxf.insert
+                    if (a.dxf.get("halign", 0) or a.dxf.get("valign", 0)) and a.dxf.hasattr("align_point"):
+                        p = a.dxf.align_point
+                    out.texts.append((float(p[0]) + d[0], float(p[1]) + d[1], txt, float(a.dxf.get("height", 1.0)),
+                                      float(a.dxf.get("rotation", 0.0)), alay, "ATTRIB", name,
+                                      str(a.dxf.get("tag", "") or "")))
+
+    def _inherited_ok(self, layer, etype) -> bool:
+        return self._keep_layer(layer)
+
+
+
+@dataclass
+class _Raw:
+    doc: object
+    path: str
+    pieces: _Pieces
+    states: Dict[str, Tuple[bool, bool]]
+    header_unit: str
+    repairs: List[str]
+    warnings: List[str]
+    tol: float
+    n_entities: int
+
+
+def _explode(path: str, tol_du: float, progress, doc=None, repairs=None) -> _Raw:
+    if doc is None:
+        doc, repairs = _read_doc(path, progress)
+    states = _layer_states(doc)
+    lower_states = {k.lower(): v for k, v in states.items()}
+
+    def visible(name: str, frozen_only: bool = False) -> bool:
+        st = states.get(name) or lower_states.get(name.lower())
+        if st is None:
+            return True
+        return not st[0] if frozen_only else not (st[0] or st[1])
+
+    msp = doc.modelspace()
+    n = len(msp)
+    if n > MAX_EXPLODED:
+        raise InputError(f"'{os.path.basename(path)}' holds {n:,} entities in model space, more than the "
+                         f"{MAX_EXPLODED:,} a floor plan needs: remove duplicates (OVERKILL) or copies in CAD, "
+                         "or export only the floor's layers")
+    ex = _Exploder(doc, tol_du, visible, progress, n)
+    out = _Pieces()
+    ex.entities(msp, out, top=True)
+    # layer "0" (and any other) at the top level must itself be visible
+    keep = [i for i, lay in enumerate(out.layer) if visible(lay)]
+    if len(keep) != len(out.layer):
+        out = _Pieces(coords=[out.coords[i] for i in keep], layer=[out.layer[i] for i in keep],
+                      etype=[out.etype[i] for i in keep], closed=[out.closed[i] for i in keep],
+                      filled=[out.filled[i] for i in keep], width=[out.width[i] for i in keep],
+                      block=[out.block[i] for i in keep],
+                      texts=[t for t in out.texts if visible(t[5])], counts=out.counts, xrefs=out.xrefs)
+    else:
+        out.texts = [t for t in out.texts if visible(t[5])]
+    return _Raw(doc, path, out, states, _header_unit(doc), list(repairs or []), ex.warnings, tol_du, n)
+

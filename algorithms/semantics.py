@@ -1,0 +1,1145 @@
+"""Stage 5: room names, numbers and types from the drawing's texts.
+
+Public API
+----------
+``load_name_rules(path=None) -> NameRules``
+    The configurable rules (``default_name_rules.json`` beside this module, or a copy of it).
+``normalize_text(text) -> str``
+    NFKC, control / bidi / formatting codes removed, whitespace collapsed.
+``classify_text(text, rules=None, layer="", block="", tag="") -> (role, reason)``
+    role ``name`` | ``number`` | ``ignored``; reason says why (``dimension``, ``area``, ``elevation``,
+    ``door/window code``, ``axis``, ``stair arrow``, ``note``, ``title``, ``title block``, ``empty``...).
+    ``text`` may be a ``CadText`` (its layer, block and ATTRIB tag are then used).
+``room_name_points(texts, rules=None) -> [(x, y, text)]``
+    Where the room names (and numbers) of a drawing are: evidence that a space is inside the building.
+``assign_names(areas, texts, level, rules=None, progress=None, grid=None, labels=None, passages=None,
+split=True) -> NamesReport``
+    Scores every room text against every area exactly as the paper (below), gives each text to its
+    best-scoring area, joins name + number, splits areas holding two different room names when a
+    narrowing separates them (else ``label_conflict``), suffixes duplicate names, gives unnamed areas
+    a stable id ``<level>-<id>`` and types areas from keywords, codes and geometry. Areas are changed in
+    place (``name``, ``ref``, ``type``, ``tags``); split pieces and their passages are appended to
+    ``areas`` / ``passages``.
+
+Score (Zhang et al., "CAD to osmAG", text-to-room association): with the text point p, the area's
+centroid c and area A (m²), S = sqrt(A / pi), rho = |p - c| / S, d_b = distance from p to the boundary:
+* p inside:  100 - 50 rho for rho <= rho_max (0.7), else 50 - 25 (rho - rho_max);
+* p outside, d_b < D_max (2.2 m): 40 + 30 f_size + 20 f_dist, f_size = 1 / (1 + log10(1 + A / 10000)),
+  f_dist = 1 - d_b / D_max;
+* otherwise 0 (not a candidate). Each text goes to the area with the highest positive score, except that
+a text inside an area belongs to it (``inside_first``; the paper would let a room 2 m away, >= 40, beat
+a text inside a long corridor far from its centroid, < 40) and that an inside score at or below 0 counts
+as 1. Stair/lift detail callouts ("E1-ST-01详见建施(...)", drawn beside the stair on a leader) name the
+nearest stair or lift area within ``CALLOUT_REACH`` and are never given to the corridor they lie in.
+
+Layer fields written on the areas (``Area.tags``, so they reach the AREAS layer): ``label_score`` (best
+score of the texts used), ``label_texts`` (ids of the CadTexts used, ';'-separated), ``label_conflict``
+(the other room names when an area holds several and could not be split). ``osm_tags(area)`` gives the
+tags meant for the osmAG file (these three replaced by a ``fixme`` on conflicts).
+"""
+from __future__ import annotations
+
+import json
+import math
+import os
+import re
+import unicodedata
+from dataclasses import dataclass, field
+from typing import Dict, List, Optional, Sequence, Tuple
+
+import numpy as np
+from shapely.geometry import LineString, Point
+from shapely.ops import split as shp_split
+from shapely.strtree import STRtree
+
+from .errors import InputError
+from .model import Area, CadText, Passage
+from .progress import ensure
+
+DEFAULT_NAME_RULES_PATH = os.path.join(os.path.dirname(os.path.abspath(__file__)), "default_name_rules.json")
+RHO_MAX = 0.7
+D_MAX = 2.2  # metres
+CALLOUT_REACH = 8.0  # metres from a stair/lift detail callout to the stair or lift it names
+NARROWING_RATIO = 0.6  # a split cut must be at most this share of the narrower piece's width
+LABEL_FIELDS = ("label_score", "label_texts", "label_conflict")
+ROLES = ("name", "number", "ignored")
+
+
+# ------------------------------------------------------------------------------------------ rules
+@dataclass
+class NameRules:
+    name_layers: List[str]
+    name_blocks: List[str]
+    name_tags: List[str]
+    number_tags: List[str]
+    ignore_layers: List[Tuple[str, List[str]]]
+    ignore_patterns: List[Tuple[str, "re.Pattern"]]
+    number_patterns: List["re.Pattern"]
+    types: List[dict]
+    code_types: List[dict]
+    max_name_words: int = 7
+    max_name_chars: int = 48
+    corridor_geometry: Dict[str, float] = field(default_factory=dict)
+    source: str = ""
+    callout: Optional["re.Pattern"] = None  # "E1-ST-01详见建施(...)": the code a detail reference names
+    callout_tail: Optional["re.Pattern"] = None  # "卫生间详见建施(...)": the reference after a name
+    weak_name_layers: List[str] = field(default_factory=list)  # generic text layers: names likely, not sure
+
+    def __post_init__(self):
+        # keyword -> (type entry) sorted longest first: the longest keyword found in a name wins
+        kws = []
+        for entry in self.types:
+            for kw in entry.get("keywords", []):
+                kws.append((normalize_text(kw).casefold(), entry))
+        kws.sort(key=lambda t: -len(t[0]))
+        self._type_keywords = [(kw, _keyword_regex(kw), e) for kw, e in kws if kw]
+
+
+def _keyword_regex(kw: str) -> "re.Pattern":
+    """Latin/Cyrillic keywords match at the start of a word (stems: 'riunion' matches 'riunioni');
+    CJK keywords match anywhere."""
+    if re.match(r"^[\w .'&/-]+$", kw) and not re.search(r"[\u3000-\u9fff]", kw):
+        return re.compile(r"(?<![^\W\d_])" + re.escape(kw))
+    return re.compile(re.escape(kw))
+
+
+def _layer_match(words: Sequence[str], name: str) -> Optional[str]:
+    """The first keyword occurring in ``name`` (casefolded). ASCII keywords of <= 3 characters must be
+    a whole token of the name (``tk`` matches 'TK' or 'A-TK', not 'ATKINS')."""
+    if not name:
+        return None
+    tokens = None
+    for w in words:
+        if len(w) <= 3 and w.isascii() and w.isalnum():
+            if tokens is None:
+                tokens = set(re.split(r"[^0-9a-z\u0080-\uffff]+", name))
+            if any(tok.startswith(w) for tok in tokens):
+                return w
+        elif w in name:
+            return w
+    return None
+
+
+def load_name_rules(path: Optional[str] = None) -> NameRules:
+    """Rules from a JSON file (None: the built-in defaults). Raises InputError on a bad file."""
+    src = path or DEFAULT_NAME_RULES_PATH
+    try:
+        with open(src, encoding="utf-8") as fh:
+            data = json.load(fh)
+    except FileNotFoundError:
+        raise InputError(f"name rules file '{src}' does not exist; give an existing JSON file or leave it empty")
+    except (OSError, ValueError) as exc:
+        raise InputError(f"name rules file '{os.path.basename(src)}' is not valid JSON ({exc}); "
+                         "start from a copy of algorithms/default_name_rules.json")
+    if not isinstance(data, dict):
+        raise InputError(f"name rules file '{os.path.basename(src)}' must hold a JSON object")
+
+    def words(key):
+        return [normalize_text(w).casefold() for w in data.get(key, []) if str(w).strip()]
+
+    try:
+        if data.get("callout"):
+            re.compile(data["callout"])
+        ignore_layers = [(reason, [normalize_text(w).casefold() for w in ws])
+                         for reason, ws in (data.get("ignore_layers") or {}).items()]
+        pats = [(reason, re.compile(p, re.IGNORECASE)) for reason, p in data.get("ignore_patterns", [])]
+        nums = [re.compile(p, re.IGNORECASE) for p in data.get("number_patterns", [])]
+        codes = [dict(e, _re=re.compile(e["pattern"], re.IGNORECASE)) for e in data.get("code_types", [])]
+        types = [dict(e) for e in data.get("types", [])]
+        for e in types + codes:
+            if e.get("type") not in ("room", "corridor", "stairs", "elevator"):
+                raise ValueError(f"unknown area type {e.get('type')!r} (room, corridor, stairs, elevator)")
+    except (re.error, ValueError, TypeError, KeyError) as exc:
+        raise InputError(f"name rules file '{os.path.basename(src)}': {exc}")
+    return NameRules(name_layers=words("name_layers"), name_blocks=words("name_blocks"),
+                     name_tags=words("name_tags"), number_tags=words("number_tags"),
+                     ignore_layers=ignore_layers, ignore_patterns=pats, number_patterns=nums, types=types,
+                     code_types=codes, max_name_words=int(data.get("max_name_words", 7)),
+                     max_name_chars=int(data.get("max_name_chars", 48)),
+                     corridor_geometry=dict(data.get("corridor_geometry") or {}), source=src,
+                     callout=re.compile(data["callout"], re.IGNORECASE) if data.get("callout") else None,
+                     callout_tail=re.compile(data["callout_tail"], re.IGNORECASE) if data.get("callout_tail") else None,
+                     weak_name_layers=words("weak_name_layers"))
+
+
+_DEFAULT: Optional[NameRules] = None
+
+
+def default_name_rules() -> NameRules:
+    global _DEFAULT
+    if _DEFAULT is None:
+        _DEFAULT = load_name_rules(None)
+    return _DEFAULT
+
+
+def _resolve(rules) -> NameRules:
+    if rules is None:
+        return default_name_rules()
+    if isinstance(rules, NameRules):
+        return rules
+    return load_name_rules(str(rules))
+
+
+# ------------------------------------------------------------------------------------------ text
+_MTEXT_CODES = re.compile(r"\\[ACFHQTWfhqtwacLlOoKkXx][^;\\{}]*;?|\\[PpNn~]|[{}]")
+_PERCENT_CODES = {"%%c": "⌀", "%%d": "°", "%%p": "±", "%%u": "", "%%o": "", "%%k": "", "%%%": "%"}
+_XREF_PREFIX = re.compile(r"^.*\$\d+\$")
+
+
+def strip_xref(layer: str) -> str:
+    """'E1-RI-1F$0$A-ANNO-ROOM' -> 'A-ANNO-ROOM' (bound external reference prefixes, any depth)."""
+    return _XREF_PREFIX.sub("", layer or "")
+
+
+def normalize_text(text) -> str:
+    """Plain, comparable text: MTEXT/percent formatting codes, control and bidi/format characters
+    removed, NFKC (full-width forms to ASCII, '㎡' to 'm2'), whitespace collapsed."""
+    if text is None:
+        return ""
+    s = str(text)
+    if "\\" in s or "{" in s:
+        s = _MTEXT_CODES.sub(" ", s)
+    if "%%" in s:
+        for k, v in _PERCENT_CODES.items():
+            s = re.sub(re.escape(k), v, s, flags=re.IGNORECASE)
+    if "\x1b" in s:
+        s = re.sub(r"\x1b\[[0-9;?]*[A-Za-z]|\x1b[@-_]", " ", s)  # terminal escape sequences
+    s = unicodedata.normalize("NFKC", s)
+    s = "".join(ch if unicodedata.category(ch)[0] != "C" else " " for ch in s)
+    s = " ".join(s.split())
+    # letter-spaced CJK names ("走 道", "通 廊") are one word
+    return re.sub(r"(?<=[\u3400-\u9fff])\s+(?=[\u3400-\u9fff])", "", s)
+
+
+def _has_letter(s: str) -> bool:
+    return any(unicodedata.category(ch).startswith("L") for ch in s)
+
+
+def _text_fields(text, layer, block, tag):
+    if isinstance(text, CadText):
+        return text.text, text.layer, text.block, text.tag
+    return text, layer, block, tag
+
+
+def classify_text(text, rules=None, layer: str = "", block: str = "", tag: str = "") -> Tuple[str, str]:
+    """``(role, reason)`` of one text. role: ``name`` (a room name), ``number`` (a room number, kept
+    as ref), ``ignored``. The reason names the rule: 'name layer', 'keyword', 'room tag' ... for names
+    and numbers; 'dimension', 'area', 'elevation', 'door/window code', 'axis', 'stair arrow', 'note',
+    'title', 'title block', 'furniture', 'long text', 'empty', 'digits only' ... for ignored texts."""
+    rules = _resolve(rules)
+    raw, layer, block, tag = _text_fields(text, layer, block, tag)
+    s = normalize_text(raw)
+    if not s or not re.search(r"\w", s):
+        return "ignored", "empty"
+    low = s.casefold()
+    lay = strip_xref(layer).casefold()
+    blk = strip_xref(block).casefold()
+    tg = normalize_text(tag).casefold()
+    # ---- ATTRIB tags and room-name layers / blocks: what the drawing says the text is
+    tag_tokens = set(re.split(r"[^0-9a-z\u0080-\uffff]+", tg)) if tg else set()
+    number_tag = bool(tg) and any((w in tag_tokens) if len(w) <= 3 else (w in tg) for w in rules.number_tags)
+    name_tag = bool(tg) and not number_tag and any(
+        (w in tag_tokens) if len(w) <= 3 else (w in tg) for w in rules.name_tags)
+    name_layer = _layer_match(rules.name_layers, lay)
+    name_block = _layer_match(rules.name_blocks, blk)
+    evidence = "room tag" if (name_tag or number_tag) else ("name layer" if name_layer else
+                                                            ("room block" if name_block else ""))
+    weak = not evidence and bool(_layer_match(rules.weak_name_layers, lay))
+    type_hit = _type_entry(low, rules)
+    # ---- layers that hold other things
+    if not evidence:
+        for reason, words in rules.ignore_layers:
+            if _layer_match(words, lay):
+                if reason in ("stair arrow", "door/window code", "note") and type_hit is not None and \
+                        _is_name_like(low, rules):
+                    break  # "Stair A" on the stair layer is a name
+                return "ignored", f"{reason} (layer)"
+    # ---- numbers
+    if number_tag:
+        return ("number", "room tag") if _has_alnum(low) else ("ignored", "empty")
+    if _is_door_code(low, rules):
+        return "ignored", "door/window code"
+    if any(p.search(low) for p in rules.number_patterns) and not _is_elevation(low, rules):
+        digits = low.isdigit()
+        if digits and not evidence and int(low) % 50 == 0:
+            return "ignored", "dimension"
+        return "number", evidence or "number pattern"
+    if low.isdigit() or re.fullmatch(r"[\d\s.,]+", low):
+        if evidence and low.isdigit():
+            return "number", evidence
+        # single digits: axis bubbles, section marks; more: dimensions
+        return "ignored", "axis" if len(low) <= 2 else "dimension"
+    # ---- everything else that is not a name
+    for reason, pat in rules.ignore_patterns:
+        if evidence and reason in ("furniture", "long text", "spaced title"):
+            continue
+        if pat.search(low):
+            if reason in ("furniture",) and type_hit is not None and type_hit[1].get("type") != "room":
+                continue
+            return "ignored", reason
+    if not _has_letter(low):
+        return "ignored", "digits only" if re.search(r"\d", low) else "symbols only"
+    if not evidence and (len(low) > rules.max_name_chars or len(low.split()) > rules.max_name_words):
+        return "ignored", "long text"
+    if name_tag:
+        return "name", "room tag"
+    if evidence:
+        return "name", evidence
+    if weak and type_hit is None:
+        return "name", "text layer"
+    if type_hit is not None:
+        return "name", "keyword"
+    return "name", "short text"
+
+
+def _has_alnum(s: str) -> bool:
+    return any(ch.isalnum() for ch in s)
+
+
+def _is_name_like(low: str, rules: NameRules) -> bool:
+    return len(low) <= rules.max_name_chars and not _is_arrow(low, rules)
+
+
+def _is_arrow(low: str, rules: NameRules) -> bool:
+    return any(r == "stair arrow" and p.search(low) for r, p in rules.ignore_patterns)
+
+
+def _is_door_code(low: str, rules: NameRules) -> bool:
+    return any(r == "door/window code" and p.search(low) for r, p in rules.ignore_patterns)
+
+
+def _is_elevation(low: str, rules: NameRules) -> bool:
+    return any(r in ("elevation", "area") and p.search(low) for r, p in rules.ignore_patterns)
+
+
+def _type_entry(low: str, rules: NameRules):
+    """(keyword, entry) of the longest type keyword in the text, or None."""
+    for kw, rx, entry in rules._type_keywords:
+        if rx.search(low):
+            return kw, entry
+    return None
+
+
+def type_of_name(name: str, ref: str = "", rules=None) -> Optional[dict]:
+    """The type entry (type, indoor, room) a name or number implies: code patterns first
+    (E1-ST-03 stairs, E2-P1 lift), then the longest keyword. None when nothing matches."""
+    rules = _resolve(rules)
+    for s in (ref, name):
+        low = normalize_text(s).casefold()
+        if not low:
+            continue
+        for e in rules.code_types:
+            if e["_re"].search(low):
+                return e
+    hit = _type_entry(normalize_text(name).casefold(), rules)
+    return hit[1] if hit else None
+
+
+# ------------------------------------------------------------------------------------------ lines
+@dataclass
+class Label:
+    """One label: a text, or several lines of one multi-line TEXT label joined."""
+
+    ids: List[int]
+    text: str
+    x: float
+    y: float
+    height: float
+    layer: str
+    block: str
+    tag: str
+    role: str = ""
+    reason: str = ""
+
+
+def _text_id(t: CadText, k: int) -> int:
+    return int(t.id) if getattr(t, "id", -1) is not None and int(getattr(t, "id", -1)) >= 0 else k
+
+
+def _est_width(s: str, h: float) -> float:
+    wide = sum(1 for ch in s if unicodedata.east_asian_width(ch) in ("W", "F"))
+    return h * (0.65 * (len(s) - wide) + 1.0 * wide)
+
+
+_NO_JOIN = ("elevation", "area", "dimension", "axis", "door/window code", "scale", "stair arrow", "empty")
+
+
+def group_lines(texts: Sequence[CadText], rules=None) -> List[Label]:
+    """Join the lines of multi-line labels drawn as separate TEXTs: same layer, height (+-15 %) and
+    rotation, the next line 0.5-2.7 heights below the previous one and overlapping it horizontally.
+    Each text belongs to at most one label; ATTRIBs and MTEXTs stay alone (they carry their own lines)."""
+    labels: List[Label] = []
+    cand = []
+    for k, t in enumerate(texts):
+        s = normalize_text(t.text)
+        lab = Label([_text_id(t, k)], s, float(t.x), float(t.y), float(t.height or 0.0), t.layer or "",
+                    getattr(t, "block", "") or "", getattr(t, "tag", "") or "")
+        labels.append(lab)
+        if t.entity == "TEXT" and s and t.height and t.height > 0 and abs(((t.rotation or 0) + 1) % 180 - 1) < 1 \
+                and math.isfinite(lab.x) and math.isfinite(lab.y):
+            role, reason = classify_text(s, rules, layer=lab.layer, block=lab.block, tag=lab.tag)
+            # numbers, elevations, areas... are lines of their own: "Office" over "101" is name + number
+            if role != "number" and reason.split(" (")[0] not in _NO_JOIN:
+                cand.append(len(labels) - 1)
+    if len(cand) < 2:
+        return labels
+    # sort candidates top to bottom; link each line to the nearest line right above it
+    cand.sort(key=lambda i: (-labels[i].y, labels[i].x))
+    xs = np.array([labels[i].x for i in cand])
+    ys = np.array([labels[i].y for i in cand])
+    above: Dict[int, int] = {}
+    taken = set()
+    for a_pos, i in enumerate(cand):
+        li = labels[i]
+        h = li.height
+        dy = ys - li.y  # positive: the other line is above
+        ok = (dy >= 0.5 * h) & (dy <= 2.7 * h)
+        if not ok.any():
+            continue
+        best = None
+        for b_pos in np.flatnonzero(ok):
+            j = cand[b_pos]
+            lj = labels[j]
+            if j in taken or lj.layer != li.layer or abs(lj.height - h) > 0.15 * max(h, lj.height):
+                continue
+            wi, wj = _est_width(li.text, h), _est_width(lj.text, h)
+            # overlap of [x, x + w] extents, tolerant to centred/right alignment
+            if min(li.x + wi, lj.x + wj) - max(li.x - 0.5 * wi, lj.x - 0.5 * wj) <= 0:
+                continue
+            d = dy[b_pos] + abs(lj.x - li.x) / max(wi, wj, 1e-9)
+            if best is None or d < best[0]:
+                best = (d, j)
+        if best is not None:
+            above[i] = best[1]
+            taken.add(best[1])
+    if not above:
+        return labels
+    below = {j: i for i, j in above.items()}
+    out: List[Label] = []
+    used = set()
+    for k, lab in enumerate(labels):
+        if k in used:
+            continue
+        if k in above:  # not the first line: emitted with its first line
+            continue
+        chain = [k]
+        while chain[-1] in below:
+            chain.append(below[chain[-1]])
+        used.update(chain)
+        if len(chain) == 1:
+            out.append(lab)
+            continue
+        parts = [labels[c] for c in chain]
+        out.append(Label(ids=[i for p in parts for i in p.ids], text=" ".join(p.text for p in parts),
+                         x=float(np.mean([p.x for p in parts])), y=float(np.mean([p.y for p in parts])),
+                         height=lab.height, layer=lab.layer, block=lab.block, tag=lab.tag))
+    return out
+
+
+def classify_labels(texts: Sequence[CadText], rules=None) -> List[Label]:
+    """Labels (multi-line TEXTs joined) with role and reason. Two refinements on top of
+    ``classify_text``: a detail callout ('E1-ST-01详见建施(A-E-40-01)', 'P2 see 5/A-501') is the room
+    number it names; a name ending in a room code ('研究室 E1a-F4-06') is split into name + number."""
+    rules = _resolve(rules)
+    labels = group_lines(texts, rules)
+    out: List[Label] = []
+    for lab in labels:
+        m = rules.callout.match(lab.text.casefold()) if rules.callout is not None and lab.text else None
+        if m and m.group("code"):
+            lab.text = lab.text[m.start("code"):m.end("code")]
+            lab.role, lab.reason = "number", "callout"
+            out.append(lab)
+            continue
+        if rules.callout_tail is not None and lab.text:
+            m = rules.callout_tail.search(lab.text)
+            if m and m.start() > 0 and _has_letter(lab.text[:m.start()]):
+                lab.text = lab.text[:m.start()].strip()
+        lab.role, lab.reason = classify_text(lab.text, rules, layer=lab.layer, block=lab.block, tag=lab.tag)
+        parts = lab.text.rsplit(" ", 1)
+        if lab.role == "name" and len(parts) == 2 and "-" in parts[1] and _has_letter(parts[0]) and \
+                any(p.search(parts[1].casefold()) for p in rules.number_patterns):
+            from dataclasses import replace
+
+            out.append(replace(lab, text=parts[0]))
+            out.append(replace(lab, text=parts[1], role="number", reason="code after the name"))
+            continue
+        out.append(lab)
+    return out
+
+
+def room_name_points(texts: Sequence[CadText], rules=None) -> List[Tuple[float, float, str]]:
+    """(x, y, text) of every room name and room number of a drawing (CAD frame, metres). Segmentation
+    uses them as evidence that the space around them is inside the building."""
+    return [(lab.x, lab.y, lab.text) for lab in classify_labels(texts, rules) if lab.role in ("name", "number")]
+
+
+PROTECTED_TYPE = "room:labelled"  # temporary type that keeps refinement from merging a labelled small room
+
+
+def protect_labelled_areas(areas: Sequence[Area], texts: Sequence[CadText], min_area: float, rules=None,
+                           smallest: float = 1.0) -> Dict[int, str]:
+    """Before refinement: areas smaller than ``min_area`` (but at least ``smallest`` m²) that hold a room
+    name or number get the temporary type ``PROTECTED_TYPE`` so that the small-area merge keeps them (a
+    labelled WC or store room is a room, however small). Returns {area id: original type} for
+    ``restore_types``."""
+    pts = room_name_points(texts, rules)
+    if not pts:
+        return {}
+    small = [a for a in areas if smallest <= a.polygon.area < min_area and a.type in ("room", "corridor")]
+    if not small:
+        return {}
+    tree = STRtree([a.polygon for a in small])
+    saved: Dict[int, str] = {}
+    for x, y, _ in pts:
+        for i in tree.query(Point(x, y), predicate="intersects").tolist():
+            a = small[i]
+            if a.id not in saved:
+                saved[a.id] = a.type
+                a.type = PROTECTED_TYPE
+    return saved
+
+
+def restore_types(saved: Dict[int, str], *area_lists: Sequence[Area]) -> None:
+    for areas in area_lists:
+        for a in areas:
+            if a.type == PROTECTED_TYPE:
+                a.type = saved.get(a.id, "room")
+
+
+# ------------------------------------------------------------------------------------------ score
+def score(px: float, py: float, polygon, centroid=None, area: Optional[float] = None,
+          rho_max: float = RHO_MAX, d_max: float = D_MAX) -> Tuple[float, str]:
+    """The paper's score of text point (px, py) for a polygon and how it matched: 'inside', 'nearby'
+    or '' (score 0, not a candidate). Inside scores at or below 0 are raised to 1 (see module doc)."""
+    A = float(polygon.area) if area is None else float(area)
+    if A <= 0:
+        return 0.0, ""
+    p = Point(px, py)
+    if polygon.covers(p):
+        c = centroid if centroid is not None else polygon.centroid
+        S = math.sqrt(A / math.pi)
+        rho = math.hypot(px - c.x, py - c.y) / S
+        s = 100.0 - 50.0 * rho if rho <= rho_max else 50.0 - 25.0 * (rho - rho_max)
+        return max(s, 1.0), "inside"
+    d_b = float(polygon.exterior.distance(p)) if polygon.geom_type == "Polygon" else float(polygon.distance(p))
+    if d_b < d_max:
+        f_size = 1.0 / (1.0 + math.log10(1.0 + A / 10000.0))
+        f_dist = 1.0 - d_b / d_max
+        return 40.0 + 30.0 * f_size + 20.0 * f_dist, "nearby"
+    return 0.0, ""
+
+
+# ------------------------------------------------------------------------------------------ report
+@dataclass
+class TextRecord:
+    ids: List[int]
+    text: str
+    x: float
+    y: float
+    layer: str
+    role: str
+    reason: str
+    area_id: Optional[int] = None
+    score: float = 0.0
+    match: str = ""  # inside | nearby | "" (outside every area)
+
+
+@dataclass
+class NamesReport:
+    texts: List[TextRecord] = field(default_factory=list)
+    named: int = 0  # areas with a name from the drawing
+    numbered: int = 0  # areas with a ref
+    auto: int = 0  # areas with a generated id
+    conflicts: List[int] = field(default_factory=list)  # area ids holding several names
+    splits: List[Tuple[int, List[int]]] = field(default_factory=list)  # (original id, piece ids)
+    duplicates: Dict[str, List[int]] = field(default_factory=dict)  # name -> area ids suffixed
+    typed: Dict[str, int] = field(default_factory=dict)  # type -> count set from names / geometry
+    new_passages: List[int] = field(default_factory=list)
+    base_names: Dict[int, str] = field(default_factory=dict)  # area id -> name from the drawing, before suffixes
+    name_record: Dict[int, "TextRecord"] = field(default_factory=dict)  # area id -> the text it is named after
+
+    def counts(self) -> Dict[str, object]:
+        ignored: Dict[str, int] = {}
+        for r in self.texts:
+            if r.role == "ignored":
+                ignored[r.reason] = ignored.get(r.reason, 0) + 1
+        room = [r for r in self.texts if r.role in ("name", "number")]
+        return {"labels": len(self.texts), "names": sum(r.role == "name" for r in self.texts),
+                "numbers": sum(r.role == "number" for r in self.texts),
+                "ignored": sum(r.role == "ignored" for r in self.texts), "ignored_by_reason": ignored,
+                "assigned": sum(r.area_id is not None for r in room),
+                "inside": sum(r.match == "inside" for r in room), "nearby": sum(r.match == "nearby" for r in room),
+                "outside": sum(r.area_id is None for r in room), "named_areas": self.named,
+                "numbered_areas": self.numbered, "auto_ids": self.auto, "conflicts": len(self.conflicts),
+                "splits": len(self.splits), "duplicate_names": len(self.duplicates), "typed": dict(self.typed)}
+
+    def summary(self) -> str:
+        c = self.counts()
+        ign = ", ".join(f"{k} {v}" for k, v in sorted(c["ignored_by_reason"].items(), key=lambda kv: -kv[1]))
+        return (f"{c['labels']} labels: {c['names']} room names, {c['numbers']} room numbers, {c['ignored']} "
+                f"ignored ({ign or 'none'}); {c['assigned']} assigned ({c['inside']} inside, {c['nearby']} "
+                f"nearby), {c['outside']} outside every area; {c['named_areas']} areas named, "
+                f"{c['numbered_areas']} numbered, {c['auto_ids']} with a generated id, {c['splits']} split, "
+                f"{c['conflicts']} with conflicting names, {c['duplicate_names']} duplicate names suffixed")
+
+
+def floor_figures(areas: Sequence[Area], passages: Sequence[Passage], report: Optional[NamesReport]) -> Dict[str, object]:
+    """Quality figures of one converted floor (``make evaluate-cad``): room-name texts inside an area and
+    naming an area of their own (%), the largest component's share of the floor area (%), semantic
+    accuracy (named areas whose name text lies inside them, %), counts."""
+    rooms = [a for a in areas if a.type != "structure"]
+    parent = {a.id: a.id for a in rooms}
+
+    def find(i):
+        while parent[i] != i:
+            parent[i] = parent[parent[i]]
+            i = parent[i]
+        return i
+
+    for p in passages:
+        if p.from_id in parent and p.to_id in parent:
+            parent[find(p.from_id)] = find(p.to_id)
+    comp: Dict[int, float] = {}
+    for a in rooms:
+        comp[find(a.id)] = comp.get(find(a.id), 0.0) + a.area
+    total = sum(comp.values())
+    out: Dict[str, object] = {"areas": len(rooms), "passages": len(passages), "components": len(comp),
+                              "largest_component_pct": 100.0 * max(comp.values()) / total if total else 0.0,
+                              "stairs": sum(a.type == "stairs" for a in rooms),
+                              "elevators": sum(a.type == "elevator" for a in rooms),
+                              "corridors": sum(a.type == "corridor" for a in rooms)}
+    if report is None:
+        return out
+    names = [r for r in report.texts if r.role == "name"]
+    conflict = {a.id for a in rooms if (a.tags or {}).get("label_conflict")}
+    own = 0
+    for r in names:
+        if r.area_id is None or r.area_id in conflict:
+            continue
+        if _key(report.base_names.get(r.area_id, "")) == _key(r.text):
+            own += 1
+    named = [aid for aid, rec in report.name_record.items() if rec.role == "name"]
+    correct = sum(report.name_record[aid].match == "inside" for aid in named)
+    c = report.counts()
+    out.update({"room_texts": len(names), "numbers": c["numbers"], "ignored": c["ignored"],
+                "ignored_by_reason": c["ignored_by_reason"],
+                "inside_pct": 100.0 * sum(r.match == "inside" for r in names) / len(names) if names else None,
+                "own_area_pct": 100.0 * own / len(names) if names else None,
+                "named_areas": len(named), "conflicts": len(conflict & set(named)),
+                "conflict_pct": 100.0 * len(conflict & set(named)) / len(named) if named else None,
+                "semantic_accuracy_pct": 100.0 * correct / len(named) if named else None,
+                "splits": len(report.splits), "outside": c["outside"], "own_texts": own})
+    return out
+
+
+# ------------------------------------------------------------------------------------------ assign
+def _key(name: str) -> str:
+    return " ".join(normalize_text(name).casefold().split())
+
+
+def auto_id(level: str, area_id: int) -> str:
+    """The stable generated id of an unnamed area: ``<level>-<area id>``."""
+    return f"{str(level).strip() or '1'}-{int(area_id)}"
+
+
+def assign_names(areas: List[Area], texts: Sequence[CadText], level="1", rules=None, progress=None,
+                 grid=None, labels=None, passages: Optional[List[Passage]] = None, split: bool = True,
+                 rho_max: float = RHO_MAX, d_max: float = D_MAX, inside_first: bool = True) -> NamesReport:
+    """Name, number and type ``areas`` (in place) from ``texts``; see the module doc. ``grid`` gives
+    the resolution of the split raster, ``labels`` (the label raster on ``grid``) is updated for split
+    areas, ``passages`` get the split cuts and follow the pieces. Never raises on odd texts."""
+    progress = ensure(progress)
+    rules = _resolve(rules)
+    report = NamesReport()
+    level = str(level).strip() or "1"
+    progress.step(0, "classifying texts")
+    labs = classify_labels(list(texts or []), rules)
+    records = [TextRecord(l.ids, l.text, l.x, l.y, l.layer, l.role, l.reason) for l in labs]
+    report.texts = records
+    areas_ok = [a for a in areas if a.polygon is not None and not a.polygon.is_empty and a.polygon.area > 0
+                and a.type != "structure"]
+    progress.step(15, "scoring texts against areas")
+    best_by_area: Dict[int, List[TextRecord]] = {}
+    if areas_ok:
+        polys = [a.polygon for a in areas_ok]
+        tree = STRtree(polys)
+        cents = [p.centroid for p in polys]
+        room = [r for r in records if r.role in ("name", "number")]
+        for n, r in enumerate(room):
+            if n % 200 == 0:
+                progress.step(15 + 35 * n / max(1, len(room)))
+            if not (math.isfinite(r.x) and math.isfinite(r.y)):
+                continue
+            p = Point(r.x, r.y)
+            if r.reason == "callout" and (type_of_name("", r.text, rules) or {}).get("type") in ("stairs", "elevator"):
+                # a detail callout ("E1-ST-01详见…") sits beside its stair or lift, on a leader: it names the
+                # nearest stair/lift area, and never types the corridor it happens to lie in
+                want = type_of_name("", r.text, rules)["type"]
+                near = [i for i in tree.query(p, predicate="dwithin", distance=CALLOUT_REACH).tolist()
+                        if areas_ok[i].type in ("stairs", "elevator")]
+                if near:
+                    i = min(near, key=lambda i: (areas_ok[i].type != want, polys[i].distance(p), i))
+                    r.area_id, r.match = areas_ok[i].id, "callout"
+                    r.score = round(score(r.x, r.y, polys[i], cents[i], rho_max=rho_max, d_max=d_max)[0], 2)
+                    best_by_area.setdefault(areas_ok[i].id, []).append(r)
+                continue
+            best = (0.0, None, "")
+            for i in sorted(tree.query(p, predicate="dwithin", distance=d_max).tolist()):
+                try:
+                    s, how = score(r.x, r.y, polys[i], cents[i], rho_max=rho_max, d_max=d_max)
+                except Exception:  # GEOS on an invalid polygon: this area is no candidate
+                    continue
+                if inside_first and how == "inside":
+                    s += 1000.0  # a text inside an area is that area's (nearby scores only for texts outside)
+                if s > best[0]:
+                    best = (s, i, how)
+            if best[0] > 1000.0:
+                best = (best[0] - 1000.0, best[1], best[2])
+            if best[1] is not None:
+                a = areas_ok[best[1]]
+                r.area_id, r.score, r.match = a.id, round(best[0], 2), best[2]
+                best_by_area.setdefault(a.id, []).append(r)
+    progress.step(50, "naming areas")
+    by_id = {a.id: a for a in areas}
+    # ---- split areas holding several different names
+    if split:
+        for aid in sorted(best_by_area):
+            recs = best_by_area[aid]
+            names = {_key(r.text): r for r in reversed(_competing(recs))}
+            if len(names) < 2:
+                continue
+            a = by_id[aid]
+            if a.type in ("stairs", "elevator"):
+                continue
+            try:
+                pieces = _split_area(a, recs, names, grid, areas, passages, labels)
+            except Exception as exc:  # an invalid polygon must not stop the naming: keep it whole
+                progress.warning(f"area {aid}: could not be split between its room names "
+                                 f"({type(exc).__name__}: {exc}); kept whole")
+                pieces = None
+            if pieces:
+                report.splits.append((aid, [p.id for p in pieces]))
+                for p in pieces:
+                    by_id[p.id] = p
+                best_by_area.pop(aid)
+                for p in pieces:
+                    best_by_area[p.id] = [r for r in recs if r.area_id == p.id]
+                report.new_passages.extend(pieces[0].tags.pop("_new_passages", []))
+                progress.info(f"area {aid} held {len(names)} room names ({', '.join(r.text for r in names.values())}); "
+                              f"split along the narrowing between them into areas {[p.id for p in pieces]}")
+    # ---- names, refs, label fields
+    for a in areas:
+        if a.type == "structure":
+            continue
+        recs = best_by_area.get(a.id, [])
+        for k in LABEL_FIELDS:
+            a.tags.pop(k, None)
+        names = sorted([r for r in recs if r.role == "name"], key=lambda r: (not _strong(r), -r.score, r.ids[0]))
+        nums = sorted([r for r in recs if r.role == "number"], key=lambda r: (-r.score, r.ids[0]))
+        distinct = _competing(recs)
+        a.name = a.name if (a.name and not recs and not _looks_auto(a.name)) else ""
+        a.ref = ""
+        if distinct:
+            a.name = distinct[0].text
+        if nums:
+            a.ref = nums[0].text
+            if not a.name:
+                a.name = nums[0].text
+        if recs:
+            a.tags["label_score"] = f"{max(r.score for r in recs):.1f}"
+            a.tags["label_texts"] = ";".join(dict.fromkeys(str(i) for r in names + nums for i in r.ids))
+        if len(distinct) > 1:
+            a.tags["label_conflict"] = " | ".join(d.text for d in distinct[1:])
+            report.conflicts.append(a.id)
+            progress.warning(f"area {a.id} holds {len(distinct)} room names ({', '.join(d.text for d in distinct)}) "
+                             "and no narrowing separates them: named after the best-placed one, the others kept in "
+                             "label_conflict (split the area by hand, or check the walls around it)")
+        if distinct:
+            report.base_names[a.id] = a.name
+            report.name_record[a.id] = distinct[0]
+        elif nums:
+            report.base_names[a.id] = a.name
+            report.name_record[a.id] = nums[0]
+        if a.name:
+            report.named += bool(distinct)
+            report.numbered += bool(a.ref)
+    # ---- duplicate names on the floor: suffix, never merge
+    groups: Dict[str, List[Area]] = {}
+    for a in areas:
+        if a.type != "structure" and a.name:
+            groups.setdefault(_key(a.name), []).append(a)
+    taken = {_key(a.name) for a in areas if a.name}
+    for key, grp in sorted(groups.items()):
+        if len(grp) < 2:
+            continue
+        grp.sort(key=lambda a: a.id)
+        report.duplicates[grp[0].name] = [a.id for a in grp]
+        base = grp[0].name
+        n = 0
+        for a in grp:
+            if a.ref and _key(a.ref) not in _key(a.name) and _key(f"{a.name} {a.ref}") not in taken:
+                a.name = f"{a.name} {a.ref}"
+            else:
+                while True:
+                    n += 1
+                    cand = f"{base} ({n})"
+                    if _key(cand) not in taken:
+                        break
+                a.name = cand
+            taken.add(_key(a.name))
+    # ---- generated ids for the rest
+    for a in areas:
+        if a.type == "structure" or a.name:
+            continue
+        cand = auto_id(level, a.id)
+        k = 1
+        while _key(cand) in taken:
+            k += 1
+            cand = f"{auto_id(level, a.id)}-{k}"
+        a.name = cand
+        taken.add(_key(cand))
+        report.auto += 1
+    progress.step(85, "typing areas")
+    _type_areas(areas, best_by_area, passages, rules, report)
+    progress.step(100, report.summary())
+    return report
+
+
+def _strong(r: TextRecord) -> bool:
+    """A name backed by more than its shortness: a room-name layer, block or tag, or a room keyword."""
+    return r.reason not in ("short text", "text layer")
+
+
+def _competing(recs: Sequence[TextRecord]) -> List[TextRecord]:
+    """The distinct room names of an area that compete for it, best first: the strong names when there
+    is one (a keyword-less short text beside 'Office' labels a thing in it, e.g. 'copy', 'coffee'),
+    else the short texts."""
+    names = sorted([r for r in recs if r.role == "name"], key=lambda r: (not _strong(r), -r.score, r.ids[0]))
+    strong = [r for r in names if _strong(r)]
+    pool = strong or names
+    out: List[TextRecord] = []
+    for r in pool:
+        if all(_key(r.text) != _key(d.text) for d in out):
+            out.append(r)
+    return out
+
+
+def _looks_auto(name: str) -> bool:
+    return bool(re.fullmatch(r"-?\w{1,6}-\d+(-\d+)?|L-?\w+-[ASP]\d+", name or ""))
+
+
+def _type_areas(areas, best_by_area, passages, rules: NameRules, report: NamesReport) -> None:
+    degree: Dict[int, int] = {}
+    for p in passages or []:
+        degree[p.from_id] = degree.get(p.from_id, 0) + 1
+        degree[p.to_id] = degree.get(p.to_id, 0) + 1
+    geo = dict({"min_elongation": 3.0, "max_width": 4.0, "min_degree": 3}, **rules.corridor_geometry)
+    for a in areas:
+        if a.type == "structure":
+            continue
+        for k in ("indoor", "room", "ref", "name"):
+            a.tags.pop(k, None)
+        named = bool(best_by_area.get(a.id))
+        entry = type_of_name(a.name, a.ref, rules) if named else None
+        rec = report.name_record.get(a.id)
+        # the text beats the symbol density of area_types when it says stairs/lift, or when it is the
+        # area's own label (inside, near the centre): a lobby is not a lift because lift lines cross it
+        own_label = rec is not None and rec.match == "inside" and rec.score >= 65.0
+        if entry is not None and (a.type not in ("stairs", "elevator") or entry["type"] in ("stairs", "elevator")
+                                  or own_label):
+            if entry["type"] != a.type:
+                report.typed[entry["type"]] = report.typed.get(entry["type"], 0) + 1
+            a.type = entry["type"]
+        elif entry is None and not named and a.type == "room" and _corridor_shaped(a, degree.get(a.id, 0), geo):
+            a.type = "corridor"
+            report.typed["corridor (geometry)"] = report.typed.get("corridor (geometry)", 0) + 1
+        # Simple Indoor Tagging
+        if a.type == "corridor":
+            indoor, room = "corridor", ""
+        elif a.type == "stairs":
+            indoor, room = "room", "stairs"
+        elif a.type == "elevator":
+            indoor, room = "room", "elevator"
+        else:
+            indoor = (entry or {}).get("indoor") or "room"
+            room = (entry or {}).get("room") or ""
+            if indoor == "corridor":
+                indoor = "area"
+        a.tags["indoor"] = indoor
+        if room:
+            a.tags["room"] = room
+        if a.ref:
+            a.tags["ref"] = a.ref
+
+
+def _corridor_shaped(a: Area, degree: int, geo: Dict[str, float]) -> bool:
+    if degree < geo["min_degree"]:
+        return False
+    rect = a.polygon.minimum_rotated_rectangle
+    xy = np.asarray(rect.exterior.coords)
+    if len(xy) < 4:
+        return False
+    e = np.hypot(*np.diff(xy[:3], axis=0).T)
+    length, width = max(e), min(e)
+    # the width that matters is the free width: area / length is robust to side niches
+    free_w = a.polygon.area / max(length, 1e-9)
+    return width > 0 and length / max(free_w, 1e-9) >= geo["min_elongation"] and free_w <= geo["max_width"]
+
+
+def osm_tags(area: Area) -> Dict[str, str]:
+    """The area's tags for the osmAG file: the label fields left out, a conflict as ``fixme``."""
+    tags = {k: v for k, v in (area.tags or {}).items() if k not in LABEL_FIELDS and not k.startswith("_")}
+    conflict = (area.tags or {}).get("label_conflict")
+    if conflict:
+        tags["fixme"] = f"several room names in one area: {area.name} | {conflict}"
+    return tags
+
+
+def for_osm(areas: Sequence[Area]) -> List[Area]:
+    """Copies of the areas with ``osm_tags`` (for writing osmAG without the layer-only fields)."""
+    from dataclasses import replace
+
+    return [replace(a, tags=osm_tags(a)) for a in areas]
+
+
+# ------------------------------------------------------------------------------------------ split
+def _split_area(a: Area, recs: List[TextRecord], names: Dict[str, TextRecord], grid, areas: List[Area],
+                passages: Optional[List[Passage]], labels) -> Optional[List[Area]]:
+    """Split area ``a`` between its different room names at the narrowings of its clearance map.
+
+    The clearance (distance to the area's border) is thresholded at growing half-widths t (0.2 m up to
+    half the widest door, 1.4 m): the first t at which two names fall into different cores is where
+    the narrowings are. Every core bigger than 2 m² (named or not: a corridor joining the rooms becomes
+    its own area) seeds a watershed of the clearance inside the area; a split is kept only when the
+    opening (2 t) is at most NARROWING_RATIO of the width of every piece. Returns the pieces (``a``
+    first, changed in place, the others appended to ``areas``) or None (no narrowing: a conflict)."""
+    from scipy import ndimage
+    import cv2
+
+    from .model import OccupancyGrid
+    from .segmentation import label_polygons
+
+    poly = a.polygon
+    if poly.geom_type != "Polygon":
+        return None
+    res = float(grid.resolution) if grid is not None else 0.05
+    x0, y0, x1, y1 = poly.bounds
+    while (x1 - x0) * (y1 - y0) / (res * res) > 6e6:
+        res *= 1.5
+    pad = 3
+    cols = int(math.ceil((x1 - x0) / res)) + 2 * pad
+    rows = int(math.ceil((y1 - y0) / res)) + 2 * pad
+    ox, oy = x0 - pad * res, y1 + pad * res
+
+    def to_px(xy):
+        xy = np.asarray(xy, float)
+        return np.column_stack(((xy[:, 0] - ox) / res, (oy - xy[:, 1]) / res))
+
+    mask = np.zeros((rows, cols), np.uint8)
+    cv2.fillPoly(mask, [np.round(to_px(poly.exterior.coords) * 8).astype(np.int32)], 1, shift=3)
+    for hole in poly.interiors:
+        cv2.fillPoly(mask, [np.round(to_px(hole.coords) * 8).astype(np.int32)], 0, shift=3)
+    inside = mask.astype(bool)
+    if inside.sum() < 20:
+        return None
+    clearance = ndimage.distance_transform_edt(inside) * res
+    keys = list(names)
+    seeds: Dict[str, List[Tuple[int, int]]] = {k: [] for k in keys}
+    rr, cc = np.nonzero(inside)
+    for r in recs:
+        k = _key(r.text)
+        if r.role != "name" or k not in seeds:
+            continue
+        c, rw = to_px([(r.x, r.y)])[0]
+        ci, ri = int(c), int(rw)
+        if not (0 <= ri < rows and 0 <= ci < cols and inside[ri, ci]):
+            j = int(np.argmin((rr - rw) ** 2 + (cc - c) ** 2))
+            ri, ci = int(rr[j]), int(cc[j])
+        seeds[k].append((ri, ci))
+    min_core_px = 2.0 / (res * res)
+    found = None
+    for t in np.arange(0.2, 1.41, 0.1):
+        core = clearance > t
+        comp, n = ndimage.label(core)
+        if n < 2:
+            continue
+        # a seed outside the core belongs to the core nearest to it
+        cr = cc_ = None
+        owner = {}
+        for k in keys:
+            cs = set()
+            for (pr, pc) in seeds[k]:
+                if core[pr, pc]:
+                    cs.add(int(comp[pr, pc]))
+                    continue
+                if cr is None:
+                    cr, cc_ = np.nonzero(core)
+                j = int(np.argmin((cr - pr) ** 2 + (cc_ - pc) ** 2))
+                cs.add(int(comp[cr[j], cc_[j]]))
+            owner[k] = min(cs)
+        if len(set(owner.values())) >= 2:
+            found = (t, comp, n, owner)
+            break
+    if found is None:
+        return None
+    t, comp, n, owner = found
+    sizes = ndimage.sum(np.ones_like(comp), comp, index=np.arange(1, n + 1))
+    keep = {i + 1 for i, sz in enumerate(sizes) if sz >= min_core_px} | set(owner.values())
+    markers = np.where(np.isin(comp, list(keep)), comp, 0).astype(np.int32)
+    cost = np.full((rows, cols), 65535, np.uint16)
+    cmax = max(float(clearance.max()), 1e-9)
+    cost[inside] = np.round(60000 * (1.0 - clearance[inside] / cmax)).astype(np.uint16)
+    reg = ndimage.watershed_ift(cost, markers)
+    reg[~inside] = 0
+    present = [k for k in sorted(keep) if (reg == k).any()]
+    if len(present) < 2:
+        return None
+    for k in present:  # the opening must be clearly narrower than every piece
+        if 2 * t > NARROWING_RATIO * 2.0 * float(clearance[reg == k].max()):
+            return None
+    # cells tiling the window: every pixel takes the region of the nearest area pixel
+    _, (ir, ic) = ndimage.distance_transform_edt(reg == 0, return_indices=True)
+    cells = reg[ir, ic].astype(np.int32)
+    cell_polys = label_polygons(cells, OccupancyGrid(cells, ox, oy, res))
+    pieces = []
+    for k in present:
+        cp = cell_polys.get(k)
+        if cp is None:
+            return None
+        g = poly.intersection(cp)
+        if g.is_empty:
+            continue
+        if g.geom_type != "Polygon":
+            parts = [p for p in getattr(g, "geoms", []) if p.geom_type == "Polygon" and p.area > 0]
+            if not parts:
+                continue
+            g = max(parts, key=lambda p: p.area)
+        pieces.append((g, {kk for kk, o in owner.items() if o == k}))
+    if len(pieces) < 2 or sum(1 for _, ks in pieces if ks) < 2:
+        return None
+    # what the intersections left over (slivers) joins the piece it touches most
+    from shapely.ops import unary_union
+
+    rest = poly.difference(unary_union([g for g, _ in pieces]))
+    for frag in getattr(rest, "geoms", [rest]):
+        if frag.is_empty or frag.area <= 0:
+            continue
+        j = max(range(len(pieces)), key=lambda i: pieces[i][0].buffer(1e-6).intersection(frag).area)
+        merged = unary_union([pieces[j][0], frag])
+        if merged.geom_type == "Polygon":
+            pieces[j] = (merged, pieces[j][1])
+    pieces = _straighten(pieces, res)
+    return _finish(a, pieces, areas, passages, labels, grid, recs, t)
+
+
+def _straighten(pieces, res: float):
+    """Replace the pixel staircase between two pieces by its Douglas-Peucker simplification (1.5 px):
+    the union of the two is cut again along the simplified line. Kept only when the cut gives exactly
+    two parts whose areas stay within 5 % of the staircase pieces."""
+    from shapely.ops import linemerge, unary_union
+
+    pieces = list(pieces)
+    for i in range(len(pieces)):
+        for j in range(i + 1, len(pieces)):
+            gi, gj = pieces[i][0], pieces[j][0]
+            try:
+                shared = gi.boundary.intersection(gj.boundary)
+                lines = [g for g in getattr(shared, "geoms", [shared]) if g.geom_type == "LineString" and g.length > 0]
+                if not lines:
+                    continue
+                chain = linemerge(lines)
+                if chain.geom_type != "LineString" or len(chain.coords) <= 2:
+                    continue
+                simple = chain.simplify(1.5 * res, preserve_topology=False)
+                c = np.asarray(simple.coords)
+                d0, d1 = c[0] - c[1], c[-1] - c[-2]
+                ext = 3 * res
+                c0 = c[0] + d0 / max(np.hypot(*d0), 1e-12) * ext
+                c1 = c[-1] + d1 / max(np.hypot(*d1), 1e-12) * ext
+                cut = LineString([tuple(c0)] + [tuple(p) for p in c] + [tuple(c1)])
+                both = unary_union([gi, gj])
+                parts = [g for g in shp_split(both, cut).geoms if g.area > 0]
+                if len(parts) != 2:
+                    continue
+                ni = max(parts, key=lambda g: g.intersection(gi).area)
+                nj = parts[1] if ni is parts[0] else parts[0]
+                if abs(ni.area - gi.area) > 0.05 * gi.area or abs(nj.area - gj.area) > 0.05 * gj.area:
+                    continue
+                pieces[i] = (ni, pieces[i][1])
+                pieces[j] = (nj, pieces[j][1])
+            except Exception:
+                continue
+    return pieces
+
+
+def _finish(a: Area, pieces, areas: List[Area], passages, labels, grid, recs, t: float):
+    from dataclasses import replace
+
+    # the piece holding the best-ranked name keeps the area's id; unnamed pieces (corridors) come last
+    best_rec = _competing(recs)[0]
+    bk = _key(best_rec.text)
+    pieces.sort(key=lambda pk: (0 if bk in pk[1] else 1 if pk[1] else 2))
+    next_id = max(x.id for x in areas) + 1
+    out = []
+    for n, (g, _) in enumerate(pieces):
+        if n == 0:
+            a.polygon = g
+            out.append(a)
+        else:
+            b = replace(a, id=next_id, polygon=g, name="", ref="", tags=dict(a.tags),
+                        max_clearance=0.0)
+            next_id += 1
+            areas.append(b)
+            out.append(b)
+    # texts follow the piece they lie in (nearby texts: the nearest piece)
+    for r in recs:
+        p = Point(r.x, r.y)
+        r.area_id = min(out, key=lambda b: b.polygon.distance(p)).id
+    new_pass = []
+    if passages is not None:
+        for p in passages:
+            for end in ("from_id", "to_id"):
+                if getattr(p, end) == a.id:
+                    mid = p.line.interpolate(0.5, normalized=True)
+                    setattr(p, end, min(out, key=lambda b: b.polygon.distance(mid)).id)
+        pid = max([p.id for p in passages] + [0]) + 1
+        from shapely.ops import linemerge
+
+        for i in range(len(out)):
+            for j in range(i + 1, len(out)):
+                shared = out[i].polygon.boundary.intersection(out[j].polygon.boundary)
+                lines = [g for g in getattr(shared, "geoms", [shared]) if g.geom_type == "LineString" and g.length > 0]
+                if not lines:
+                    continue
+                merged = linemerge(lines)
+                for ln in getattr(merged, "geoms", [merged]):
+                    if ln.length < 0.3:
+                        continue
+                    passages.append(Passage(id=pid, from_id=out[i].id, to_id=out[j].id,
+                                            line=LineString([ln.coords[0], ln.coords[-1]])))
+                    new_pass.append(pid)
+                    pid += 1
+    if labels is not None and grid is not None:
+        _relabel(labels, grid, a.id, out)
+    a.tags["_new_passages"] = new_pass
+    return out
+
+
+def _relabel(labels: np.ndarray, grid, old_id: int, pieces: List[Area]) -> None:
+    import cv2
+
+    rows, cols = labels.shape
+    sel = labels == old_id
+    if not sel.any():
+        return
+    for b in pieces[1:]:
+        m = np.zeros((rows, cols), np.uint8)
+        xs, ys = np.asarray(b.polygon.exterior.coords).T
+        c, r = grid.world_to_pixel(xs, ys)
+        cv2.fillPoly(m, [np.round(np.column_stack((c, r)) * 8).astype(np.int32)], 1, shift=3)
+        labels[sel & m.astype(bool)] = b.id
+
+
+__all__ = ["NameRules", "load_name_rules", "default_name_rules", "normalize_text", "strip_xref", "classify_text",
+           "classify_labels", "group_lines", "room_name_points", "score", "assign_names", "NamesReport",
+           "TextRecord", "type_of_name", "floor_figures", "protect_labelled_areas", "restore_types", "auto_id", "osm_tags", "for_osm", "LABEL_FIELDS", "RHO_MAX", "D_MAX"]

@@ -1,0 +1,65 @@
+"""scripts/evaluate_cad.py (make evaluate-cad): per-plan figures on any folder of drawings."""
+import importlib.util
+import json
+import subprocess
+import sys
+
+import pytest
+
+from algorithms.sample_building import generate_building
+
+from .conftest import REPO
+
+
+def _module():
+    spec = importlib.util.spec_from_file_location("evaluate_cad", REPO / "scripts" / "evaluate_cad.py")
+    mod = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(mod)
+    return mod
+
+
+@pytest.fixture(scope="module")
+def folder(tmp_path_factory):
+    d = tmp_path_factory.mktemp("plans")
+    generate_building(str(d), floors=1, seed=0)
+    (d / "broken.dxf").write_text("0\nSECTION\n2\nENTITIES\n0\nLINE\n8\n0\n10\nnot-a-number\n")
+    (d / "notes.txt").write_text("not a drawing")
+    return d
+
+
+def test_figures_per_plan_on_a_folder(folder, tmp_path, capsys):
+    ev = _module()
+    out = tmp_path / "fig.json"
+    rc = ev.main(["--data", str(folder), "--json", str(out)])
+    assert rc == 1  # the broken drawing failed
+    printed = capsys.readouterr().out
+    assert "sample-F1.dxf" in printed and "broken.dxf" in printed and "notes.txt" not in printed
+    data = json.loads(out.read_text())
+    plans = {p["plan"]: p for p in data["plans"]}
+    assert set(plans) == {"sample-F1.dxf", "broken.dxf"}
+    bad = plans["broken.dxf"]
+    assert not bad["ok"] and bad["error"] and "Traceback" not in bad["error"]
+    s = plans["sample-F1.dxf"]
+    # the sample building: every room name is inside an area and names an area of its own
+    assert s["ok"] and s["room_texts"] == 18 and s["inside_pct"] == 100.0 and s["own_area_pct"] == 100.0
+    assert s["named_areas"] == 18 and s["conflicts"] == 0 and s["semantic_accuracy_pct"] == 100.0
+    assert s["stairs"] == 1 and s["elevators"] == 1 and s["largest_component_pct"] >= 95.0
+    assert s["areas"] >= 18 and s["passages"] >= 17
+    tot = data["totals"]
+    assert tot["plans"] == 2 and tot["converted"] == 1 and tot["own_area_pct"] == 100.0
+
+
+def test_command_line_and_empty_folder(tmp_path):
+    script = str(REPO / "scripts" / "evaluate_cad.py")
+    proc = subprocess.run([sys.executable, script, "--data", str(tmp_path)], capture_output=True, text=True,
+                          timeout=120)
+    assert proc.returncode == 2 and "no .dxf or .dwg drawing" in proc.stderr
+    (tmp_path / "empty.dxf").write_text("")
+    proc = subprocess.run([sys.executable, script, "--data", str(tmp_path)], capture_output=True, text=True,
+                          timeout=120)
+    assert proc.returncode == 1 and "empty.dxf" in proc.stdout and " no " in proc.stdout
+
+
+def test_makefile_target(repo_root):
+    mk = (repo_root / "Makefile").read_text()
+    assert "evaluate-cad:" in mk and "scripts/evaluate_cad.py $(if $(DATA),--data $(DATA),)" in mk

@@ -1,0 +1,130 @@
+"""Interoperability: the osmAG authors' own C++ parser and planner (../shared/tools/osmag-client) reads
+every fix-id file we write (one floor, and a merged building) and plans a route between two distant
+passages. Slow: it builds the client once (build.sh installs the Eigen/OpenCV headers it needs through
+apt; `make install` lists them too)."""
+import os
+import re
+import subprocess
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+from algorithms import building, osmag, pipeline
+from algorithms.georef import LocalFrame
+from algorithms.sample_building import generate_building
+
+from .conftest import REPO
+
+pytestmark = pytest.mark.slow
+ANCHOR = (121.5906, 31.1790)
+TOOL = Path(os.environ.get("CAD2OSMAG_OSMAG_CLIENT", REPO.parent / "shared" / "tools" / "osmag-client"))
+
+
+@pytest.fixture(scope="module")
+def client(tmp_path_factory):
+    build = TOOL / "build.sh"
+    if not build.exists():
+        pytest.skip(f"the osmAG client sources are missing ({build})")
+    out = os.environ.get("OSMAG_CLIENT_DIR") or str(tmp_path_factory.getbasetemp().parent / "osmag-client")
+    try:
+        proc = subprocess.run(["bash", str(build), out], capture_output=True, text=True, timeout=1200)
+    except subprocess.TimeoutExpired:
+        pytest.skip("building the osmAG client took more than 20 minutes")
+    binary = proc.stdout.strip().splitlines()[-1] if proc.stdout.strip() else ""
+    if proc.returncode != 0 or not os.access(binary, os.X_OK):
+        pytest.skip("the osmAG client cannot be built here (needs g++, libeigen3-dev, libopencv-core-dev, "
+                    f"libopencv-imgproc-dev; apt failed?): {proc.stderr[-800:]}")
+    return binary
+
+
+@pytest.fixture(scope="module")
+def floors(tmp_path_factory):
+    folder = tmp_path_factory.mktemp("client")
+    s = generate_building(str(folder), floors=2, seed=1)
+    files = []
+    for k, dxf in enumerate(s["dxf"], 1):
+        files.append(str(folder / f"sample-F{k}.osm"))
+        pipeline.convert_dxf(dxf, files[-1], anchor_lon=ANCHOR[0], anchor_lat=ANCHOR[1], level=str(k),
+                             variant="fix-id")
+    return folder, files
+
+
+def _run(client, *args, timeout=600):
+    proc = subprocess.run([client, *map(str, args)], capture_output=True, text=True, timeout=timeout,
+                          cwd=os.path.dirname(client))
+    return proc.returncode, proc.stdout + proc.stderr
+
+
+def _passages(client, path):
+    code, out = _run(client, path)
+    assert code == 0 and "PARSE FAILED" not in out, out[-2000:]
+    return {int(m[0]): (int(m[1]), int(m[2]), m[3]) for m in
+            re.findall(r"^passage (-?\d+) from (-?\d+) to (-?\d+) name=(.*)$", out, re.M)}
+
+
+def _distant_pair(path, level_a, level_b):
+    """The two passages (way ids) of the given levels farthest apart."""
+    areas, passages, root, _ = osmag.read_osmag(path)
+    _, passages = osmag.to_frame([], passages, LocalFrame(*root))
+    cand_a = [p for p in passages if p.tags.get("level") == level_a and "osmAG:vertical" not in p.tags]
+    cand_b = [p for p in passages if p.tags.get("level") == level_b and "osmAG:vertical" not in p.tags]
+    best = max(((np.hypot(*(np.asarray(a.line.centroid.coords[0]) - b.line.centroid.coords[0])), a.id, b.id)
+                for a in cand_a for b in cand_b if a.id != b.id))
+    return best
+
+
+def _route(client, path, start, end):
+    code, out = _run(client, path, start, end)
+    assert code == 0, out[-2000:]
+    m = re.search(r"METRIC PATH (\d+) points", out)
+    assert m and int(m.group(1)) >= 2, out[-2000:]
+    chain = re.search(r"The shortest path from .* is : (.*)", out)
+    return int(m.group(1)), chain.group(1) if chain else ""
+
+
+def test_one_floor_parses_and_routes(client, floors):
+    _, files = floors
+    parsed = _passages(client, files[0])
+    _, passages, _, _ = osmag.read_osmag(files[0])
+    assert set(parsed) == {p.id for p in passages}  # every passage, with its two areas
+    for p in passages:
+        assert parsed[p.id][:2] == (p.from_id, p.to_id)
+    dist, a, b = _distant_pair(files[0], "1", "1")
+    assert dist > 15
+    n, chain = _route(client, files[0], a, b)
+    assert n > 10
+
+
+def test_merged_building_parses_and_routes_across_floors(client, floors, tmp_path):
+    _, files = floors
+    out = tmp_path / "building.osm"
+    st = building.merge_floor_files(files, str(out), building_name="Sample")
+    assert st["variant"] == "fix-id" and st["vertical_passages"] == 2
+    parsed = _passages(client, out)
+    _, passages, _, _ = osmag.read_osmag(str(out))
+    assert set(parsed) == {p.id for p in passages}
+    vertical = {p.id for p in passages if p.tags.get("osmAG:vertical") == "yes"}
+    assert len(vertical) == 2
+    dist, a, b = _distant_pair(str(out), "1", "2")
+    n, chain = _route(client, out, a, b)
+    names = {p.id: p.name for p in passages}
+    # the route goes up through a stair or lift link
+    assert any(names[v] in chain for v in vertical), chain
+
+
+def test_real_two_level_map_fused_by_us_parses(client, tmp_path):
+    """The osmAG authors' own two-level SIST map, split into floors and fused again by us (fix-id, with
+    8 vertical passages between its stairs and lifts), is read back by their parser: every passage."""
+    src = REPO.parent / "shared" / "data" / "osmag" / "semantic_tags_SIST_1.osm"
+    if not src.exists():
+        pytest.skip(f"{src} is missing")
+    areas, passages, root, _ = osmag.read_osmag(str(src))
+    frame = osmag.frame_from_root(root)
+    out = tmp_path / "sist_fused.osm"
+    st = building.fuse_floors(building.floors_from_layers(areas, passages, frame), str(out), frame,
+                              variant="fix-id")
+    assert st["vertical_passages"] == 8
+    parsed = _passages(client, out)
+    _, ours, _, _ = osmag.read_osmag(str(out))
+    assert set(parsed) == {p.id for p in ours} and len(parsed) == st["passages"]
