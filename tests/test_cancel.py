@@ -21,6 +21,7 @@ from .test_fuzz_dxf import base_dxf
 STOP_WITHIN = 2.0  # seconds
 # process_floor's stages in convert_dxf's percent (floor = 0..90 %, export 90..97 %)
 STAGES = {"cad_import": (0.0, 22.5), "rasterize": (22.5, 31.5), "segment": (31.5, 72.0), "refine": (72.0, 85.5),
+          "names": (85.5, 90.0),
           "export": (90.0, 97.0)}
 
 
