@@ -107,6 +107,31 @@ def test_cancel_in_each_stage_of_the_sample_floor_stops_at_once_and_writes_nothi
     print("longest CPU gap between cancel checks per stage (s):", figures)
 
 
+def test_cancel_after_the_file_is_written_removes_it(tmp_path):
+    """The last checks of a run come after the osmAG file (and the preview) are written: a cancel there
+    must remove them (found on SIST-F3: the export stage left f.osm behind)."""
+    run = _convert(base_dxf())
+    ref = Timeline()
+    run(tmp_path / "ref", ref)
+    assert ref.checks[-1][1] >= 97.0  # the checks of the final steps, after the write
+    for k in (1, 2, 3):
+        folder = tmp_path / f"last{k}"
+        folder.mkdir()
+        with pytest.raises(Canceled):
+            run(folder, Timeline(cancel_at=len(ref.checks) - k))
+        assert list(folder.iterdir()) == [], k
+
+
+def test_a_file_this_run_did_not_write_is_kept(tmp_path):
+    folder = tmp_path / "out"
+    folder.mkdir()
+    old = folder / "f.osm"
+    old.write_text("an earlier result")
+    with pytest.raises(Canceled):  # canceled before the export
+        _convert(base_dxf())(folder, Timeline(cancel_at=3))
+    assert old.read_text() == "an earlier result"
+
+
 def test_cancel_before_export_leaves_no_file(tmp_path, monkeypatch):
     """The last moment: canceled while the osmAG file is being written (the atomic write is undone)."""
     from algorithms import osmag
