@@ -4,6 +4,7 @@ in drawing units. See cad_import for the conventions."""
 from __future__ import annotations
 
 import math
+import os
 import re
 from dataclasses import dataclass, field
 from typing import Dict, Iterable, List, Optional, Tuple
@@ -15,6 +16,9 @@ from .cad_units import _header_unit
 from .errors import InputError
 
 MAX_SEGMENTS_PER_TURN = 1024
+# entities a drawing may explode into (nested blocks and MINSERT arrays multiply): a real floor explodes
+# into 10^4-10^5; a block bomb or 10^6 copies of one line stop with advice before filling the memory
+MAX_EXPLODED = 1_000_000
 
 SKIP_TYPES = {"DIMENSION", "ARC_DIMENSION", "LARGE_RADIAL_DIMENSION", "LEADER", "MLEADER", "MULTILEADER",
               "TOLERANCE", "POINT", "VIEWPORT", "IMAGE", "WIPEOUT", "ATTDEF", "XLINE", "RAY", "REGION",
@@ -252,6 +256,38 @@ def _transform_pieces(src: _Pieces, A: np.ndarray, t: np.ndarray, layer: str, ds
     dst.xrefs.extend(src.xrefs)
 
 
+def _minsert_offsets(e, rows: int, cols: int, ex, name: str) -> np.ndarray:
+    """WCS translations (x, y) of the copies of a MINSERT grid, as ezdxf's ``multi_insert`` places them
+    (offsets in the insert's OCS, rotated with the insert, not scaled; coinciding copies once), without
+    building one virtual INSERT per copy (10^6 of them took a minute)."""
+    cs = float(e.dxf.get("column_spacing", 0.0) or 0.0)
+    rs = float(e.dxf.get("row_spacing", 0.0) or 0.0)
+    ncol = cols if cs != 0.0 else 1
+    nrow = rows if rs != 0.0 else 1
+    if nrow * ncol > MAX_EXPLODED:  # stop before allocating the offsets
+        ex._spend(name, nrow * ncol, 1)
+    r, c = np.meshgrid(np.arange(nrow, dtype=np.float64), np.arange(ncol, dtype=np.float64), indexing="ij")
+    off = np.column_stack([c.ravel() * cs, r.ravel() * rs])  # row-major, like multi_insert
+    rot = math.radians(float(e.dxf.get("rotation", 0.0) or 0.0))
+    if rot:
+        cr, sr = math.cos(rot), math.sin(rot)
+        off = off @ np.array(((cr, sr), (-sr, cr)))
+    ux, uy = _ocs_axes_2d(_extrusion(e))
+    return off[:, :1] * ux + off[:, 1:2] * uy
+
+
+def _ocs_axes_2d(extrusion):
+    """x and y (of WCS) of the OCS axes ux, uy for an extrusion vector."""
+    try:
+        from ezdxf.math import OCS
+
+        ocs = OCS(extrusion)
+        ux, uy = ocs.to_wcs((1.0, 0.0, 0.0)), ocs.to_wcs((0.0, 1.0, 0.0))
+        return np.array((ux[0], ux[1]), dtype=np.float64), np.array((uy[0], uy[1]), dtype=np.float64)
+    except Exception:
+        return np.array((1.0, 0.0)), np.array((0.0, 1.0))
+
+
 # ------------------------------------------------------------------------------------------ text
 _MTEXT_FALLBACK = re.compile(r"\\[A-Za-z][^;\\{}]*;|\\[PpNn~]|[{}]")
 
@@ -307,6 +343,7 @@ class _Exploder:
         self.done = 0
         self.warnings: List[str] = []
         self._warned = set()
+        self.produced = 0  # entities added by exploding INSERTs (see MAX_EXPLODED)
 
     def _warn_once(self, key, msg):
         if key not in self._warned:
@@ -522,29 +559,39 @@ class _Exploder:
             for r in rings:
                 out.add(r, layer, "HATCH", True, False)
 
+    def _spend(self, name: str, copies: int, pieces: int) -> None:
+        """Count the entities an INSERT adds and stop before a block bomb or a giant MINSERT array
+        (nested blocks multiply) allocates them."""
+        self.produced += copies * pieces
+        if self.produced > MAX_EXPLODED:
+            raise InputError(
+                f"exploding the blocks gives more than {MAX_EXPLODED:,} entities (the last INSERT: block '{name}', "
+                f"{copies:,} {'copy' if copies == 1 else 'copies'} of {pieces:,} entities): the drawing nests blocks "
+                "too deeply, repeats one entity massively or holds a huge MINSERT array; purge or explode those "
+                "blocks in CAD (OVERKILL removes duplicates) and export again")
+
     def _insert(self, e, layer, out):
         name = e.dxf.name
         if layer != "0" and not self.visible(layer, frozen_only=True):
             return
-        if e.dxf.get("row_count", 1) > 1 or e.dxf.get("column_count", 1) > 1:
-            inserts = list(e.multi_insert())
-        else:
-            inserts = [e]
-        blk = None
-        for ins in inserts:
-            m = ins.matrix44()
-            A = np.array(((m[0, 0], m[1, 0]), (m[0, 1], m[1, 1])), dtype=np.float64)
-            t = np.array((m[3, 0], m[3, 1]), dtype=np.float64)
-            if blk is None:
-                # an enlarged block needs a finer tolerance in its own units (powers of 2 keep the cache small)
-                s = float(np.linalg.norm(A, 2))
-                tol = self.tol / (2.0 ** math.ceil(math.log2(s))) if s > 1.0 + 1e-9 else self.tol
-                blk = self.block(name, tol)
-            _transform_pieces(blk, A, t, layer, out, self._inherited_ok, name)
-            # attributes are stored in the parent's coordinates already
-            for a in ins.attribs:
-                if a.is_invisible if hasattr(a, "is_invisible") else False:
-                    continue
+        rows = int(e.dxf.get("row_count", 1) or 1)
+        cols = int(e.dxf.get("column_count", 1) or 1)
+        offsets = np.zeros((1, 2))
+        if rows > 1 or cols > 1:
+            offsets = _minsert_offsets(e, rows, cols, self, name)
+        m = e.matrix44()
+        A = np.array(((m[0, 0], m[1, 0]), (m[0, 1], m[1, 1])), dtype=np.float64)
+        t = np.array((m[3, 0], m[3, 1]), dtype=np.float64)
+        # an enlarged block needs a finer tolerance in its own units (powers of 2 keep the cache small)
+        s = float(np.linalg.norm(A, 2))
+        tol = self.tol / (2.0 ** math.ceil(math.log2(s))) if s > 1.0 + 1e-9 else self.tol
+        blk = self.block(name, tol)
+        self._spend(name, len(offsets), len(blk) + len(blk.texts))
+        attribs = [a for a in e.attribs if not (a.is_invisible if hasattr(a, "is_invisible") else False)]
+        for d in offsets:
+            _transform_pieces(blk, A, t + d, layer, out, self._inherited_ok, name)
+            # attributes are stored in the parent's coordinates already (a MINSERT shifts them per copy)
+            for a in attribs:
                 alay = a.dxf.get("layer", "0") or "0"
                 if alay == "0":
                     alay = layer
@@ -555,7 +602,7 @@ class _Exploder:
                     p = a.dxf.insert
                     if (a.dxf.get("halign", 0) or a.dxf.get("valign", 0)) and a.dxf.hasattr("align_point"):
                         p = a.dxf.align_point
-                    out.texts.append((float(p[0]), float(p[1]), txt, float(a.dxf.get("height", 1.0)),
+                    out.texts.append((float(p[0]) + d[0], float(p[1]) + d[1], txt, float(a.dxf.get("height", 1.0)),
                                       float(a.dxf.get("rotation", 0.0)), alay, "ATTRIB", name,
                                       str(a.dxf.get("tag", "") or "")))
 
@@ -591,6 +638,10 @@ def _explode(path: str, tol_du: float, progress, doc=None, repairs=None) -> _Raw
 
     msp = doc.modelspace()
     n = len(msp)
+    if n > MAX_EXPLODED:
+        raise InputError(f"'{os.path.basename(path)}' holds {n:,} entities in model space, more than the "
+                         f"{MAX_EXPLODED:,} a floor plan needs: remove duplicates (OVERKILL) or copies in CAD, "
+                         "or export only the floor's layers")
     ex = _Exploder(doc, tol_du, visible, progress, n)
     out = _Pieces()
     ex.entities(msp, out, top=True)

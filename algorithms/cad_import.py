@@ -33,6 +33,7 @@ Conventions
 """
 from __future__ import annotations
 
+import math
 import os
 import time
 from typing import Dict, List, Optional, Sequence, Tuple
@@ -280,17 +281,29 @@ def import_dxf(path: str, rules=None, layers: Optional[Sequence[str]] = None, un
     p = raw.pieces
     geoms = []
     chains = []
+    nonfinite = 0
     for i in idx:
         c = p.coords[i]
         if len(c) < 2 and not p.filled[i]:
+            continue
+        sep = np.isnan(c).all(axis=1) if p.filled[i] else np.zeros(len(c), bool)  # NaN rows separate rings
+        v = c[~sep]
+        if not bool(np.isfinite(v).all()) or abs(scale) * float(np.abs(v).max(initial=0.0)) > 1e15:
+            # NaN/inf, or a coordinate beyond any building (1e15 m) that overflows downstream
+            nonfinite += 1
             continue
         geoms.append(CadGeometry(layer=p.layer[i], kind=infos[p.layer[i]].kind, coords=c * scale,
                                  closed=p.closed[i], filled=p.filled[i], width=p.width[i] * scale,
                                  entity=p.etype[i], block=innermost_block(p.block[i])))
         chains.append(p.block[i])
+    if nonfinite:
+        msg = (f"left out {nonfinite} entities with coordinates that are not finite numbers (NaN or infinite, "
+               "a damaged file or a broken block scale); check the drawing with AUDIT in CAD")
+        warnings.append(msg)
+        progress.warning(msg)
     texts = [CadText(x=t[0] * scale, y=t[1] * scale, text=t[2], height=t[3] * scale, rotation=t[4],
                      layer=t[5], entity=t[6], block=innermost_block(t[7]), tag=t[8])
-             for t in p.texts]
+             for t in p.texts if math.isfinite(t[0] * scale) and math.isfinite(t[1] * scale)]
     doors: List[DoorHint] = []
     classes: Dict[str, int] = {}
     t1 = time.perf_counter()

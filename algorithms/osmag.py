@@ -30,6 +30,7 @@ references and unclosed ways instead of failing on them.
 """
 from __future__ import annotations
 
+import math
 import os
 import xml.etree.ElementTree as ET
 from dataclasses import dataclass
@@ -474,7 +475,8 @@ def read_osmag(path: str, progress=None):
     - ``report``: ``variant`` (semantic | fix-id | mixed | none), ``nodes``, ``ways``, ``unclosed``
       (way ids), ``dangling_nodes`` ({way id: [missing node ids]}), ``dangling_refs`` (list of
       (way id, key, value) that name no area), ``warnings`` (readable lines), ``parents`` ({area id:
-      parent area id}).
+      parent area id}), ``duplicate_ids`` ({"node": [...], "way": [...]}: ids defined more than once;
+      the first definition is used).
     Raises InputError if the file is missing, not OSM XML, or holds no osmAG area.
     """
     from shapely.geometry import LineString, Polygon
@@ -495,16 +497,28 @@ def read_osmag(path: str, progress=None):
     node_tags: Dict[int, Dict[str, str]] = {}
     ways: List[Tuple[int, List[int], Dict[str, str]]] = []
     warnings: List[str] = []
+    duplicates: Dict[str, List[int]] = {"node": [], "way": []}
+    way_ids = set()
     for el in osm:
         if el.get("action") == "delete":
             continue
         if el.tag == "node":
             try:
                 nid = int(el.get("id"))
-                nodes[nid] = (float(el.get("lon")), float(el.get("lat")))
+                pos = (float(el.get("lon")), float(el.get("lat")))
             except (TypeError, ValueError):
                 warnings.append(f"node {el.get('id')!r} has no valid id/lat/lon; ignored")
                 continue
+            if not (math.isfinite(pos[0]) and math.isfinite(pos[1]) and abs(pos[1]) <= 90 and abs(pos[0]) <= 180):
+                warnings.append(f"node {nid} has an invalid position (lat {el.get('lat')}, lon {el.get('lon')}); "
+                                "ignored")
+                continue
+            if nid in nodes:  # a broken merge or a hand edit: the first definition wins, and it is reported
+                duplicates["node"].append(nid)
+                warnings.append(f"node {nid} is defined twice; the second definition (lat {pos[1]}, lon {pos[0]}) "
+                                "is ignored: give every node its own id")
+                continue
+            nodes[nid] = pos
             t = {c.get("k"): c.get("v") for c in el if c.tag == "tag"}
             if t:
                 node_tags[nid] = t
@@ -514,7 +528,17 @@ def read_osmag(path: str, progress=None):
             except (TypeError, ValueError):
                 warnings.append(f"way {el.get('id')!r} has no valid id; ignored")
                 continue
-            refs = [int(c.get("ref")) for c in el if c.tag == "nd"]
+            if wid in way_ids:
+                duplicates["way"].append(wid)
+                warnings.append(f"way {wid} is defined twice; the second definition is ignored: give every way "
+                                "its own id")
+                continue
+            way_ids.add(wid)
+            try:
+                refs = [int(c.get("ref")) for c in el if c.tag == "nd"]
+            except (TypeError, ValueError):
+                warnings.append(f"way {wid} has a node reference that is not a number; ignored")
+                continue
             t = {c.get("k"): c.get("v") for c in el if c.tag == "tag"}
             ways.append((wid, refs, t))
     progress.step(40)
@@ -616,7 +640,8 @@ def read_osmag(path: str, progress=None):
                else "fix-id" if not kinds["name"] else "mixed")
     report = {"variant": variant, "nodes": len(nodes), "ways": len(ways), "areas": len(areas),
               "passages": len(passages), "unclosed": unclosed, "dangling_nodes": dangling_nodes,
-              "dangling_refs": dangling_refs, "parents": parents, "warnings": warnings, "root": root}
+              "dangling_refs": dangling_refs, "parents": parents, "warnings": warnings, "root": root,
+              "duplicate_ids": duplicates}
     for w in warnings:
         progress.warning(w)
     progress.step(100, f"osmAG: read {len(areas)} areas, {len(passages)} passages ({variant} variant), "

@@ -7,6 +7,8 @@ and scripts. Outputs are written atomically, and only after every stage succeede
 """
 from __future__ import annotations
 
+import contextlib
+import os
 import time
 from dataclasses import dataclass, field
 from typing import Dict, Optional, Sequence
@@ -129,17 +131,31 @@ def convert_dxf(dxf_path: str, out_osm: str, *, preview_png: Optional[str] = Non
     frame = LocalFrame(anchor_lon, anchor_lat, rotation_deg=rotation_deg, scale=scale)
     floor = process_floor(dxf_path, level=level, progress=progress.sub(0, 90), **floor_kwargs)
     structure = [floor.floor_area] if floor.floor_area is not None else []
-    t0 = time.perf_counter()
-    written = osmag.write_osmag(out_osm, semantics.for_osm(floor.refined.areas), floor.refined.passages,
-                                frame=frame, level=level,
-                                height=height, variant=variant, structure_areas=structure,
-                                progress=progress.sub(90, 97))
-    floor.stats["timings"]["export"] = time.perf_counter() - t0
-    if preview_png:
-        from .preview import render_preview
+    def _stamp(p):
+        with contextlib.suppress(OSError):
+            st = os.stat(p)
+            return (st.st_ino, st.st_mtime_ns, st.st_size)
+        return None
 
-        render_preview(floor.grid, floor.refined, preview_png)
-    progress.step(100)
+    before = {p: _stamp(p) for p in (out_osm, preview_png) if p}
+    try:  # a cancel (or a failed preview) after the osmAG file was written must not leave it behind
+        t0 = time.perf_counter()
+        written = osmag.write_osmag(out_osm, semantics.for_osm(floor.refined.areas), floor.refined.passages,
+                                    frame=frame, level=level,
+                                    height=height, variant=variant, structure_areas=structure,
+                                    progress=progress.sub(90, 97))
+        floor.stats["timings"]["export"] = time.perf_counter() - t0
+        if preview_png:
+            from .preview import render_preview
+
+            render_preview(floor.grid, floor.refined, preview_png)
+        progress.step(100)
+    except BaseException:
+        for p, stamp in before.items():
+            if _stamp(p) != stamp:  # written by this run (a file this run did not touch is never removed)
+                with contextlib.suppress(OSError):
+                    os.remove(p)
+        raise
     out = dict(floor.stats)
     out["osm"] = {k: v for k, v in written.items() if k != "warnings"}  # write_osmag logged its warnings
     return out

@@ -174,9 +174,39 @@ def grid_for_extent(extent, resolution: float, max_pixels: float = DEFAULT_MAX_P
             f"the raster would be {cols} x {rows} = {rows * cols / 1e6:.1f} Mpx, more than the budget of "
             f"{max_pixels / 1e6:.0f} Mpx: the extent is {w:.1f} m x {h:.1f} m (x {xmin:.2f}..{xmax:.2f}, "
             f"y {ymin:.2f}..{ymax:.2f}) at {resolution} m/px. Use a resolution of at least "
-            f"{suggest_resolution(w, h, max_pixels):.3g} m/px, raise the pixel budget, or check the drawing's "
-            "units and stray entities far from the building")
+            f"{suggest_resolution(w, h, max_pixels):.3g} m/px, raise the pixel budget, convert one plan of the sheet "
+            "at a time (select its layers or give an extent), or check the drawing's units and stray entities far "
+            "from the building")
     return c0 * resolution, r1 * resolution, rows, cols
+
+
+BYTES_PER_PIXEL = 50  # peak memory of the whole pipeline per raster pixel (measured: 44 B/px, 2.5-10 Mpx)
+
+
+def available_memory() -> Optional[int]:
+    """Bytes of memory available to this process (Linux MemAvailable), None when unknown."""
+    try:
+        with open("/proc/meminfo") as fh:
+            for line in fh:
+                if line.startswith("MemAvailable:"):
+                    return int(line.split()[1]) * 1024
+    except (OSError, ValueError, IndexError):
+        pass
+    return None
+
+
+def check_memory(rows: int, cols: int, resolution: float) -> None:
+    """Raise InputError (nothing allocated yet) when the pipeline on a rows x cols raster would need more
+    memory than the machine has available."""
+    avail = available_memory()
+    need = rows * cols * BYTES_PER_PIXEL
+    if avail is not None and need > avail:
+        fit = resolution * math.sqrt(need / avail) * 1.05
+        raise InputError(
+            f"a {cols} x {rows} px raster ({rows * cols / 1e6:.1f} Mpx at {resolution} m/px) needs about "
+            f"{need / 2 ** 30:.1f} GB of memory to segment, more than the {avail / 2 ** 30:.1f} GB available: use "
+            f"a coarser resolution (at least {fit:.3g} m/px), convert one plan of the sheet at a time (select its "
+            "layers or give an extent), check the drawing's units, or close other programs")
 
 
 def _split_rings(c: np.ndarray) -> List[np.ndarray]:
@@ -326,6 +356,7 @@ def rasterize(geometries: Sequence[CadGeometry], resolution: float = DEFAULT_RES
     elif not geometries:
         raise InputError("there is no geometry to rasterize (the wall layer is empty)")
     ox, oy, rows, cols = grid_for_extent(extent, resolution, max_pixels)
+    check_memory(rows, cols, resolution)  # before allocating: segmentation needs ~50 bytes per pixel
     progress.step(5, f"raster {cols} x {rows} px at {resolution} m/px")
     img = np.zeros((rows, cols), dtype=np.uint8)
     hair = cv_thickness(stroke / resolution)

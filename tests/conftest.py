@@ -45,3 +45,21 @@ def shared_data() -> Path:
 @pytest.fixture(scope="session")
 def repo_root() -> Path:
     return REPO
+
+
+@pytest.fixture()
+def provider(qgis_app, qgis_processing):
+    """The cad2osmag Processing provider registered in the test QGIS (registered here if the plugin is not)."""
+    from qgis.core import QgsApplication
+
+    plugin_package()
+    from cad2osmag.processing_provider.provider import Cad2OsmagProvider
+
+    registry = QgsApplication.processingRegistry()
+    if registry.providerById("cad2osmag") is None:
+        prov = Cad2OsmagProvider()
+        registry.addProvider(prov)
+        yield prov
+        registry.removeProvider(prov)
+    else:
+        yield registry.providerById("cad2osmag")

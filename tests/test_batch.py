@@ -24,23 +24,6 @@ def floors_folder(tmp_path_factory):
     return folder, sample
 
 
-@pytest.fixture()
-def provider(qgis_app, qgis_processing):
-    from qgis.core import QgsApplication
-
-    plugin_package()
-    from cad2osmag.processing_provider.provider import Cad2OsmagProvider
-
-    registry = QgsApplication.processingRegistry()
-    if registry.providerById("cad2osmag") is None:
-        prov = Cad2OsmagProvider()
-        registry.addProvider(prov)
-        yield prov
-        registry.removeProvider(prov)
-    else:
-        yield registry.providerById("cad2osmag")
-
-
 def test_floor_files_are_matched_case_insensitively_in_natural_order(tmp_path):
     plugin_package()
     from cad2osmag.processing_provider.alg_dxf_to_osmag_batch import floor_files

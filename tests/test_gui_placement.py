@@ -328,23 +328,6 @@ def test_plugin_menu_opens_the_placement_panel(qgis_iface, qgis_app, qgis_new_pr
     assert plugin.placement_dock is None
 
 
-@pytest.fixture()
-def provider(qgis_app, qgis_processing):
-    from qgis.core import QgsApplication
-
-    plugin_package()
-    from cad2osmag.processing_provider.provider import Cad2OsmagProvider
-
-    registry = QgsApplication.processingRegistry()
-    if registry.providerById("cad2osmag") is None:
-        prov = Cad2OsmagProvider()
-        registry.addProvider(prov)
-        yield prov
-        registry.removeProvider(prov)
-    else:
-        yield registry.providerById("cad2osmag")
-
-
 def test_panel_loads_the_sample_building_through_extractstructure_and_saves_a_screenshot(
         provider, plan_canvas, tmp_path, repo_root):
     from algorithms.sample_building import generate_building

@@ -7,23 +7,6 @@ from .conftest import REPO, plugin_package
 
 
 @pytest.fixture()
-def provider(qgis_app, qgis_processing):
-    from qgis.core import QgsApplication
-
-    plugin_package()
-    from cad2osmag.processing_provider.provider import Cad2OsmagProvider
-
-    registry = QgsApplication.processingRegistry()
-    if registry.providerById("cad2osmag") is None:
-        prov = Cad2OsmagProvider()
-        registry.addProvider(prov)
-        yield prov
-        registry.removeProvider(prov)
-    else:
-        yield registry.providerById("cad2osmag")
-
-
-@pytest.fixture()
 def osm_file(tmp_path):
     from algorithms.georef import LocalFrame
     from algorithms.model import Area, Passage

@@ -13,23 +13,6 @@ from algorithms.sample_building import generate_building
 from .conftest import plugin_package
 
 
-@pytest.fixture()
-def provider(qgis_app, qgis_processing):
-    from qgis.core import QgsApplication
-
-    plugin_package()
-    from cad2osmag.processing_provider.provider import Cad2OsmagProvider
-
-    registry = QgsApplication.processingRegistry()
-    if registry.providerById("cad2osmag") is None:
-        prov = Cad2OsmagProvider()
-        registry.addProvider(prov)
-        yield prov
-        registry.removeProvider(prov)
-    else:
-        yield registry.providerById("cad2osmag")
-
-
 def _wait(predicate, timeout=300):
     from qgis.core import QgsApplication
 
