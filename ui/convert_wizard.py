@@ -424,7 +424,7 @@ class RunPage(QWizardPage):
             steps.append(("cad2osmag:dxftoosmag", params))
             self.outputs.append(params)
         if self.merge.isChecked() and len(steps) > 1:
-            steps.append(("cad2osmag:mergefloors", {"FLOORS": [p["OUTPUT"] for p in self.outputs],
+            steps.append(("cad2osmag:mergefloors", {"INPUT": [p["OUTPUT"] for p in self.outputs],
                                                    "OUTPUT": os.path.join(out, "building.osm")}))
         return steps
 
@@ -576,7 +576,7 @@ class NamesPage(QWizardPage):
                 export.update({"ANCHOR_LON": placement.anchor_lon, "ANCHOR_LAT": placement.anchor_lat})
             steps.append(("cad2osmag:exportosmag", export))
         if run.merge.isChecked() and len(run.outputs) > 1:
-            steps.append(("cad2osmag:mergefloors", {"FLOORS": [p["OUTPUT"] for p in run.outputs],
+            steps.append(("cad2osmag:mergefloors", {"INPUT": [p["OUTPUT"] for p in run.outputs],
                                                    "OUTPUT": os.path.join(run.folder.text().strip(), "building.osm")}))
         self.task = AlgorithmsTask(tr("Exporting osmAG again"), steps)
         self.task.taskCompleted.connect(lambda: self._finished(True, changed))
