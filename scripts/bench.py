@@ -14,11 +14,13 @@ areas, connected components, vertices; a failing plan is a row with its error. R
 ``docs/benchmarks.md`` (tables) and ``docs/gallery/<plan>.png`` (one picture per plan) with ``--write``.
 
     .venv/bin/python scripts/bench.py [--write docs/benchmarks.md] [--runs 3] [--only SIST-F5,office]
-                                      [--skip-scaling] [--max-repeat-cpu 8] [--jobs 3] [--stages]
+                                      [--skip-scaling] [--max-repeat-cpu 4] [--jobs N] [--stages]
 
 ``--max-repeat-cpu``: a plan whose first run takes more CPU seconds than this is run once only (the table
 says how many runs each median is over), so the whole bench stays well under 30 minutes on 2 loaded cores;
-``--jobs``: plans benchmarked at the same time (each run is still its own process).
+``--jobs``: plans benchmarked at the same time (default: the number of cores; each run is still its own
+process, and CPU seconds barely depend on it; on a machine shared with other work more jobs only take a
+larger share of it).
 ``--stages`` runs the older per-stage micro-benchmarks of ``benchmarks/bench_*.py`` instead.
 """
 import argparse
@@ -35,7 +37,7 @@ import time
 from pathlib import Path
 
 ROOT = Path(__file__).resolve().parents[1]
-STAGES = ["cad_import", "rasterize", "segment", "refine", "names", "export"]
+STAGES = ["cad_import", "rasterize", "segment", "types", "refine", "names", "outline", "export"]
 RESOLUTIONS = [0.088, 0.044, 0.022]
 SCALING_FLOOR = "SIST-F5"
 TARGETS = [  # (what, limit s, limit MB)
@@ -121,8 +123,8 @@ def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("--write", help="Markdown file to (re)write with the results; pictures go to its gallery/")
     ap.add_argument("--runs", type=int, default=3)
-    ap.add_argument("--max-repeat-cpu", type=float, default=8.0)
-    ap.add_argument("--jobs", type=int, default=3)
+    ap.add_argument("--max-repeat-cpu", type=float, default=4.0)
+    ap.add_argument("--jobs", type=int, default=os.cpu_count() or 2)
     ap.add_argument("--only", help="comma-separated substrings of plan names")
     ap.add_argument("--skip-scaling", action="store_true")
     ap.add_argument("--work", help="work folder (default: a temporary one)")
@@ -196,6 +198,10 @@ def main():
     if args.write:
         write_markdown(Path(args.write), rows, scaling, total, args)
         print(f"wrote {args.write} and {gallery}/ ({total / 60:.1f} min)")
+    if not args.work:
+        import shutil
+
+        shutil.rmtree(work, ignore_errors=True)  # osmAG outputs, the sample building: hundreds of MB
     return 0
 
 
