@@ -178,12 +178,17 @@ def main():
 
     sist = shared / "dxf" / "sist"
     with cf.ThreadPoolExecutor(max_workers=max(1, args.jobs)) as ex:
-        plan_futs = [ex.submit(bench_plan, item) for item in plans]  # queued first: the scaling runs last
-        res_futs = [] if args.skip_scaling else [
-            ex.submit(spawn, "plan", {"path": str(sist / f"{SCALING_FLOOR}.dxf"), "level": "5", "resolution": res,
-                                      "out_osm": str(work / f"scale-{res}.osm")}) for res in RESOLUTIONS]
+        def scale(res):
+            return ex.submit(spawn, "plan", {"path": str(sist / f"{SCALING_FLOOR}.dxf"), "level": "5",
+                                             "resolution": res, "out_osm": str(work / f"scale-{res}.osm")})
+
+        # the longest run (the finest raster) first, so that it overlaps the plans
+        res_futs = {} if args.skip_scaling else {RESOLUTIONS[-1]: scale(RESOLUTIONS[-1])}
+        plan_futs = [ex.submit(bench_plan, item) for item in plans]
+        if not args.skip_scaling:
+            res_futs.update({res: scale(res) for res in RESOLUTIONS[:-1]})
         rows = [f.result() for f in plan_futs]
-        res_rows = [f.result() for f in res_futs]
+        res_rows = [res_futs[res].result() for res in RESOLUTIONS] if res_futs else []
     scaling = {}
     if not args.skip_scaling:
         for res, r in zip(RESOLUTIONS, res_rows):
