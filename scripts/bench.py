@@ -100,6 +100,12 @@ def plan_list(shared: Path, work: Path):
     return out
 
 
+def plan_list_order(plans):
+    """The report's order: SIST filtered, ArchWeb, SIST DWG, library, sample (the order of ``plan_list``)."""
+    groups = ["SIST filtered DXF", "ArchWeb DXF", "SIST original DWG", "library DWG", "sample building"]
+    return sorted(plans, key=lambda p: (groups.index(p[1]) if p[1] in groups else 9, p[0]))
+
+
 def med(values):
     values = [v for v in values if v is not None]
     return statistics.median(values) if values else float("nan")
@@ -150,7 +156,25 @@ def main():
     plans = plan_list(shared, work)
     if args.only:
         plans = [p for p in plans if any(o.lower() in p[0].lower() for o in args.only.split(","))]
+    cost = {"sample building": 0, "ArchWeb DXF": 1, "SIST filtered DXF": 2, "SIST original DWG": 3, "library DWG": 4}
+    plans.sort(key=lambda p: (cost.get(p[1], 5), p[0] != "SIST-F5.dwg"))  # table order is restored on writing
+    table_order = {p[0] + p[1]: i for i, p in enumerate(plan_list_order(plans))}
     (work / "osm").mkdir(exist_ok=True)
+    import threading
+
+    lock = threading.Lock()
+    done_rows, done_res = [], {}
+    order = table_order
+
+    def progress_write():
+        """Rewrite the report after every finished run: a bench stopped early still leaves its tables."""
+        if not args.write:
+            return
+        with lock:
+            rows_now = sorted(done_rows, key=lambda r: order[r["label"] + r["group"]])
+            res_now = [dict(done_res[r], res=r) for r in RESOLUTIONS if r in done_res]
+            write_markdown(Path(args.write), rows_now, {"resolution": res_now, "floors": [], "building": None},
+                           time.perf_counter() - t_start, args, pending=len(plans) - len(rows_now))
 
     def bench_plan(item):
         label, group, path, level = item
@@ -170,6 +194,9 @@ def main():
                   f"{s['named_areas']} named", flush=True)
         else:
             print(f"{label:22s} {group:18s} FAILED {s.get('error')}", flush=True)
+        with lock:
+            done_rows.append(s)
+        progress_write()
         return s
 
     # Runs of one plan are serial; plans (and the resolution scaling runs) go ``--jobs`` at a time. On a
@@ -178,16 +205,23 @@ def main():
 
     sist = shared / "dxf" / "sist"
     with cf.ThreadPoolExecutor(max_workers=max(1, args.jobs)) as ex:
-        def scale(res):
-            return ex.submit(spawn, "plan", {"path": str(sist / f"{SCALING_FLOOR}.dxf"), "level": "5",
-                                             "resolution": res, "out_osm": str(work / f"scale-{res}.osm")})
+        def scale_one(res):
+            r = spawn("plan", {"path": str(sist / f"{SCALING_FLOOR}.dxf"), "level": "5", "resolution": res,
+                               "out_osm": str(work / f"scale-{res}.osm")})
+            with lock:
+                done_res[res] = r
+            progress_write()
+            return r
 
-        # the longest run (the finest raster) first, so that it overlaps the plans
-        res_futs = {} if args.skip_scaling else {RESOLUTIONS[-1]: scale(RESOLUTIONS[-1])}
-        plan_futs = [ex.submit(bench_plan, item) for item in plans]
-        if not args.skip_scaling:
-            res_futs.update({res: scale(res) for res in RESOLUTIONS[:-1]})
-        rows = [f.result() for f in plan_futs]
+        def scale(res):
+            return ex.submit(scale_one, res)
+
+        # cheap plans first (a bench stopped early has the most rows), the finest raster early so that it
+        # overlaps the plans
+        plan_futs = [ex.submit(bench_plan, item) for item in plans[:len(plans) // 2]]
+        res_futs = {} if args.skip_scaling else {res: scale(res) for res in RESOLUTIONS}
+        plan_futs += [ex.submit(bench_plan, item) for item in plans[len(plans) // 2:]]
+        rows = sorted((f.result() for f in plan_futs), key=lambda r: order[r["label"] + r["group"]])
         res_rows = [res_futs[res].result() for res in RESOLUTIONS] if res_futs else []
     scaling = {}
     if not args.skip_scaling:
@@ -263,7 +297,7 @@ def _growth(xs, ys):
     return sum((p[0] - mx) * (p[1] - my) for p in pts) / den if den else float("nan")
 
 
-def write_markdown(path: Path, rows, scaling, total, args):
+def write_markdown(path: Path, rows, scaling, total, args, pending=0):
     rel_gallery = "gallery"
     L = ["# Benchmarks", "",
          "Written by `make bench` (`scripts/bench.py`). Every run is a fresh process: the whole pipeline (CAD "
@@ -273,7 +307,9 @@ def write_markdown(path: Path, rows, scaling, total, args):
          "**CPU seconds are the figure to compare across runs and machines**; wall seconds are what a user "
          "waits on this loaded machine. Peak RSS is the run's maximum resident set size (the largest of its runs).",
          "", f"Machine: {machine_line()}. Whole bench: {total / 60:.1f} min. Runs per plan: {args.runs}, once only "
-         f"when the first run took more than {args.max_repeat_cpu:g} CPU s; {args.jobs} plans at a time.", "",
+         f"when the first run took more than {args.max_repeat_cpu:g} CPU s; {args.jobs} plans at a time."
+         + (f" **Written while the bench was still running: {pending} plans not finished yet, and the "
+            f"fusion scaling and the building end to end not run yet.**" if pending else ""), "",
          "## Speed targets", "", "| target | limit | measured (wall) | CPU | peak RSS | met |", "| --- | --- | ---: | ---: | ---: | --- |"]
     by = {r["label"]: r for r in rows}
     sist = [by[f"SIST-F{k}"] for k in range(1, 6) if f"SIST-F{k}" in by and by[f"SIST-F{k}"].get("ok")
