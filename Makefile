@@ -16,7 +16,7 @@ help:
 	@echo "make demo        install what is missing, build the sample building and convert it (out/demo/)"
 	@echo "make test        install what is missing and run the whole test suite"
 	@echo "make test-quick  the suite without the slow real-data tests"
-	@echo "make bench       per-stage wall time and peak memory on real data (docs/benchmarks.md)"
+	@echo "make bench       whole pipeline on every shared drawing: time, CPU, memory, figures, scaling, gallery (docs/benchmarks.md) [BENCH_ARGS=...]"
 	@echo "make evaluate    score segmentation on ../shared/data/grid_gt"
 	@echo "make evaluate-cad [DATA=dir]  convert every DXF/DWG of DATA (default: the shared ArchWeb plans and DWG"
 	@echo "                  sheets) and print per plan: conversion, room-name texts inside an area / naming an"
@@ -41,7 +41,7 @@ test-quick: install
 	QT_QPA_PLATFORM=offscreen $(PY) -m pytest tests -ra -m "not slow"
 
 bench: install
-	$(PY) scripts/bench.py --write docs/benchmarks.md
+	$(PY) scripts/bench.py --write docs/benchmarks.md $(BENCH_ARGS)
 
 bench-route: install
 	$(PY) scripts/bench_route.py --pairs 50 --write docs/benchmarks.md

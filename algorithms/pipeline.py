@@ -46,11 +46,17 @@ def floor_outline(areas: Sequence[Area], wall_gap: float = 0.8) -> Optional[Poly
     polys = [a.polygon for a in areas if a.polygon is not None and not a.polygon.is_empty]
     if not polys:
         return None
+    import numpy as np
+    import shapely
+
+    arr = np.asarray(polys, dtype=object)
+    exact = shapely.union_all(arr)  # containment is exact, whatever the buffers rounded
     gap = wall_gap
     while True:
         half = gap / 2.0
-        merged = unary_union([p.buffer(half, join_style=2) for p in polys]).buffer(-half / 2.0, join_style=2)
-        merged = unary_union([merged] + polys)  # containment is exact, whatever the buffers rounded
+        # one vectorised buffer of every area and one union (the loop of buffers was ~1/3 of this step)
+        merged = shapely.union_all(shapely.buffer(arr, half, join_style="mitre")).buffer(-half / 2.0, join_style=2)
+        merged = unary_union([merged, exact])
         if merged.geom_type == "Polygon":
             return Polygon(merged.exterior)
         if gap >= 8.0:
@@ -69,9 +75,10 @@ def process_floor(dxf_path: str, *, rules=None, layers=None, units=None, include
     nothing is written."""
     progress = ensure(progress)
     timings: Dict[str, float] = {}
+    cpu: Dict[str, float] = {}  # CPU seconds of this process per stage: what counts on a loaded machine
 
     def timed(name, start, end, func, *args, **kwargs):
-        t0 = time.perf_counter()
+        t0, c0 = time.perf_counter(), time.process_time()
         try:
             out = func(*args, progress=progress.sub(start, end), **kwargs)
         except (InputError, Canceled):
@@ -82,6 +89,7 @@ def process_floor(dxf_path: str, *, rules=None, layers=None, units=None, include
             raise InputError(f"the {name} stage failed on this drawing's geometry ({type(exc).__name__}: {exc}); "
                              "please report the drawing") from exc
         timings[name] = time.perf_counter() - t0
+        cpu[name] = time.process_time() - c0
         return out
 
     drawing = timed("cad_import", 0, 25, cad_import.import_dxf, dxf_path, rules=rules, layers=layers,
@@ -91,10 +99,12 @@ def process_floor(dxf_path: str, *, rules=None, layers=None, units=None, include
     seg = timed("segment", 35, 80, segmentation.segment, grid, door_width=door_width,
                 corridor_width=corridor_width, delta=delta, prune=prune,
                 inside_points=segmentation.room_name_points(drawing.texts, name_rules), door_hints=drawing.doors, footprint=True)
+    t0, c0 = time.perf_counter(), time.process_time()
     vertical = classify_vertical_areas(seg.areas, drawing.geometries)
     if vertical:
         progress.info(f"{len(vertical)} stair/lift areas recognised from their symbols")
     protected = semantics.protect_labelled_areas(seg.areas, drawing.texts, min_area, name_rules) if names else {}
+    timings["types"], cpu["types"] = time.perf_counter() - t0, time.process_time() - c0
     refined, rstats = timed("refine", 80, 95, refine.refine, seg, grid.resolution, epsilon_px=epsilon_px,
                             min_area=min_area, keep_types=refine.KEEP_TYPES + (semantics.PROTECTED_TYPE,))
     semantics.restore_types(protected, seg.areas, refined.areas)
@@ -103,11 +113,13 @@ def process_floor(dxf_path: str, *, rules=None, layers=None, units=None, include
         names_report = timed("names", 95, 98, semantics.assign_names, refined.areas, drawing.texts, level,
                              rules=name_rules, grid=grid, passages=refined.passages)
         progress.info(names_report.summary())
+    t0, c0 = time.perf_counter(), time.process_time()
     outline = floor_outline(refined.areas)
+    timings["outline"], cpu["outline"] = time.perf_counter() - t0, time.process_time() - c0
     floor_area = None
     if outline is not None:
         floor_area = Area(id=0, polygon=outline, type="structure", name=f"Level {level}")
-    stats = {"timings": timings, "refine": rstats, "segment": dict(seg.stats),
+    stats = {"timings": timings, "cpu": cpu, "refine": rstats, "segment": dict(seg.stats),
              "texts": len(drawing.texts), "geometries": len(drawing.geometries), "unit": drawing.unit_name,
              "raster_shape": grid.shape, "areas": len(refined.areas), "passages": len(refined.passages),
              "components": rstats.get("components", 1), "largest_component_share": rstats.get("largest_component_share", 1.0)}
@@ -139,12 +151,13 @@ def convert_dxf(dxf_path: str, out_osm: str, *, preview_png: Optional[str] = Non
 
     before = {p: _stamp(p) for p in (out_osm, preview_png) if p}
     try:  # a cancel (or a failed preview) after the osmAG file was written must not leave it behind
-        t0 = time.perf_counter()
+        t0, c0 = time.perf_counter(), time.process_time()
         written = osmag.write_osmag(out_osm, semantics.for_osm(floor.refined.areas), floor.refined.passages,
                                     frame=frame, level=level,
                                     height=height, variant=variant, structure_areas=structure,
                                     progress=progress.sub(90, 97))
         floor.stats["timings"]["export"] = time.perf_counter() - t0
+        floor.stats["cpu"]["export"] = time.process_time() - c0
         if preview_png:
             from .preview import render_preview
 
