@@ -419,7 +419,15 @@ def write_markdown(path: Path, rows, scaling, total, args, pending=0):
         if r.get("ok"):
             L.append(f"- [{r['label']} ({r['group']})]({rel_gallery}/{r['label']}.png)")
     path.parent.mkdir(parents=True, exist_ok=True)
-    path.write_text("\n".join(L) + "\n", encoding="utf-8")
+    # keep the sections other benchmarks own (make bench-route writes between its markers)
+    kept = []
+    if path.is_file():
+        old = path.read_text(encoding="utf-8")
+        for start, end in (("<!-- bench-route:start -->", "<!-- bench-route:end -->"),):
+            i, j = old.find(start), old.find(end)
+            if 0 <= i < j:
+                kept.append(old[i:j + len(end)])
+    path.write_text("\n".join(L) + "\n" + "".join("\n" + k + "\n" for k in kept), encoding="utf-8")
 
 
 # ------------------------------------------------------------------ older per-stage micro-benchmarks
