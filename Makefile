@@ -9,7 +9,7 @@ APT_PACKAGES := qgis python3-qgis qgis-providers python3-venv python3-gdal gdal-
                 python3-dev build-essential libproj-dev proj-bin
 STAMP := $(VENV)/.installed
 
-.PHONY: install demo test test-quick bench evaluate clean help
+.PHONY: install demo test test-quick bench evaluate clean help package test-qgis340
 
 help:
 	@echo "make demo        install what is missing, build the sample building and convert it (out/demo/)"
@@ -17,6 +17,8 @@ help:
 	@echo "make test-quick  the suite without the slow real-data tests"
 	@echo "make bench       per-stage wall time and peak memory on real data (docs/benchmarks.md)"
 	@echo "make evaluate    score segmentation on ../shared/data/grid_gt"
+	@echo "make package     build dist/cad2osmag-<version>.zip for QGIS's Install from ZIP"
+	@echo "make test-qgis340  the suite on QGIS 3.40 LTR (Debian 13 root filesystem, built on first use)"
 
 install: $(STAMP)
 
@@ -39,5 +41,13 @@ bench: install
 evaluate: install
 	$(PY) scripts/evaluate_grids.py
 
+package:
+	python3 scripts/package.py
+
+# QGIS 3.40 LTR / Python 3.13 / numpy 2 in a Debian 13 chroot (/var/cache/cad2osmag/trixie); extra
+# pytest arguments in PYTEST_ARGS, e.g. make test-qgis340 PYTEST_ARGS='-m "not slow"'
+test-qgis340:
+	bash scripts/qgis340-test.sh $(PYTEST_ARGS)
+
 clean:
-	rm -rf out .pytest_cache
+	rm -rf out .pytest_cache dist

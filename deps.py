@@ -97,25 +97,45 @@ def missing_message(deps: Sequence[Dependency]) -> str:
 
 
 # --- the pip command -------------------------------------------------------------------------------
+_PYTHON = []
+
+
 def python_executable() -> Optional[str]:
-    """The interpreter QGIS embeds, as a program pip can run (sys.executable is QGIS itself on Windows
-    and often on macOS)."""
+    """The interpreter QGIS embeds, as a program pip can run. sys.executable is QGIS itself on Windows
+    and macOS, and may be some other python3 found on PATH (pyenv...) on Linux: a candidate counts
+    only when it runs on the same installation (same base prefix and version) as QGIS's Python."""
+    if _PYTHON:
+        return _PYTHON[0]
+    ver = f"{sys.version_info.major}.{sys.version_info.minor}"
     candidates = []
+    for base in (sys.exec_prefix, sys.base_exec_prefix):
+        candidates += [os.path.join(base, "python.exe"), os.path.join(base, "python3.exe"),
+                       os.path.join(base, "bin", f"python{ver}"), os.path.join(base, "bin", "python3")]
     exe = sys.executable or ""
     if re.match(r"python[\d.]*(\.exe)?$", os.path.basename(exe), re.IGNORECASE):
         candidates.append(exe)
-    ver = f"{sys.version_info.major}.{sys.version_info.minor}"
-    for base in (sys.exec_prefix, sys.prefix):
-        candidates += [os.path.join(base, "python.exe"), os.path.join(base, "python3.exe"),
-                       os.path.join(base, "bin", f"python{ver}"), os.path.join(base, "bin", "python3")]
-    for name in (f"python{ver}", "python3"):
+    for name in (f"python{ver}", "python3", "python"):
         found = shutil.which(name)
         if found:
             candidates.append(found)
+    existing = []
     for path in candidates:
-        if path and os.path.isfile(path) and os.access(path, os.X_OK):
+        if path and path not in existing and os.path.isfile(path) and os.access(path, os.X_OK):
+            existing.append(path)
+    want = (os.path.realpath(sys.base_prefix), ver)
+    for path in existing:
+        try:
+            import subprocess
+
+            out = subprocess.run([path, "-c", "import os, sys; print(os.path.realpath(sys.base_prefix)); "
+                                  "print('%d.%d' % sys.version_info[:2])"],
+                                 capture_output=True, text=True, timeout=20)
+        except (OSError, subprocess.SubprocessError):
+            continue
+        if tuple(out.stdout.split()) == want:
+            _PYTHON.append(path)
             return path
-    return None
+    return existing[0] if existing else None
 
 
 def externally_managed() -> bool:
