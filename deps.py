@@ -42,6 +42,9 @@ class Dependency:
     dist: str = ""       # distribution name whose version is checked against min_version
     min_version: str = ""
     optional: bool = False  # the plugin works without it, only some inputs need it
+    # On Linux, a package that must be the distribution's build (pip's wheel bundles a library that
+    # clashes with the one QGIS links) is named here and left out of the pip command.
+    linux_package: str = ""
 
 
 DEPENDENCIES: Tuple[Dependency, ...] = (
@@ -50,7 +53,9 @@ DEPENDENCIES: Tuple[Dependency, ...] = (
     Dependency("scipy", "scipy>=1.10", "segmentation"),
     Dependency("cv2", "opencv-python-headless>=4.8", "rasterization and segmentation"),
     Dependency("ezdxf", "ezdxf>=1.1", "reading DXF files"),
-    Dependency("pyproj", "pyproj>=3.4", "coordinate reference systems"),
+    # the pyproj wheel bundles its own PROJ, whose C++ symbols clash with the PROJ QGIS loads on Linux
+    # (qgis_process aborts with std::bad_alloc); Windows (OSGeo4W) and macOS QGIS ship pyproj already
+    Dependency("pyproj", "pyproj>=3.4", "coordinate reference systems", linux_package="python3-pyproj"),
     Dependency("ezdwg", "ezdwg>=0.17", "reading DWG files", optional=True),
 )
 BY_MODULE: Dict[str, Dependency] = {d.module: d for d in DEPENDENCIES}
@@ -91,9 +96,26 @@ def missing(include_optional: bool = True) -> List[Dependency]:
     return [d for d in DEPENDENCIES if (include_optional or not d.optional) and not is_available(d)]
 
 
+def _on_linux() -> bool:
+    return sys.platform.startswith("linux")
+
+
+def pip_installable(deps: Sequence[Dependency]) -> List[Dependency]:
+    return [d for d in deps if not (d.linux_package and _on_linux())]
+
+
+def system_packages(deps: Sequence[Dependency]) -> List[str]:
+    return [d.linux_package for d in deps if d.linux_package and _on_linux()]
+
+
 def missing_message(deps: Sequence[Dependency]) -> str:
     names = ", ".join(f"{d.pip.split('>')[0]} ({d.purpose})" for d in deps)
-    return f"Missing Python packages: {names}."
+    text = f"Missing Python packages: {names}."
+    system = system_packages(deps)
+    if system:
+        text += (f" Install {', '.join(system)} with your distribution's package manager "
+                 f"(e.g. sudo apt install {' '.join(system)}), not with pip.")
+    return text
 
 
 # --- the pip command -------------------------------------------------------------------------------
@@ -155,7 +177,7 @@ def pip_command(deps: Sequence[Dependency], python: Optional[str] = None,
         cmd.append("--break-system-packages")
     if constraints_path:
         cmd += ["--constraint", constraints_path]
-    cmd += [d.pip for d in deps]
+    cmd += [d.pip for d in pip_installable(deps)]
     return cmd
 
 
@@ -450,9 +472,10 @@ class DependencyInstaller:
             bar.pushMessage(tr("Missing packages"), text, Qgis.MessageLevel.Warning, 0)
             return None
         widget = bar.createMessage(tr("Missing packages"), text)
-        button = QPushButton(tr("Install"), widget)
-        button.clicked.connect(self.start)
-        widget.layout().addWidget(button)
+        if pip_installable(self.deps):
+            button = QPushButton(tr("Install"), widget)
+            button.clicked.connect(self.start)
+            widget.layout().addWidget(button)
         details = QPushButton(tr("Details…"), widget)
         details.clicked.connect(self.show_details)
         widget.layout().addWidget(details)
@@ -483,16 +506,16 @@ class DependencyInstaller:
         from qgis.PyQt.QtCore import QProcess
         from qgis.PyQt.QtWidgets import QProgressBar
 
-        if self.state == "running":
+        if self.state == "running" or not pip_installable(self.deps):
             return
         cmd = self.command()
         self.output = ["$ " + " ".join(cmd)]
         self.state = "running"
         bar = self._bar()
         widget = bar.createMessage(tr("cad2osmag"), tr("Installing {}…").format(
-            ", ".join(d.pip for d in self.deps)))
+            ", ".join(d.pip for d in pip_installable(self.deps))))
         self.progress_bar = QProgressBar(widget)
-        self.progress_bar.setRange(0, len(self.deps) * 2 + 1)  # collecting + installing per package
+        self.progress_bar.setRange(0, len(pip_installable(self.deps)) * 2 + 1)  # collecting + installing per package
         self.progress_bar.setValue(0)
         widget.layout().addWidget(self.progress_bar)
         self._push(widget, Qgis.MessageLevel.Info)
@@ -547,9 +570,12 @@ class DependencyInstaller:
 
         self.state = "done"
         log("installed " + ", ".join(d.pip for d in self.deps) + "\n" + "\n".join(self.output), "Info")
-        widget = self._bar().createMessage(tr("cad2osmag"), tr(
-            "Installed {}. Restart QGIS to use the CAD to osmAG algorithms.").format(
-            ", ".join(d.pip for d in self.deps)))
+        text = tr("Installed {}. Restart QGIS to use the CAD to osmAG algorithms.").format(
+            ", ".join(d.pip for d in pip_installable(self.deps)))
+        system = system_packages(self.deps)
+        if system:
+            text += " " + tr("Still needed from your distribution: {}.").format(", ".join(system))
+        widget = self._bar().createMessage(tr("cad2osmag"), text)
         self._push(widget, Qgis.MessageLevel.Success)
 
     def _failed(self, reason: str):

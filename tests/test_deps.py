@@ -269,3 +269,15 @@ def test_install_without_python_says_so(gui_iface, tmp_path):
     QCoreApplication.processEvents()
     assert inst.state == "failed"
     assert "Could not start Python" in bar_text(gui_iface)
+
+
+def test_pyproj_comes_from_the_distribution_on_linux(monkeypatch):
+    deps = deps_module()
+    monkeypatch.setattr(deps.sys, "platform", "linux")
+    wanted = [deps.BY_MODULE["pyproj"], deps.BY_MODULE["ezdxf"]]
+    cmd = deps.pip_command(wanted, python="python3")
+    assert "ezdxf>=1.1" in cmd and not any(c.startswith("pyproj") for c in cmd)
+    assert "apt install python3-pyproj" in deps.missing_message(wanted)
+    monkeypatch.setattr(deps.sys, "platform", "win32")
+    assert "pyproj>=3.4" in deps.pip_command(wanted, python="python.exe")
+    assert "apt" not in deps.missing_message(wanted)
