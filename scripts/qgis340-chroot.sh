@@ -22,9 +22,14 @@ chroot_umount() {  # chroot_umount ROOTFS
   done
 }
 
-in_chroot() {  # in_chroot ROOTFS CMD...: a clean environment, Debian's PATH
+in_chroot() {  # in_chroot ROOTFS CMD...: a clean environment, Debian's PATH, the host's proxy/pip settings
   local rfs="$1"; shift
+  local pass=() v
+  for v in http_proxy https_proxy no_proxy HTTP_PROXY HTTPS_PROXY NO_PROXY PIP_INDEX_URL PIP_DEFAULT_TIMEOUT CI; do
+    [ -n "${!v:-}" ] && pass+=("$v=${!v}")
+  done
   env -i HOME=/root TERM="${TERM:-dumb}" LANG=C.UTF-8 \
     PATH=/usr/local/sbin:/usr/local/bin:/usr/sbin:/usr/bin:/sbin:/bin \
+    PIP_CERT=/etc/ssl/certs/ca-certificates.crt "${pass[@]}" \
     chroot "$rfs" "$@"
 }

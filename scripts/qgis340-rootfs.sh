@@ -16,7 +16,7 @@ SUITE=trixie
 # it), pyproj (against trixie's PROJ, the one QGIS links), GDAL. The rest comes from pip, pinned in
 # requirements-qgis340.txt.
 APT_PACKAGES="qgis python3-qgis qgis-providers python3-gdal python3-numpy python3-pyproj python3-venv \
-python3-pip gdal-bin xauth xvfb locales ca-certificates"
+python3-pip gdal-bin proj-data xauth xvfb locales ca-certificates"
 VENV=/opt/cad2osmag-venv
 log() { echo "[qgis340-rootfs] $*"; }
 
@@ -49,6 +49,14 @@ if [ ! -e "$RFS/.stage-apt" ] || [ "$(cat "$RFS/.stage-apt")" != "$APT_PACKAGES"
   in_chroot "$RFS" bash -c "export DEBIAN_FRONTEND=noninteractive; apt-get update -qq && \
     apt-get install -y -qq --no-install-recommends $APT_PACKAGES && apt-get clean"
   echo "$APT_PACKAGES" > "$RFS/.stage-apt"
+fi
+
+# 2b. the host's local certificate authorities (a TLS-inspecting proxy's CA): pip in the chroot must
+#     trust what pip on the host trusts. Rerun every time: cheap, and the host's CAs may change.
+if ls /usr/local/share/ca-certificates/*.crt >/dev/null 2>&1; then
+  mkdir -p "$RFS/usr/local/share/ca-certificates"
+  cp /usr/local/share/ca-certificates/*.crt "$RFS/usr/local/share/ca-certificates/"
+  in_chroot "$RFS" update-ca-certificates >/dev/null 2>&1 || log "update-ca-certificates failed"
 fi
 
 # 3. the venv: Debian's python3 with --system-site-packages (qgis, osgeo, numpy, pyproj), pinned pip
