@@ -14,9 +14,9 @@ RFS="${CAD2OSMAG_TRIXIE:-/var/cache/cad2osmag/trixie}"
 SUITE=trixie
 # Debian's own builds of what must match QGIS's libraries: numpy (GDAL's bindings are built against
 # it), pyproj (against trixie's PROJ, the one QGIS links), GDAL. The rest comes from pip, pinned in
-# requirements-qgis340.txt.
+
 APT_PACKAGES="qgis python3-qgis qgis-providers python3-gdal python3-numpy python3-pyproj python3-venv \
-python3-pip gdal-bin proj-data xauth xvfb locales ca-certificates"
+python3-pip gdal-bin proj-data proj-bin osmium-tool xauth xvfb locales ca-certificates"
 VENV=/opt/cad2osmag-venv
 log() { echo "[qgis340-rootfs] $*"; }
 
