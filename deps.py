@@ -465,13 +465,17 @@ class DependencyInstaller:
 
         bar = self._bar()
         required = [d for d in self.deps if not d.optional]
-        text = tr("cad2osmag: {} Its algorithms that need them will not run until they are installed.").format(
-            missing_message(self.deps)) if required else tr("cad2osmag: {} DWG files cannot be read.").format(
-            missing_message(self.deps))
+        names = ", ".join(d.pip.split(">")[0] for d in self.deps)
+        system = system_packages(self.deps)
+        text = tr("Missing Python packages: {}.").format(names)
+        text += " " + (tr("The algorithms that need them will not run.") if required
+                       else tr("DWG files cannot be read."))
+        if system:
+            text += " " + tr("Install {} from your distribution.").format(", ".join(system))
         if not hasattr(bar, "createMessage"):  # a minimal iface (test doubles): text only
-            bar.pushMessage(tr("Missing packages"), text, Qgis.MessageLevel.Warning, 0)
+            bar.pushMessage("cad2osmag", text, Qgis.MessageLevel.Warning, 0)
             return None
-        widget = bar.createMessage(tr("Missing packages"), text)
+        widget = bar.createMessage("cad2osmag", text)
         if pip_installable(self.deps):
             button = QPushButton(tr("Install"), widget)
             button.clicked.connect(self.start)
@@ -482,16 +486,23 @@ class DependencyInstaller:
         self._push(widget, Qgis.MessageLevel.Warning)
         return widget
 
+    def details_text(self) -> str:
+        text = missing_message(self.deps)
+        if pip_installable(self.deps):
+            text += "\n\n" + tr("“Install” runs this command in QGIS's own Python (user site); you can run it "
+                                 "yourself (on Windows in the OSGeo4W Shell), then restart QGIS:\n\n{}").format(
+                manual_command(self.deps))
+        return text
+
     def show_details(self):
+        from qgis.PyQt.QtCore import Qt
         from qgis.PyQt.QtWidgets import QMessageBox
 
         box = QMessageBox(self.iface.mainWindow())
         box.setIcon(QMessageBox.Icon.Information)
         box.setWindowTitle(tr("cad2osmag: missing Python packages"))
-        box.setText(missing_message(self.deps))
-        box.setInformativeText(tr("“Install” runs this command in QGIS's own Python (user site):\n\n{}\n\n"
-                                  "On Windows you can run it in the OSGeo4W Shell; then restart QGIS.").format(
-            manual_command(self.deps)))
+        box.setText(self.details_text())
+        box.setTextInteractionFlags(Qt.TextInteractionFlag.TextSelectableByMouse)  # copy the command
         if self.output:
             box.setDetailedText("\n".join(self.output))
         box.exec()
@@ -512,9 +523,10 @@ class DependencyInstaller:
         self.output = ["$ " + " ".join(cmd)]
         self.state = "running"
         bar = self._bar()
-        widget = bar.createMessage(tr("cad2osmag"), tr("Installing {}…").format(
-            ", ".join(d.pip for d in pip_installable(self.deps))))
+        widget = bar.createMessage("cad2osmag", tr("Installing {}…").format(
+            ", ".join(d.pip.split(">")[0] for d in pip_installable(self.deps))))
         self.progress_bar = QProgressBar(widget)
+        self.progress_bar.setMaximumWidth(250)
         self.progress_bar.setRange(0, len(pip_installable(self.deps)) * 2 + 1)  # collecting + installing per package
         self.progress_bar.setValue(0)
         widget.layout().addWidget(self.progress_bar)
@@ -562,8 +574,9 @@ class DependencyInstaller:
         if exit_code == 0:
             self._succeeded()
         else:
-            errors = [ln for ln in self.output if ln.startswith("ERROR") or "error:" in ln.lower()]
-            self._failed((errors or self.output[-1:] or [""])[-1])
+            errors = [ln for ln in self.output[1:] if ln.startswith("ERROR") or "error:" in ln.lower()]
+            last = errors[-1] if errors else (self.output[-1] if len(self.output) > 1 else "")
+            self._failed(last or tr("pip stopped with exit code {}.").format(exit_code))
 
     def _succeeded(self):
         from qgis.core import Qgis
@@ -575,7 +588,7 @@ class DependencyInstaller:
         system = system_packages(self.deps)
         if system:
             text += " " + tr("Still needed from your distribution: {}.").format(", ".join(system))
-        widget = self._bar().createMessage(tr("cad2osmag"), text)
+        widget = self._bar().createMessage("cad2osmag", text)
         self._push(widget, Qgis.MessageLevel.Success)
 
     def _failed(self, reason: str):
@@ -584,9 +597,9 @@ class DependencyInstaller:
 
         self.state = "failed"
         log("installing " + ", ".join(d.pip for d in self.deps) + " failed:\n" + "\n".join(self.output), "Critical")
-        widget = self._bar().createMessage(tr("cad2osmag"), tr(
-            "Installing the Python packages failed: {} Install them by hand: {}").format(
-            reason.strip(), manual_command(self.deps)))
+        widget = self._bar().createMessage("cad2osmag", tr(
+            "Installing the Python packages failed: {} Details… has pip's output and the command to run by "
+            "hand.").format(reason.strip()))
         details = QPushButton(tr("Details…"), widget)
         details.clicked.connect(self.show_details)
         widget.layout().addWidget(details)

@@ -186,7 +186,7 @@ def test_the_message_bar_names_the_missing_packages(probes):
     _, hidden, _ = probes
     assert len(hidden["bar"]) == 1
     text = hidden["bar"][0]
-    assert "ezdxf" in text and "shapely" in text and "Missing" in text
+    assert "ezdxf" in text and "shapely" in text and "Missing Python packages" in text
 
 
 # --- the installer --------------------------------------------------------------------------------
@@ -256,7 +256,10 @@ def test_install_failure_is_reported_clearly(gui_iface, tmp_path):
     assert inst.state == "failed"
     assert gui_iface.bar.currentItem().level() == Qgis.MessageLevel.Critical
     text = bar_text(gui_iface)
-    assert "No matching distribution found for ezdxf" in text and "pip install" in text
+    assert "No matching distribution found for ezdxf" in text and "Details" in text
+    details = inst.details_text()
+    assert "pip install --user" in details and "ezdxf>=1.1" in details
+    assert any("No matching distribution" in line for line in inst.output)
 
 
 def test_install_without_python_says_so(gui_iface, tmp_path):
