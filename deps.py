@@ -151,13 +151,15 @@ def python_executable() -> Optional[str]:
 
             out = subprocess.run([path, "-c", "import os, sys; print(os.path.realpath(sys.base_prefix)); "
                                   "print('%d.%d' % sys.version_info[:2])"],
-                                 capture_output=True, text=True, timeout=20)
+                                 capture_output=True, text=True, timeout=20,
+                                 creationflags=getattr(subprocess, "CREATE_NO_WINDOW", 0))  # Windows: no console
         except (OSError, subprocess.SubprocessError):
             continue
         if tuple(out.stdout.split()) == want:
             _PYTHON.append(path)
             return path
-    return existing[0] if existing else None
+    _PYTHON.append(existing[0] if existing else None)  # asked once per session
+    return _PYTHON[0]
 
 
 def externally_managed() -> bool:
