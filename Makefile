@@ -10,7 +10,7 @@ APT_PACKAGES := qgis python3-qgis qgis-providers python3-venv python3-gdal gdal-
                 libeigen3-dev libopencv-core-dev libopencv-imgproc-dev qttools5-dev-tools
 STAMP := $(VENV)/.installed
 
-.PHONY: install demo test test-quick bench bench-route evaluate evaluate-cad clean help translations
+.PHONY: install demo test test-quick bench bench-route evaluate evaluate-cad clean help translations package test-qgis340
 
 help:
 	@echo "make demo        install what is missing, build the sample building and convert it (out/demo/)"
@@ -22,8 +22,9 @@ help:
 	@echo "                  sheets) and print per plan: conversion, room-name texts inside an area / naming an"
 	@echo "                  area of their own, largest component, areas, passages, named areas, conflicts"
 	@echo "make translations  update i18n/*.ts from the sources and compile the .qm files"
-
 	@echo "make bench-route osmAG route planning vs grid A* (docs/benchmarks.md, own section)"
+	@echo "make package     build dist/cad2osmag-<version>.zip for QGIS's Install from ZIP"
+	@echo "make test-qgis340  the suite on QGIS 3.40 LTR (Debian 13 root filesystem, built on first use)"
 
 install: $(STAMP)
 
@@ -58,5 +59,13 @@ translations:
 	python3 i18n/update_ts.py
 	lrelease i18n/cad2osmag_de.ts i18n/cad2osmag_zh_CN.ts
 
+package:
+	python3 scripts/package.py
+
+# QGIS 3.40 LTR / Python 3.13 / numpy 2 in a Debian 13 chroot (/var/cache/cad2osmag/trixie); extra
+# pytest arguments in PYTEST_ARGS, e.g. make test-qgis340 PYTEST_ARGS='-m "not slow"'
+test-qgis340:
+	bash scripts/qgis340-test.sh $(PYTEST_ARGS)
+
 clean:
-	rm -rf out .pytest_cache
+	rm -rf out .pytest_cache dist

@@ -74,6 +74,9 @@ class Cad2OsmagPlugin:
 
     def initGui(self):  # noqa: N802
         self.initProcessing()
+        from . import deps  # missing Python packages: message bar with an "Install" button
+
+        deps.notify_missing(self.iface)
         icon = QIcon(ICON_PATH)
         main = QAction(icon, self.tr("Convert a DXF floor plan to osmAG…"), self.iface.mainWindow())
         main.triggered.connect(self.open_main_algorithm)

@@ -4,7 +4,6 @@ Algorithms are discovered from the ``alg_*.py`` modules of this package: each de
 ``Cad2OsmagAlgorithm``. Adding a stage means adding one file; the provider never changes. The graphical
 models shipped in ``models/*.model3`` are added too (e.g. ``cad2osmag:cad_to_osmag``).
 """
-import importlib
 import inspect
 import os
 import pkgutil
@@ -13,6 +12,7 @@ from qgis.core import QgsMessageLog, QgsProcessingProvider, Qgis
 from qgis.PyQt.QtCore import QCoreApplication
 from qgis.PyQt.QtGui import QIcon
 
+from .. import deps
 from .base import Cad2OsmagAlgorithm
 
 PROVIDER_ID = "cad2osmag"
@@ -42,17 +42,18 @@ def algorithm_classes():
     """Every concrete ``Cad2OsmagAlgorithm`` subclass in ``processing_provider/alg_*.py``, sorted by name."""
     classes = {}
     pkg_dir = os.path.dirname(__file__)
+    lacking = deps.missing()  # packages QGIS's Python lacks: their algorithms are listed but say so
     for info in sorted(pkgutil.iter_modules([pkg_dir]), key=lambda i: i.name):
         if not info.name.startswith("alg_"):
             continue
         try:
-            module = importlib.import_module(f"{__package__}.{info.name}")
+            module, failed = deps.import_algorithm_module(f"{__package__}.{info.name}", lacking)
         except Exception as exc:  # a broken module must not hide the others
             QgsMessageLog.logMessage(f"cannot load {info.name}: {exc!r}", "cad2osmag", Qgis.MessageLevel.Critical)
             continue
         for _, obj in inspect.getmembers(module, inspect.isclass):
             if issubclass(obj, Cad2OsmagAlgorithm) and obj is not Cad2OsmagAlgorithm and obj.__module__ == module.__name__:
-                classes[obj.NAME] = obj
+                classes[obj.NAME] = deps.guard_algorithm(obj, module.__file__, failed, lacking) if lacking else obj
     return [classes[k] for k in sorted(classes)]
 
 
