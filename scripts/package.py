@@ -20,7 +20,7 @@ import zipfile
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 PLUGIN = "cad2osmag"
-SHIPPED_DIRS = ("algorithms", "processing_provider", "ui", "i18n", "icons", "models", "help")
+SHIPPED_DIRS = ("algorithms", "processing_provider", "ui", "i18n", "icons", "models", "styles", "help")
 ROOT_FILES = ("metadata.txt", "README.md", "LICENSE", "LICENSE.txt", "COPYING", "requirements.txt")
 NEVER = ("__pycache__", ".pyc", ".pyo", ".qgis-profile", ".venv", ".pytest_cache", ".DS_Store", ".aux.xml")
 # fixed timestamp: the same sources give the same archive

@@ -58,7 +58,10 @@ def test_archive_has_one_plugin_folder_and_only_runtime_files(archive):
     rel = {n[len("cad2osmag/"):] for n in names}
     for required in ("__init__.py", "plugin.py", "deps.py", "metadata.txt", "icons/icon.svg",
                      "algorithms/__init__.py", "algorithms/default_layer_rules.json",
-                     "processing_provider/provider.py", "processing_provider/base.py", "ui/__init__.py"):
+                     "processing_provider/provider.py", "processing_provider/base.py", "ui/__init__.py",
+                     "algorithms/default_name_rules.json", "processing_provider/batch_worker.py",
+                     "models/cad_to_osmag.model3", "styles/osmag_areas.qml", "styles/osmag_passages.qml",
+                     "i18n/cad2osmag_de.qm", "i18n/cad2osmag_zh_CN.qm"):
         assert required in rel, required
     # every module and rule file the plugin has (tracked by git, or on disk outside a checkout) is shipped
     sources = set(package.candidate_files(str(REPO)))
@@ -119,7 +122,8 @@ def test_archive_installs_into_a_fresh_profile_and_runs_headless(archive, tmp_pa
     rc, out = qgis_process(config, "list", pythonpath=[venv_site()])
     assert rc == 0, out[-3000:]
     listed = set(re.findall(r"cad2osmag:(\w+)", out))
-    assert listed == algorithm_names() and len(listed) >= 10
+    models = {path.stem for path in (REPO / "models").glob("*.model3")}  # the shipped models are listed too
+    assert models and listed == algorithm_names() | models and len(listed) >= 10
     rc, out = qgis_process(config, "plugins", pythonpath=[venv_site()])
     assert re.search(r"^\*\s+cad2osmag\s*$", out, re.M), out[-2000:]
     # the unpacked copy runs an algorithm end to end
@@ -151,7 +155,8 @@ def test_archive_without_its_packages_lists_everything_and_says_what_is_missing(
     (hide / "sitecustomize.py").write_text(HIDE_EZDXF, encoding="utf-8")
     rc, out = qgis_process(config, "list", pythonpath=[str(hide), venv_site()])
     assert rc == 0, out[-3000:]
-    assert set(re.findall(r"cad2osmag:(\w+)", out)) == algorithm_names()
+    models = {path.stem for path in (REPO / "models").glob("*.model3")}
+    assert set(re.findall(r"cad2osmag:(\w+)", out)) == algorithm_names() | models
     assert "Traceback" not in out
     rc, out = qgis_process(config, "run", "cad2osmag:samplebuilding", "--", f"OUTPUT_FOLDER={tmp_path / 's'}",
                            pythonpath=[str(hide), venv_site()])
