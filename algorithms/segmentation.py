@@ -92,7 +92,6 @@ NARROWING = 0.6  # an opening narrower than this fraction of the space behind it
 MIN_RISE_M = 0.25  # a region whose clearance peak rises less than this above the opening to a neighbour is a bump
 SPECK_M2 = 0.1  # m2: obstacle blobs up to this size inside the space (noise, clutter) make no narrowings
 CORRIDOR_MERGE = True
-RELATIVE_OPENING = False  # an opening is judged against the spaces it joins, not only against the door width
 MIN_CORRIDOR_OPENING_M = 0.15  # corridors do not join through slits narrower than this (x 2)
 PASS3_ELONGATION = 8.0  # length >= 8 x mean width: a corridor, whatever narrowings it has
 CORRIDOR_ELONGATION = 4.0  # area / (2 * max clearance)^2 above which an area is a corridor
@@ -108,7 +107,8 @@ FREE_STANDING = True
 CLUTTER_M2 = 4.0  # free-standing compact obstacles up to this area (minimum rectangle) ...
 CLUTTER_EXTENT_M = 3.5  # ... this length ...
 CLUTTER_SOLID = 0.6  # ... and solid: filled outline >= 0.6 x its minimum rectangle (not L / U wall pieces)
-CLUTTER_THICK_M = 0.3  # ... and at least this thick (furniture, columns; not wall stubs) make no doors
+CLUTTER_THICK_M = 0.3  # ... at least this thick (not wall stubs) ...
+CLUTTER_MIN_LENGTH_M = 1.0  # ... and at least this long (tables, desks, shelves; columns frame openings) make no doors
 MIN_PASSAGE_M = 0.2  # shorter extra contacts between two areas that also touch elsewhere are no passage
 
 
@@ -459,9 +459,11 @@ def _narrow_pockets(space: np.ndarray, dist: np.ndarray, resolution: float) -> O
 
 def _furniture(lab: np.ndarray, st: np.ndarray, resolution: float, candidates: np.ndarray) -> np.ndarray:
     """Which obstacle blobs (components ``lab`` with stats ``st``) stand free in the space like
-    furniture or columns: compact (the minimum-area rectangle at most ``CLUTTER_EXTENT_M`` long,
-    ``CLUTTER_M2`` in area and at least ``CLUTTER_THICK_M`` thick -- a wall stub between two gaps is
-    thinner) and away from the map border. Outlined furniture (a closed contour) counts by its outline."""
+    furniture: compact (the minimum-area rectangle ``CLUTTER_MIN_LENGTH_M`` to ``CLUTTER_EXTENT_M``
+    long, at most ``CLUTTER_M2`` in area and at least ``CLUTTER_THICK_M`` thick -- a wall stub between
+    two gaps is thinner; a column is shorter and, like a wall, frames openings), solid (filled outline
+    >= ``CLUTTER_SOLID`` x the rectangle: not an L or U of wall pieces) and away from the map border.
+    Outlined furniture (a closed contour) counts by its outline."""
     import cv2
 
     rows, cols = lab.shape
@@ -478,7 +480,8 @@ def _furniture(lab: np.ndarray, st: np.ndarray, resolution: float, candidates: n
         rr, cc = np.nonzero(blob)
         (_, _), (rw, rh), _ = cv2.minAreaRect(np.stack([cc, rr], axis=1).astype(np.float32))
         short, long_ = (min(rw, rh) + 1) * resolution, (max(rw, rh) + 1) * resolution
-        if not (long_ <= CLUTTER_EXTENT_M and short * long_ <= CLUTTER_M2 and short >= CLUTTER_THICK_M):
+        if not (CLUTTER_MIN_LENGTH_M <= long_ <= CLUTTER_EXTENT_M and short * long_ <= CLUTTER_M2
+                and short >= CLUTTER_THICK_M):
             continue
         # solid (or an outline closed around its inside), not an L / U of wall pieces
         contours, _ = cv2.findContours(blob, cv2.RETR_EXTERNAL, cv2.CHAIN_APPROX_SIMPLE)
@@ -659,8 +662,7 @@ def _merge_cells(n: int, peak: np.ndarray, lo, hi, saddle, *, r_alpha: float, do
         if a == b:
             continue
         pa, pb = gpeak[a], gpeak[b]
-        sweep = s >= r_alpha and not (RELATIVE_OPENING and s < NARROWING * max(pa, pb))
-        if sweep or min(pa, pb) - s < min_rise:
+        if s >= r_alpha or min(pa, pb) - s < min_rise:
             keep, gone = (a, b) if a < b else (b, a)
             uf.parent[gone] = keep
             gpeak[keep] = max(pa, pb)
@@ -671,7 +673,7 @@ def _merge_cells(n: int, peak: np.ndarray, lo, hi, saddle, *, r_alpha: float, do
         if a == b:
             continue
         pa, pb = bpeak[int(lo[i])], bpeak[int(hi[i])]
-        if (s <= door_half or RELATIVE_OPENING) and s < NARROWING * max(pa, pb):
+        if s <= door_half and s < NARROWING * max(pa, pb):
             continue  # door-like narrowing
         keep, gone = (a, b) if a < b else (b, a)
         uf.parent[gone] = keep

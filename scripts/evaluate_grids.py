@@ -53,6 +53,23 @@ def load_maps(data: Path, resolution: float = 0.05):
     return rows
 
 
+def _read_map(path: Path, resolution: float):
+    """The occupancy grid of a map image; recorded maps saved in colour (a tinted trace drawn over
+    the grey map) are read as their grey level."""
+    try:
+        return read_grid(str(path), resolution=resolution)
+    except InputError as exc:
+        if "colour image" not in str(exc):
+            raise
+    import cv2
+
+    from algorithms.model import OccupancyGrid
+    from algorithms.raster_io import _classify
+
+    img = cv2.imread(str(path), cv2.IMREAD_GRAYSCALE)
+    return OccupancyGrid(_classify(img), 0.0, img.shape[0] * resolution, float(resolution))
+
+
 def _colours(n: int, seed: int = 7) -> np.ndarray:
     rng = np.random.default_rng(seed)
     col = rng.integers(60, 240, size=(n + 1, 3)).astype(np.uint8)
@@ -105,7 +122,7 @@ def run(data: Path, out_dir=None, only=None, raw=False, worst=3, resolution=0.05
         if only and m["name"] not in only:
             continue
         src = data / ("input_raw" if raw and (data / "input_raw" / f"{m['name']}.png").is_file() else "input")
-        grid = read_grid(str(src / f"{m['name']}.png"), resolution=m["resolution"])
+        grid = _read_map(src / f"{m['name']}.png", m["resolution"])
         gt = read_gt_image(str(data / "gt" / f"{m['name']}.png"))
         runs = []
         if "maps.csv" in settings and m["widths_given"]:
