@@ -25,8 +25,11 @@ Steps (``AreaGraph.stats`` keeps the wall time of each):
     topology-preserving (Guo-Hall) thinning; nodes are its junctions and dead ends (with their
     clearance), edges the pixel chains between them (length, min / max clearance). Dead-end
     branches shorter than ``prune`` metres are removed, round after round, merging the nodes left
-    with two branches. Obstacle specks up to ``SPECK_M2`` (sensor noise, clutter) are ignored here
-    so that they make no branches or narrowings (they stay holes in the areas).
+    with two branches. Obstacle specks up to ``SPECK_M2`` (sensor noise, clutter) and free-standing
+    furniture (``_furniture``: compact solid blobs 1-3.5 m long touching no wall; doors are gaps in
+    walls) are ignored here so that they make no branches or narrowings (they stay holes in the
+    areas). Enclosed pockets narrower than ``2 x POCKET_CLEARANCE_M`` everywhere (inside furniture
+    outlines, wall cavities) are no space.
 ``regions``
     Topology graph: one region per skeleton edge, split where a clearance valley crosses it. The
     valleys are the borders of the clearance *basins*: every free pixel climbs the clearance by
@@ -492,7 +495,8 @@ def _furniture(lab: np.ndarray, st: np.ndarray, resolution: float, candidates: n
 
 def _without_specks(interior: np.ndarray, resolution: float) -> np.ndarray:
     """The space with obstacle specks (non-free blobs smaller than ``SPECK_M2`` lying inside it:
-    sensor noise, clutter) counted as space: they make no narrowings."""
+    sensor noise, clutter) and free-standing furniture (``_furniture``, when ``FREE_STANDING``)
+    counted as space: they make no narrowings."""
     import cv2
 
     n, lab, st, _ = cv2.connectedComponentsWithStats((~interior).view(np.uint8), connectivity=8,
