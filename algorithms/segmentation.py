@@ -475,7 +475,9 @@ def _furniture(lab: np.ndarray, st: np.ndarray, resolution: float, candidates: n
     border = ((st[:, cv2.CC_STAT_LEFT] == 0) | (st[:, cv2.CC_STAT_TOP] == 0)
               | (st[:, cv2.CC_STAT_LEFT] + st[:, cv2.CC_STAT_WIDTH] >= cols)
               | (st[:, cv2.CC_STAT_TOP] + st[:, cv2.CC_STAT_HEIGHT] >= rows))
-    cand = candidates & ~border & (ext <= CLUTTER_EXTENT_M * 1.42) & (st[:, cv2.CC_STAT_AREA] * resolution ** 2 <= CLUTTER_M2)
+    # a rectangle up to CLUTTER_EXTENT_M long has a bounding box up to sqrt(2) x that on a side
+    cand = (candidates & ~border & (ext <= CLUTTER_EXTENT_M * 1.42)
+            & (st[:, cv2.CC_STAT_AREA] * resolution ** 2 <= CLUTTER_M2))
     cand[0] = False
     for k in np.nonzero(cand)[0].tolist():
         x, y, w, h = (int(v) for v in st[k, :4])

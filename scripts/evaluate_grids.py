@@ -41,7 +41,7 @@ def load_maps(data: Path, resolution: float = 0.05):
                 def num(key, default):
                     v = (row.get(key) or "").strip()
                     return float(v) if v else default
-                given = bool((row.get("widest_door_m") or "").strip() or (row.get("narrowest_corridor_m") or "").strip())
+                given = any((row.get(k) or "").strip() for k in ("widest_door_m", "narrowest_corridor_m"))
                 rows.append(dict(name=row["map"].strip(), resolution=num("resolution_m_per_px", resolution),
                                  door=num("widest_door_m", segmentation.DEFAULT_DOOR_WIDTH),
                                  corridor=num("narrowest_corridor_m", segmentation.DEFAULT_CORRIDOR_WIDTH),
