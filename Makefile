@@ -17,7 +17,8 @@ help:
 	@echo "make test        install what is missing and run the whole test suite"
 	@echo "make test-quick  the suite without the slow real-data tests"
 	@echo "make bench       whole pipeline on every shared drawing: time, CPU, memory, figures, scaling, gallery (docs/benchmarks.md) [BENCH_ARGS=...]"
-	@echo "make evaluate    score segmentation on ../shared/data/grid_gt"
+	@echo "make evaluate [DATA=dir] [OUT=dir]  score segmentation on DATA (default ../shared/data/grid_gt; any folder"
+	@echo "                  laid out like it); OUT gets scores.csv and pictures of the worst maps"
 	@echo "make evaluate-cad [DATA=dir]  convert every DXF/DWG of DATA (default: the shared ArchWeb plans and DWG"
 	@echo "                  sheets) and print per plan: conversion, room-name texts inside an area / naming an"
 	@echo "                  area of their own, largest component, areas, passages, named areas, conflicts"
@@ -47,10 +48,11 @@ bench: install
 bench-route: install
 	$(PY) scripts/bench_route.py --pairs 50 --write docs/benchmarks.md
 
-evaluate: install
-	$(PY) scripts/evaluate_grids.py
-
 DATA ?=
+OUT ?=
+evaluate: install
+	$(PY) scripts/evaluate_grids.py $(if $(DATA),--data $(DATA),) $(if $(OUT),--out $(OUT),)
+
 evaluate-cad: install
 	$(PY) scripts/evaluate_cad.py $(if $(DATA),--data $(DATA),)
 

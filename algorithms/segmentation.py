@@ -25,8 +25,11 @@ Steps (``AreaGraph.stats`` keeps the wall time of each):
     topology-preserving (Guo-Hall) thinning; nodes are its junctions and dead ends (with their
     clearance), edges the pixel chains between them (length, min / max clearance). Dead-end
     branches shorter than ``prune`` metres are removed, round after round, merging the nodes left
-    with two branches. Obstacle specks up to ``SPECK_M2`` (sensor noise, clutter) are ignored here
-    so that they make no branches or narrowings (they stay holes in the areas).
+    with two branches. Obstacle specks up to ``SPECK_M2`` (sensor noise, clutter) and free-standing
+    furniture (``_furniture``: compact solid blobs 1-3.5 m long touching no wall; doors are gaps in
+    walls) are ignored here so that they make no branches or narrowings (they stay holes in the
+    areas). Enclosed pockets narrower than ``2 x POCKET_CLEARANCE_M`` everywhere (inside furniture
+    outlines, wall cavities) are no space.
 ``regions``
     Topology graph: one region per skeleton edge, split where a clearance valley crosses it. The
     valleys are the borders of the clearance *basins*: every free pixel climbs the clearance by
@@ -102,6 +105,13 @@ CLAIM_FACTOR = 1.5  # space claimed at footprint scale D is at most (1.5 D)^2 (l
 BITE_CONTACT = 0.3  # a piece whose outline runs along interior space for this fraction is a bite into a room
 DEEP_SPACE = 0.3  # a piece with area >= this x chord^2 of its opening is a space (hall, porch), not a corner
 MIN_CONTACT_M = 0.5  # space open to the outside must open onto the interior this wide (a doorway) to be claimed
+POCKET_CLEARANCE_M = 0.3  # enclosed free pockets narrower than 0.6 m everywhere are no rooms
+FREE_STANDING = True
+CLUTTER_M2 = 4.0  # free-standing compact obstacles up to this area (minimum rectangle) ...
+CLUTTER_EXTENT_M = 3.5  # ... this length ...
+CLUTTER_SOLID = 0.6  # ... and solid: filled outline >= 0.6 x its minimum rectangle (not L / U wall pieces)
+CLUTTER_THICK_M = 0.3  # ... at least this thick (not wall stubs) ...
+CLUTTER_MIN_LENGTH_M = 1.0  # ... and at least this long (tables, desks, shelves; columns frame openings) make no doors
 MIN_PASSAGE_M = 0.2  # shorter extra contacts between two areas that also touch elsewhere are no passage
 
 
@@ -430,15 +440,73 @@ def building_interior(free: np.ndarray, resolution: float, envelope_gap: float =
     return interior, envelope
 
 
+def _narrow_pockets(space: np.ndarray, dist: np.ndarray, resolution: float) -> Optional[np.ndarray]:
+    """Enclosed free pockets too narrow for anyone to enter (clearance below ``POCKET_CLEARANCE_M``
+    everywhere): the inside of furniture outlines, wall cavities, ducts. Not rooms: they become
+    obstacle. None when there are none."""
+    import cv2
+
+    n, lab = cv2.connectedComponents(space.view(np.uint8), connectivity=4, ltype=cv2.CV_32S)
+    if n <= 2:
+        return None
+    top = np.zeros(n)
+    np.maximum.at(top, lab.ravel(), dist.ravel().astype(np.float64))
+    narrow = (top - 0.5) * resolution < POCKET_CLEARANCE_M
+    narrow[0] = False
+    if narrow[1:].all():
+        return None
+    if not narrow.any():
+        return None
+    return narrow[lab]
+
+
+def _furniture(lab: np.ndarray, st: np.ndarray, resolution: float, candidates: np.ndarray) -> np.ndarray:
+    """Which obstacle blobs (components ``lab`` with stats ``st``) stand free in the space like
+    furniture: compact (the minimum-area rectangle ``CLUTTER_MIN_LENGTH_M`` to ``CLUTTER_EXTENT_M``
+    long, at most ``CLUTTER_M2`` in area and at least ``CLUTTER_THICK_M`` thick -- a wall stub between
+    two gaps is thinner; a column is shorter and, like a wall, frames openings), solid (filled outline
+    >= ``CLUTTER_SOLID`` x the rectangle: not an L or U of wall pieces) and away from the map border.
+    Outlined furniture (a closed contour) counts by its outline."""
+    import cv2
+
+    rows, cols = lab.shape
+    out = np.zeros(len(st), bool)
+    ext = np.maximum(st[:, cv2.CC_STAT_WIDTH], st[:, cv2.CC_STAT_HEIGHT]) * resolution
+    border = ((st[:, cv2.CC_STAT_LEFT] == 0) | (st[:, cv2.CC_STAT_TOP] == 0)
+              | (st[:, cv2.CC_STAT_LEFT] + st[:, cv2.CC_STAT_WIDTH] >= cols)
+              | (st[:, cv2.CC_STAT_TOP] + st[:, cv2.CC_STAT_HEIGHT] >= rows))
+    # a rectangle up to CLUTTER_EXTENT_M long has a bounding box up to sqrt(2) x that on a side
+    cand = (candidates & ~border & (ext <= CLUTTER_EXTENT_M * 1.42)
+            & (st[:, cv2.CC_STAT_AREA] * resolution ** 2 <= CLUTTER_M2))
+    cand[0] = False
+    for k in np.nonzero(cand)[0].tolist():
+        x, y, w, h = (int(v) for v in st[k, :4])
+        blob = (lab[y:y + h, x:x + w] == k).astype(np.uint8)
+        rr, cc = np.nonzero(blob)
+        (_, _), (rw, rh), _ = cv2.minAreaRect(np.stack([cc, rr], axis=1).astype(np.float32))
+        short, long_ = (min(rw, rh) + 1) * resolution, (max(rw, rh) + 1) * resolution
+        if not (CLUTTER_MIN_LENGTH_M <= long_ <= CLUTTER_EXTENT_M and short * long_ <= CLUTTER_M2
+                and short >= CLUTTER_THICK_M):
+            continue
+        # solid (or an outline closed around its inside), not an L / U of wall pieces
+        contours, _ = cv2.findContours(blob, cv2.RETR_EXTERNAL, cv2.CHAIN_APPROX_SIMPLE)
+        filled = cv2.drawContours(np.zeros_like(blob), contours, -1, 1, thickness=-1)
+        out[k] = filled.sum() * resolution ** 2 >= CLUTTER_SOLID * short * long_
+    return out
+
+
 def _without_specks(interior: np.ndarray, resolution: float) -> np.ndarray:
     """The space with obstacle specks (non-free blobs smaller than ``SPECK_M2`` lying inside it:
-    sensor noise, clutter) counted as space: they make no narrowings."""
+    sensor noise, clutter) and free-standing furniture (``_furniture``, when ``FREE_STANDING``)
+    counted as space: they make no narrowings."""
     import cv2
 
     n, lab, st, _ = cv2.connectedComponentsWithStats((~interior).view(np.uint8), connectivity=8,
                                                      ltype=cv2.CV_32S)
     small = st[:, cv2.CC_STAT_AREA] * resolution ** 2 <= SPECK_M2
     small[0] = False
+    if FREE_STANDING:
+        small |= _furniture(lab, st, resolution, ~small)
     if not small.any():
         return interior
     return interior | small[lab]
@@ -995,6 +1063,12 @@ def segment(grid: OccupancyGrid, door_width: float = DEFAULT_DOOR_WIDTH,
     t = time.perf_counter()
     space = _without_specks(interior, res) if SPECK_M2 > 0 else interior
     dist = _edt(space)
+    pockets = _narrow_pockets(space, dist, res)
+    if pockets is not None:
+        stats["narrow_pockets_m2"] = float(pockets.sum()) * res * res
+        space = space & ~pockets
+        interior = interior & ~pockets
+        dist[pockets] = 0
     skel = skeleton_graph(space, res, prune=prune, dist=dist)
     stats["skeleton_s"] = time.perf_counter() - t
     stats.update(skeleton_nodes=float(skel.n_nodes), skeleton_edges=float(skel.n_edges),

@@ -1,0 +1,151 @@
+"""Issue 14: furniture-cluttered rooms are one area; free-standing wall pieces still make doors;
+enclosed pockets nobody can enter (inside furniture outlines, wall cavities) are no areas.
+
+Small synthetic robot-map-like grids (0.05 m/px, walls 0.15 m, y down, metres)."""
+import cv2
+import numpy as np
+import pytest
+
+from algorithms import segmentation as seg
+from algorithms.model import FREE, OCCUPIED, OccupancyGrid
+
+RES = 0.05
+
+
+def _px(v):
+    return int(round(v / RES))
+
+
+def _grid(w, h):
+    return np.full((_px(h), _px(w)), OCCUPIED, np.uint8)
+
+
+def _free(img, x0, y0, x1, y1):
+    img[_px(y0):_px(y1), _px(x0):_px(x1)] = FREE
+
+
+def _block(img, x0, y0, x1, y1, outline=False):
+    if outline:
+        cv2.rectangle(img, (_px(x0), _px(y0)), (_px(x1) - 1, _px(y1) - 1), OCCUPIED, 1)
+    else:
+        img[_px(y0):_px(y1), _px(x0):_px(x1)] = OCCUPIED
+
+
+def _rotated_block(img, cx, cy, length, width, angle):
+    pts = cv2.boxPoints(((_px(cx), _px(cy)), (_px(length), _px(width)), angle)).astype(np.int32)
+    cv2.fillPoly(img, [pts], OCCUPIED)
+
+
+def _segment(img, **kw):
+    return seg.segment(OccupancyGrid(img, 0.0, img.shape[0] * RES, RES), **kw)
+
+
+def _labels_in(ag, x0, y0, x1, y1):
+    sub = ag.labels[_px(y0):_px(y1), _px(x0):_px(x1)]
+    vals, counts = np.unique(sub[sub > 0], return_counts=True)
+    return dict(zip(vals.tolist(), counts.tolist()))
+
+
+def _office_with_tables(outline_table=False):
+    """A 5 x 5 m office (x 1..6, y 1..6) behind a 0.9 m door on a 2 m corridor (y 6.15..8.15).
+    A 3 m x 1 m table across the middle leaves 1 m gaps at both ends; a second, rotated desk in the
+    lower half. Without the furniture rule the gaps look like doors (1 m openings into 2 m spaces)."""
+    img = _grid(14, 9.2)
+    _free(img, 1, 1, 6, 6)
+    _free(img, 1, 6.15, 13, 8.15)
+    _free(img, 3, 6, 3.9, 6.15)  # door
+    _free(img, 6.15, 1, 13, 6)  # a second room east
+    _free(img, 9, 6, 9.9, 6.15)
+    _block(img, 2.0, 3.0, 5.0, 4.0, outline=outline_table)
+    _rotated_block(img, 3.5, 5.0, 1.6, 0.8, 30)
+    return img
+
+
+@pytest.mark.parametrize("outline", [False, True])
+def test_furnished_room_is_one_area(outline):
+    img = _office_with_tables(outline)
+    ag = _segment(img)
+    office = _labels_in(ag, 1.1, 1.1, 5.9, 5.9)
+    total = sum(office.values())
+    main = max(office.values())
+    assert main >= 0.97 * total, office  # one area, not one per side of the table
+    corridor = _labels_in(ag, 1.5, 6.5, 12.5, 7.8)
+    assert max(corridor, key=corridor.get) not in office  # still behind its door
+    assert ag.stats["areas"] == 3  # office, east room, corridor: nothing inside the table outline
+    if outline:
+        # the inside of the outlined table is no area of its own
+        inside = _labels_in(ag, 2.1, 3.1, 4.9, 3.9)
+        assert set(inside) <= set(office)
+
+
+def test_furniture_rule_off_splits_the_room(monkeypatch):
+    """The failure the rule fixes, so the test above cannot pass by accident."""
+    monkeypatch.setattr(seg, "FREE_STANDING", False)
+    ag = _segment(_office_with_tables())
+    office = _labels_in(ag, 1.1, 1.1, 5.9, 5.9)
+    assert len([v for v in office.values() if v > 0.1 * sum(office.values())]) >= 2
+
+
+def _two_rooms_with_stub(shape):
+    """Two 5 x 4 m rooms side by side (x 1..6 and 6.15..11.15, y 1..5); the wall between them
+    has a 1 m doorway at both ends, so its middle is a free-standing piece of wall."""
+    img = _grid(12.2, 6)
+    _free(img, 1, 1, 11.15, 5)
+    if shape == "stub":  # a straight wall piece 0.15 m thick
+        _block(img, 6.0, 2.0, 6.15, 4.0)
+    else:  # an L of wall pieces (a corner of the wall between the rooms)
+        _block(img, 6.0, 2.0, 6.15, 4.0)
+        _block(img, 6.0, 3.85, 7.5, 4.0)
+    return img
+
+
+@pytest.mark.parametrize("shape", ["stub", "corner"])
+def test_wall_pieces_still_make_doors(shape):
+    ag = _segment(_two_rooms_with_stub(shape))
+    west = _labels_in(ag, 1.2, 1.2, 5.5, 4.8)
+    east = _labels_in(ag, 8.0, 1.2, 11.0, 3.5)
+    assert max(west, key=west.get) != max(east, key=east.get)
+
+
+def test_furniture_classification_figures():
+    """Which blobs count as free-standing furniture (``_furniture``)."""
+    img = np.full((400, 400), FREE, np.uint8)
+    img[0, :] = img[-1, :] = img[:, 0] = img[:, -1] = OCCUPIED  # border: walls
+    blobs = {
+        "desk": (20, 20, 52, 36),  # 1.6 x 0.8 m solid
+        "table": (100, 20, 170, 40),  # 3.5 x 1.0 m
+        "column": (20, 100, 32, 112),  # 0.6 x 0.6 m: structure, frames openings
+        "long": (100, 100, 190, 120),  # 4.5 m: a wall, not furniture
+        "thin": (20, 200, 80, 203),  # 3 m x 0.15 m wall stub
+        "shelf_room": (200, 200, 260, 260),  # 3 x 3 m = 9 m2: too big
+    }
+    for x0, y0, x1, y1 in blobs.values():
+        img[y0:y1, x0:x1] = OCCUPIED
+    cv2.rectangle(img, (300, 20), (340, 50), int(OCCUPIED), 1)  # 2 x 1.5 m outline (a table drawn as contour)
+    cv2.line(img, (300, 300), (340, 300), int(OCCUPIED), 3)  # L of thin wall pieces
+    cv2.line(img, (300, 300), (300, 340), int(OCCUPIED), 3)
+    space = img == FREE
+    n, lab, st, _ = cv2.connectedComponentsWithStats((~space).view(np.uint8), connectivity=8, ltype=cv2.CV_32S)
+    furn = seg._furniture(lab, st, RES, np.ones(n, bool))
+    got = {name: bool(furn[lab[(y0 + y1) // 2, (x0 + x1) // 2]]) for name, (x0, y0, x1, y1) in blobs.items()}
+    assert got == {"desk": True, "table": True, "column": False, "long": False, "thin": False, "shelf_room": False}
+    assert furn[lab[20, 320]]  # the outlined table
+    assert not furn[lab[300, 320]]  # the L
+    assert not furn[lab[0, 0]]  # the walls
+
+
+def test_narrow_pocket_is_no_area():
+    """A closed 0.5 m wide cavity between two walls is no room; a 1.2 m wide closet is one."""
+    img = _grid(10, 6)
+    _free(img, 1, 1, 9, 5)
+    _block(img, 1, 2.5, 9, 3.5)  # thick wall band between two rooms ...
+    _free(img, 2, 2.8, 7, 3.3)  # ... with a 0.5 m cavity inside it
+    _free(img, 4, 2.5, 4.9, 2.8)  # (no door into the cavity)
+    img[_px(2.5):_px(2.8), _px(4):_px(4.9)] = OCCUPIED
+    ag = _segment(img)
+    assert ag.stats.get("narrow_pockets_m2", 0) == pytest.approx(5 * 0.5, rel=0.05)
+    assert not _labels_in(ag, 2.1, 2.85, 6.9, 3.25)
+    img2 = img.copy()
+    _free(img2, 2, 2.6, 7, 3.4)  # widen the cavity to 0.8 m: a closet, kept
+    ag2 = _segment(img2)
+    assert _labels_in(ag2, 2.1, 2.7, 6.9, 3.3)
