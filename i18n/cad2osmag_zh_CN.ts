@@ -2,6 +2,143 @@
 <!DOCTYPE TS>
 <TS version="2.1" language="zh_CN">
   <context>
+    <name>AssignNamesAlgorithm</name>
+    <message>
+      <location filename="../processing_provider/alg_assign_names.py" />
+      <source>Assign room names and types from texts</source>
+      <translation>根据文字指定房间名称和类型</translation>
+    </message>
+    <message>
+      <location filename="../processing_provider/alg_assign_names.py" />
+      <source>Pipeline</source>
+      <translation>处理流程</translation>
+    </message>
+    <message>
+      <location filename="../processing_provider/alg_assign_names.py" />
+      <source>Names, numbers and types the AREAS from the drawing's TEXTS (the text output of 'Extract structure from DXF', with block attributes).
+Which texts are room names: configurable rules (NAME_RULES, a copy of algorithms/default_name_rules.json) classify every text as a room name, a room number (kept as ref) or ignored, with the reason (dimension, area, elevation, door/window code, axis, stair arrow, note, title, title block, furniture...), using the text itself, the layer it sits on (room-name layers such as A-ANNO-ROOM, *-SYMB-NAME, 房间; bound-xref prefixes are stripped) and its block and attribute tag. Lines of a multi-line TEXT label are joined first.
+Which area: every text is scored against every area as in the CAD-to-osmAG paper (inside: 100 - 50 rho up to rho_max 0.7, then 50 - 25 (rho - 0.7); outside but within 2.2 m of the border: 40 + 30 f_size + 20 f_dist) and goes to its best area; a text inside an area belongs to it. Name and number join; an area holding two different room names is split at the narrowing between them (SPLIT, watershed of its clearance map; a corridor between them becomes its own area), else it keeps the best-placed name and lists the others in label_conflict. Duplicate names get a suffix (the room number, else (1), (2)...); areas without text get the stable id &lt;level&gt;-&lt;area id&gt;.
+Types: keywords (English, Italian, Spanish, German, French, Chinese...) and codes (*-ST-* stairs, *-P1/*-OP-*/*-FG-* lifts) set type stairs/elevator/corridor/room and the Simple Indoor Tagging fields indoor and room; long, narrow unnamed areas with three or more passages become corridors.
+Edit name, ref or type in the output layer to fix them: 'Export osmAG' keeps the edits and the passages follow renamed areas. TEXT_REPORT (optional) lists every label with its role, reason, area and score.</source>
+      <translation type="unfinished" />
+    </message>
+    <message>
+      <location filename="../processing_provider/alg_assign_names.py" />
+      <source>Areas</source>
+      <translation>区域</translation>
+    </message>
+    <message>
+      <location filename="../processing_provider/alg_assign_names.py" />
+      <source>Texts (from 'Extract structure from DXF')</source>
+      <translation type="unfinished" />
+    </message>
+    <message>
+      <location filename="../processing_provider/alg_assign_names.py" />
+      <source>Passages (optional: split areas get their passages, corridors their degree)</source>
+      <translation type="unfinished" />
+    </message>
+    <message>
+      <location filename="../processing_provider/alg_assign_names.py" />
+      <source>Level (for generated ids; empty: the areas' level field, else 1)</source>
+      <translation type="unfinished" />
+    </message>
+    <message>
+      <location filename="../processing_provider/alg_assign_names.py" />
+      <source>Name rules (JSON, empty = built-in defaults)</source>
+      <translation type="unfinished" />
+    </message>
+    <message>
+      <location filename="../processing_provider/alg_assign_names.py" />
+      <source>Split areas holding two room names at the narrowing between them</source>
+      <translation type="unfinished" />
+    </message>
+    <message>
+      <location filename="../processing_provider/alg_assign_names.py" />
+      <source>Named areas</source>
+      <translation type="unfinished" />
+    </message>
+    <message>
+      <location filename="../processing_provider/alg_assign_names.py" />
+      <source>Passages (with those of split areas)</source>
+      <translation type="unfinished" />
+    </message>
+    <message>
+      <location filename="../processing_provider/alg_assign_names.py" />
+      <source>Text report (role, reason, area of every label)</source>
+      <translation type="unfinished" />
+    </message>
+    <message>
+      <location filename="../processing_provider/alg_assign_names.py" />
+      <source>Areas named from the drawing</source>
+      <translation type="unfinished" />
+    </message>
+    <message>
+      <location filename="../processing_provider/alg_assign_names.py" />
+      <source>Areas with a room number</source>
+      <translation type="unfinished" />
+    </message>
+    <message>
+      <location filename="../processing_provider/alg_assign_names.py" />
+      <source>Areas with a generated id</source>
+      <translation type="unfinished" />
+    </message>
+    <message>
+      <location filename="../processing_provider/alg_assign_names.py" />
+      <source>Areas holding several names</source>
+      <translation type="unfinished" />
+    </message>
+    <message>
+      <location filename="../processing_provider/alg_assign_names.py" />
+      <source>Areas split</source>
+      <translation type="unfinished" />
+    </message>
+    <message>
+      <location filename="../processing_provider/alg_assign_names.py" />
+      <source>Texts ignored</source>
+      <translation type="unfinished" />
+    </message>
+    <message>
+      <location filename="../processing_provider/alg_assign_names.py" />
+      <source>Room texts outside every area</source>
+      <translation type="unfinished" />
+    </message>
+    <message>
+      <location filename="../processing_provider/alg_assign_names.py" />
+      <source>AREAS: the input layer cannot be opened</source>
+      <translation type="unfinished" />
+    </message>
+    <message>
+      <location filename="../processing_provider/alg_assign_names.py" />
+      <source>TEXTS: the input layer cannot be opened</source>
+      <translation type="unfinished" />
+    </message>
+    <message>
+      <location filename="../processing_provider/alg_assign_names.py" />
+      <source>TEXTS</source>
+      <translation type="unfinished" />
+    </message>
+    <message>
+      <location filename="../processing_provider/alg_assign_names.py" />
+      <source>PASSAGES</source>
+      <translation type="unfinished" />
+    </message>
+    <message>
+      <location filename="../processing_provider/alg_assign_names.py" />
+      <source>{} is in {} but AREAS is in {}: reproject it to the CRS of AREAS first</source>
+      <translation type="unfinished" />
+    </message>
+    <message>
+      <location filename="../processing_provider/alg_assign_names.py" />
+      <source>AREAS is in a geographic CRS (degrees); the scores use metres: run this on the CAD-frame layers (before georeferencing) or reproject to a projected CRS</source>
+      <translation type="unfinished" />
+    </message>
+    <message>
+      <location filename="../processing_provider/alg_assign_names.py" />
+      <source>cannot write area {} to the output layer</source>
+      <translation type="unfinished" />
+    </message>
+  </context>
+  <context>
     <name>Cad2OsmagAlgorithm</name>
     <message>
       <location filename="../processing_provider/base.py" />
@@ -357,8 +494,8 @@
     <name>DxfToOsmagAlgorithm</name>
     <message>
       <location filename="../processing_provider/alg_dxf_to_osmag.py" />
-      <source>Convert DXF floor plan to osmAG</source>
-      <translation>将 DXF 平面图转换为 osmAG</translation>
+      <source>Convert DXF/DWG floor plan to osmAG</source>
+      <translation>将 DXF/DWG 平面图转换为 osmAG</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_dxf_to_osmag.py" />
@@ -367,13 +504,13 @@
     </message>
     <message>
       <location filename="../processing_provider/alg_dxf_to_osmag.py" />
-      <source>Runs the whole pipeline on one floor: structural layers of the DXF are kept (walls, columns, glazing, stairs), rasterized, segmented into an Area Graph of rooms, corridors and the passages between them, refined (simplified polygons with shared borders) and written as an osmAG file anchored on the Earth. ANCHOR is the position of the drawing origin (pick it on a basemap), ROTATION the direction of the drawing's +y axis in degrees clockwise from north. Each step is also available as its own algorithm for finer control.</source>
+      <source>Runs the whole pipeline on one floor (a DXF, or a DWG of AutoCAD R13-2018 read directly): structural layers of the drawing are kept (walls, columns, glazing, stairs), rasterized, segmented into an Area Graph of rooms, corridors and the passages between them, refined (simplified polygons with shared borders) and written as an osmAG file anchored on the Earth. With NAMES (on by default) the drawing's texts name, number and type the areas (see 'Assign room names and types from texts'; NAME_RULES adapts the rules). ANCHOR is the position of the drawing origin (pick it on a basemap), ROTATION the direction of the drawing's +y axis in degrees clockwise from north. Each step is also available as its own algorithm for finer control.</source>
       <translation type="unfinished" />
     </message>
     <message>
       <location filename="../processing_provider/alg_dxf_to_osmag.py" />
-      <source>DXF floor plan</source>
-      <translation>DXF 平面图</translation>
+      <source>DXF or DWG floor plan</source>
+      <translation>DXF 或 DWG 平面图</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_dxf_to_osmag.py" />
@@ -408,6 +545,16 @@
     <message>
       <location filename="../processing_provider/alg_dxf_to_osmag.py" />
       <source>Close doorways (rasterize door layers)</source>
+      <translation type="unfinished" />
+    </message>
+    <message>
+      <location filename="../processing_provider/alg_dxf_to_osmag.py" />
+      <source>Room names, numbers and types from the drawing's texts</source>
+      <translation type="unfinished" />
+    </message>
+    <message>
+      <location filename="../processing_provider/alg_dxf_to_osmag.py" />
+      <source>Name rules (JSON, optional)</source>
       <translation type="unfinished" />
     </message>
     <message>
@@ -909,8 +1056,8 @@ OUTPUT: the .osm file to write.</source>
     <name>ExtractStructureAlgorithm</name>
     <message>
       <location filename="../processing_provider/alg_extract_structure.py" />
-      <source>Extract structure from DXF</source>
-      <translation>从 DXF 提取建筑结构</translation>
+      <source>Extract structure from DXF/DWG</source>
+      <translation>从 DXF/DWG 提取建筑结构</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_extract_structure.py" />
@@ -919,15 +1066,16 @@ OUTPUT: the .osm file to write.</source>
     </message>
     <message>
       <location filename="../processing_provider/alg_extract_structure.py" />
-      <source>Reads a DXF floor plan, explodes blocks (with scale, rotation, mirror and MINSERT arrays; entities on layer 0 inside a block take the INSERT's layer), skips frozen and off layers, keeps the structural layers chosen by the layer rules (walls, columns, windows/glazing, stairs, lifts, and the reference layers 0 and Defpoints) and flattens curves to 1 cm.
-LAYER_RULES: a JSON file of case-insensitive keywords (copy algorithms/default_layer_rules.json). LAYERS: explicit layer names (separated by ';') that override the rules. UNITS: the header's $INSUNITS is only a hint; by default the unit is chosen so that the building is 5-500 m across (a warning names both units). Door layers are left out unless INCLUDE_DOORS is set, so that doorways stay open.
-Outputs, in metres in the drawing's own frame (a local engineering CRS, not georeferenced): WALLS (lines with fields layer, kind, entity, closed, filled, width; 'Rasterize structure' rebuilds the geometry from them) and TEXTS (points with text, height, rotation, layer, entity).</source>
+      <source>Reads a DXF floor plan, or a DWG (AutoCAD R13-2018, read directly: no converter needed), explodes blocks (with scale, rotation, mirror and MINSERT arrays; entities on layer 0 inside a block take the INSERT's layer), skips frozen and off layers, keeps the structural layers chosen by the layer rules (walls, columns, windows/glazing, stairs, lifts, and the reference layers 0 and Defpoints) and flattens curves to 1 cm.
+LAYER_RULES: a JSON file of case-insensitive keywords (copy algorithms/default_layer_rules.json). LAYERS: explicit layer names (separated by ';') that override the rules. UNITS: the header's $INSUNITS is only a hint; by default the unit is chosen so that the building is 5-500 m across (a warning names both units). Door layers are left out unless INCLUDE_DOORS is set, so that doorways stay open; door swings and door blocks (by name, in many languages) are found on any layer and written as DOORS (jamb to jamb); furniture blocks, free-standing furniture on layer 0 and pattern hatches are left out (the log counts every class).
+Whole sheets: title frames, title blocks and legends are left out and the structure is grouped into plans (groups more than 5 m apart); the main plan (largest wall mass) is kept, the log lists every group with its index, extent, title and kind (plan / detail / legend). PLAN picks another (an index, or xmin,ymin,xmax,ymax in metres); PLAN_EXTENT is the same extent drawn on the canvas.
+Outputs, in metres in the drawing's own frame (a local engineering CRS, not georeferenced): WALLS (lines with fields layer, kind, entity, closed, filled, width; 'Rasterize structure' rebuilds the geometry from them; block, class), TEXTS (points with text, height, rotation, layer, entity, block, tag = ATTRIB tag, id; 'Assign room names and types from texts' reads them) and DOORS (doorway lines with source and width).</source>
       <translation type="unfinished" />
     </message>
     <message>
       <location filename="../processing_provider/alg_extract_structure.py" />
-      <source>DXF drawing</source>
-      <translation>DXF 图纸</translation>
+      <source>DXF or DWG drawing</source>
+      <translation type="unfinished" />
     </message>
     <message>
       <location filename="../processing_provider/alg_extract_structure.py" />
@@ -966,6 +1114,31 @@ Outputs, in metres in the drawing's own frame (a local engineering CRS, not geor
     </message>
     <message>
       <location filename="../processing_provider/alg_extract_structure.py" />
+      <source>Doorways found (door swings and door blocks)</source>
+      <translation type="unfinished" />
+    </message>
+    <message>
+      <location filename="../processing_provider/alg_extract_structure.py" />
+      <source>Plans found on the sheet</source>
+      <translation type="unfinished" />
+    </message>
+    <message>
+      <location filename="../processing_provider/alg_extract_structure.py" />
+      <source>Number of groups found on the sheet</source>
+      <translation type="unfinished" />
+    </message>
+    <message>
+      <location filename="../processing_provider/alg_extract_structure.py" />
+      <source>Number of doorways found</source>
+      <translation type="unfinished" />
+    </message>
+    <message>
+      <location filename="../processing_provider/alg_extract_structure.py" />
+      <source>Entity counts per class</source>
+      <translation type="unfinished" />
+    </message>
+    <message>
+      <location filename="../processing_provider/alg_extract_structure.py" />
       <source>Unit used</source>
       <translation type="unfinished" />
     </message>
@@ -982,6 +1155,16 @@ Outputs, in metres in the drawing's own frame (a local engineering CRS, not geor
     <message>
       <location filename="../processing_provider/alg_extract_structure.py" />
       <source>Number of texts</source>
+      <translation type="unfinished" />
+    </message>
+    <message>
+      <location filename="../processing_provider/alg_extract_structure.py" />
+      <source>Entity classes: {}; {} doorways found</source>
+      <translation type="unfinished" />
+    </message>
+    <message>
+      <location filename="../processing_provider/alg_extract_structure.py" />
+      <source>Sheet: {}</source>
       <translation type="unfinished" />
     </message>
     <message>
@@ -1217,8 +1400,8 @@ All conversions go through a transverse Mercator projection centred on the ancho
     <name>ListLayersAlgorithm</name>
     <message>
       <location filename="../processing_provider/alg_list_layers.py" />
-      <source>List DXF layers</source>
-      <translation>列出 DXF 图层</translation>
+      <source>List DXF/DWG layers</source>
+      <translation>列出 DXF/DWG 图层</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_list_layers.py" />
@@ -1227,14 +1410,15 @@ All conversions go through a transverse Mercator projection centred on the ancho
     </message>
     <message>
       <location filename="../processing_provider/alg_list_layers.py" />
-      <source>Reports every layer of a DXF drawing with its entity counts by type (after exploding blocks: entities on layer 0 inside a block count on the INSERT's layer), whether it is frozen or off, and whether the layer rules keep it (kind and matching keyword; door layers are listed with kind 'door' but not kept, since doorways stay open unless doors are included). Use the table to choose the LAYERS of 'Extract structure from DXF' or to write your own LAYER_RULES JSON file.
+      <source>Reports every layer of a DXF or DWG drawing (DWG: AutoCAD R13-2018, read directly) with its entity counts by type (after exploding blocks: entities on layer 0 inside a block count on the INSERT's layer), whether it is frozen or off, and whether the layer rules keep it (kind and matching keyword; door layers are listed with kind 'door' but not kept, since doorways stay open unless doors are included). Use the table to choose the LAYERS of 'Extract structure from DXF/DWG' or to write your own LAYER_RULES JSON file.
+Layer names as delivered: the rules match the meaningful part of a name (the prefix of a bound external reference, as in E1-RI-1F$0$A-WALL, is ignored); the 'matched' column shows it.
 Output: a table without geometry (save it as CSV, or keep it as a memory layer).</source>
       <translation type="unfinished" />
     </message>
     <message>
       <location filename="../processing_provider/alg_list_layers.py" />
-      <source>DXF drawing</source>
-      <translation>DXF 图纸</translation>
+      <source>DXF or DWG drawing</source>
+      <translation type="unfinished" />
     </message>
     <message>
       <location filename="../processing_provider/alg_list_layers.py" />
@@ -1358,7 +1542,10 @@ Outputs: the number of areas and passages loaded and the VARIANT detected.</sour
     </message>
     <message>
       <location filename="../processing_provider/alg_merge_floors.py" />
-      <source>Combines osmAG files of single floors, converted with the same anchor, into one building file: ids are renumbered, one root node is kept, and a building structure area becomes the parent of every floor outline. Floors are not moved and no vertical passages are added.</source>
+      <source>Fuses floors into one osmAG building. INPUT: osmAG floor files (semantic or fix-id), and/or AREAS/PASSAGES layers (e.g. from 'Load osmAG') split by their 'level' field.
+Level of each floor: LEVELS (comma-separated, in the order of the inputs), else the floor's level tags, else its file name (*-F3*, *_L-1*, *B1*, *3F*, *三层*). HEIGHTS: metres per level (one value for all, or one per floor; default: the floor's height tag, else 3.2).
+Registration: floors drawn in different frames are moved onto each other with their stairs and lifts (areas typed stairs/elevator, or named like one): matched by name first, else by type, size and position, by consensus (one wrong match does not move a floor); rotation when two anchors agree. The log gives the residual per anchor and the RMS. Floors without anchors are registered by their outline, with a warning.
+Stitching: overlapping stairs/lifts of consecutive levels get a vertical passage (a two-node way inside both shafts, tagged with the upper level and height). One building structure area is the parent of one structure area per level, which is the parent of that floor's areas; ids and names are unique across the building. Passages naming areas that do not exist are reported with their ids and left out (STRICT: stop instead). Output: one osmAG file (written atomically) and optional AREAS/PASSAGES layers with a 'level' field.</source>
       <translation type="unfinished" />
     </message>
     <message>
@@ -1368,7 +1555,42 @@ Outputs: the number of areas and passages loaded and the VARIANT detected.</sour
     </message>
     <message>
       <location filename="../processing_provider/alg_merge_floors.py" />
+      <source>Areas layer (several floors, 'level' field)</source>
+      <translation type="unfinished" />
+    </message>
+    <message>
+      <location filename="../processing_provider/alg_merge_floors.py" />
+      <source>Passages layer</source>
+      <translation type="unfinished" />
+    </message>
+    <message>
+      <location filename="../processing_provider/alg_merge_floors.py" />
+      <source>Levels, one per floor file (empty: level tags, else file names)</source>
+      <translation type="unfinished" />
+    </message>
+    <message>
+      <location filename="../processing_provider/alg_merge_floors.py" />
+      <source>Height per level in metres (one value, or one per floor)</source>
+      <translation type="unfinished" />
+    </message>
+    <message>
+      <location filename="../processing_provider/alg_merge_floors.py" />
       <source>Building name</source>
+      <translation type="unfinished" />
+    </message>
+    <message>
+      <location filename="../processing_provider/alg_merge_floors.py" />
+      <source>Variant</source>
+      <translation type="unfinished" />
+    </message>
+    <message>
+      <location filename="../processing_provider/alg_merge_floors.py" />
+      <source>Register the floors on their stairs/lifts (off: keep them where they are)</source>
+      <translation type="unfinished" />
+    </message>
+    <message>
+      <location filename="../processing_provider/alg_merge_floors.py" />
+      <source>Stop on passages whose areas are missing (off: report and leave them out)</source>
       <translation type="unfinished" />
     </message>
     <message>
@@ -1383,12 +1605,82 @@ Outputs: the number of areas and passages loaded and the VARIANT detected.</sour
     </message>
     <message>
       <location filename="../processing_provider/alg_merge_floors.py" />
+      <source>Building areas</source>
+      <translation type="unfinished" />
+    </message>
+    <message>
+      <location filename="../processing_provider/alg_merge_floors.py" />
+      <source>Building passages</source>
+      <translation type="unfinished" />
+    </message>
+    <message>
+      <location filename="../processing_provider/alg_merge_floors.py" />
       <source>Floors</source>
       <translation type="unfinished" />
     </message>
     <message>
       <location filename="../processing_provider/alg_merge_floors.py" />
-      <source>FLOORS: give at least one osmAG floor file</source>
+      <source>Vertical passages</source>
+      <translation type="unfinished" />
+    </message>
+    <message>
+      <location filename="../processing_provider/alg_merge_floors.py" />
+      <source>Areas written</source>
+      <translation type="unfinished" />
+    </message>
+    <message>
+      <location filename="../processing_provider/alg_merge_floors.py" />
+      <source>Passages written</source>
+      <translation type="unfinished" />
+    </message>
+    <message>
+      <location filename="../processing_provider/alg_merge_floors.py" />
+      <source>Registration residual RMS (m)</source>
+      <translation type="unfinished" />
+    </message>
+    <message>
+      <location filename="../processing_provider/alg_merge_floors.py" />
+      <source>Passages left out</source>
+      <translation type="unfinished" />
+    </message>
+    <message>
+      <location filename="../processing_provider/alg_merge_floors.py" />
+      <source>Levels</source>
+      <translation type="unfinished" />
+    </message>
+    <message>
+      <location filename="../processing_provider/alg_merge_floors.py" />
+      <source>INPUT: give at least one osmAG floor file (or an AREAS layer)</source>
+      <translation type="unfinished" />
+    </message>
+    <message>
+      <location filename="../processing_provider/alg_merge_floors.py" />
+      <source>HEIGHTS must be numbers (metres), e.g. 3.2 or 4.5,3.2,3.2</source>
+      <translation type="unfinished" />
+    </message>
+    <message>
+      <location filename="../processing_provider/alg_merge_floors.py" />
+      <source>floor file '{}' does not exist</source>
+      <translation type="unfinished" />
+    </message>
+    <message>
+      <location filename="../processing_provider/alg_merge_floors.py" />
+      <source>AREAS has no CRS (CAD frame): georeference it first (cad2osmag:georeference)</source>
+      <translation type="unfinished" />
+    </message>
+    <message>
+      <location filename="../processing_provider/alg_merge_floors.py" />
+      <source>LEVELS gives {} levels for {} floors; give one per floor, in the order of the inputs</source>
+      <translation type="unfinished" />
+    </message>
+    <message>
+      <location filename="../processing_provider/alg_merge_floors.py" />
+      <source>Canceled by the user.</source>
+      <translation>已被用户取消。</translation>
+    </message>
+    <message>
+      <location filename="../processing_provider/alg_merge_floors.py" />
+      <source>level {}: shift ({:.3f}, {:.3f}) m, rotation {:.3f}°, {}</source>
       <translation type="unfinished" />
     </message>
   </context>
@@ -1572,7 +1864,7 @@ Outputs: the number of areas and passages loaded and the VARIANT detected.</sour
     </message>
     <message>
       <location filename="../processing_provider/alg_rasterize.py" />
-      <source>Turns structure lines (the WALLS output of 'Extract structure from DXF', or any line/polygon layer in metres) into a single-band occupancy GeoTIFF: 0 = free, 255 = occupied (the inverse of a ROS map_server image, where black is occupied). Hairlines are drawn 0.15 m wide, wide polylines with their width, filled outlines (solid hatches) filled.
+      <source>Turns structure lines (the WALLS output of 'Extract structure from DXF/DWG', or any line/polygon layer in metres) into a single-band occupancy GeoTIFF: 0 = free, 255 = occupied (the inverse of a ROS map_server image, where black is occupied). Hairlines are drawn 0.15 m wide, wide polylines with their width, filled outlines (solid hatches) filled.
 The extent is the PERCENTILES (low, high) of all vertices grown to the entities that reach into them, plus PADDING (a fraction of the building size), so stray entities far away do not blow up the raster. The origin is snapped to a multiple of RESOLUTION and the geotransform maps pixels back to the drawing frame exactly.
 Repair: a closing with a KERNEL x KERNEL square bridges gaps up to about 0.2 m, then an opening removes isolated specks (components that do not survive the opening and are small).
 Multi-floor sets: give the structure layers of all floors as FLOOR_LAYERS (and/or a COMMON_EXTENT in the first floor's frame); every floor rasterized with the same values gets the same grid, pixel for pixel. Floors drawn with different origins (their extents do not overlap) are registered by cross-correlation (ALIGN_FLOORS); each raster's geotransform still maps its pixels onto its own drawing frame, so the origins differ by the floor offset but the pixels line up.
@@ -1651,6 +1943,11 @@ A raster above MAX_MPX megapixels stops with an error that suggests a resolution
     </message>
     <message>
       <location filename="../processing_provider/alg_rasterize.py" />
+      <source>Doorways (jamb-to-jamb lines) kept open (optional)</source>
+      <translation type="unfinished" />
+    </message>
+    <message>
+      <location filename="../processing_provider/alg_rasterize.py" />
       <source>Occupancy raster</source>
       <translation>占用栅格</translation>
     </message>
@@ -1681,7 +1978,7 @@ A raster above MAX_MPX megapixels stops with an error that suggests a resolution
     </message>
     <message>
       <location filename="../processing_provider/alg_rasterize.py" />
-      <source>The structure layer is in a geographic CRS ({}); rasterize needs metres: use the WALLS output of 'Extract structure from DXF' or reproject to a projected CRS first.</source>
+      <source>The structure layer is in a geographic CRS ({}); rasterize needs metres: use the WALLS output of 'Extract structure from DXF/DWG' or reproject to a projected CRS first.</source>
       <translation type="unfinished" />
     </message>
     <message>
@@ -1809,12 +2106,170 @@ A raster above MAX_MPX megapixels stops with an error that suggests a resolution
     </message>
     <message>
       <location filename="../processing_provider/alg_refine.py" />
+      <source>Connected components of the area graph</source>
+      <translation type="unfinished" />
+    </message>
+    <message>
+      <location filename="../processing_provider/alg_refine.py" />
+      <source>Share of the area in the largest component</source>
+      <translation type="unfinished" />
+    </message>
+    <message>
+      <location filename="../processing_provider/alg_refine.py" />
       <source>AREAS: the input layer cannot be opened</source>
       <translation type="unfinished" />
     </message>
     <message>
       <location filename="../processing_provider/alg_refine.py" />
       <source>AREAS is in a geographic CRS ({}); refinement works in metres: run it on the CAD frame (before georeferencing) or reproject to a projected CRS first</source>
+      <translation type="unfinished" />
+    </message>
+  </context>
+  <context>
+    <name>RouteAlgorithm</name>
+    <message>
+      <location filename="../processing_provider/alg_route.py" />
+      <source>Plan a route on an osmAG map</source>
+      <translation>在 osmAG 地图上规划路线</translation>
+    </message>
+    <message>
+      <location filename="../processing_provider/alg_route.py" />
+      <source>Tools</source>
+      <translation>工具</translation>
+    </message>
+    <message>
+      <location filename="../processing_provider/alg_route.py" />
+      <source>Shortest route for a round robot of radius ROBOT_RADIUS over an osmAG map: an osmAG file (ours or any other tool's, semantic or fix-id) or AREAS/PASSAGES layers (e.g. from loadosmag or refine). START and END are points picked on the canvas (any CRS) with their level (START_LEVEL/END_LEVEL, needed when floors overlap), or area names (START_NAME/END_NAME). A point up to 1 m outside the robot's free space is moved into it; farther away is an error. Passages narrower than twice the radius are closed; inside every area the route is the shortest collision-free path around its walls. Vertical passages (stairs, lifts) cost VERTICAL_COST metres per level; AVOID leaves out stairs (lifts only) or lifts. The result is a 3-D line (z = level x height) with its length, cost, levels per vertex and the areas and passages crossed. When no route exists the message names the separate parts of the map the start and the goal lie in, and the passages too narrow for the robot.</source>
+      <translation type="unfinished" />
+    </message>
+    <message>
+      <location filename="../processing_provider/alg_route.py" />
+      <source>osmAG file (or give AREAS and PASSAGES)</source>
+      <translation type="unfinished" />
+    </message>
+    <message>
+      <location filename="../processing_provider/alg_route.py" />
+      <source>Areas layer (instead of the file)</source>
+      <translation type="unfinished" />
+    </message>
+    <message>
+      <location filename="../processing_provider/alg_route.py" />
+      <source>Passages layer</source>
+      <translation type="unfinished" />
+    </message>
+    <message>
+      <location filename="../processing_provider/alg_route.py" />
+      <source>Start point</source>
+      <translation type="unfinished" />
+    </message>
+    <message>
+      <location filename="../processing_provider/alg_route.py" />
+      <source>Start level</source>
+      <translation type="unfinished" />
+    </message>
+    <message>
+      <location filename="../processing_provider/alg_route.py" />
+      <source>Start area name (instead of a point)</source>
+      <translation type="unfinished" />
+    </message>
+    <message>
+      <location filename="../processing_provider/alg_route.py" />
+      <source>End point</source>
+      <translation type="unfinished" />
+    </message>
+    <message>
+      <location filename="../processing_provider/alg_route.py" />
+      <source>End level</source>
+      <translation type="unfinished" />
+    </message>
+    <message>
+      <location filename="../processing_provider/alg_route.py" />
+      <source>End area name (instead of a point)</source>
+      <translation type="unfinished" />
+    </message>
+    <message>
+      <location filename="../processing_provider/alg_route.py" />
+      <source>Robot radius (m)</source>
+      <translation type="unfinished" />
+    </message>
+    <message>
+      <location filename="../processing_provider/alg_route.py" />
+      <source>Avoid</source>
+      <translation type="unfinished" />
+    </message>
+    <message>
+      <location filename="../processing_provider/alg_route.py" />
+      <source>Cost of one level of stairs or lift (m)</source>
+      <translation type="unfinished" />
+    </message>
+    <message>
+      <location filename="../processing_provider/alg_route.py" />
+      <source>Route</source>
+      <translation type="unfinished" />
+    </message>
+    <message>
+      <location filename="../processing_provider/alg_route.py" />
+      <source>Route length (m)</source>
+      <translation type="unfinished" />
+    </message>
+    <message>
+      <location filename="../processing_provider/alg_route.py" />
+      <source>Route cost (length + vertical cost)</source>
+      <translation type="unfinished" />
+    </message>
+    <message>
+      <location filename="../processing_provider/alg_route.py" />
+      <source>Level changes</source>
+      <translation type="unfinished" />
+    </message>
+    <message>
+      <location filename="../processing_provider/alg_route.py" />
+      <source>Start moved by (m)</source>
+      <translation type="unfinished" />
+    </message>
+    <message>
+      <location filename="../processing_provider/alg_route.py" />
+      <source>End moved by (m)</source>
+      <translation type="unfinished" />
+    </message>
+    <message>
+      <location filename="../processing_provider/alg_route.py" />
+      <source>Search time (ms)</source>
+      <translation type="unfinished" />
+    </message>
+    <message>
+      <location filename="../processing_provider/alg_route.py" />
+      <source>Areas crossed</source>
+      <translation type="unfinished" />
+    </message>
+    <message>
+      <location filename="../processing_provider/alg_route.py" />
+      <source>Passages crossed</source>
+      <translation type="unfinished" />
+    </message>
+    <message>
+      <location filename="../processing_provider/alg_route.py" />
+      <source>Level of every vertex</source>
+      <translation type="unfinished" />
+    </message>
+    <message>
+      <location filename="../processing_provider/alg_route.py" />
+      <source>give an osmAG file (INPUT) or an AREAS layer (with PASSAGES)</source>
+      <translation type="unfinished" />
+    </message>
+    <message>
+      <location filename="../processing_provider/alg_route.py" />
+      <source>PASSAGES is in {} but AREAS is in {}; reproject it first</source>
+      <translation type="unfinished" />
+    </message>
+    <message>
+      <location filename="../processing_provider/alg_route.py" />
+      <source>{}: give a point or an area name ({})</source>
+      <translation type="unfinished" />
+    </message>
+    <message>
+      <location filename="../processing_provider/alg_route.py" />
+      <source>route: {:.2f} m ({} level changes) through {}</source>
       <translation type="unfinished" />
     </message>
   </context>
@@ -1900,7 +2355,7 @@ Outputs: FIRST_FLOOR_DXF (the first floor's DXF) and DXF_FILES (every DXF, ';' s
     </message>
     <message>
       <location filename="../processing_provider/alg_segment.py" />
-      <source>Area Graph segmentation (Hou et al. 2019) with the dynamic alpha of the CAD-to-osmAG method. INPUT is the output of 'Rasterize', or any occupancy grid: a GeoTIFF, a PNG/PGM image with RESOLUTION (m/px), or a ROS map.yaml (its resolution, origin, negate and thresholds are used; unknown cells are never free). Only the free space inside the building envelope is segmented: facade openings narrower than ENVELOPE_GAP are bridged, outside space is never an area; the log reports the interior area. alpha = ceil((min(DOOR_WIDTH, CORRIDOR_WIDTH) + DELTA)^2 / (4 r^2)) px^2 is the probe disk: spaces it sweeps through an opening are one room; door-sized narrowings that are clearly narrower than the space behind them separate rooms (this also finds rooms too narrow for the disk); corridor cells merge where nothing justifies a split; the free space is thinned to its skeleton (generalised Voronoi diagram), dead-end branches shorter than PRUNE are removed, and every skeleton edge (split at the narrowings) starts as one region. Outputs: AREAS (exact pixel-edge polygons: id, type room/corridor, area, perimeter, max clearance), PASSAGES (a segment across every opening between two areas, ends on the walls: from, to, width), LABELS (area ids on the input grid, 0 outside areas) and, when asked for, SKELETON (one line per skeleton edge: id, length, min and max clearance).</source>
+      <source>Area Graph segmentation (Hou et al. 2019) with the dynamic alpha of the CAD-to-osmAG method. INPUT is the output of 'Rasterize', or any occupancy grid: a GeoTIFF, a PNG/PGM image with RESOLUTION (m/px), or a ROS map.yaml (its resolution, origin, negate and thresholds are used; unknown cells are never free). Only the free space inside the building envelope is segmented: facade openings narrower than ENVELOPE_GAP are bridged, outside space is never an area; the log reports the interior area. alpha = ceil((min(DOOR_WIDTH, CORRIDOR_WIDTH) + DELTA)^2 / (4 r^2)) px^2 is the probe disk: spaces it sweeps through an opening are one room; door-sized narrowings that are clearly narrower than the space behind them separate rooms (this also finds rooms too narrow for the disk); corridor cells merge where nothing justifies a split; the free space is thinned to its skeleton (generalised Voronoi diagram), dead-end branches shorter than PRUNE are removed, and every skeleton edge (split at the narrowings) starts as one region. Outputs: AREAS (exact pixel-edge polygons: id, type room/corridor, area, perimeter, max clearance), PASSAGES (a segment across every opening between two areas, ends on the walls: from, to, width), LABELS (area ids on the input grid, 0 outside areas) and, when asked for, SKELETON (one line per skeleton edge: id, length, min and max clearance). Space open to the outside is still inside where there is evidence: the plan's footprint (openings up to 3 x ENVELOPE_GAP, closed at the chord between the facade wall ends, where it opens onto the interior through a doorway) and the optional TEXTS (room names, from 'Extract structure': the space holding one is never outside). FOOTPRINT: by default the footprint is used for rasters made by 'Rasterize' (CAD plans), not for images and ROS maps (robot maps, whose free space beside the rooms is where the scan ended). The optional DOORS (jamb-to-jamb lines) are kept open and become passages where the segmentation missed them. Every area has a 'component' field: its connected component in the area graph (0 = the largest); the log lists the others (rooms no passage reaches).</source>
       <translation type="unfinished" />
     </message>
     <message>
@@ -1945,6 +2400,36 @@ Outputs: FIRST_FLOOR_DXF (the first floor's DXF) and DXF_FILES (every DXF, ';' s
     </message>
     <message>
       <location filename="../processing_provider/alg_segment.py" />
+      <source>Use the plan's footprint as evidence of inside space</source>
+      <translation type="unfinished" />
+    </message>
+    <message>
+      <location filename="../processing_provider/alg_segment.py" />
+      <source>automatic (CAD rasters from 'Rasterize': yes; images and ROS maps: no)</source>
+      <translation type="unfinished" />
+    </message>
+    <message>
+      <location filename="../processing_provider/alg_segment.py" />
+      <source>yes</source>
+      <translation>是</translation>
+    </message>
+    <message>
+      <location filename="../processing_provider/alg_segment.py" />
+      <source>no</source>
+      <translation>否</translation>
+    </message>
+    <message>
+      <location filename="../processing_provider/alg_segment.py" />
+      <source>Room names (TEXTS of 'Extract structure'): evidence of inside space</source>
+      <translation type="unfinished" />
+    </message>
+    <message>
+      <location filename="../processing_provider/alg_segment.py" />
+      <source>Doorways (jamb-to-jamb lines) kept open and made passages</source>
+      <translation type="unfinished" />
+    </message>
+    <message>
+      <location filename="../processing_provider/alg_segment.py" />
       <source>Areas</source>
       <translation>区域</translation>
     </message>
@@ -1980,6 +2465,16 @@ Outputs: FIRST_FLOOR_DXF (the first floor's DXF) and DXF_FILES (every DXF, ';' s
     </message>
     <message>
       <location filename="../processing_provider/alg_segment.py" />
+      <source>Connected components of the area graph</source>
+      <translation type="unfinished" />
+    </message>
+    <message>
+      <location filename="../processing_provider/alg_segment.py" />
+      <source>Share of the area in the largest component</source>
+      <translation type="unfinished" />
+    </message>
+    <message>
+      <location filename="../processing_provider/alg_segment.py" />
       <source>alpha (px²)</source>
       <translation type="unfinished" />
     </message>
@@ -2011,6 +2506,16 @@ Outputs: FIRST_FLOOR_DXF (the first floor's DXF) and DXF_FILES (every DXF, ';' s
     <message>
       <location filename="../processing_provider/alg_segment.py" />
       <source>Grid {} x {} px at {} m/px</source>
+      <translation type="unfinished" />
+    </message>
+    <message>
+      <location filename="../processing_provider/alg_segment.py" />
+      <source>{} room-name points used as evidence of inside space</source>
+      <translation type="unfinished" />
+    </message>
+    <message>
+      <location filename="../processing_provider/alg_segment.py" />
+      <source>Footprint evidence: {}</source>
       <translation type="unfinished" />
     </message>
     <message>

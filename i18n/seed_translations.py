@@ -2,6 +2,12 @@
 are the source of truth (edit them with Qt Linguist); keys are the English source texts."""
 
 _DE = {
+    "Convert DXF/DWG floor plan to osmAG": "DXF/DWG-Grundriss in osmAG umwandeln",
+    "DXF or DWG floor plan": "DXF- oder DWG-Grundriss",
+    "List DXF/DWG layers": "DXF/DWG-Layer auflisten",
+    "Extract structure from DXF/DWG": "Bauteile aus DXF/DWG extrahieren",
+    "Assign room names and types from texts": "Raumnamen und -typen aus Texten zuweisen",
+    "Plan a route on an osmAG map": "Eine Route auf einer osmAG-Karte planen",
     # plugin menu and toolbar
     "Convert a DXF floor plan to osmAG…": "DXF-Grundriss in osmAG umwandeln…",
     "Show the CAD to osmAG algorithms": "Die CAD-zu-osmAG-Algorithmen anzeigen",
@@ -108,6 +114,12 @@ _DE = {
 }
 
 _ZH = {
+    "Convert DXF/DWG floor plan to osmAG": "将 DXF/DWG 平面图转换为 osmAG",
+    "DXF or DWG floor plan": "DXF 或 DWG 平面图",
+    "List DXF/DWG layers": "列出 DXF/DWG 图层",
+    "Extract structure from DXF/DWG": "从 DXF/DWG 提取建筑结构",
+    "Assign room names and types from texts": "根据文字指定房间名称和类型",
+    "Plan a route on an osmAG map": "在 osmAG 地图上规划路线",
     "Convert a DXF floor plan to osmAG…": "将 DXF 平面图转换为 osmAG…",
     "Show the CAD to osmAG algorithms": "显示 CAD 转 osmAG 算法",
     "Convert a floor plan…": "转换平面图…",

@@ -6,8 +6,8 @@ from .conftest import REPO, plugin_package
 
 
 @pytest.mark.parametrize("locale, name, parameter, menu", [
-    ("de", "DXF-Grundriss in osmAG umwandeln", "DXF-Grundriss", "Einen Grundriss umwandeln…"),
-    ("zh_CN", "将 DXF 平面图转换为 osmAG", "DXF 平面图", "转换平面图…"),
+    ("de", "DXF/DWG-Grundriss in osmAG umwandeln", "DXF- oder DWG-Grundriss", "Einen Grundriss umwandeln…"),
+    ("zh_CN", "将 DXF/DWG 平面图转换为 osmAG", "DXF 或 DWG 平面图", "转换平面图…"),
 ])
 def test_plugin_speaks_the_qgis_locale(qgis_iface, qgis_app, locale, name, parameter, menu):
     from qgis.core import QgsApplication
