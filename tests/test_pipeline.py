@@ -71,7 +71,8 @@ def test_every_ground_truth_space_is_one_typed_area_in_the_osmag_file(sample, co
 def test_pipeline_reports_stage_times_and_figures(converted):
     _, stats, out = converted
     s, rec = stats[0]
-    assert set(s["timings"]) == {"cad_import", "rasterize", "segment", "refine", "names", "export"}
+    assert set(s["timings"]) == {"cad_import", "rasterize", "segment", "types", "refine", "names", "outline", "export"}
+    assert set(s["cpu"]) == set(s["timings"])  # CPU seconds per stage beside the wall seconds
     assert s["unit"] == "mm" and s["areas"] >= 15 and s["passages"] >= 15
     assert s["osm"]["shared_nodes"] >= 2 * s["passages"]  # both ends of every passage are shared
     assert "stair/lift areas recognised" in rec.text()
