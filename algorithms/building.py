@@ -418,13 +418,13 @@ def _fit_rigid(src: np.ndarray, dst: np.ndarray, rotate: bool = True) -> Rigid:
 def _compatible(a: Anchor, b: Anchor) -> bool:
     if a.kind != b.kind:
         return False
-    if a.name and b.name and _base_name(a.name) != _base_name(b.name):
+    if a.name and b.name and shaft_base_name(a.name) != shaft_base_name(b.name):
         return False
     r = a.size / max(b.size, 1e-9)
     return 0.4 <= r <= 2.5
 
 
-def _base_name(name: str) -> str:
+def shaft_base_name(name: str) -> str:
     """A shaft's name without its level: 'Stair A (level 2)' -> 'stair a', 'E1-ST-03-3F' -> 'e1-st-03'."""
     code = shaft_code(name)
     if code:
@@ -455,7 +455,7 @@ def register_anchors(moving: Sequence[Anchor], fixed: Sequence[Anchor], tol: flo
     if not comp:
         return None, []
     named = [(i, j) for i, j in comp if moving[i].name and fixed[j].name and
-             _base_name(moving[i].name) == _base_name(fixed[j].name)]
+             shaft_base_name(moving[i].name) == shaft_base_name(fixed[j].name)]
     tree = cKDTree(F)
 
     compat = np.zeros((len(moving), len(fixed)), bool)

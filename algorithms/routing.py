@@ -49,6 +49,7 @@ from typing import Dict, List, Optional, Sequence, Tuple
 
 import numpy as np
 
+from .building import shaft_base_name
 from .errors import InputError
 from .model import Area, Passage
 from .progress import ensure
@@ -92,7 +93,8 @@ def infer_area_type(area_type: str, name: str) -> str:
         return "stairs"
     if t in ("lift", "elevators"):
         return "elevator"
-    n = name or ""
+    # without the level suffix fusion adds to keep names unique ('E-P1 (level 2)')
+    n = re.sub(r"\s*\((?:level|L)\s*-?[\w.]+\)\s*$", "", name or "", flags=re.I)
     if _STAIR_RE.search(n):
         return "stairs"
     if _LIFT_RE.search(n):
@@ -511,7 +513,8 @@ class RouteMap:
         groups: Dict[str, List[int]] = {}
         for k, a in enumerate(self.areas):
             if self.types[k] in AVOIDABLE and a.name:
-                groups.setdefault(a.name.strip().lower(), []).append(k)
+                # the shaft's name without the level suffix fusion adds for uniqueness ('E-P1 (level 2)')
+                groups.setdefault(shaft_base_name(a.name), []).append(k)
         out = []
         for ks in groups.values():
             ks = sorted(ks, key=lambda k: self.level_rank[self.levels[k]])

@@ -339,3 +339,18 @@ def test_other_tools_maps_load_and_route_or_explain(shared_data, name):
     assert res.areas[0] == rm.areas[a].name and res.areas[-1] == rm.areas[b].name
     assert res.length >= math.hypot(*(np.asarray(rm.area_point(a)) - rm.area_point(b))) - 1e-6
     assert res.level_changes == (rm.levels[a] != rm.levels[b])
+
+
+def test_shafts_renamed_by_fusion_still_link_by_name():
+    """Fusion keeps names unique by adding ' (level N)': 'E-P1 (level 1)' and 'E-P1 (level 2)' are one shaft,
+    typed from the name even when the map types it 'room'."""
+    areas, passages = two_floors(implicit=True)
+    for a in areas:
+        if a.name in ("ST-01", "E-P1"):
+            a.name = f"{a.name} (level {a.tags['level']})"
+    rm = RouteMap.from_areas(areas, passages)
+    kinds = {a.name: rm.types[k] for k, a in enumerate(rm.areas)}
+    assert kinds["E-P1 (level 2)"] == "elevator" and kinds["ST-01 (level 1)"] == "stairs"
+    assert len(rm.implicit) == 2
+    wheel = rm.route("Office 1", "Office 2", robot_radius=0.3, avoid=["stairs"])
+    assert wheel.level_changes == 1 and "E-P1 (level 1)" in wheel.areas
