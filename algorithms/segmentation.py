@@ -1144,6 +1144,18 @@ def segment(grid: OccupancyGrid, door_width: float = DEFAULT_DOOR_WIDTH,
         elong = poly.area / max((2.0 * clear_m) ** 2, res * res)
         typ = "corridor" if elong >= CORRIDOR_ELONGATION else "room"
         areas.append(Area(id=int(lid), polygon=poly, type=typ, max_clearance=clear_m))
+    if ids != list(range(1, len(ids) + 1)):  # a label traced no polygon: keep area ids consecutive (1..n)
+        remap = np.zeros(int(labels.max()) + 1, dtype=labels.dtype)
+        remap[np.asarray(ids, dtype=np.int64)] = np.arange(1, len(ids) + 1, dtype=labels.dtype)
+        labels = remap[labels]
+        for a in areas:
+            a.id = int(remap[a.id])
+        kept = []
+        for p in passages:
+            if p.from_id < len(remap) and p.to_id < len(remap) and remap[p.from_id] and remap[p.to_id]:
+                p.from_id, p.to_id = int(remap[p.from_id]), int(remap[p.to_id])
+                kept.append(p)
+        passages = kept
     comps = assign_components(areas, passages)
     stats["components"] = float(len(comps))
     stats["largest_component_share"] = comps[0]["share"] if comps else 1.0
