@@ -44,7 +44,7 @@ def _parts(geom):
     return out
 
 
-def _door_hints(source):
+def door_hints_of(source):
     """DOORS line source -> list of DoorHint (first to last vertex of each line)."""
     from ..algorithms.model import DoorHint
 
@@ -225,7 +225,7 @@ class RasterizeAlgorithm(Cad2OsmagAlgorithm):
         grid = self.call(feedback, ras.rasterize, geoms, resolution=res, padding=padding, percentiles=pct,
                          kernel=kernel, extent=extent, max_pixels=max_px, stroke=stroke,
                          free_kinds=() if self.parameterAsBool(parameters, "STAIRS_AS_OBSTACLES", context)
-                         else ras.DEFAULT_FREE_KINDS, door_hints=_door_hints(
+                         else ras.DEFAULT_FREE_KINDS, door_hints=door_hints_of(
                              self.parameterAsSource(parameters, "DOORS", context)))
         out = self.parameterAsOutputLayer(parameters, self.OCCUPANCY, context)
         wkt = crs.toWkt(QgsCoordinateReferenceSystem.WktVariant.WKT_PREFERRED_GDAL) if crs.isValid() else ""

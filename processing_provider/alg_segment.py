@@ -50,7 +50,8 @@ def _texts_and_doors(texts, doors):
     (n, 2) or None, list of DoorHint)."""
     import numpy as np
 
-    from ..algorithms.model import CadText, DoorHint
+    from ..algorithms.model import CadText
+    from .alg_rasterize import door_hints_of
 
     pts = None
     if texts is not None:
@@ -65,16 +66,7 @@ def _texts_and_doors(texts, doors):
             txt = str(f[field]) if field is not None and f[field] is not None else ""
             cad.append(CadText(p.x(), p.y(), txt, 0.0, 0.0, ""))
         pts = segmentation.room_name_points(cad)
-    hints = []
-    if doors is not None:
-        for f in doors.getFeatures():
-            g = f.geometry()
-            if g is None or g.isEmpty():
-                continue
-            line = g.asPolyline() if not g.isMultipart() else [v for part in g.asMultiPolyline() for v in part]
-            if len(line) >= 2:
-                hints.append(DoorHint(line[0].x(), line[0].y(), line[-1].x(), line[-1].y(), "layer"))
-    return (None if pts is None else np.asarray(pts)), hints
+    return (None if pts is None else np.asarray(pts)), door_hints_of(doors)
 
 
 class SegmentAlgorithm(Cad2OsmagAlgorithm):
