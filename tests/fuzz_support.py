@@ -112,3 +112,18 @@ class Isolated:
 def leftovers(folder: str, keep=()) -> list:
     """Files in ``folder`` other than ``keep``: partial outputs or temporary files left behind."""
     return sorted(f for f in os.listdir(folder) if f not in set(keep))
+
+
+def add_block_bomb(doc, levels: int) -> None:
+    """Nest ``levels`` blocks of ten copies of the previous one (a single line at the bottom) and insert the
+    top one on A-WALL: 10^(levels-1) lines once exploded."""
+    prev = None
+    for k in range(levels):
+        blk = doc.blocks.new(f"L{k}")
+        if prev is None:
+            blk.add_line((0, 0), (100, 0))
+        else:
+            for j in range(10):
+                blk.add_blockref(prev, (j * 10, 0))
+        prev = f"L{k}"
+    doc.modelspace().add_blockref(prev, (0, 0), dxfattribs={"layer": "A-WALL"})

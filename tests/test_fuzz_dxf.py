@@ -27,7 +27,7 @@ from algorithms import cad_explode, cad_import, osmag, pipeline
 from algorithms.errors import InputError
 
 from .conftest import REPO
-from .fuzz_support import Isolated, leftovers
+from .fuzz_support import Isolated, add_block_bomb, leftovers
 
 IMPORT_LIMIT = 60.0  # s per import on the loaded 2-core machine (a clean import takes 0.1-0.5 s of CPU)
 CONVERT_LIMIT = 120.0
@@ -311,16 +311,7 @@ def test_a_million_copies_of_one_line_stop_fast_with_advice(tmp_path):
 
 def test_block_bomb_stops_before_filling_the_memory(tmp_path):
     doc = _doc()
-    prev = None
-    for k in range(9):  # 10^8 lines once exploded
-        blk = doc.blocks.new(f"L{k}")
-        if prev is None:
-            blk.add_line((0, 0), (100, 0))
-        else:
-            for j in range(10):
-                blk.add_blockref(prev, (j * 10, 0))
-        prev = f"L{k}"
-    doc.modelspace().add_blockref(prev, (0, 0), dxfattribs={"layer": "A-WALL"})
+    add_block_bomb(doc, 9)  # 10^8 lines once exploded
     out = tmp_path / "bomb.osm"
     t0 = time.process_time()
     with pytest.raises(InputError, match="nests blocks too deeply"):

@@ -2,6 +2,7 @@
 names the problem, QGIS itself does not crash (no signal, no Python traceback), nothing is written."""
 import pytest
 
+from .fuzz_support import add_block_bomb
 from .qgis_process import run_alg
 from .test_fuzz_dxf import base_bytes, base_dxf
 
@@ -39,16 +40,7 @@ def test_hostile_dxf_headless(tmp_path, case):
         expect = ["truncated.dxf"]
     else:
         doc = ezdxf.readfile(str(base_dxf()))
-        prev = None
-        for k in range(8):
-            blk = doc.blocks.new(f"L{k}")
-            if prev is None:
-                blk.add_line((0, 0), (100, 0))
-            else:
-                for j in range(10):
-                    blk.add_blockref(prev, (j * 10, 0))
-            prev = f"L{k}"
-        doc.modelspace().add_blockref(prev, (0, 0), dxfattribs={"layer": "A-WALL"})
+        add_block_bomb(doc, 8)
         doc.saveas(str(src))
         expect = ["nests blocks too deeply"]
     out, png = tmp_path / "f.osm", tmp_path / "f.png"
