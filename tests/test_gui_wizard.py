@@ -180,3 +180,67 @@ def test_wizard_task_can_be_canceled(provider, qgis_new_project, tmp_path):
     _wait(lambda: task.status() in (QgsTask.TaskStatus.Terminated, QgsTask.TaskStatus.Complete))
     assert task.status() == QgsTask.TaskStatus.Terminated
     assert not (tmp_path / "f1.osm").exists()
+
+
+def test_wizard_lists_the_plans_of_a_sheet_and_passes_the_pick_as_plan(provider, qgis_new_project, tmp_path,
+                                                                        repo_root):
+    """A whole sheet (floor plan + enlarged stair detail, titled): the plans are listed with their titles,
+    the main plan is pre-selected, picking the detail or drawing an extent changes PLAN everywhere."""
+    from qgis.core import QgsCoordinateReferenceSystem, QgsProject, QgsRectangle
+    from qgis.gui import QgsMapCanvas
+
+    from algorithms.sample_building import generate_delivered
+    from cad2osmag.ui.convert_wizard import ConvertWizard
+
+    QgsProject.instance().removeEntry("cad2osmag", "placement")
+    out = generate_delivered(str(tmp_path), sheet=True, name="sheet")
+    canvas = QgsMapCanvas()
+    canvas.resize(600, 400)
+    canvas.setDestinationCrs(QgsCoordinateReferenceSystem("EPSG:3857"))
+    canvas.setExtent(QgsRectangle(13535000, 3656000, 13535300, 3656200))
+    wiz = ConvertWizard(canvas)
+    wiz.show()
+    page = wiz.files_page
+    path = out["dxf"]
+    assert page.plan_parameter(path) == ""  # before the sheet is read: the algorithms' main plan
+    page.add_files([path])
+    _wait(lambda: page.plans_ready(path), timeout=240)
+    assert page.plans.rowCount() == 2, page.plan_status.text()
+    assert page.plans.item(0, 1).text() == "plan" and page.plans.item(1, 1).text() == "detail"
+    assert "平面图" in page.plans.item(0, 3).text() and "详图" in page.plans.item(1, 3).text()
+    assert page.plans.item(0, 2).text() == "40 × 25 m"
+    assert [i.row() for i in page.plans.selectionModel().selectedRows()] == [0]  # the main plan, pre-selected
+    assert page.plan_parameter(path) == "0" and "[0]" in page.plan_status.text()
+    assert len(page.sheet_canvas.layers()) == 2  # plan rectangles over the whole sheet's lines
+    page.sheet_canvas.refresh()
+    page.sheet_canvas.waitWhileRendering()
+    art = repo_root / "tests" / "artifacts"
+    art.mkdir(parents=True, exist_ok=True)
+    assert wiz.grab().save(str(art / "wizard_1_plans.png"))
+    # the user picks the stair detail: every algorithm of the wizard gets PLAN=1
+    page.pick_plan(1)
+    assert page.plan_parameter(path) == "1" and "detail" in page.plan_status.text()
+    wiz.run_page.folder.setText(str(tmp_path / "out"))
+    steps = wiz.run_page.steps()
+    assert steps[0][0] == "cad2osmag:dxftoosmag" and steps[0][1]["PLAN"] == "1"
+    wiz.next()
+    wiz.next()  # placement: the detail's lines are the plan placed
+    panel = wiz.placement_page.panel
+    x0, y0, x1, y1 = out["detail_extent"]
+    b = panel.overlay.cad_box
+    assert b.xMinimum() >= x0 - 1 and b.xMaximum() <= x1 + 1 and b.width() < 10
+    # back to the files: an extent drawn over the sheet (the tool's signal) becomes PLAN
+    wiz.back()
+    wiz.back()
+    page.extent_button.setChecked(True)
+    page._extent_map_tool.extentChanged.emit(QgsRectangle(-1, -1, 20, 26))
+    assert not page.extent_button.isChecked()
+    assert page.plan_parameter(path) == "-1.000,-1.000,20.000,26.000"
+    assert not page.plans.selectionModel().selectedRows()
+    assert wiz.run_page.steps()[0][1]["PLAN"] == "-1.000,-1.000,20.000,26.000"
+    wiz.next()
+    wiz.next()
+    b = panel.overlay.cad_box
+    assert b.xMaximum() <= 22 and b.width() > 15  # the west part of the floor plan only
+    wiz.done(0)
+    canvas.close()

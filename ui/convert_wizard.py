@@ -2,7 +2,9 @@
 implementation) step by step:
 
 1. floor plans: pick DXF/DWG files (several floors at once); the layers of the selected file and whether the
-   layer rules keep them (``cad2osmag:listlayers``);
+   layer rules keep them (``cad2osmag:listlayers``); the plans found on each sheet (``cad2osmag:listplans``:
+   index, kind, size, title), the main plan pre-selected, another one or an extent drawn over the sheet
+   picked by the user: the PLAN of every algorithm run for that file;
 2. settings in metres: raster resolution, widest door, corridor width, smallest area, first level, floor
    height;
 3. placement on the basemap (the *Place the plan on the map* panel, embedded: drag, rotate, scale or
@@ -20,6 +22,7 @@ from typing import List, Optional
 
 from qgis.core import (
     QgsApplication,
+    QgsWkbTypes,
     QgsProcessingContext,
     QgsProcessingFeedback,
     QgsProject,
@@ -53,6 +56,12 @@ from .placement_dock import PlacementWidget
 
 def tr(text):
     return QCoreApplication.translate("ConvertWizard", text)
+
+
+def kind_name(kind: str) -> str:
+    """The kind of a group on a sheet (cad_sheet.find_plans), for the user."""
+    names = {"plan": tr("plan"), "detail": tr("detail"), "legend": tr("legend"), "other": tr("other")}
+    return names.get(kind, kind)
 
 
 # ====================================================================== running algorithms in a task
@@ -162,7 +171,46 @@ class FilesPage(QWizardPage):
         lay.addWidget(self.layers, 2)
         self.summary = QLabel("")
         lay.addWidget(self.summary)
+        # plans on the sheet (cad2osmag:listplans): pick the main plan (pre-selected) or another view, or
+        # draw an extent over the sheet; the choice is the PLAN of every algorithm the wizard runs
+        lay.addWidget(QLabel(tr("Plans on the sheet (the selected one is converted):")))
+        row = QHBoxLayout()
+        self.plans = QTableWidget(0, 4)
+        self.plans.setHorizontalHeaderLabels([tr("Plan"), tr("Kind"), tr("Size"), tr("Title")])
+        self.plans.setEditTriggers(QAbstractItemView.EditTrigger.NoEditTriggers)
+        self.plans.setSelectionBehavior(QAbstractItemView.SelectionBehavior.SelectRows)
+        self.plans.setSelectionMode(QAbstractItemView.SelectionMode.SingleSelection)
+        self.plans.itemSelectionChanged.connect(self._plan_row_picked)
+        row.addWidget(self.plans, 1)
+        from qgis.gui import QgsMapCanvas
+
+        self.sheet_canvas = QgsMapCanvas()
+        self.sheet_canvas.setMinimumSize(240, 180)
+        self.sheet_canvas.setCanvasColor(Qt.GlobalColor.white)
+        row.addWidget(self.sheet_canvas, 1)
+        lay.addLayout(row, 2)
+        row = QHBoxLayout()
+        self.extent_button = QPushButton(tr("Draw an extent on the sheet"))
+        self.extent_button.setCheckable(True)
+        self.extent_button.setToolTip(tr("Drag a rectangle over the sheet to convert only what lies in it "
+                                         "(e.g. one half of a floor drawn in two parts)."))
+        self.extent_button.toggled.connect(self._extent_tool)
+        self.plan_status = QLabel("")
+        self.plan_status.setWordWrap(True)
+        row.addWidget(self.extent_button)
+        row.addWidget(self.plan_status, 1)
+        lay.addLayout(row)
+        import tempfile
+
+        self._tmp = tempfile.mkdtemp(prefix="cad2osmag-plans-")
+        self.sheets = {}  # path -> {"plans": [dict], "main": int, "structure": layer, "rects": layer}
+        self.choices = {}  # path -> PLAN text chosen by the user
+        self.plan_tasks = {}  # path -> running listplans task
+        self._filling = False
+        self._highlight = None
+        self._extent_map_tool = None
         self.files.currentRowChanged.connect(self.show_layers)
+        self.files.currentRowChanged.connect(self.show_plans)
 
     def paths(self) -> List[str]:
         return [self.files.item(i).text() for i in range(self.files.count())]
@@ -218,6 +266,214 @@ class FilesPage(QWizardPage):
 
     def isComplete(self):  # noqa: N802
         return self.files.count() > 0
+
+    # ------------------------------------------------------------------ plans on the sheet
+    def current_path(self) -> Optional[str]:
+        row = self.files.currentRow()
+        return self.files.item(row).text() if row >= 0 else None
+
+    def plan_parameter(self, path: str) -> str:
+        """The PLAN parameter for ``path``: the user's choice (an index or 'xmin,ymin,xmax,ymax' in metres),
+        else the main plan's index once the sheet is read, else '' (the algorithms take the main plan)."""
+        if path in self.choices:
+            return self.choices[path]
+        sheet = self.sheets.get(path)
+        if sheet is not None and sheet["main"] >= 0:
+            return str(sheet["main"])
+        return ""
+
+    def show_plans(self, row):
+        """The plans of the selected file (read once per file by ``cad2osmag:listplans``, as a task)."""
+        self._fill_plans(None)
+        path = self.files.item(row).text() if row >= 0 else None
+        if path is None:
+            return None
+        if path in self.sheets:
+            self._fill_plans(path)
+            return None
+        if path in self.plan_tasks:
+            return self.plan_tasks[path]
+        k = len(self.sheets) + len(self.plan_tasks)
+        rects = os.path.join(self._tmp, f"plans_{k}.gpkg")
+        lines = os.path.join(self._tmp, f"sheet_{k}.gpkg")
+        task = AlgorithmsTask(tr("Finding the plans on {}").format(os.path.basename(path)),
+                              [("cad2osmag:listplans", {"INPUT": path, "OUTPUT": rects, "STRUCTURE": lines})])
+        task.taskCompleted.connect(lambda: self._plans_read(path, task, rects, lines))
+        task.taskTerminated.connect(lambda: self._plans_failed(path, task))
+        self.plan_tasks[path] = task
+        self.plan_status.setText(tr("Finding the plans on the sheet…"))
+        QgsApplication.taskManager().addTask(task)
+        return task
+
+    def plans_ready(self, path) -> bool:
+        return path in self.sheets
+
+    def _plans_failed(self, path, task):
+        self.plan_tasks.pop(path, None)
+        self.sheets[path] = {"plans": [], "main": -1, "structure": None, "rects": None,
+                             "error": "; ".join(task.errors) or tr("canceled")}
+        if path == self.current_path():
+            self._fill_plans(path)
+
+    def _plans_read(self, path, task, rects, lines):
+        self.plan_tasks.pop(path, None)
+        rect_layer = QgsVectorLayer(rects, tr("plans"), "ogr")
+        plans = [{name: f[name] for name in ("index", "kind", "title", "width", "height", "wall_length", "main",
+                                             "xmin", "ymin", "xmax", "ymax")}
+                 for f in rect_layer.getFeatures()]
+        plans.sort(key=lambda p: p["index"])
+        main = int(task.results[0].get("MAIN_PLAN", -1)) if task.results and task.results[0] else -1
+        line_layer = QgsVectorLayer(lines, tr("sheet"), "ogr")
+        self._style_sheet(rect_layer, line_layer)
+        self.sheets[path] = {"plans": plans, "main": main, "structure": line_layer, "rects": rect_layer}
+        if path == self.current_path():
+            self._fill_plans(path)
+
+    @staticmethod
+    def _style_sheet(rect_layer, line_layer):
+        from qgis.core import (QgsFillSymbol, QgsLineSymbol, QgsPalLayerSettings, QgsSingleSymbolRenderer,
+                               QgsTextFormat, QgsVectorLayerSimpleLabeling)
+        from qgis.PyQt.QtGui import QColor
+
+        rect_layer.setRenderer(QgsSingleSymbolRenderer(QgsFillSymbol.createSimple(
+            {"color": "0,0,0,0", "outline_color": "255,140,0", "outline_width": "0.5", "outline_style": "dash"})))
+        labels = QgsPalLayerSettings()
+        labels.isExpression = True
+        labels.fieldName = "'[' || \"index\" || '] ' || \"kind\""
+        fmt = QgsTextFormat()
+        fmt.setSize(9)
+        fmt.setColor(QColor(200, 90, 0))
+        labels.setFormat(fmt)
+        rect_layer.setLabeling(QgsVectorLayerSimpleLabeling(labels))
+        rect_layer.setLabelsEnabled(True)
+        line_layer.setRenderer(QgsSingleSymbolRenderer(QgsLineSymbol.createSimple({"color": "60,60,60",
+                                                                                   "width": "0.1"})))
+
+    def _fill_plans(self, path):
+        """Table and sheet canvas for ``path`` (None: empty), the current choice selected."""
+        self._filling = True
+        try:
+            self.plans.setRowCount(0)
+            self.sheet_canvas.setLayers([])
+            self._set_highlight(None)
+            if path is None or path not in self.sheets:
+                return
+            sheet = self.sheets[path]
+            if sheet.get("error"):
+                self.plan_status.setText(tr("Cannot find the plans: {}").format(sheet["error"]))
+                return
+            plans = sheet["plans"]
+            self.plans.setRowCount(len(plans))
+            for r, p in enumerate(plans):
+                values = (str(p["index"]) + (" ★" if p["main"] else ""), kind_name(p["kind"]),
+                          tr("{:.0f} × {:.0f} m").format(p["width"], p["height"]), p["title"] or "")
+                for c, v in enumerate(values):
+                    self.plans.setItem(r, c, QTableWidgetItem(v))
+            layers = [lyr for lyr in (sheet["rects"], sheet["structure"]) if lyr is not None and lyr.isValid()]
+            if layers:
+                self.sheet_canvas.setDestinationCrs(layers[0].crs())
+                self.sheet_canvas.setLayers(layers)
+                ext = layers[0].extent()
+                ext.scale(1.1)
+                self.sheet_canvas.setExtent(ext)
+                self.sheet_canvas.refresh()
+            choice = self.plan_parameter(path)
+            rows = [r for r, p in enumerate(plans) if str(p["index"]) == choice]
+            if rows:
+                self.plans.selectRow(rows[0])
+            self._show_choice(path)
+        finally:
+            self._filling = False
+
+    def _plan_row_picked(self):
+        if self._filling:
+            return
+        path = self.current_path()
+        rows = sorted({i.row() for i in self.plans.selectedIndexes()})
+        if path is None or path not in self.sheets or not rows:
+            return
+        self.choices[path] = str(self.sheets[path]["plans"][rows[0]]["index"])
+        self._show_choice(path)
+
+    def pick_plan(self, index: int):
+        """Select the plan ``index`` of the current file (as a click in the table does)."""
+        path = self.current_path()
+        plans = self.sheets.get(path, {}).get("plans", [])
+        rows = [r for r, p in enumerate(plans) if p["index"] == index]
+        if rows:
+            self.plans.selectRow(rows[0])
+
+    def pick_extent(self, rect):
+        """Convert only what lies in ``rect`` (QgsRectangle, metres of the drawing frame) of the current file."""
+        path = self.current_path()
+        if path is None or rect is None or rect.isEmpty():
+            return
+        self.choices[path] = "{:.3f},{:.3f},{:.3f},{:.3f}".format(rect.xMinimum(), rect.yMinimum(),
+                                                                  rect.xMaximum(), rect.yMaximum())
+        self._filling = True
+        self.plans.clearSelection()
+        self._filling = False
+        self.extent_button.setChecked(False)
+        self._show_choice(path)
+
+    def _extent_tool(self, on):
+        from qgis.gui import QgsMapToolExtent
+
+        if on:
+            self._extent_map_tool = QgsMapToolExtent(self.sheet_canvas)
+            self._extent_map_tool.extentChanged.connect(self.pick_extent)
+            self.sheet_canvas.setMapTool(self._extent_map_tool)
+        elif self._extent_map_tool is not None:
+            self.sheet_canvas.unsetMapTool(self._extent_map_tool)
+            self._extent_map_tool = None
+
+    def _show_choice(self, path):
+        sheet = self.sheets.get(path)
+        choice = self.plan_parameter(path)
+        if sheet is None:
+            return
+        n = len(sheet["plans"])
+        if not choice:
+            self.plan_status.setText(tr("{} group(s) on the sheet and no floor plan among them: pick one, or draw "
+                                        "an extent.").format(n))
+            self._set_highlight(None)
+            return
+        if "," in choice:
+            box = [float(v) for v in choice.split(",")]
+            self.plan_status.setText(tr("Converting the extent {:.1f}, {:.1f} – {:.1f}, {:.1f} m of {} group(s).")
+                                     .format(box[0], box[1], box[2], box[3], n))
+        else:
+            p = next(p for p in sheet["plans"] if str(p["index"]) == choice)
+            box = [p["xmin"], p["ymin"], p["xmax"], p["ymax"]]
+            self.plan_status.setText(tr("Converting plan [{}] ({}{}) of {} group(s).").format(
+                p["index"], kind_name(p["kind"]), (": " + p["title"]) if p["title"] else "", n))
+        self._set_highlight(box)
+
+    def _set_highlight(self, box):
+        from qgis.core import QgsGeometry, QgsRectangle
+        from qgis.gui import QgsRubberBand
+        from qgis.PyQt.QtGui import QColor
+
+        if self._highlight is not None:
+            self.sheet_canvas.scene().removeItem(self._highlight)
+            self._highlight = None
+        if box is None:
+            return
+        band = QgsRubberBand(self.sheet_canvas, QgsWkbTypes.GeometryType.PolygonGeometry)
+        band.setColor(QColor(0, 170, 0, 200))
+        band.setFillColor(QColor(0, 170, 0, 40))
+        band.setWidth(2)
+        band.setToGeometry(QgsGeometry.fromRect(QgsRectangle(*box)), None)
+        self._highlight = band
+
+    def release(self):
+        import shutil
+
+        self._set_highlight(None)
+        self._extent_tool(False)
+        self.sheet_canvas.setLayers([])
+        self.sheets.clear()
+        shutil.rmtree(self._tmp, ignore_errors=True)
 
 
 class SettingsPage(QWizardPage):
@@ -276,7 +532,8 @@ class SettingsPage(QWizardPage):
         d = self._tmp
         walls, occ = os.path.join(d, "walls.gpkg"), os.path.join(d, "occupancy.tif")
         areas, passages = os.path.join(d, "areas.gpkg"), os.path.join(d, "passages.gpkg")
-        steps = [("cad2osmag:extractstructure", {"INPUT": paths[0], "WALLS": walls,
+        plan = self.wiz.files_page.plan_parameter(paths[0])
+        steps = [("cad2osmag:extractstructure", {"INPUT": paths[0], "PLAN": plan, "WALLS": walls,
                                                  "TEXTS": os.path.join(d, "texts.gpkg")}),
                  ("cad2osmag:rasterize", {"WALLS": walls, "RESOLUTION": self.resolution.value(), "OCCUPANCY": occ}),
                  ("cad2osmag:segment", {"INPUT": occ, "DOOR_WIDTH": self.door_width.value(),
@@ -345,8 +602,12 @@ class PlacementPage(QWizardPage):
 
     def initializePage(self):  # noqa: N802
         paths = self.wiz.files_page.paths()
-        if paths and self.panel.overlay is None:
-            self.panel.load_file(paths[0])
+        if not paths:
+            return
+        wanted = (paths[0], self.wiz.files_page.plan_parameter(paths[0]))
+        if self.panel.overlay is None or getattr(self, "_loaded", None) != wanted:
+            self.panel.load_file(wanted[0], plan=wanted[1])  # the plan picked on the first page
+            self._loaded = wanted
 
     def cleanupPage(self):  # noqa: N802
         self.panel.deactivate_tools()
@@ -413,7 +674,8 @@ class RunPage(QWizardPage):
         for k, path in enumerate(w.files_page.paths()):
             stem = os.path.splitext(os.path.basename(path))[0]
             osm = os.path.join(out, stem + ".osm")
-            params = {"INPUT": path, "OUTPUT": osm, "LEVEL": str(s.first_level.value() + k),
+            params = {"INPUT": path, "PLAN": w.files_page.plan_parameter(path), "OUTPUT": osm,
+                      "LEVEL": str(s.first_level.value() + k),
                       "HEIGHT": s.height.value(), "RESOLUTION": s.resolution.value(),
                       "DOOR_WIDTH": s.door_width.value(), "CORRIDOR_WIDTH": s.corridor_width.value(),
                       "MIN_AREA": s.min_area.value(),
@@ -613,4 +875,5 @@ class ConvertWizard(QWizard):
     def done(self, result):  # noqa: D401 - Qt override
         self.placement_page.panel.remove_overlay()
         self.settings_page.release_preview()
+        self.files_page.release()
         super().done(result)

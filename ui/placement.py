@@ -412,9 +412,9 @@ class GcpMapTool(_PlacementToolBase):
 
 
 # ====================================================================== loading a floor
-def structure_layer(path: str, context=None, feedback=None) -> QgsVectorLayer:
+def structure_layer(path: str, context=None, feedback=None, plan=None) -> QgsVectorLayer:
     """The structure lines of a DXF/DWG floor, through ``cad2osmag:extractstructure`` (no second
-    implementation), as a memory layer in the CAD frame."""
+    implementation), as a memory layer in the CAD frame; ``plan``: its PLAN on a whole sheet."""
     from qgis.core import QgsApplication, QgsProcessingContext, QgsProcessingFeedback
 
     alg = QgsApplication.processingRegistry().createAlgorithmById("cad2osmag:extractstructure")
@@ -423,7 +423,10 @@ def structure_layer(path: str, context=None, feedback=None) -> QgsVectorLayer:
     context = context or QgsProcessingContext()
     context.setProject(QgsProject.instance())
     feedback = feedback or QgsProcessingFeedback()
-    results, ok = alg.run({"INPUT": path, "WALLS": "memory:", "TEXTS": "memory:"}, context, feedback)
+    params = {"INPUT": path, "WALLS": "memory:", "TEXTS": "memory:"}
+    if plan not in (None, ""):
+        params["PLAN"] = str(plan)
+    results, ok = alg.run(params, context, feedback)
     if not ok:
         raise RuntimeError(tr("cannot read the structure of {}").format(os.path.basename(path)))
     layer = context.takeResultLayer(results["WALLS"])

@@ -142,10 +142,11 @@ class PlacementWidget(QWidget):
         if path:
             self.load_file(path)
 
-    def load_file(self, path):
-        """Structure lines of a DXF/DWG (through cad2osmag:extractstructure) over the map."""
+    def load_file(self, path, plan=None):
+        """Structure lines of a DXF/DWG (through cad2osmag:extractstructure) over the map; ``plan`` is the
+        PLAN of a whole sheet (an index or 'xmin,ymin,xmax,ymax'; None / '' = the main plan)."""
         try:
-            layer = structure_layer(path)
+            layer = structure_layer(path, plan=plan)
         except Exception as exc:  # noqa: BLE001 - shown to the user, the panel stays usable
             self.plan_label.setText(tr("Cannot load {}: {}").format(os.path.basename(path), exc))
             return None
