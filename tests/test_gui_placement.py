@@ -97,6 +97,58 @@ def test_placement_gives_the_parameters_of_georeference_and_dxftoosmag():
     assert pm.Placement.from_json(p.to_json()) == p
 
 
+def _rect_segments(cx, cy, w, h, angle_deg):
+    """The 4 edges (x0, y0, x1, y1) of a w x h rectangle centred on (cx, cy) turned by angle_deg (CCW)."""
+    a = math.radians(angle_deg)
+    c, s = math.cos(a), math.sin(a)
+    pts = [(cx + x * c - y * s, cy + x * s + y * c) for x, y in
+           ((-w / 2, -h / 2), (w / 2, -h / 2), (w / 2, h / 2), (-w / 2, h / 2))]
+    return [(*pts[i], *pts[(i + 1) % 4]) for i in range(4)]
+
+
+def test_dominant_directions_of_walls_fold_right_angles_and_ignore_clutter():
+    pm = _math()
+    import random
+
+    rng = random.Random(1)
+    segs = _rect_segments(0, 0, 40, 20, 27.0) + _rect_segments(5, 3, 6, 4, 117.0)  # same walls mod 90
+    segs += [(x, y, x + 0.3 * math.cos(t), y + 0.3 * math.sin(t))  # short furniture-like clutter
+             for x, y, t in ((rng.uniform(-20, 20), rng.uniform(-10, 10), rng.uniform(0, 6.3)) for _ in range(200))]
+    ang, length = pm.cad_directions(segs)
+    dirs = pm.dominant_directions(ang, length)
+    assert dirs and dirs[0] == pytest.approx(27.0, abs=0.2)
+    # two buildings at different angles: both found, the longer first; a direction near 0 wraps to 89.x
+    segs2 = _rect_segments(0, 0, 60, 30, 10.0) + _rect_segments(100, 0, 30, 20, -0.4)
+    d2 = pm.dominant_directions(*pm.cad_directions(segs2))
+    assert d2[0] == pytest.approx(10.0, abs=0.2) and d2[1] == pytest.approx(89.6, abs=0.2)
+    assert pm.dominant_directions([], []) == []
+
+
+def test_ground_directions_and_rotation_snap_to_building_edges():
+    pm = _math()
+    # a footprint whose long edge runs at azimuth 20 deg (a plan rotated by 20 deg with its walls along x, y)
+    truth = pm.Placement(LON, LAT, 20.0, 1.0)
+    ring = [truth.to_wgs84(x, y) for x, y in ((0, 0), (30, 0), (30, 12), (0, 12))]
+    segs = [(*ring[i], *ring[(i + 1) % 4]) for i in range(4)]
+    az, length = pm.ground_directions(segs)
+    assert length.sum() == pytest.approx(84.0, abs=0.01)
+    targets = pm.dominant_directions(az, length)
+    assert targets[0] == pytest.approx(20.0, abs=0.05)
+    # the plan's walls are along the CAD axes (direction 0): rotated by 18.2 deg it snaps to 20
+    rot, hit = pm.snap_rotation(18.2, 0.0, targets)
+    assert rot == pytest.approx(20.0, abs=0.05) and hit == pytest.approx(targets[0])
+    rot, hit = pm.snap_rotation(291.5, 0.0, targets)  # 290 = 20 mod 90 as well
+    assert rot == pytest.approx(290.0, abs=0.05) and hit is not None
+    rot, hit = pm.snap_rotation(26.0, 0.0, targets)  # too far: unchanged
+    assert rot == pytest.approx(26.0) and hit is None
+    # a plan drawn at 27 deg in the CAD frame lies along azimuth 20 when rotated by 47 (+/- 90)
+    assert pm.plan_ground_direction(47.0, 27.0) == pytest.approx(20.0)
+    rot, _ = pm.snap_rotation(45.5, 27.0, targets)
+    assert rot == pytest.approx(47.0, abs=0.05)
+    assert pm.snap_rotation(12.0, None, targets) == (12.0, None)
+    assert pm.snap_rotation(12.0, 0.0, []) == (12.0, None)
+
+
 # ---------------------------------------------------------------------------------------- on a canvas
 @pytest.fixture()
 def plan_canvas(qgis_app, qgis_new_project):
@@ -225,6 +277,63 @@ def test_dragging_the_round_handle_rotates_the_plan_about_its_centre(plan_canvas
     _drag(tool, canvas, handle, end, modifiers=Qt.KeyboardModifier.ShiftModifier)
     assert tool.placement.rotation_deg == pytest.approx(round(tool.placement.rotation_deg), abs=1e-9)
     assert tool.placement.rotation_deg == pytest.approx(35.0, abs=1.0)
+
+
+def test_rotation_snaps_to_the_edges_of_building_footprints_on_the_map(plan_canvas):
+    """OSM-like building footprints (a polygon layer in web mercator) around the plan, the long side at
+    azimuth 20 deg: a turn of the handle to 18.4 deg ends at 20.0; a turn to 30 deg stays 30 (too far);
+    Shift (whole degrees) wins over the snap; with the snap off nothing moves."""
+    from qgis.core import (QgsCoordinateReferenceSystem, QgsCoordinateTransform, QgsFeature, QgsGeometry,
+                           QgsPointXY, QgsProject, QgsVectorLayer)
+    from qgis.PyQt.QtCore import Qt
+
+    from cad2osmag.ui.placement import PlacementMapTool, building_edge_directions
+    from cad2osmag.ui.placement_math import Placement
+
+    canvas, overlay, placement = plan_canvas
+    truth = Placement(LON, LAT, 20.0, 1.0)
+    to_merc = QgsCoordinateTransform(QgsCoordinateReferenceSystem("EPSG:4326"),
+                                     QgsCoordinateReferenceSystem("EPSG:3857"), QgsProject.instance())
+    buildings = QgsVectorLayer("Polygon?crs=EPSG:3857", "buildings", "memory")
+    feats = []
+    for x0, y0, w, h in ((-2, -1, 44, 22), (50, 0, 12, 30)):  # the building and a neighbour, same grid
+        ring = [to_merc.transform(QgsPointXY(*truth.to_wgs84(x, y)))
+                for x, y in ((x0, y0), (x0 + w, y0), (x0 + w, y0 + h), (x0, y0 + h), (x0, y0))]
+        f = QgsFeature()
+        f.setGeometry(QgsGeometry.fromPolygonXY([ring]))
+        feats.append(f)
+    buildings.dataProvider().addFeatures(feats)
+    QgsProject.instance().addMapLayer(buildings)
+    canvas.setLayers([overlay.layer, buildings])
+    assert overlay.cad_direction == pytest.approx(0.0, abs=0.3) or overlay.cad_direction == pytest.approx(90, abs=0.3)
+    targets = building_edge_directions(canvas, placement, overlay)
+    assert targets and targets[0] == pytest.approx(20.0, abs=0.05)
+
+    tool = PlacementMapTool(canvas, overlay, placement)
+    canvas.setMapTool(tool)
+    pivot = _pixel(canvas, placement.to_wgs84(*overlay.centre))
+    handle = _pixel(canvas, placement.to_wgs84(*overlay.rotate_handle))
+    r = math.hypot(handle[0] - pivot[0], handle[1] - pivot[1])
+
+    def turn_to(deg, **kw):
+        tool.set_placement(placement)
+        a = math.radians(deg)
+        _drag(tool, canvas, handle, (pivot[0] + r * math.sin(a), pivot[1] - r * math.cos(a)), **kw)
+        return tool.placement
+
+    p = turn_to(18.4)
+    assert p.rotation_deg == pytest.approx(20.0, abs=0.05) and tool.snapped == pytest.approx(20.0, abs=0.05)
+    assert _dist(p.to_wgs84(*overlay.centre), placement.to_wgs84(*overlay.centre)) < 1e-3  # centre kept
+    p = turn_to(-68.5)  # 291.5 = 21.5 modulo 90: the plan turned the other way round snaps too
+    assert p.rotation_deg == pytest.approx(290.0, abs=0.05)
+    p = turn_to(30.0)
+    assert p.rotation_deg == pytest.approx(30.0, abs=0.5) and tool.snapped is None
+    p = turn_to(18.4, modifiers=Qt.KeyboardModifier.ShiftModifier)
+    assert p.rotation_deg == pytest.approx(round(p.rotation_deg), abs=1e-9) and round(p.rotation_deg) in (18, 19)
+    tool.snap_to_buildings = False
+    p = turn_to(18.4)
+    assert p.rotation_deg == pytest.approx(18.4, abs=0.5) and abs(p.rotation_deg - 20.0) > 1.0
+    QgsProject.instance().removeMapLayer(buildings.id())
 
 
 def test_dragging_the_square_handle_scales_the_plan(plan_canvas):

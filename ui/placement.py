@@ -4,7 +4,8 @@ The floor's structure lines (``cad2osmag:extractstructure``, or any layer in the
 temporary layer over the OpenStreetMap / satellite basemap. Two map tools change the placement:
 
 * :class:`PlacementMapTool`: drag the plan to move it, drag the round handle above it to rotate it (about
-  the plan's centre; hold Shift to snap to whole degrees), drag the square handle at its corner to scale it.
+  the plan's centre; its dominant wall direction snaps to the edges of the building footprints shown on the
+  map when within 3°; hold Shift for whole degrees instead), drag the square handle at its corner to scale it.
 * :class:`GcpMapTool`: click a point of the drawing, then the same point on the basemap; after two pairs
   the Helmert (similarity) fit of ``algorithms.georef.fit_gcps`` places the plan, and its RMS and every
   point's residual are shown live.
@@ -36,13 +37,28 @@ from qgis.gui import QgsMapTool, QgsRubberBand, QgsVertexMarker
 from qgis.PyQt.QtCore import QCoreApplication, Qt, pyqtSignal
 from qgis.PyQt.QtGui import QColor
 
-from .placement_math import Gcp, Placement, fitted, moved, project_points, rotated, scaled
+from .placement_math import (
+    Gcp,
+    Placement,
+    cad_directions,
+    dominant_directions,
+    fitted,
+    ground_directions,
+    moved,
+    project_points,
+    rotated,
+    rotated_to,
+    scaled,
+    snap_rotation,
+)
 
 PROJECT_SCOPE = "cad2osmag"
 PROJECT_KEY = "placement"
 WGS84 = QgsCoordinateReferenceSystem("EPSG:4326")
 HANDLE_TOLERANCE_PX = 10
 PREVIEW_MAX_LINES = 3000  # lines drawn while dragging (the layer itself is redrawn on release)
+SNAP_MAX_FEATURES = 2000  # building footprints read around the plan for the rotation snap
+SNAP_MARGIN = 0.5  # of the plan's size: footprints this far around it count
 
 
 def tr(text):
@@ -95,6 +111,21 @@ class PlanOverlay:
     def from_layer(cls, layer: QgsVectorLayer, name: Optional[str] = None, project=None) -> "PlanOverlay":
         return cls([f.geometry() for f in layer.getFeatures()], name or tr("Plan placement: {}").format(layer.name()),
                    project)
+
+    @property
+    def cad_direction(self) -> Optional[float]:
+        """The plan's dominant wall direction (degrees counter-clockwise from the CAD +x axis, modulo 90), or
+        None for a plan without a clear direction; computed once."""
+        if not hasattr(self, "_cad_direction"):
+            segs = []
+            for g in self.cad_lines:
+                parts = g.asGeometryCollection() if g.isMultipart() else [g]
+                for part in parts:
+                    pts = part.asPolyline()
+                    segs.extend((a.x(), a.y(), b.x(), b.y()) for a, b in zip(pts, pts[1:]))
+            dirs = dominant_directions(*cad_directions(segs)) if segs else []
+            self._cad_direction = dirs[0] if dirs else None
+        return self._cad_direction
 
     # CAD reference points of the gestures --------------------------------------------------------
     @property
@@ -179,6 +210,46 @@ def _from_lonlat(canvas, lonlat, project=None) -> QgsPointXY:
     return tr_.transform(QgsPointXY(*lonlat))
 
 
+# ====================================================================== building edges to snap to
+def building_edge_directions(canvas, placement: Placement, overlay: "PlanOverlay", project=None) -> List[float]:
+    """Dominant edge azimuths (degrees modulo 90) of the building footprints around the plan: the polygons of
+    every vector layer shown on ``canvas`` (e.g. OSM buildings loaded by the user) within half the plan's
+    size of it; [] when there are none (a raster basemap only)."""
+    from qgis.core import QgsFeatureRequest
+
+    project = project or QgsProject.instance()
+    b = overlay.cad_box
+    margin = SNAP_MARGIN * max(b.width(), b.height())
+    corners = [(b.xMinimum() - margin, b.yMinimum() - margin), (b.xMaximum() + margin, b.yMinimum() - margin),
+               (b.xMaximum() + margin, b.yMaximum() + margin), (b.xMinimum() - margin, b.yMaximum() + margin)]
+    lons, lats = project_points(placement, [c[0] for c in corners], [c[1] for c in corners], placement)
+    area = QgsRectangle(float(min(lons)), float(min(lats)), float(max(lons)), float(max(lats)))
+    segs = []
+    for layer in canvas.layers():
+        if not isinstance(layer, QgsVectorLayer) or layer is overlay.layer or \
+                layer.geometryType() != QgsWkbTypes.GeometryType.PolygonGeometry:
+            continue
+        to_layer = QgsCoordinateTransform(WGS84, layer.crs(), project)
+        to_wgs = QgsCoordinateTransform(layer.crs(), WGS84, project)
+        try:
+            rect = to_layer.transformBoundingBox(area)
+        except Exception:  # noqa: BLE001 - a layer whose CRS cannot hold the area: skip it
+            continue
+        request = QgsFeatureRequest().setFilterRect(rect).setLimit(SNAP_MAX_FEATURES)
+        request.setNoAttributes()
+        for f in layer.getFeatures(request):
+            g = QgsGeometry(f.geometry())
+            if g.isEmpty() or g.transform(to_wgs) != 0:
+                continue
+            polys = g.asMultiPolygon() if g.isMultipart() else [g.asPolygon()]
+            for poly in polys:
+                for ring in poly:
+                    segs.extend((p.x(), p.y(), q.x(), q.y()) for p, q in zip(ring, ring[1:]))
+    if not segs:
+        return []
+    return dominant_directions(*ground_directions(segs))
+
+
 # ====================================================================== shared map tool state
 class _PlacementToolBase(QgsMapTool):
     placementChanged = pyqtSignal(object)  # Placement, at the end of each gesture / fit
@@ -213,9 +284,12 @@ class _PlacementToolBase(QgsMapTool):
 class PlacementMapTool(_PlacementToolBase):
     """Drag to move, drag the round handle to rotate, drag the square handle to scale."""
 
-    def __init__(self, canvas, overlay, placement, allow_scale: bool = True):
+    def __init__(self, canvas, overlay, placement, allow_scale: bool = True, snap_to_buildings: bool = True):
         super().__init__(canvas, overlay, placement)
         self.allow_scale = allow_scale
+        self.snap_to_buildings = snap_to_buildings  # rotation snaps to the footprints' edges on the canvas
+        self.snap_targets: List[float] = []  # their directions, read when a rotation starts
+        self.snapped = None  # the edge direction the last rotation snapped to, or None
         self.mode = None  # 'move', 'rotate', 'scale' while a button is down
         self._start = None
         self._start_placement = None
@@ -283,8 +357,14 @@ class PlacementMapTool(_PlacementToolBase):
         end = _to_lonlat(self.canvas(), end_point, self.project)
         p0 = self._start_placement
         if self.mode == "rotate":
-            snap = 1.0 if modifiers & Qt.KeyboardModifier.ShiftModifier else None
-            return rotated(p0, self.overlay.centre, start, end, snap, exact=exact)
+            whole = bool(modifiers & Qt.KeyboardModifier.ShiftModifier)
+            p = rotated(p0, self.overlay.centre, start, end, 1.0 if whole else None, exact=exact)
+            self.snapped = None
+            if not whole and self.snap_targets:
+                rot, self.snapped = snap_rotation(p.rotation_deg, self.overlay.cad_direction, self.snap_targets)
+                if self.snapped is not None:
+                    p = rotated_to(p0, self.overlay.centre, rot, exact=exact)
+            return p
         if self.mode == "scale":
             return scaled(p0, self.overlay.centre, start, end, exact=exact)
         return moved(p0, start, end, exact=exact)
@@ -295,6 +375,10 @@ class PlacementMapTool(_PlacementToolBase):
         self._start = QgsPointXY(event.mapPoint())
         self._start_placement = self.placement
         self.mode = self.hit_mode(self._start)
+        self.snapped = None
+        self.snap_targets = []
+        if self.mode == "rotate" and self.snap_to_buildings:
+            self.snap_targets = building_edge_directions(self.canvas(), self.placement, self.overlay, self.project)
         self.setCursor(Qt.CursorShape.ClosedHandCursor)
 
     def canvasMoveEvent(self, event):  # noqa: N802

@@ -101,6 +101,13 @@ class PlacementWidget(QWidget):
         for s in (self.lon_spin, self.lat_spin, self.rot_spin, self.scale_spin):
             s.valueChanged.connect(self._spins_edited)
 
+        self.snap_edges = QCheckBox(tr("Snap the rotation to building edges (polygon layers on the map, within 3°)"))
+        self.snap_edges.setToolTip(tr("Load building footprints (e.g. OpenStreetMap buildings) as a vector layer: "
+                                      "while you turn the plan, its walls snap to their edges. Shift turns in "
+                                      "whole degrees instead."))
+        self.snap_edges.setChecked(True)
+        self.snap_edges.toggled.connect(self._snap_toggled)
+        lay.addWidget(self.snap_edges)
         self.fix_scale = QCheckBox(tr("Control points: keep the scale (solve position and rotation only)"))
         lay.addWidget(self.fix_scale)
         self.gcp_table = QTableWidget(0, 5)
@@ -200,8 +207,9 @@ class PlacementWidget(QWidget):
             tool = self.gcp_tool
         else:
             if self.move_tool is None:
-                self.move_tool = PlacementMapTool(self.canvas, self.overlay, self.placement)
-                self.move_tool.placementChanged.connect(lambda p: self.set_placement(p, from_tool=True))
+                self.move_tool = PlacementMapTool(self.canvas, self.overlay, self.placement,
+                                                  snap_to_buildings=self.snap_edges.isChecked())
+                self.move_tool.placementChanged.connect(self._moved_by_tool)
             self.move_tool.placement = self.placement
             tool = self.move_tool
         self.canvas.setMapTool(tool)
@@ -240,6 +248,19 @@ class PlacementWidget(QWidget):
         if save:
             save_placement(placement, self.project)
         self.placementChanged.emit(placement)
+
+    def _snap_toggled(self, on):
+        if self.move_tool is not None:
+            self.move_tool.snap_to_buildings = bool(on)
+
+    def _moved_by_tool(self, placement):
+        self.set_placement(placement, from_tool=True)
+        tool = self.move_tool
+        if tool is not None and tool.snapped is not None:
+            self.note.setText(tr("Rotation snapped to the building edges at {:.1f}° (modulo 90°).").format(
+                tool.snapped))
+        else:
+            self.note.setText(tr("The placement is saved with the project and used for every floor of the building."))
 
     def _spins_edited(self):
         if self._updating or self.placement is None:

@@ -142,6 +142,14 @@ def rotated(placement: Placement, pivot_cad: Sequence[float], start: LonLat, end
     return Placement(lon, lat, rot, placement.scale, list(placement.gcps), None)
 
 
+def rotated_to(placement: Placement, pivot_cad: Sequence[float], rotation_deg: float,
+               exact: bool = True) -> Placement:
+    """``placement`` turned about the CAD point ``pivot_cad`` (which stays put) to ``rotation_deg``."""
+    pivot = placement.to_wgs84(*pivot_cad)
+    lon, lat = place_cad_point(rotation_deg, placement.scale, pivot_cad, pivot, placement, exact)
+    return Placement(lon, lat, float(rotation_deg) % 360.0, placement.scale, list(placement.gcps), None)
+
+
 def scaled(placement: Placement, pivot_cad: Sequence[float], start: LonLat, end: LonLat,
            exact: bool = True) -> Placement:
     """Drag the scale handle: the distance of the handle from the pivot sets the scale."""
@@ -177,3 +185,98 @@ def fitted(gcps: Sequence[Gcp], fixed_scale: Optional[float] = None) -> Placemen
                                      ids=[str(i + 1) for i in range(len(gcps))], fixed_scale=fixed_scale)
     out = [Gcp(g.cad_x, g.cad_y, g.lon, g.lat, float(r)) for g, r in zip(gcps, residuals)]
     return Placement.from_frame(frame, out, float(rms))
+
+
+# ====================================================================== snapping to building edges
+SNAP_PERIOD = 90.0  # buildings are drawn (mostly) at right angles: directions are compared modulo 90°
+SNAP_TOLERANCE_DEG = 3.0  # the plan snaps when its walls are this close to the buildings' edges
+
+
+def _circ_diff(a, b, period=SNAP_PERIOD):
+    """Signed smallest difference a - b of two directions modulo ``period`` (in [-period/2, period/2))."""
+    return (float(a) - float(b) + period / 2.0) % period - period / 2.0
+
+
+def dominant_directions(angles_deg, lengths, period: float = SNAP_PERIOD, bin_deg: float = 0.5,
+                        smooth_deg: float = 1.5, min_share: float = 0.3, max_peaks: int = 4) -> List[float]:
+    """The directions (degrees in [0, period)) along which most of the length lies, strongest first.
+
+    Angles are folded modulo ``period`` (90°: a wall and the walls at right angles to it count together),
+    binned by length, smoothed circularly (``smooth_deg``, Gaussian) and every local maximum of at least
+    ``min_share`` of the strongest is a direction (peaks closer than 5° are one). Each direction is refined
+    by the length-weighted circular mean of the angles within 2 smoothing widths of its peak."""
+    import numpy as np
+
+    a = np.asarray(angles_deg, float).ravel() % period
+    w = np.asarray(lengths, float).ravel()
+    ok = np.isfinite(a) & np.isfinite(w) & (w > 0)
+    a, w = a[ok], w[ok]
+    if not len(a) or w.sum() <= 0:
+        return []
+    nb = max(int(round(period / bin_deg)), 8)
+    hist = np.bincount((a / period * nb).astype(int) % nb, weights=w, minlength=nb)
+    sigma = max(smooth_deg / (period / nb), 1e-6)
+    reach = min(int(math.ceil(3 * sigma)), nb // 2)
+    spec = sum(math.exp(-0.5 * (k / sigma) ** 2) * np.roll(hist, k) for k in range(-reach, reach + 1))
+    peaks = [i for i in range(nb) if spec[i] >= spec[i - 1] and spec[i] > spec[(i + 1) % nb]]
+    peaks.sort(key=lambda i: -spec[i])
+    top = spec[peaks[0]] if peaks else 0.0
+    out: List[float] = []
+    for i in peaks:
+        if spec[i] < min_share * top or len(out) >= max_peaks:
+            break
+        centre = (i + 0.5) * period / nb
+        if any(abs(_circ_diff(centre, c, period)) < 5.0 for c in out):
+            continue
+        near = np.abs(((a - centre + period / 2) % period) - period / 2) <= 2 * smooth_deg
+        if near.any():
+            ph = np.exp(2j * np.pi * a[near] / period)
+            centre = float(np.angle(np.sum(w[near] * ph)) / (2 * np.pi) * period) % period
+        out.append(centre)
+    return out
+
+
+def cad_directions(segments) -> Tuple["object", "object"]:
+    """Directions (degrees counter-clockwise from the drawing's +x axis) and lengths of CAD segments
+    ``(x0, y0, x1, y1)`` rows."""
+    import numpy as np
+
+    s = np.asarray(segments, float).reshape(-1, 4)
+    dx, dy = s[:, 2] - s[:, 0], s[:, 3] - s[:, 1]
+    return np.degrees(np.arctan2(dy, dx)), np.hypot(dx, dy)
+
+
+def ground_directions(segments_lonlat) -> Tuple["object", "object"]:
+    """Azimuths (degrees clockwise from north, geodesic) and lengths (metres) of ``(lon0, lat0, lon1, lat1)``
+    segments, e.g. the edges of building footprints."""
+    import numpy as np
+
+    from ..algorithms.georef import _geod_inv
+
+    s = np.asarray(segments_lonlat, float).reshape(-1, 4)
+    if not len(s):
+        return np.zeros(0), np.zeros(0)
+    az, d = _geod_inv(s[:, 0], s[:, 1], s[:, 2], s[:, 3])
+    return np.asarray(az, float) % 360.0, np.asarray(d, float)
+
+
+def plan_ground_direction(rotation_deg: float, cad_direction_deg: float, period: float = SNAP_PERIOD) -> float:
+    """Azimuth (modulo ``period``) on the ground of the CAD direction ``cad_direction_deg`` (counter-clockwise
+    from +x) under a placement rotated by ``rotation_deg`` (azimuth of +y): az = rotation + 90 - angle."""
+    return (float(rotation_deg) + 90.0 - float(cad_direction_deg)) % period
+
+
+def snap_rotation(rotation_deg: float, cad_direction_deg: Optional[float], targets: Sequence[float],
+                  tolerance_deg: float = SNAP_TOLERANCE_DEG, period: float = SNAP_PERIOD
+                  ) -> Tuple[float, Optional[float]]:
+    """Turn ``rotation_deg`` so that the plan's dominant wall direction (``cad_direction_deg``, CAD frame)
+    lies along the nearest of the buildings' edge directions ``targets`` (azimuths modulo ``period``) when
+    it is within ``tolerance_deg`` of one. Returns (rotation, the target snapped to or None)."""
+    if cad_direction_deg is None or not targets:
+        return float(rotation_deg) % 360.0, None
+    here = plan_ground_direction(rotation_deg, cad_direction_deg, period)
+    best = min(targets, key=lambda t: abs(_circ_diff(t, here, period)))
+    delta = _circ_diff(best, here, period)
+    if abs(delta) > tolerance_deg:
+        return float(rotation_deg) % 360.0, None
+    return (float(rotation_deg) + delta) % 360.0, float(best) % period
