@@ -244,3 +244,138 @@ def test_wizard_lists_the_plans_of_a_sheet_and_passes_the_pick_as_plan(provider,
     assert b.xMaximum() <= 22 and b.width() > 15  # the west part of the floor plan only
     wiz.done(0)
     canvas.close()
+
+
+@pytest.mark.slow
+def test_wizard_converts_a_dwg_sheet_placed_on_the_satellite_basemap(provider, qgis_new_project, tmp_path,
+                                                                     repo_root, shared_data):
+    """Done when: a DWG sheet as delivered (SIST-F1.dwg: 150+ layers, frames, bound xrefs) through the GUI:
+    its plans listed with the main one pre-selected (another extent changes PLAN), the settings preview,
+    the plan dragged and turned over the satellite basemap, the conversion, the styled, named floor on the
+    map. No network here: the basemap layer is in the project, its tiles are not fetched."""
+    from qgis.core import QgsCoordinateReferenceSystem, QgsProject, QgsRectangle
+    from qgis.gui import QgsMapCanvas, QgsMapMouseEvent
+    from qgis.PyQt.QtCore import QEvent, QPoint, Qt
+
+    from cad2osmag.ui.convert_wizard import ConvertWizard
+    from cad2osmag.ui.placement import load_placement
+
+    dwg = shared_data / "dwg" / "sist-original" / "SIST-F1.dwg"
+    if not dwg.is_file():
+        pytest.skip(f"{dwg} is missing")
+    art = repo_root / "tests" / "artifacts"
+    art.mkdir(parents=True, exist_ok=True)
+    QgsProject.instance().removeEntry("cad2osmag", "placement")
+    canvas = QgsMapCanvas()
+    canvas.resize(700, 500)
+    canvas.setDestinationCrs(QgsCoordinateReferenceSystem("EPSG:3857"))
+    canvas.setExtent(QgsRectangle(13535000, 3656000, 13535400, 3656300))  # Shanghai, web mercator
+    canvas.show()
+    wiz = ConvertWizard(canvas)
+    wiz.show()
+
+    # 1. the DWG is accepted, its layers and the plans on the sheet are listed, the main plan pre-selected
+    page = wiz.files_page
+    path = str(dwg)
+    page.add_files([path])
+    assert page.layers.rowCount() > 150  # listlayers on the DWG
+    _wait(lambda: page.plans_ready(path), timeout=600)
+    assert page.plans.rowCount() >= 1 and page.plans.item(0, 1).text() == "plan", page.plan_status.text()
+    assert page.plans.item(0, 0).text().endswith("★")
+    assert [i.row() for i in page.plans.selectionModel().selectedRows()] == [0]
+    assert page.plan_parameter(path) == "0"
+    w, h = (float(v) for v in page.plans.item(0, 2).text().replace(" m", "").split(" × "))
+    assert 150 < w < 200 and 120 < h < 170  # the floor, not the sheet with its frame
+    page.sheet_canvas.refresh()
+    page.sheet_canvas.waitWhileRendering()
+    assert wiz.grab().save(str(art / "wizard_dwg_1_plans.png"))
+    # another choice (an extent drawn over the sheet) changes PLAN, the main plan can be picked back
+    page.pick_extent(QgsRectangle(1300, -10, 1400, 150))
+    assert page.plan_parameter(path) == "1300.000,-10.000,1400.000,150.000"
+    wiz.run_page.folder.setText(str(tmp_path / "out"))
+    assert wiz.run_page.steps()[0][1]["PLAN"] == "1300.000,-10.000,1400.000,150.000"
+    page.pick_plan(0)
+    assert page.plan_parameter(path) == "0"
+    wiz.next()
+
+    # 2. settings and the preview of the areas (coarser pixels: the floor is 178 x 149 m)
+    s = wiz.settings_page
+    s.resolution.setValue(0.08)
+    s.preview()
+    _wait(lambda: s.preview_button.isEnabled(), timeout=900)
+    assert len(s.canvas.layers()) == 4, s.preview_status.text()
+    assert int(s.preview_status.text().split()[0]) >= 40
+    s.canvas.refresh()
+    s.canvas.waitWhileRendering()
+    assert wiz.grab().save(str(art / "wizard_dwg_2_settings.png"))
+    wiz.next()
+
+    # 3. placement over the satellite basemap: drag, then turn
+    panel = wiz.placement_page.panel
+    assert panel.overlay is not None and canvas.mapTool() is panel.move_tool
+    assert 150 < panel.overlay.cad_box.width() < 200
+    panel.sat_button.click()
+    sat = [lyr for lyr in QgsProject.instance().mapLayers().values() if lyr.name() == "Esri World Imagery"]
+    assert len(sat) == 1 and sat[0].isValid() and "World_Imagery" in sat[0].source()
+    tool = panel.move_tool
+    ct = canvas.getCoordinateTransform()
+
+    def drag(a, b):
+        for kind, p, btn, btns in ((QEvent.Type.MouseButtonPress, a, Qt.MouseButton.LeftButton,
+                                    Qt.MouseButton.LeftButton),
+                                   (QEvent.Type.MouseMove, b, Qt.MouseButton.NoButton, Qt.MouseButton.LeftButton),
+                                   (QEvent.Type.MouseButtonRelease, b, Qt.MouseButton.LeftButton,
+                                    Qt.MouseButton.NoButton)):
+            e = QgsMapMouseEvent(canvas, kind, QPoint(int(p[0]), int(p[1])), btn, btns,
+                                 Qt.KeyboardModifier.NoModifier)
+            {QEvent.Type.MouseButtonPress: tool.canvasPressEvent, QEvent.Type.MouseMove: tool.canvasMoveEvent,
+             QEvent.Type.MouseButtonRelease: tool.canvasReleaseEvent}[kind](e)
+
+    before = panel.placement
+    centre = ct.transform(tool.handle_points()["pivot"])
+    drag((centre.x() - 40, centre.y() + 10), (centre.x() + 20, centre.y() - 25))
+    handle = ct.transform(tool.handle_points()["rotate"])
+    pivot = ct.transform(tool.handle_points()["pivot"])
+    r = math.hypot(handle.x() - pivot.x(), handle.y() - pivot.y())
+    drag((handle.x(), handle.y()), (pivot.x() + r * math.sin(math.radians(-15)),
+                                    pivot.y() - r * math.cos(math.radians(-15))))
+    placed = panel.placement
+    assert placed.rotation_deg == pytest.approx(345.0, abs=0.6)
+    assert placed.anchor_lon != pytest.approx(before.anchor_lon, abs=1e-9)
+    assert load_placement() == placed
+    canvas.setLayers([panel.overlay.layer])  # the satellite tiles cannot be fetched here
+    canvas.refresh()
+    canvas.waitWhileRendering()
+    assert wiz.grab().save(str(art / "wizard_dwg_3_placement.png"))
+    wiz.next()
+
+    # 4. convert: the styled floor, named, on the map
+    run = wiz.run_page
+    out = tmp_path / "out"
+    run.start()
+    _wait(lambda: run.run_button.isEnabled(), timeout=1800)
+    assert run.done, run.log.toPlainText()
+    areas, passages, root, _ = osmag.read_osmag(str(out / "SIST-F1.osm"))
+    assert root == pytest.approx((placed.anchor_lon, placed.anchor_lat), abs=1e-9)
+    assert len(areas) >= 40 and len(passages) >= 40
+    layers = {lyr.name(): lyr for lyr in QgsProject.instance().mapLayers().values()}
+    assert {"SIST-F1 areas", "SIST-F1 passages"} <= set(layers)
+    area_layer = layers["SIST-F1 areas"]
+    assert area_layer.renderer().type() == "categorizedSymbol" and area_layer.labelsEnabled()
+    named = [f["name"] for f in area_layer.getFeatures() if f["name"]]
+    assert len(named) >= 10, named  # room names read from the sheet's texts and attributes
+    assert {f["osmAG:areatype"] for f in area_layer.getFeatures()} >= {"room", "corridor", "stairs"}
+    ext = area_layer.extent()
+    lon, lat = placed.to_wgs84(*panel.overlay.centre)  # the floor lies where the plan was dragged to
+    assert ext.xMinimum() < lon < ext.xMaximum() and ext.yMinimum() < lat < ext.yMaximum()
+    assert ext.width() < 0.003 and ext.height() < 0.003  # about 180 x 150 m
+    assert wiz.grab().save(str(art / "wizard_dwg_4_done.png"))
+    canvas.setLayers([layers["SIST-F1 passages"], area_layer])
+    canvas.setExtent(canvas.mapSettings().layerExtentToOutputExtent(area_layer, ext))
+    canvas.refresh()
+    canvas.waitWhileRendering()
+    assert canvas.grab().save(str(art / "wizard_dwg_4_canvas.png"))
+    wiz.next()
+    assert wiz.names_page.table.rowCount() == len(areas)
+    wiz.done(0)
+    canvas.close()

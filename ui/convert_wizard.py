@@ -145,11 +145,13 @@ class FilesPage(QWizardPage):
         self.setTitle(tr("1. Floor plans"))
         self.setSubTitle(tr("Pick the DXF/DWG files of the building, one per floor (bottom floor first). "
                             "The table shows the layers of the selected file and which ones the layer rules "
-                            "keep as structure."))
+                            "keep as structure; below, the plans found on its sheet: the main plan is "
+                            "pre-selected, pick another or draw an extent."))
         lay = QVBoxLayout(self)
         row = QHBoxLayout()
         self.files = QListWidget()
         self.files.setSelectionMode(QAbstractItemView.SelectionMode.SingleSelection)
+        self.files.setMaximumHeight(120)
         row.addWidget(self.files, 1)
         buttons = QVBoxLayout()
         self.add_button = QPushButton(tr("Add files…"))
@@ -181,6 +183,7 @@ class FilesPage(QWizardPage):
         self.plans.setSelectionBehavior(QAbstractItemView.SelectionBehavior.SelectRows)
         self.plans.setSelectionMode(QAbstractItemView.SelectionMode.SingleSelection)
         self.plans.itemSelectionChanged.connect(self._plan_row_picked)
+        self.plans.verticalHeader().setVisible(False)
         row.addWidget(self.plans, 1)
         from qgis.gui import QgsMapCanvas
 
@@ -369,6 +372,7 @@ class FilesPage(QWizardPage):
                           tr("{:.0f} × {:.0f} m").format(p["width"], p["height"]), p["title"] or "")
                 for c, v in enumerate(values):
                     self.plans.setItem(r, c, QTableWidgetItem(v))
+            self.plans.resizeColumnsToContents()
             layers = [lyr for lyr in (sheet["rects"], sheet["structure"]) if lyr is not None and lyr.isValid()]
             if layers:
                 self.sheet_canvas.setDestinationCrs(layers[0].crs())
@@ -870,7 +874,7 @@ class ConvertWizard(QWizard):
         self.names_page = NamesPage(self)
         for page in (self.files_page, self.settings_page, self.placement_page, self.run_page, self.names_page):
             self.addPage(page)
-        self.resize(720, 640)
+        self.resize(760, 720)
 
     def done(self, result):  # noqa: D401 - Qt override
         self.placement_page.panel.remove_overlay()
