@@ -188,6 +188,7 @@ def test_wizard_lists_the_plans_of_a_sheet_and_passes_the_pick_as_plan(provider,
     the main plan is pre-selected, picking the detail or drawing an extent changes PLAN everywhere."""
     from qgis.core import QgsCoordinateReferenceSystem, QgsProject, QgsRectangle
     from qgis.gui import QgsMapCanvas
+    from qgis.PyQt.QtCore import Qt
 
     from algorithms.sample_building import generate_delivered
     from cad2osmag.ui.convert_wizard import ConvertWizard
@@ -217,7 +218,15 @@ def test_wizard_lists_the_plans_of_a_sheet_and_passes_the_pick_as_plan(provider,
     art = repo_root / "tests" / "artifacts"
     art.mkdir(parents=True, exist_ok=True)
     assert wiz.grab().save(str(art / "wizard_1_plans.png"))
-    # the user picks the stair detail: every algorithm of the wizard gets PLAN=1
+    # a click inside the detail's rectangle on the sheet picks it (then the main plan, clicked, again)
+    from qgis.core import QgsPointXY
+
+    x0, y0, x1, y1 = out["detail_extent"]
+    page._click_tool.canvasClicked.emit(QgsPointXY((x0 + x1) / 2, (y0 + y1) / 2), Qt.MouseButton.LeftButton)
+    assert page.plan_parameter(path) == "1"
+    page._click_tool.canvasClicked.emit(QgsPointXY(10, 10), Qt.MouseButton.LeftButton)
+    assert page.plan_parameter(path) == "0"
+    # the user picks the stair detail in the list: every algorithm of the wizard gets PLAN=1
     page.pick_plan(1)
     assert page.plan_parameter(path) == "1" and "detail" in page.plan_status.text()
     wiz.run_page.folder.setText(str(tmp_path / "out"))

@@ -146,7 +146,7 @@ class FilesPage(QWizardPage):
         self.setSubTitle(tr("Pick the DXF/DWG files of the building, one per floor (bottom floor first). "
                             "The table shows the layers of the selected file and which ones the layer rules "
                             "keep as structure; below, the plans found on its sheet: the main plan is "
-                            "pre-selected, pick another or draw an extent."))
+                            "pre-selected, click another (in the list or on the sheet) or draw an extent."))
         lay = QVBoxLayout(self)
         row = QHBoxLayout()
         self.files = QListWidget()
@@ -212,6 +212,11 @@ class FilesPage(QWizardPage):
         self._filling = False
         self._highlight = None
         self._extent_map_tool = None
+        from qgis.gui import QgsMapToolEmitPoint
+
+        self._click_tool = QgsMapToolEmitPoint(self.sheet_canvas)  # a click on a plan's rectangle picks it
+        self._click_tool.canvasClicked.connect(self.pick_at)
+        self.sheet_canvas.setMapTool(self._click_tool)
         self.files.currentRowChanged.connect(self.show_layers)
         self.files.currentRowChanged.connect(self.show_plans)
 
@@ -407,6 +412,14 @@ class FilesPage(QWizardPage):
         if rows:
             self.plans.selectRow(rows[0])
 
+    def pick_at(self, point, button=None):
+        """Pick the smallest plan whose rectangle holds ``point`` (drawing frame) on the sheet canvas."""
+        path = self.current_path()
+        plans = self.sheets.get(path, {}).get("plans", []) if path else []
+        hits = [p for p in plans if p["xmin"] <= point.x() <= p["xmax"] and p["ymin"] <= point.y() <= p["ymax"]]
+        if hits:
+            self.pick_plan(min(hits, key=lambda p: (p["xmax"] - p["xmin"]) * (p["ymax"] - p["ymin"]))["index"])
+
     def pick_extent(self, rect):
         """Convert only what lies in ``rect`` (QgsRectangle, metres of the drawing frame) of the current file."""
         path = self.current_path()
@@ -430,6 +443,7 @@ class FilesPage(QWizardPage):
         elif self._extent_map_tool is not None:
             self.sheet_canvas.unsetMapTool(self._extent_map_tool)
             self._extent_map_tool = None
+            self.sheet_canvas.setMapTool(self._click_tool)
 
     def _show_choice(self, path):
         sheet = self.sheets.get(path)
@@ -475,6 +489,7 @@ class FilesPage(QWizardPage):
 
         self._set_highlight(None)
         self._extent_tool(False)
+        self.sheet_canvas.unsetMapTool(self._click_tool)
         self.sheet_canvas.setLayers([])
         self.sheets.clear()
         shutil.rmtree(self._tmp, ignore_errors=True)
