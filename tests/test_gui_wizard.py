@@ -257,7 +257,7 @@ def test_wizard_lists_the_plans_of_a_sheet_and_passes_the_pick_as_plan(provider,
 
 @pytest.mark.slow
 def test_wizard_converts_a_dwg_sheet_placed_on_the_satellite_basemap(provider, qgis_new_project, tmp_path,
-                                                                     repo_root, shared_data):
+                                                                     repo_root, shared_data, monkeypatch):
     """Done when: a DWG sheet as delivered (SIST-F1.dwg: 150+ layers, frames, bound xrefs) through the GUI:
     its plans listed with the main one pre-selected (another extent changes PLAN), the settings preview,
     the plan dragged and turned over the satellite basemap, the conversion, the styled, named floor on the
@@ -286,7 +286,18 @@ def test_wizard_converts_a_dwg_sheet_placed_on_the_satellite_basemap(provider, q
     # 1. the DWG is accepted, its layers and the plans on the sheet are listed, the main plan pre-selected
     page = wiz.files_page
     path = str(dwg)
-    page.add_files([path])
+    from qgis.PyQt.QtWidgets import QFileDialog
+
+    filters = []
+
+    def chooser(*args):
+        filters.append(args[3])
+        return ([path], args[3]) if len(filters) == 1 else (path, args[3])
+
+    monkeypatch.setattr(QFileDialog, "getOpenFileNames", staticmethod(chooser))
+    monkeypatch.setattr(QFileDialog, "getOpenFileName", staticmethod(chooser))
+    page.add_button.click()  # *Add files…*: the chooser offers DWG files
+    assert "*.dwg" in filters[0] and page.paths() == [path]
     assert page.layers.rowCount() > 150  # listlayers on the DWG
     _wait(lambda: page.plans_ready(path), timeout=600)
     assert page.plans.rowCount() >= 1 and page.plans.item(0, 1).text() == "plan", page.plan_status.text()
@@ -323,6 +334,10 @@ def test_wizard_converts_a_dwg_sheet_placed_on_the_satellite_basemap(provider, q
     panel = wiz.placement_page.panel
     assert panel.overlay is not None and canvas.mapTool() is panel.move_tool
     assert 150 < panel.overlay.cad_box.width() < 200
+    panel.load_button.click()  # the panel's own *Load floor plan…* takes the DWG too
+    assert "*.dwg" in filters[1] and panel.plan_label.text().startswith("SIST-F1:"), panel.plan_label.text()
+    tool_changed = panel.move_tool
+    assert canvas.mapTool() is tool_changed
     panel.sat_button.click()
     sat = [lyr for lyr in QgsProject.instance().mapLayers().values() if lyr.name() == "Esri World Imagery"]
     assert len(sat) == 1 and sat[0].isValid() and "World_Imagery" in sat[0].source()

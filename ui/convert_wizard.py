@@ -487,6 +487,8 @@ class FilesPage(QWizardPage):
     def release(self):
         import shutil
 
+        for task in list(self.plan_tasks.values()):
+            task.cancel()  # a sheet still being read when the wizard closes
         self._set_highlight(None)
         self._extent_tool(False)
         self.sheet_canvas.unsetMapTool(self._click_tool)
