@@ -109,7 +109,15 @@ class AssignNamesAlgorithm(Cad2OsmagAlgorithm):
             "fields indoor and room; long, narrow unnamed areas with three or more passages become corridors.\n"
             "Edit name, ref or type in the output layer to fix them: 'Export osmAG' keeps the edits and the "
             "passages follow renamed areas. TEXT_REPORT (optional) lists every label with its role, reason, "
-            "area and score.")
+            "area and score.\n"
+            "PASSAGES (optional): the passages of the areas; split areas get theirs, and corridors are "
+            "recognised by their number of passages. LEVEL: the level used in generated ids (empty: the areas' "
+            "level field, else 1).\n"
+            "Outputs: OUTPUT_AREAS, the named areas (fields name, ref, type, indoor, room, label_conflict); "
+            "OUTPUT_PASSAGES, the passages including those of split areas; counts NAMED (areas named from the "
+            "drawing), NUMBERED (with a room number), AUTO_IDS (with a generated id), CONFLICTS (holding "
+            "several names), SPLITS (areas split), IGNORED (texts ignored) and OUTSIDE (room texts outside "
+            "every area).")
 
     AREAS = "AREAS"
     TEXTS = "TEXTS"

@@ -72,7 +72,9 @@ class DxfToOsmagBatchAlgorithm(Cad2OsmagAlgorithm):
             "'Place a floor plan on the map' is used, if any.\n"
             "RESOLUTION (m/px), DOOR_WIDTH and CORRIDOR_WIDTH (m), MIN_AREA (m²): as in the single-file "
             "algorithm. MERGE also writes OUTPUT_FOLDER/building.osm with every converted floor.\n"
-            "REPORT: a CSV with one row per file (file, level, status, areas, passages, seconds, message).")
+            "REPORT: a CSV with one row per file (file, level, status, areas, passages, seconds, message).\n"
+            "Outputs: SUCCEEDED and FAILED, the numbers of floors converted and failed (one bad file never "
+            "stops the others), and OUTPUT_FOLDER.")
 
     def initAlgorithm(self, config=None):  # noqa: N802
         self.addParameter(QgsProcessingParameterFile(

@@ -38,7 +38,9 @@ class ExportOsmagAlgorithm(Cad2OsmagAlgorithm):
             "field, else 1. HEIGHT: height per level in metres (height tag).\n"
             "ANCHOR_LON / ANCHOR_LAT in degrees (WGS84), ROTATION in degrees clockwise from north, SCALE in "
             "ground metres per CAD metre: the placement of 'Place a floor plan on the map' gives all four.\n"
-            "OUTPUT: the .osm file to write.")
+            "OUTPUT: the .osm file to write.\n"
+            "Outputs: AREA_COUNT, PASSAGE_COUNT and NODE_COUNT written; SHARED_NODES, the nodes shared by two "
+            "or more areas; HOLES_DROPPED, the holes of areas left out (osmAG areas have no holes).")
 
     AREAS = "AREAS"
     PASSAGES = "PASSAGES"

@@ -92,7 +92,10 @@ class GeoreferenceAlgorithm(Cad2OsmagAlgorithm):
             "All conversions go through a transverse Mercator projection centred on the anchor (pyproj/PROJ), "
             "never a flat-earth approximation. Add a basemap (Vector ▸ CAD to osmAG ▸ Add … basemap) to pick "
             "points against real imagery, or drag the plan into place with Vector ▸ CAD to osmAG ▸ Place a floor "
-            "plan on the map, whose placement gives ANCHOR, ROTATION and SCALE.")
+            "plan on the map, whose placement gives ANCHOR, ROTATION and SCALE.\n"
+            "Outputs: RMS and RESIDUALS, the control point residuals in metres (overall and per point); FRAME, "
+            "the placement as text; ANCHOR_LON and ANCHOR_LAT (degrees), ROTATION_DEG (degrees clockwise from "
+            "north) and SCALE_FACTOR of the placement, to reuse for the other floors.")
 
     AREAS = "AREAS"
     PASSAGES = "PASSAGES"

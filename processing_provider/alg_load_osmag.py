@@ -215,7 +215,9 @@ class LoadOsmagAlgorithm(Cad2OsmagAlgorithm):
             "TARGET_CRS: CRS of the output layers (default WGS84, EPSG:4326); choose a projected CRS in metres "
             "to measure or edit the areas.\n"
             "OUTPUT_AREAS / OUTPUT_PASSAGES: the two layers (temporary, GeoPackage, …).\n"
-            "Outputs: the number of areas and passages loaded and the VARIANT detected.")
+            "Outputs: the number of areas and passages loaded (AREA_COUNT, PASSAGE_COUNT), the unclosed area ways "
+            "(UNCLOSED) and dangling references (DANGLING) skipped, the root node's position (ROOT_LON, "
+            "ROOT_LAT, degrees) and the VARIANT detected.")
 
     INPUT = "INPUT"
     TARGET_CRS = "TARGET_CRS"

@@ -183,7 +183,15 @@ class RefineAlgorithm(Cad2OsmagAlgorithm):
             "end points are locked, so each passage stays a segment whose two ends are vertices of both "
             "areas it joins. Areas smaller than MIN_AREA are merged into the neighbour they share the "
             "longest border with (stairs and elevators are kept); isolated ones are dropped. Work in "
-            "metres: run it on the CAD frame (before georeferencing) or on a projected CRS.")
+            "metres: run it on the CAD frame (before georeferencing) or on a projected CRS.\n"
+            "AREAS and PASSAGES: the outputs of 'Segment' (PASSAGES optional). RESOLUTION: the raster "
+            "resolution the areas were traced at, in metres per pixel. EPSILON_PX in pixels, SPIKE_ANGLE in "
+            "degrees, SPIKE_LENGTH in metres, MIN_AREA in m².\n"
+            "Outputs: OUTPUT_AREAS and OUTPUT_PASSAGES, the refined layers; VERTICES_BEFORE, VERTICES_AFTER and "
+            "VERTEX_REDUCTION (%); MAX_DEVIATION, the largest distance from the unsimplified areas (m); "
+            "EPSILON_M, the tolerance in metres; AREA_COUNT and PASSAGE_COUNT written; MERGED and DROPPED "
+            "small areas; COMPONENTS, the connected parts of the area graph, and LARGEST_COMPONENT_SHARE, the "
+            "share of the area in the largest one.")
 
     AREAS = "AREAS"
     PASSAGES = "PASSAGES"
