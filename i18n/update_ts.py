@@ -11,8 +11,12 @@ attributes (DISPLAY_NAME, GROUP, HELP, MODES) translated at run time with the cl
 * DISPLAY_NAME / GROUP / HELP / MODES class attributes of every algorithm class;
 * ``(key, "label")`` tuples looped into ``self.tr(label)`` (output labels).
 
-Translations already in a .ts file are kept; strings that are new get the translations of
-``SEED`` below, if any, else stay "unfinished" (Qt then shows the English text).
+The translations live in one table per language, keyed by the English source text:
+``translations_de.py`` and ``translations_zh_CN.py`` (read by ``seed_translations.py``; a key may also be
+a ``(context, source)`` pair for a context-specific translation). The tables win; a translation found only
+in a .ts file (e.g. made in Qt Linguist) is kept; anything else stays "unfinished" (Qt then shows the
+English text). ``python3 i18n/update_ts.py --missing`` lists the strings without a translation, to add to
+the tables; ``--check`` exits 1 when there is one.
 """
 import ast
 import os
@@ -71,6 +75,11 @@ def collect(path):
                 f = child.func
                 if isinstance(f, ast.Attribute) and f.attr == "tr" and cls and child.args and _str(child.args[0]):
                     out.append((cls, _str(child.args[0]), rel))
+                elif isinstance(f, ast.Attribute) and f.attr == "tr" and child.args and _str(child.args[0]) \
+                        and isinstance(f.value, ast.Name) and f.value.id == "alg":
+                    # alg.tr("...") in a helper shared by several algorithms: Cad2OsmagAlgorithm.tr falls back
+                    # to this common context
+                    out.append(("Cad2OsmagAlgorithm", _str(child.args[0]), rel))
                 elif isinstance(f, ast.Name) and f.id == "tr" and child.args and _str(child.args[0]):
                     ctx = module_ctx or cls
                     if ctx:
@@ -131,7 +140,7 @@ def write_ts(path, lang, messages, existing, seed):
             m = ET.SubElement(c, "message")
             ET.SubElement(m, "location", filename=rel)
             ET.SubElement(m, "source").text = text
-            value = existing.get((ctx, text)) or seed.get(text)
+            value = seed.get((ctx, text)) or seed.get(text) or existing.get((ctx, text))
             t = ET.SubElement(m, "translation")
             if value:
                 t.text = value
@@ -146,12 +155,40 @@ def write_ts(path, lang, messages, existing, seed):
     return translated
 
 
-def main():
+def missing(messages=None):
+    """{language: [(context, source)]} of the strings the tables do not translate."""
+    messages = all_messages() if messages is None else messages
+    out = {}
+    for suffix in LANGUAGES:
+        seed = SEED.get(suffix, {})
+        out[suffix] = [(ctx, text) for (ctx, text) in messages if not (seed.get((ctx, text)) or seed.get(text))]
+    return out
+
+
+def stale(messages=None):
+    """{language: [source]} of table entries no source string uses any more (e.g. a reworded help)."""
+    messages = all_messages() if messages is None else messages
+    texts = {text for _, text in messages} | set(messages)
+    return {suffix: [k for k in SEED.get(suffix, {}) if k not in texts] for suffix in LANGUAGES}
+
+
+def main(argv=None):
+    argv = sys.argv[1:] if argv is None else argv
     messages = all_messages()
+    if "--missing" in argv or "--check" in argv:
+        gaps = missing(messages)
+        for suffix, items in gaps.items():
+            print(f"{suffix}: {len(items)} of {len(messages)} strings without a translation")
+            for ctx, text in items:
+                print(f"  [{ctx}] {text!r}")
+        return 1 if "--check" in argv and any(gaps.values()) else 0
     for suffix, lang in LANGUAGES.items():
         path = os.path.join(HERE, f"cad2osmag_{suffix}.ts")
         n = write_ts(path, lang, messages, read_ts(path), SEED.get(suffix, {}))
         print(f"{os.path.basename(path)}: {n} of {len(messages)} strings translated")
+    for suffix, keys in stale(messages).items():
+        if keys:
+            print(f"translations_{suffix}.py: {len(keys)} entries no source uses any more (reworded or removed)")
     return 0
 
 

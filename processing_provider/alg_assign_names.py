@@ -103,7 +103,7 @@ class AssignNamesAlgorithm(Cad2OsmagAlgorithm):
             "number join; an area holding two different room names is split at the narrowing between them "
             "(SPLIT, watershed of its clearance map; a corridor between them becomes its own area), else it "
             "keeps the best-placed name and lists the others in label_conflict. Duplicate names get a suffix "
-            "(the room number, else (1), (2)...); areas without text get the stable id <level>-<area id>.\n"
+            "(the room number, else (1), (2)...); areas without text get the stable id level-area id (e.g. 2-17).\n"
             "Types: keywords (English, Italian, Spanish, German, French, Chinese...) and codes (*-ST-* stairs, "
             "*-P1/*-OP-*/*-FG-* lifts) set type stairs/elevator/corridor/room and the Simple Indoor Tagging "
             "fields indoor and room; long, narrow unnamed areas with three or more passages become corridors.\n"

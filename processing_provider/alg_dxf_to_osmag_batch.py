@@ -62,7 +62,7 @@ class DxfToOsmagBatchAlgorithm(Cad2OsmagAlgorithm):
     GROUP_ID = "pipeline"
     HELP = ("Converts every floor plan of FOLDER (files matching PATTERN, e.g. '*.dxf') with the whole "
             "pipeline of 'Convert DXF floor plan to osmAG', several files at once: WORKERS processes "
-            "(0 = one per processor core). Each file writes OUTPUT_FOLDER/<file name>.osm. A file that fails "
+            "(0 = one per processor core). Each file writes OUTPUT_FOLDER/NAME.osm (NAME: the drawing's file name). A file that fails "
             "(not a drawing, no walls, …) is reported with its reason and never stops the others.\n"
             "FIRST_LEVEL: the level of the first file in natural name order (floor-2 before floor-10); each "
             "next file is one level up. HEIGHT: floor height in metres.\n"

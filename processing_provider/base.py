@@ -71,7 +71,10 @@ class Cad2OsmagAlgorithm(QgsProcessingAlgorithm):
 
     # --- QgsProcessingAlgorithm boilerplate -----------------------------------------------
     def tr(self, text):
-        return QCoreApplication.translate(type(self).__name__, text)
+        out = QCoreApplication.translate(type(self).__name__, text)
+        if out == text:  # helpers shared by several algorithms (alg.tr(...)) use the common context
+            out = QCoreApplication.translate("Cad2OsmagAlgorithm", text)
+        return out
 
     def name(self):
         return self.NAME
