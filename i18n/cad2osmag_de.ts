@@ -159,6 +159,16 @@ Ausgaben: OUTPUT_AREAS, die benannten Flächen (Felder name, ref, type, indoor, 
       <translation>Planausdehnung (im Kartenfenster über den extrahierten Bauteilen gezeichnet; hat Vorrang vor PLAN)</translation>
     </message>
     <message>
+      <location filename="../processing_provider/alg_georeference.py" />
+      <source>the point {}, {} [{}] cannot be converted to longitude/latitude: {}</source>
+      <translation>der Punkt {}, {} [{}] kann nicht in Länge/Breite umgerechnet werden: {}</translation>
+    </message>
+    <message>
+      <location filename="../processing_provider/alg_load_osmag.py" />
+      <source>style not stored in {}: {}</source>
+      <translation>Stil nicht in {} gespeichert: {}</translation>
+    </message>
+    <message>
       <location filename="../processing_provider/alg_load_osmag.py" />
       <source>cannot convert to {}: {}</source>
       <translation>Umrechnung nach {} nicht möglich: {}</translation>
@@ -172,6 +182,31 @@ Ausgaben: OUTPUT_AREAS, die benannten Flächen (Felder name, ref, type, indoor, 
       <location filename="../processing_provider/alg_load_osmag.py" />
       <source>dangling references (skipped): nodes {} refs {}</source>
       <translation>verwaiste Verweise (übersprungen): Knoten {} Verweise {}</translation>
+    </message>
+    <message>
+      <location filename="../processing_provider/alg_refine.py" />
+      <source>{}: features with ids {} have empty or missing geometries; remove them or fix the layer</source>
+      <translation>{}: Die Objekte mit den Kennungen {} haben leere oder fehlende Geometrien; sie entfernen oder den Layer reparieren</translation>
+    </message>
+    <message>
+      <location filename="../processing_provider/alg_refine.py" />
+      <source>PASSAGES: passage {} has no valid {} (value {!r}); it must name the id of an area</source>
+      <translation>PASSAGES: Durchgang {} hat kein gültiges {} (Wert {!r}); es muss die Kennung einer Fläche nennen</translation>
+    </message>
+    <message>
+      <location filename="../processing_provider/alg_refine.py" />
+      <source>PASSAGES: passage {} has no line geometry</source>
+      <translation>PASSAGES: Durchgang {} hat keine Liniengeometrie</translation>
+    </message>
+    <message>
+      <location filename="../processing_provider/alg_refine.py" />
+      <source>cannot write area {} to the output layer</source>
+      <translation>Fläche {} kann nicht in den Ausgabelayer geschrieben werden</translation>
+    </message>
+    <message>
+      <location filename="../processing_provider/alg_refine.py" />
+      <source>cannot write passage {} to the output layer</source>
+      <translation>Durchgang {} kann nicht in den Ausgabelayer geschrieben werden</translation>
     </message>
     <message>
       <location filename="../processing_provider/base.py" />
@@ -1458,6 +1493,11 @@ Ausgaben: RMS und RESIDUALS, die Residuen der Passpunkte in Metern (gesamt und j
       <location filename="../processing_provider/alg_georeference.py" />
       <source>Canceled by the user.</source>
       <translation>Vom Benutzer abgebrochen.</translation>
+    </message>
+    <message>
+      <location filename="../processing_provider/alg_georeference.py" />
+      <source>{} feature {}: {}</source>
+      <translation>{} Objekt {}: {}</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_georeference.py" />

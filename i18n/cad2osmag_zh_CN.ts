@@ -159,6 +159,16 @@ PASSAGES（可选）：区域的通道；被拆分的区域获得各自的通道
       <translation>平面图范围（在地图画布上、于提取的结构之上绘制；优先于 PLAN）</translation>
     </message>
     <message>
+      <location filename="../processing_provider/alg_georeference.py" />
+      <source>the point {}, {} [{}] cannot be converted to longitude/latitude: {}</source>
+      <translation>点 {}, {} [{}] 无法转换为经纬度：{}</translation>
+    </message>
+    <message>
+      <location filename="../processing_provider/alg_load_osmag.py" />
+      <source>style not stored in {}: {}</source>
+      <translation>样式未保存到 {}：{}</translation>
+    </message>
+    <message>
       <location filename="../processing_provider/alg_load_osmag.py" />
       <source>cannot convert to {}: {}</source>
       <translation>无法转换到 {}：{}</translation>
@@ -172,6 +182,31 @@ PASSAGES（可选）：区域的通道；被拆分的区域获得各自的通道
       <location filename="../processing_provider/alg_load_osmag.py" />
       <source>dangling references (skipped): nodes {} refs {}</source>
       <translation>悬空引用（已跳过）：节点 {} 引用 {}</translation>
+    </message>
+    <message>
+      <location filename="../processing_provider/alg_refine.py" />
+      <source>{}: features with ids {} have empty or missing geometries; remove them or fix the layer</source>
+      <translation>{}：标识为 {} 的要素几何为空或缺失；请删除这些要素或修复图层</translation>
+    </message>
+    <message>
+      <location filename="../processing_provider/alg_refine.py" />
+      <source>PASSAGES: passage {} has no valid {} (value {!r}); it must name the id of an area</source>
+      <translation>PASSAGES：通道 {} 没有有效的 {}（值 {!r}）；它必须给出某个区域的标识</translation>
+    </message>
+    <message>
+      <location filename="../processing_provider/alg_refine.py" />
+      <source>PASSAGES: passage {} has no line geometry</source>
+      <translation>PASSAGES：通道 {} 没有线几何</translation>
+    </message>
+    <message>
+      <location filename="../processing_provider/alg_refine.py" />
+      <source>cannot write area {} to the output layer</source>
+      <translation>无法将区域 {} 写入输出图层</translation>
+    </message>
+    <message>
+      <location filename="../processing_provider/alg_refine.py" />
+      <source>cannot write passage {} to the output layer</source>
+      <translation>无法将通道 {} 写入输出图层</translation>
     </message>
     <message>
       <location filename="../processing_provider/base.py" />
@@ -1458,6 +1493,11 @@ AREAS 和 PASSAGES：CAD 坐标系中的图层（米，无坐标系），如“�
       <location filename="../processing_provider/alg_georeference.py" />
       <source>Canceled by the user.</source>
       <translation>已被用户取消。</translation>
+    </message>
+    <message>
+      <location filename="../processing_provider/alg_georeference.py" />
+      <source>{} feature {}: {}</source>
+      <translation>{} 要素 {}：{}</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_georeference.py" />

@@ -453,6 +453,9 @@ T = {
     "Sheet: {}": "Blatt: {}",
     "Kept {} features on layers: {}; {} texts; unit {} (header: {})":
         "{} Objekte auf den Layern behalten: {}; {} Texte; Einheit {} (Dateikopf: {})",
+    # --- Cad2OsmagAlgorithm
+    "the point {}, {} [{}] cannot be converted to longitude/latitude: {}":
+        "der Punkt {}, {} [{}] kann nicht in Länge/Breite umgerechnet werden: {}",
     # --- GeoreferenceAlgorithm
     "Georeference (place the plan on the map)": "Georeferenzieren (Plan auf der Karte platzieren)",
     ("Transforms layers drawn in the CAD frame (metres, no CRS) into a target CRS (default WGS84).\n"
@@ -555,6 +558,7 @@ T = {
         ("{} ist bereits georeferenziert ({}); dieser Algorithmus platziert Layer im CAD-System (die "
          "Ausgaben der Algorithmen Segmentieren und Verfeinern). Mit „Layer reprojizieren“ das KBS eines "
          "platzierten Layers ändern."),
+    "{} feature {}: {}": "{} Objekt {}: {}",
     "placement: {}": "Platzierung: {}",
     # --- ListLayersAlgorithm
     "List DXF/DWG layers": "DXF/DWG-Layer auflisten",
@@ -593,6 +597,7 @@ T = {
     "Unit written in the header ($INSUNITS)": "Im Dateikopf stehende Einheit ($INSUNITS)",
     "{} layers, {} kept by the rules: {}": "{} Layer, {} von den Regeln behalten: {}",
     # --- Cad2OsmagAlgorithm
+    "style not stored in {}: {}": "Stil nicht in {} gespeichert: {}",
     "cannot convert to {}: {}": "Umrechnung nach {} nicht möglich: {}",
     "unclosed area ways (skipped): {}": "nicht geschlossene Flächenwege (übersprungen): {}",
     "dangling references (skipped): nodes {} refs {}":
@@ -644,8 +649,8 @@ T = {
     ("Fuses floors into one osmAG building. INPUT: osmAG floor files (semantic or fix-id), and/or "
      "AREAS/PASSAGES layers (e.g. from 'Load osmAG') split by their 'level' field.\n"
      "Level of each floor: LEVELS (comma-separated, in the order of the inputs), else the floor's level "
-     "tags, else its file name (*-F3*, *_L-1*, *B1*, *3F*, *三层*). HEIGHTS: metres per level (one value for "
-     "all, or one per floor; default: the floor's height tag, else 3.2).\n"
+     "tags, else its file name (*-F3*, *_L-1*, *B1*, *3F*, *三层*). HEIGHTS: metres per level (one value "
+     "for all, or one per floor; default: the floor's height tag, else 3.2).\n"
      "Registration: floors drawn in different frames are moved onto each other with their stairs and lifts "
      "(areas typed stairs/elevator, or named like one): matched by name first, else by type, size and "
      "position, by consensus (one wrong match does not move a floor); rotation when two anchors agree. The "
@@ -808,6 +813,15 @@ T = {
     "Cannot write the raster '{}': {}": "Das Raster '{}' kann nicht geschrieben werden: {}",
     "{} x {} px at {} m/px, origin ({:.3f}, {:.3f}), {:.1%} occupied":
         "{} x {} px bei {} m/px, Ursprung ({:.3f}, {:.3f}), {:.1%} belegt",
+    # --- Cad2OsmagAlgorithm
+    "{}: features with ids {} have empty or missing geometries; remove them or fix the layer":
+        ("{}: Die Objekte mit den Kennungen {} haben leere oder fehlende Geometrien; sie entfernen oder den "
+         "Layer reparieren"),
+    "PASSAGES: passage {} has no valid {} (value {!r}); it must name the id of an area":
+        "PASSAGES: Durchgang {} hat kein gültiges {} (Wert {!r}); es muss die Kennung einer Fläche nennen",
+    "PASSAGES: passage {} has no line geometry": "PASSAGES: Durchgang {} hat keine Liniengeometrie",
+    "cannot write passage {} to the output layer":
+        "Durchgang {} kann nicht in den Ausgabelayer geschrieben werden",
     # --- RefineAlgorithm
     "Refine areas (simplify, remove spikes, merge small areas)":
         "Flächen verfeinern (vereinfachen, Spitzen entfernen, kleine Flächen zusammenführen)",
@@ -1180,14 +1194,9 @@ T = {
     "RMS: {:.3f} m ({} points)": "RMS: {:.3f} m ({} Punkte)",
     "Place the plan on the map": "Plan auf der Karte platzieren",
     # --- not in the sources of this branch (kept for strings other branches add)
-    "Convert DXF floor plan to osmAG":
-        "DXF-Grundriss in osmAG umwandeln",
-    "Extract structure from DXF":
-        "Bauteile aus DXF extrahieren",
-    "List DXF layers":
-        "DXF-Layer auflisten",
-    "DXF floor plan":
-        "DXF-Grundriss",
-    "DXF drawing":
-        "DXF-Zeichnung",
+    "Convert DXF floor plan to osmAG": "DXF-Grundriss in osmAG umwandeln",
+    "Extract structure from DXF": "Bauteile aus DXF extrahieren",
+    "List DXF layers": "DXF-Layer auflisten",
+    "DXF floor plan": "DXF-Grundriss",
+    "DXF drawing": "DXF-Zeichnung",
 }

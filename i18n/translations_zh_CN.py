@@ -47,26 +47,36 @@ T = {
      "OUTPUT_PASSAGES, the passages including those of split areas; counts NAMED (areas named from the "
      "drawing), NUMBERED (with a room number), AUTO_IDS (with a generated id), CONFLICTS (holding several "
      "names), SPLITS (areas split), IGNORED (texts ignored) and OUTSIDE (room texts outside every area)."):
-        ("根据图纸的 TEXTS（“从 DXF 提取建筑结构”输出的文字，含块属性）为 AREAS（区域）命名、编号并指定类型。\n"
-         "哪些文字是房间名称：可配置的规则（NAME_RULES，algorithms/default_name_rules.json 的副本）将每段文字归为房间名称、房间编号（保存为 "
-         "ref）或忽略，并给出原因（尺寸标注、面积、标高、门窗编号、轴线、楼梯箭头、注释、标题、图签、家具……），依据是文字本身、所在图层（房间名称图层，如 "
-         "A-ANNO-ROOM、*-SYMB-NAME、房间；绑定外部参照的前缀会被去除）以及所属块和属性标记。多行 TEXT 标注的各行先合并。\n"
-         "归属哪个区域：按 CAD-to-osmAG 论文的方法，每段文字对每个区域打分（在区域内：100 - 50 rho，直到 rho_max 0.7，之后 50 - 25 (rho - "
-         "0.7)；在区域外但距边界不超过 2.2 m：40 + 30 f_size + 20 "
-         "f_dist），并归入得分最高的区域；位于区域内部的文字属于该区域。名称与编号合并；含有两个不同房间名称的区域在二者之间的收窄处被拆分（SPLIT，基于其净空图的分水岭；二者之间的走廊成为单独的区域），否则保留位置最佳的名称，其余名称列在 "
-         "label_conflict 中。重复的名称会加上后缀（房间编号，否则为 (1)、(2)……）；没有文字的区域获得稳定的标识“楼层-区域标识”（如 2-17）。\n"
-         "类型：关键词（英语、意大利语、西班牙语、德语、法语、中文……）和编码（*-ST-* 楼梯，*-P1/*-OP-*/*-FG-* 电梯）设定类型 "
-         "stairs/elevator/corridor/room 以及 Simple Indoor Tagging 字段 indoor 和 room；细长、未命名且有三个或更多通道的区域成为走廊。\n"
-         "如需更正，在输出图层中编辑 name、ref 或 type：“导出 osmAG”会保留这些修改，通道也会跟随改名后的区域。TEXT_REPORT（可选）列出每个标注的角色、原因、区域和得分。\n"
-         "PASSAGES（可选）：区域的通道；被拆分的区域获得各自的通道，走廊按其通道数量识别。LEVEL：生成标识所用的楼层（留空：区域的 level 字段，否则为 1）。\n"
-         "输出：OUTPUT_AREAS，已命名的区域（字段 "
-         "name、ref、type、indoor、room、label_conflict）；OUTPUT_PASSAGES，通道，含被拆分区域的通道；计数 "
-         "NAMED（根据图纸命名的区域）、NUMBERED（有房间编号）、AUTO_IDS（使用生成标识）、CONFLICTS（含多个名称）、SPLITS（被拆分的区域）、IGNORED（被忽略的文字）和 "
-         "OUTSIDE（位于所有区域之外的房间文字）。"),
+        ("根据图纸的 TEXTS（“从 DXF 提取建筑结构”输出的文字，含块属性）为 AREAS（区域）命名、编号并指定类型"
+         "。\n"
+         "哪些文字是房间名称：可配置的规则（NAME_RULES，algorithms/default_name_rules.json 的副本）将每段文"
+         "字归为房间名称、房间编号（保存为 ref）或忽略，并给出原因（尺寸标注、面积、标高、门窗编号、轴线、楼"
+         "梯箭头、注释、标题、图签、家具……），依据是文字本身、所在图层（房间名称图层，如 A-ANNO-ROOM、"
+         "*-SYMB-NAME、房间；绑定外部参照的前缀会被去除）以及所属块和属性标记。多行 TEXT 标注的各行先合并。"
+         "\n"
+         "归属哪个区域：按 CAD-to-osmAG 论文的方法，每段文字对每个区域打分（在区域内：100 - 50 rho，直到 "
+         "rho_max 0.7，之后 50 - 25 (rho - 0.7)；在区域外但距边界不超过 2.2 m：40 + 30 f_size + 20 f_dist）"
+         "，并归入得分最高的区域；位于区域内部的文字属于该区域。名称与编号合并；含有两个不同房间名称的区域在"
+         "二者之间的收窄处被拆分（SPLIT，基于其净空图的分水岭；二者之间的走廊成为单独的区域），否则保留位置"
+         "最佳的名称，其余名称列在 label_conflict 中。重复的名称会加上后缀（房间编号，否则为 (1)、(2)……）；"
+         "没有文字的区域获得稳定的标识“楼层-区域标识”（如 2-17）。\n"
+         "类型：关键词（英语、意大利语、西班牙语、德语、法语、中文……）和编码（*-ST-* 楼梯，"
+         "*-P1/*-OP-*/*-FG-* 电梯）设定类型 stairs/elevator/corridor/room 以及 Simple Indoor Tagging 字段 "
+         "indoor 和 room；细长、未命名且有三个或更多通道的区域成为走廊。\n"
+         "如需更正，在输出图层中编辑 name、ref 或 type：“导出 osmAG”会保留这些修改，通道也会跟随改名后的区域"
+         "。TEXT_REPORT（可选）列出每个标注的角色、原因、区域和得分。\n"
+         "PASSAGES（可选）：区域的通道；被拆分的区域获得各自的通道，走廊按其通道数量识别。LEVEL：生成标识所"
+         "用的楼层（留空：区域的 level 字段，否则为 1）。\n"
+         "输出：OUTPUT_AREAS，已命名的区域（字段 name、ref、type、indoor、room、label_conflict）；"
+         "OUTPUT_PASSAGES，通道，含被拆分区域的通道；计数 NAMED（根据图纸命名的区域）、NUMBERED（有房间编号"
+         "）、AUTO_IDS（使用生成标识）、CONFLICTS（含多个名称）、SPLITS（被拆分的区域）、IGNORED（被忽略的文"
+         "字）和 OUTSIDE（位于所有区域之外的房间文字）。"),
     "Areas": "区域",
     "Texts (from 'Extract structure from DXF')": "文字（来自“从 DXF 提取建筑结构”）",
-    "Passages (optional: split areas get their passages, corridors their degree)": "通道（可选：拆分的区域获得其通道，走廊获得其连接度）",
-    "Level (for generated ids; empty: the areas' level field, else 1)": "楼层（用于生成标识；留空：区域的 level 字段，否则为 1）",
+    "Passages (optional: split areas get their passages, corridors their degree)":
+        "通道（可选：拆分的区域获得其通道，走廊获得其连接度）",
+    "Level (for generated ids; empty: the areas' level field, else 1)":
+        "楼层（用于生成标识；留空：区域的 level 字段，否则为 1）",
     "Name rules (JSON, empty = built-in defaults)": "名称规则（JSON，留空 = 内置规则）",
     "Split areas holding two room names at the narrowing between them": "在两个房间名称之间的收窄处拆分区域",
     "Named areas": "已命名的区域",
@@ -87,7 +97,8 @@ T = {
         "{} 位于 {}，但 AREAS 位于 {}：请先将其重投影到 AREAS 的坐标系",
     ("AREAS is in a geographic CRS (degrees); the scores use metres: run this on the CAD-frame layers "
      "(before georeferencing) or reproject to a projected CRS"):
-        "AREAS 采用地理坐标系（度）；打分以米为单位：请在 CAD 坐标系下的图层上运行（地理配准之前），或重投影到投影坐标系",
+        ("AREAS 采用地理坐标系（度）；打分以米为单位：请在 CAD 坐标系下的图层上运行（地理配准之前），或重投"
+         "影到投影坐标系"),
     "cannot write area {} to the output layer": "无法将区域 {} 写入输出图层",
     # --- DxfToOsmagAlgorithm
     "Convert DXF/DWG floor plan to osmAG": "将 DXF/DWG 平面图转换为 osmAG",
@@ -115,22 +126,24 @@ T = {
      "Outputs: OUTPUT, the osmAG file (.osm); OUTPUT_AREAS and OUTPUT_PASSAGES, the same areas and passages "
      "as layers in WGS84 to show on the map; PREVIEW, an optional PNG picture of the areas; AREA_COUNT and "
      "PASSAGE_COUNT, the numbers written."):
-        ("对一个楼层运行完整的处理流程（DXF，或直接读取的 AutoCAD R13-2018 "
-         "DWG）：保留图纸的结构图层（墙、柱、玻璃、楼梯），栅格化，分割为由房间、走廊及其间通道组成的区域图（Area Graph），优化（共享边界的简化多边形），并写出锚定在地球上的 osmAG "
-         "文件。每一步也可作为单独的算法运行，以便更精细地控制。\n"
-         "INPUT：平面图（.dxf 或 .dwg）。LAYER_RULES：图层关键词的 JSON 文件（留空：内置规则；参见“列出 DXF/DWG "
-         "图层”）。UNITS：图纸的绘图单位（auto：从文件头读取，并按合理的建筑尺寸校验）。\n"
-         "RESOLUTION：栅格像素大小，单位米（默认 0.044 m；越小越能贴合薄墙，但速度越慢）。DOOR_WIDTH：最宽的门，单位米（2.8 "
-         "m）：更窄的开口将房间分开。CORRIDOR_WIDTH：走廊宽度，单位米（8 "
-         "m）。MIN_AREA：小于此面积（m²）的区域并入相邻区域（楼梯和电梯保留）。INCLUDE_DOORS：将门图层作为墙绘制（门洞封闭；默认关闭，使门洞保持开放）。\n"
-         "PLAN / PLAN_EXTENT：图幅上有多个平面图时选用哪一个（留空：主平面图；日志中平面图列表的序号，或以米为单位的 "
-         "xmin,ymin,xmax,ymax，或在地图画布上绘制的范围）。\n"
-         "NAMES（默认开启）：用图纸中的文字为区域命名、编号并指定类型（参见“根据文字指定房间名称和类型”）；NAME_RULES：调整这些规则的 JSON 文件。\n"
-         "LEVEL：该楼层的楼层号（osmAG 的 level 标签，如 1、-1）。HEIGHT：层高，单位米（3.2 m）。ANCHOR：图纸原点 (0, 0) "
-         "在地图上的位置（在底图上拾取；留空：经度 0、纬度 0）。ROTATION：图纸 +y 轴的方向，自正北顺时针的度数。VARIANT：semantic（通道按名称引用区域）或 "
-         "fix-id（通道给出 way 标识）。\n"
-         "输出：OUTPUT，osmAG 文件（.osm）；OUTPUT_AREAS 和 OUTPUT_PASSAGES，相同的区域和通道，作为 WGS84 图层显示在地图上；PREVIEW，可选的区域 "
-         "PNG 预览图；AREA_COUNT 和 PASSAGE_COUNT，写出的数量。"),
+        ("对一个楼层运行完整的处理流程（DXF，或直接读取的 AutoCAD R13-2018 DWG）：保留图纸的结构图层（墙、柱"
+         "、玻璃、楼梯），栅格化，分割为由房间、走廊及其间通道组成的区域图（Area Graph），优化（共享边界的简"
+         "化多边形），并写出锚定在地球上的 osmAG 文件。每一步也可作为单独的算法运行，以便更精细地控制。\n"
+         "INPUT：平面图（.dxf 或 .dwg）。LAYER_RULES：图层关键词的 JSON 文件（留空：内置规则；参见“列出 "
+         "DXF/DWG 图层”）。UNITS：图纸的绘图单位（auto：从文件头读取，并按合理的建筑尺寸校验）。\n"
+         "RESOLUTION：栅格像素大小，单位米（默认 0.044 m；越小越能贴合薄墙，但速度越慢）。DOOR_WIDTH：最宽的"
+         "门，单位米（2.8 m）：更窄的开口将房间分开。CORRIDOR_WIDTH：走廊宽度，单位米（8 m）。MIN_AREA：小于"
+         "此面积（m²）的区域并入相邻区域（楼梯和电梯保留）。INCLUDE_DOORS：将门图层作为墙绘制（门洞封闭；默"
+         "认关闭，使门洞保持开放）。\n"
+         "PLAN / PLAN_EXTENT：图幅上有多个平面图时选用哪一个（留空：主平面图；日志中平面图列表的序号，或以米"
+         "为单位的 xmin,ymin,xmax,ymax，或在地图画布上绘制的范围）。\n"
+         "NAMES（默认开启）：用图纸中的文字为区域命名、编号并指定类型（参见“根据文字指定房间名称和类型”）；"
+         "NAME_RULES：调整这些规则的 JSON 文件。\n"
+         "LEVEL：该楼层的楼层号（osmAG 的 level 标签，如 1、-1）。HEIGHT：层高，单位米（3.2 m）。ANCHOR：图"
+         "纸原点 (0, 0) 在地图上的位置（在底图上拾取；留空：经度 0、纬度 0）。ROTATION：图纸 +y 轴的方向，自"
+         "正北顺时针的度数。VARIANT：semantic（通道按名称引用区域）或 fix-id（通道给出 way 标识）。\n"
+         "输出：OUTPUT，osmAG 文件（.osm）；OUTPUT_AREAS 和 OUTPUT_PASSAGES，相同的区域和通道，作为 WGS84 图"
+         "层显示在地图上；PREVIEW，可选的区域 PNG 预览图；AREA_COUNT 和 PASSAGE_COUNT，写出的数量。"),
     "DXF or DWG floor plan": "DXF 或 DWG 平面图",
     "Layer rules (JSON, optional)": "图层规则（JSON，可选）",
     "Drawing units": "图纸单位",
@@ -172,15 +185,20 @@ T = {
      "REPORT: a CSV with one row per file (file, level, status, areas, passages, seconds, message).\n"
      "Outputs: SUCCEEDED and FAILED, the numbers of floors converted and failed (one bad file never stops "
      "the others), and OUTPUT_FOLDER."):
-        ("用“将 DXF 平面图转换为 osmAG”的完整流程转换 FOLDER 中的每个平面图（匹配 PATTERN 的文件，如 '*.dxf'），同时处理多个文件：WORKERS 个进程（0 = "
-         "每个处理器核心一个）。每个文件写出 OUTPUT_FOLDER/NAME.osm（NAME：图纸的文件名）。失败的文件（不是图纸、没有墙……）会连同原因一起报告，绝不会中断其他文件。\n"
-         "FIRST_LEVEL：按自然名称顺序（floor-2 在 floor-10 之前）第一个文件的楼层；之后每个文件高一层。HEIGHT：层高，单位米。\n"
-         "放置方式，所有楼层相同：ANCHOR 为图纸原点 (0, 0) 所在位置（在地图上拾取），ROTATION 为图纸 +y 轴的方向，自正北顺时针的度数，SCALE "
-         "为每图纸米对应的地面米数。未给出 ANCHOR 时，使用“在地图上放置平面图”保存在项目中的放置结果（如有）。\n"
-         "RESOLUTION（米/像素）、DOOR_WIDTH 和 CORRIDOR_WIDTH（米）、MIN_AREA（m²）：与单文件算法相同。MERGE 还会写出包含所有已转换楼层的 "
-         "OUTPUT_FOLDER/building.osm。\n"
+        ("用“将 DXF 平面图转换为 osmAG”的完整流程转换 FOLDER 中的每个平面图（匹配 PATTERN 的文件，如 '*.dxf'"
+         "），同时处理多个文件：WORKERS 个进程（0 = 每个处理器核心一个）。每个文件写出 "
+         "OUTPUT_FOLDER/NAME.osm（NAME：图纸的文件名）。失败的文件（不是图纸、没有墙……）会连同原因一起报告，"
+         "绝不会中断其他文件。\n"
+         "FIRST_LEVEL：按自然名称顺序（floor-2 在 floor-10 之前）第一个文件的楼层；之后每个文件高一层。"
+         "HEIGHT：层高，单位米。\n"
+         "放置方式，所有楼层相同：ANCHOR 为图纸原点 (0, 0) 所在位置（在地图上拾取），ROTATION 为图纸 +y 轴的"
+         "方向，自正北顺时针的度数，SCALE 为每图纸米对应的地面米数。未给出 ANCHOR 时，使用“在地图上放置平面"
+         "图”保存在项目中的放置结果（如有）。\n"
+         "RESOLUTION（米/像素）、DOOR_WIDTH 和 CORRIDOR_WIDTH（米）、MIN_AREA（m²）：与单文件算法相同。"
+         "MERGE 还会写出包含所有已转换楼层的 OUTPUT_FOLDER/building.osm。\n"
          "REPORT：CSV 文件，每个文件一行（文件、楼层、状态、区域、通道、秒数、消息）。\n"
-         "输出：SUCCEEDED 和 FAILED，转换成功和失败的楼层数（一个坏文件绝不会中断其他文件），以及 OUTPUT_FOLDER。"),
+         "输出：SUCCEEDED 和 FAILED，转换成功和失败的楼层数（一个坏文件绝不会中断其他文件），以及 "
+         "OUTPUT_FOLDER。"),
     "Folder of floor plans": "平面图文件夹",
     "File name patterns (';' separated)": "文件名模式（以 ';' 分隔）",
     "Level of the first file": "第一个文件的楼层",
@@ -192,9 +210,11 @@ T = {
     "CSV files (*.csv)": "CSV 文件 (*.csv)",
     "Floors converted": "已转换的楼层",
     "Floors that failed": "转换失败的楼层",
-    "using the placement saved in the project: {:.7f}, {:.7f}, {:.2f}°": "使用项目中保存的放置结果：{:.7f}, {:.7f}, {:.2f}°",
+    "using the placement saved in the project: {:.7f}, {:.7f}, {:.2f}°":
+        "使用项目中保存的放置结果：{:.7f}, {:.7f}, {:.2f}°",
     "FOLDER: '{}' is not a folder": "FOLDER：'{}' 不是文件夹",
-    "no file in '{}' matches '{}': check the folder and the pattern": "'{}' 中没有文件匹配 '{}'：请检查文件夹和模式",
+    "no file in '{}' matches '{}': check the folder and the pattern":
+        "'{}' 中没有文件匹配 '{}'：请检查文件夹和模式",
     "{} files, {} parallel processes": "{} 个文件，{} 个并行进程",
     "merged {} floors into {}": "已将 {} 个楼层合并到 {}",
     "{} of {} files failed: {}": "{} 个文件失败（共 {} 个）：{}",
@@ -221,15 +241,17 @@ T = {
      "precision, IoU).\n"
      "Outputs: MCC, F1, mean RECALL and PRECISION (0-1), the number of ground-truth rooms (GT_ROOMS), "
      "predicted areas (PREDICTED_AREAS) and rooms matched at IoU >= 0.5 (MATCHED)."):
-        ("将“分割”输出的 LABELS 栅格（区域标识，0 = "
-         "无）与同样大小的真值图像进行比较，真值图像中每个房间涂成各自的颜色（墙为黑色，室外为白色或灰色）。对每个真值房间，重叠最大的预测区域为其匹配：该匹配的召回率和精确率、两个掩膜在已标注和已分割像素上的 "
-         "Matthews 相关系数（MCC，按房间面积加权），以及在 IoU >= 0.5 下一一匹配的房间的 F1 分数。\n"
+        ("将“分割”输出的 LABELS 栅格（区域标识，0 = 无）与同样大小的真值图像进行比较，真值图像中每个房间涂成"
+         "各自的颜色（墙为黑色，室外为白色或灰色）。对每个真值房间，重叠最大的预测区域为其匹配：该匹配的召回"
+         "率和精确率、两个掩膜在已标注和已分割像素上的 Matthews 相关系数（MCC，按房间面积加权），以及在 IoU "
+         ">= 0.5 下一一匹配的房间的 F1 分数。\n"
          "LABELS：“分割”写出的区域标识栅格（每像素一个整数）。\n"
          "GROUND_TRUTH：PNG、BMP 或 TIFF 图像，宽度和高度（像素）须与栅格完全相同。\n"
-         "MIN_ROOM_PX：覆盖像素少于此值的真值颜色是抗锯齿或标注，不是房间，将被忽略（像素；在 0.05 m/px 下，40 px 为 0.1 m²）。\n"
+         "MIN_ROOM_PX：覆盖像素少于此值的真值颜色是抗锯齿或标注，不是房间，将被忽略（像素；在 0.05 m/px 下，"
+         "40 px 为 0.1 m²）。\n"
          "REPORT（可选）：CSV 文件，每个真值房间一行（颜色、像素、匹配的区域、召回率、精确率、IoU）。\n"
-         "输出：MCC、F1、平均 RECALL 和 PRECISION（0-1），真值房间数（GT_ROOMS）、预测区域数（PREDICTED_AREAS）以及在 IoU >= 0.5 "
-         "下匹配的房间数（MATCHED）。"),
+         "输出：MCC、F1、平均 RECALL 和 PRECISION（0-1），真值房间数（GT_ROOMS）、预测区域数（"
+         "PREDICTED_AREAS）以及在 IoU >= 0.5 下匹配的房间数（MATCHED）。"),
     "Area id raster (LABELS of Segment)": "区域标识栅格（“分割”的 LABELS）",
     "Ground-truth colour image": "真值彩色图像",
     "Ignore ground-truth colours covering fewer pixels than": "忽略覆盖像素少于此值的真值颜色",
@@ -244,7 +266,8 @@ T = {
     "LABELS: the raster cannot be opened": "LABELS：无法打开栅格",
     "GROUND_TRUTH: '{}' does not exist": "GROUND_TRUTH：'{}' 不存在",
     "{} ground-truth rooms, {} predicted areas": "{} 个真值房间，{} 个预测区域",
-    "recall {:.3f}  precision {:.3f}  MCC {:.3f}  F1 {:.3f}": "召回率 {:.3f}  精确率 {:.3f}  MCC {:.3f}  F1 {:.3f}",
+    "recall {:.3f}  precision {:.3f}  MCC {:.3f}  F1 {:.3f}":
+        "召回率 {:.3f}  精确率 {:.3f}  MCC {:.3f}  F1 {:.3f}",
     # --- ExportOsmagAlgorithm
     "Export osmAG (.osm)": "导出 osmAG (.osm)",
     ("Writes AREAS and PASSAGES (and optional floor/building outlines as structure areas, which become the "
@@ -266,24 +289,28 @@ T = {
      "OUTPUT: the .osm file to write.\n"
      "Outputs: AREA_COUNT, PASSAGE_COUNT and NODE_COUNT written; SHARED_NODES, the nodes shared by two or "
      "more areas; HOLES_DROPPED, the holes of areas left out (osmAG areas have no holes)."):
-        ("将 AREAS 和 PASSAGES（以及可选的楼层/建筑轮廓，作为结构区域，成为其内部区域的 osmAG:parent）写为 osmAG 文件：JOSM、GDAL 和 osmium 可打开的 "
-         "OpenStreetMap XML，含一个根节点、负数标识、共享边界节点的闭合区域 way，以及两个节点同时属于其连接的两个区域的通道 way。\n"
-         "地理配准：地理或投影坐标系中的图层转换为 WGS84（如给出 ANCHOR_LON/ANCHOR_LAT，根节点位于该处，否则位于数据中心）。CAD 坐标系（无坐标系）中的图层用 "
-         "ANCHOR_LON/ANCHOR_LAT（CAD 原点所在位置，同时也是根节点）、ROTATION 和 SCALE 放置；没有锚点时导出会停止，并提示先进行地理配准。\n"
-         "VARIANT 'semantic' 按名称引用区域（经 JOSM 编辑后仍然有效），'fix-id' 按 way 标识引用。文件以原子方式写出：导出失败不会留下文件。孔洞（柱子）不属于 "
-         "osmAG 区域 way，会被舍弃（在日志中计数）。\n"
+        ("将 AREAS 和 PASSAGES（以及可选的楼层/建筑轮廓，作为结构区域，成为其内部区域的 osmAG:parent）写为 "
+         "osmAG 文件：JOSM、GDAL 和 osmium 可打开的 OpenStreetMap XML，含一个根节点、负数标识、共享边界节点"
+         "的闭合区域 way，以及两个节点同时属于其连接的两个区域的通道 way。\n"
+         "地理配准：地理或投影坐标系中的图层转换为 WGS84（如给出 ANCHOR_LON/ANCHOR_LAT，根节点位于该处，否则"
+         "位于数据中心）。CAD 坐标系（无坐标系）中的图层用 ANCHOR_LON/ANCHOR_LAT（CAD 原点所在位置，同时也是"
+         "根节点）、ROTATION 和 SCALE 放置；没有锚点时导出会停止，并提示先进行地理配准。\n"
+         "VARIANT 'semantic' 按名称引用区域（经 JOSM 编辑后仍然有效），'fix-id' 按 way 标识引用。文件以原子"
+         "方式写出：导出失败不会留下文件。孔洞（柱子）不属于 osmAG 区域 way，会被舍弃（在日志中计数）。\n"
          "STRUCTURE（可选）：楼层或建筑轮廓多边形，写为结构区域。\n"
-         "LEVEL：每个区域和通道的 level 标签（如 1、-1）；留空则保留图层自身的 level 字段，否则为 1。HEIGHT：每层高度，单位米（height 标签）。\n"
-         "ANCHOR_LON / ANCHOR_LAT 以度为单位（WGS84），ROTATION 为自正北顺时针的度数，SCALE 为每 CAD "
-         "米对应的地面米数：“在地图上放置平面图”的放置结果给出这四个值。\n"
+         "LEVEL：每个区域和通道的 level 标签（如 1、-1）；留空则保留图层自身的 level 字段，否则为 1。HEIGHT"
+         "：每层高度，单位米（height 标签）。\n"
+         "ANCHOR_LON / ANCHOR_LAT 以度为单位（WGS84），ROTATION 为自正北顺时针的度数，SCALE 为每 CAD 米对应"
+         "的地面米数：“在地图上放置平面图”的放置结果给出这四个值。\n"
          "OUTPUT：要写出的 .osm 文件。\n"
-         "输出：写出的 AREA_COUNT、PASSAGE_COUNT 和 "
-         "NODE_COUNT；SHARED_NODES，被两个或更多区域共享的节点数；HOLES_DROPPED，被舍弃的区域孔洞数（osmAG 区域没有孔洞）。"),
+         "输出：写出的 AREA_COUNT、PASSAGE_COUNT 和 NODE_COUNT；SHARED_NODES，被两个或更多区域共享的节点数；"
+         "HOLES_DROPPED，被舍弃的区域孔洞数（osmAG 区域没有孔洞）。"),
     "Floor / building outlines (structure areas)": "楼层/建筑轮廓（结构区域）",
     "Level (empty: the areas' own level field, else 1)": "楼层（留空：区域自身的 level 字段，否则为 1）",
     "Height per level (m)": "每层高度（米）",
     "Variant": "变体",
-    "Anchor / root longitude (CAD-frame layers: where the CAD origin lies)": "锚点/根节点经度（CAD 坐标系图层：CAD 原点所在位置）",
+    "Anchor / root longitude (CAD-frame layers: where the CAD origin lies)":
+        "锚点/根节点经度（CAD 坐标系图层：CAD 原点所在位置）",
     "Anchor / root latitude": "锚点/根节点纬度",
     "Rotation of CAD-frame layers (degrees clockwise from north)": "CAD 坐标系图层的旋转角（自正北顺时针，度）",
     "Scale of CAD-frame layers": "CAD 坐标系图层的比例",
@@ -297,12 +324,13 @@ T = {
         "{} 位于 {}，但 AREAS 位于 {}；请先将其重投影到 AREAS 的坐标系",
     ("AREAS holds several levels ({}): export one level at a time (filter the layer, or set LEVEL), then "
      "combine the files with 'Merge osmAG floors into a building'"):
-        "AREAS 包含多个楼层（{}）：请逐层导出（筛选图层或设置 LEVEL），然后用“将 osmAG 楼层合并为建筑”合并这些文件",
+        ("AREAS 包含多个楼层（{}）：请逐层导出（筛选图层或设置 LEVEL），然后用“将 osmAG 楼层合并为建筑”合并"
+         "这些文件"),
     "layers are in {}: converting to WGS84": "图层位于 {}：正在转换为 WGS84",
     ("AREAS has no CRS (CAD frame): georeference the layers first (cad2osmag:georeference), or give "
      "ANCHOR_LON and ANCHOR_LAT (where the CAD origin lies) and ROTATION"):
-        ("AREAS 没有坐标系（CAD 坐标系）：请先对图层进行地理配准（cad2osmag:georeference），或给出 ANCHOR_LON 和 ANCHOR_LAT（CAD "
-         "原点所在位置）以及 ROTATION"),
+        ("AREAS 没有坐标系（CAD 坐标系）：请先对图层进行地理配准（cad2osmag:georeference），或给出 "
+         "ANCHOR_LON 和 ANCHOR_LAT（CAD 原点所在位置）以及 ROTATION"),
     "CAD-frame layers placed with {}": "CAD 坐标系图层的放置方式：{}",
     # --- Cad2OsmagAlgorithm
     "Plan on the sheet (empty = main plan; an index of the log's plan list, or xmin,ymin,xmax,ymax in metres)":
@@ -335,19 +363,25 @@ T = {
      "DOOR_COUNT (doorways found), CLASSES (entities counted per class), UNIT and UNIT_SCALE (the unit used "
      "and metres per drawing unit), GEOMETRY_COUNT (structure features written) and TEXT_COUNT (texts "
      "written)."):
-        ("读取 INPUT，即 DXF 平面图或 DWG（AutoCAD R13-2018，直接读取：无需转换器），分解块（含缩放、旋转、镜像和 MINSERT 阵列；块内 0 图层上的实体采用 "
-         "INSERT 的图层），跳过冻结和关闭的图层，保留图层规则选出的结构图层（墙、柱、窗/玻璃、楼梯、电梯，以及参考图层 0 和 Defpoints），并以 1 cm 精度将曲线折线化。\n"
-         "LAYER_RULES：不区分大小写的关键词 JSON 文件（复制 algorithms/default_layer_rules.json）。LAYERS：显式的图层名称（以 ';' "
-         "分隔），优先于规则。UNITS：文件头中的 $INSUNITS 仅作参考；默认选择使建筑尺寸为 5-500 m 的单位（警告中会给出两种单位）。除非设置 "
-         "INCLUDE_DOORS，门图层将被排除，使门洞保持开放；门的开启弧线和门块（按名称，支持多种语言）会在任意图层上被识别，并写为 DOORS（门垛到门垛）；家具块、0 "
-         "图层上的独立家具和图案填充会被排除（日志统计每一类）。\n"
-         "整张图幅：图框、图签和图例会被排除，结构按平面图分组（相距超过 5 m 的组）；保留主平面图（墙体最多的一组），日志列出每组的序号、范围、标题和种类（平面图 / 详图 / 图例）。PLAN "
-         "选择其他平面图（序号，或以米为单位的 xmin,ymin,xmax,ymax）；PLAN_EXTENT 为在地图画布上绘制的同样范围。\n"
-         "输出，以米为单位、位于图纸自身坐标系中（局部工程坐标系，未地理配准）：WALLS（线，字段 "
-         "layer、kind、entity、closed、filled、width；“栅格化建筑结构”据此重建几何；block、class）、TEXTS（点，字段 "
-         "text、height、rotation、layer、entity、block、tag = ATTRIB 标记、id；“根据文字指定房间名称和类型”读取它们）和 DOORS（门洞线，字段 "
-         "source 和 width）。统计值：PLANS（图幅上找到的平面图）和 PLAN_COUNT（其数量）、DOOR_COUNT（找到的门洞）、CLASSES（按类统计的实体数）、UNIT 和 "
-         "UNIT_SCALE（所用单位及每图纸单位对应的米数）、GEOMETRY_COUNT（写出的结构要素数）和 TEXT_COUNT（写出的文字数）。"),
+        ("读取 INPUT，即 DXF 平面图或 DWG（AutoCAD R13-2018，直接读取：无需转换器），分解块（含缩放、旋转、"
+         "镜像和 MINSERT 阵列；块内 0 图层上的实体采用 INSERT 的图层），跳过冻结和关闭的图层，保留图层规则选"
+         "出的结构图层（墙、柱、窗/玻璃、楼梯、电梯，以及参考图层 0 和 Defpoints），并以 1 cm 精度将曲线折线"
+         "化。\n"
+         "LAYER_RULES：不区分大小写的关键词 JSON 文件（复制 algorithms/default_layer_rules.json）。LAYERS："
+         "显式的图层名称（以 ';' 分隔），优先于规则。UNITS：文件头中的 $INSUNITS 仅作参考；默认选择使建筑尺"
+         "寸为 5-500 m 的单位（警告中会给出两种单位）。除非设置 INCLUDE_DOORS，门图层将被排除，使门洞保持开"
+         "放；门的开启弧线和门块（按名称，支持多种语言）会在任意图层上被识别，并写为 DOORS（门垛到门垛）；家"
+         "具块、0 图层上的独立家具和图案填充会被排除（日志统计每一类）。\n"
+         "整张图幅：图框、图签和图例会被排除，结构按平面图分组（相距超过 5 m 的组）；保留主平面图（墙体最多"
+         "的一组），日志列出每组的序号、范围、标题和种类（平面图 / 详图 / 图例）。PLAN 选择其他平面图（序号"
+         "，或以米为单位的 xmin,ymin,xmax,ymax）；PLAN_EXTENT 为在地图画布上绘制的同样范围。\n"
+         "输出，以米为单位、位于图纸自身坐标系中（局部工程坐标系，未地理配准）：WALLS（线，字段 layer、kind"
+         "、entity、closed、filled、width；“栅格化建筑结构”据此重建几何；block、class）、TEXTS（点，字段 "
+         "text、height、rotation、layer、entity、block、tag = ATTRIB 标记、id；“根据文字指定房间名称和类型”"
+         "读取它们）和 DOORS（门洞线，字段 source 和 width）。统计值：PLANS（图幅上找到的平面图）和 "
+         "PLAN_COUNT（其数量）、DOOR_COUNT（找到的门洞）、CLASSES（按类统计的实体数）、UNIT 和 UNIT_SCALE（"
+         "所用单位及每图纸单位对应的米数）、GEOMETRY_COUNT（写出的结构要素数）和 TEXT_COUNT（写出的文字数）"
+         "。"),
     "DXF or DWG drawing": "DXF 或 DWG 图纸",
     "Layer rules (JSON, empty = built-in defaults)": "图层规则（JSON，留空 = 内置规则）",
     "Layers to keep (';' separated, overrides the rules)": "要保留的图层（以 ';' 分隔，优先于规则）",
@@ -366,7 +400,11 @@ T = {
     "Number of texts": "文字数",
     "Entity classes: {}; {} doorways found": "实体类别：{}；找到 {} 个门洞",
     "Sheet: {}": "图幅：{}",
-    "Kept {} features on layers: {}; {} texts; unit {} (header: {})": "保留了 {} 个要素，所在图层：{}；{} 段文字；单位 {}（文件头：{}）",
+    "Kept {} features on layers: {}; {} texts; unit {} (header: {})":
+        "保留了 {} 个要素，所在图层：{}；{} 段文字；单位 {}（文件头：{}）",
+    # --- Cad2OsmagAlgorithm
+    "the point {}, {} [{}] cannot be converted to longitude/latitude: {}":
+        "点 {}, {} [{}] 无法转换为经纬度：{}",
     # --- GeoreferenceAlgorithm
     "Georeference (place the plan on the map)": "地理配准（将平面图放到地图上）",
     ("Transforms layers drawn in the CAD frame (metres, no CRS) into a target CRS (default WGS84).\n"
@@ -391,18 +429,22 @@ T = {
      "placement as text; ANCHOR_LON and ANCHOR_LAT (degrees), ROTATION_DEG (degrees clockwise from north) "
      "and SCALE_FACTOR of the placement, to reuse for the other floors."):
         ("将在 CAD 坐标系中绘制的图层（米，无坐标系）转换到目标坐标系（默认 WGS84）。\n"
-         "“锚点”模式：在地图画布上（任意坐标系）为 CAD 点 CAD_ANCHOR_X/Y（默认为图纸原点）拾取 ANCHOR；ROTATION 为平面图 +y 轴的方向，自正北顺时针的度数，或为 "
-         "CAD 点 CAD_ROTATION_X/Y 给出 ROTATION_POINT（第二个地图点），由两个拾取点计算旋转角；SCALE 为每 CAD 米对应的地面米数。\n"
-         "“控制点”模式：GCPS 为点图层，其几何为在底图上拾取的各点，字段 cad_x、cad_y（或 sourceX、sourceY）保存其 CAD 坐标；至少 2 "
-         "个点，且不全在一条直线上。以最小二乘法求解相似变换（Helmert），并以米为单位报告每个点的残差及其 RMS。\n"
+         "“锚点”模式：在地图画布上（任意坐标系）为 CAD 点 CAD_ANCHOR_X/Y（默认为图纸原点）拾取 ANCHOR；"
+         "ROTATION 为平面图 +y 轴的方向，自正北顺时针的度数，或为 CAD 点 CAD_ROTATION_X/Y 给出 "
+         "ROTATION_POINT（第二个地图点），由两个拾取点计算旋转角；SCALE 为每 CAD 米对应的地面米数。\n"
+         "“控制点”模式：GCPS 为点图层，其几何为在底图上拾取的各点，字段 cad_x、cad_y（或 sourceX、sourceY）"
+         "保存其 CAD 坐标；至少 2 个点，且不全在一条直线上。以最小二乘法求解相似变换（Helmert），并以米为单"
+         "位报告每个点的残差及其 RMS。\n"
          "FIX_SCALE 在拟合时保持 SCALE 不变（只求解位置和旋转）。\n"
-         "AREAS 和 PASSAGES：CAD 坐标系中的图层（米，无坐标系），如“优化”的输出；OUTPUT_AREAS 和 OUTPUT_PASSAGES 以 TARGET_CRS（默认 "
-         "WGS84，EPSG:4326）得到它们，保留全部字段。MODE 选择“锚点 + 旋转”或“控制点”。CAD_ANCHOR_X / CAD_ANCHOR_Y 和 CAD_ROTATION_X / "
-         "CAD_ROTATION_Y 为以米为单位的 CAD 坐标。\n"
-         "所有转换都通过以锚点为中心的横轴墨卡托投影（pyproj/PROJ）进行，绝不使用平面地球近似。添加底图（矢量 ▸ CAD 转 osmAG ▸ 添加……底图）以便对照真实影像拾取点，或用 矢量 "
-         "▸ CAD 转 osmAG ▸ 在地图上放置平面图 将平面图拖到位置上，其放置结果给出 ANCHOR、ROTATION 和 SCALE。\n"
-         "输出：RMS 和 RESIDUALS，控制点残差，单位米（总体和逐点）；FRAME，放置结果的文字描述；ANCHOR_LON 和 "
-         "ANCHOR_LAT（度）、ROTATION_DEG（自正北顺时针的度数）和 SCALE_FACTOR，可在其他楼层重复使用。"),
+         "AREAS 和 PASSAGES：CAD 坐标系中的图层（米，无坐标系），如“优化”的输出；OUTPUT_AREAS 和 "
+         "OUTPUT_PASSAGES 以 TARGET_CRS（默认 WGS84，EPSG:4326）得到它们，保留全部字段。MODE 选择“锚点 + 旋"
+         "转”或“控制点”。CAD_ANCHOR_X / CAD_ANCHOR_Y 和 CAD_ROTATION_X / CAD_ROTATION_Y 为以米为单位的 CAD "
+         "坐标。\n"
+         "所有转换都通过以锚点为中心的横轴墨卡托投影（pyproj/PROJ）进行，绝不使用平面地球近似。添加底图（矢"
+         "量 ▸ CAD 转 osmAG ▸ 添加……底图）以便对照真实影像拾取点，或用 矢量 ▸ CAD 转 osmAG ▸ 在地图上放置平"
+         "面图 将平面图拖到位置上，其放置结果给出 ANCHOR、ROTATION 和 SCALE。\n"
+         "输出：RMS 和 RESIDUALS，控制点残差，单位米（总体和逐点）；FRAME，放置结果的文字描述；ANCHOR_LON 和"
+         " ANCHOR_LAT（度）、ROTATION_DEG（自正北顺时针的度数）和 SCALE_FACTOR，可在其他楼层重复使用。"),
     "Anchor point + rotation": "锚点 + 旋转",
     "Control points (least squares)": "控制点（最小二乘）",
     "Layer in the CAD frame (areas or any)": "CAD 坐标系中的图层（区域或任意图层）",
@@ -417,7 +459,8 @@ T = {
     "CAD y of the second point (m)": "第二个点的 CAD y（米）",
     "Scale (ground metres per CAD metre)": "比例（每 CAD 米对应的地面米数）",
     "Control points (fields cad_x, cad_y)": "控制点（字段 cad_x、cad_y）",
-    "Control points: keep the scale at SCALE (solve rotation and shift only)": "控制点：将比例固定为 SCALE（只求解旋转和平移）",
+    "Control points: keep the scale at SCALE (solve rotation and shift only)":
+        "控制点：将比例固定为 SCALE（只求解旋转和平移）",
     "Target CRS": "目标坐标系",
     "Georeferenced layer": "已地理配准的图层",
     "Georeferenced second layer": "已地理配准的第二个图层",
@@ -438,7 +481,8 @@ T = {
     "RMS of residuals: {:.4f} m ({} points)": "残差的 RMS：{:.4f} m（{} 个点）",
     ("The control points do not fit a similarity transform well (RMS {:.2f} m, worst point {} off by {:.2f} "
      "m): check that each point's CAD x/y match where it was picked"):
-        "控制点与相似变换拟合不佳（RMS {:.2f} m，最差的点 {} 偏差 {:.2f} m）：请检查每个点的 CAD x/y 是否与其拾取位置一致",
+        ("控制点与相似变换拟合不佳（RMS {:.2f} m，最差的点 {} 偏差 {:.2f} m）：请检查每个点的 CAD x/y 是否与"
+         "其拾取位置一致"),
     ("The fitted scale is {:.4f} (the plan would be stretched by {:+.1%}): check the drawing units or the "
      "control points, or set FIX_SCALE"):
         "拟合得到的比例为 {:.4f}（平面图将被拉伸 {:+.1%}）：请检查图纸单位或控制点，或设置 FIX_SCALE",
@@ -447,7 +491,9 @@ T = {
     "rotation from the two picked points: {:.4f} degrees": "由两个拾取点得到的旋转角：{:.4f} 度",
     ("{} is already georeferenced ({}); this algorithm places layers in the CAD frame (the outputs of the "
      "segment and refine algorithms). Use 'Reproject layer' to change the CRS of a placed layer."):
-        "{} 已经过地理配准（{}）；本算法用于放置 CAD 坐标系中的图层（分割和优化算法的输出）。要更改已放置图层的坐标系，请使用“重投影图层”。",
+        ("{} 已经过地理配准（{}）；本算法用于放置 CAD 坐标系中的图层（分割和优化算法的输出）。要更改已放置图"
+         "层的坐标系，请使用“重投影图层”。"),
+    "{} feature {}: {}": "{} 要素 {}：{}",
     "placement: {}": "放置结果：{}",
     # --- ListLayersAlgorithm
     "List DXF/DWG layers": "列出 DXF/DWG 图层",
@@ -464,19 +510,22 @@ T = {
      "Outputs: OUTPUT, a table without geometry, one row per layer (save it as CSV, or keep it as a memory "
      "layer); LAYER_COUNT, the number of layers; KEPT_LAYERS, the layers the rules keep (separated by ';'); "
      "HEADER_UNIT, the unit written in the drawing's header ($INSUNITS)."):
-        ("报告 INPUT（DXF 或 DWG 图纸；DWG：AutoCAD R13-2018，直接读取）的每个图层，包括按类型统计的实体数（分解块之后：块内 0 图层上的实体计入 INSERT "
-         "的图层）、是否冻结或关闭，以及图层规则是否保留它（种类和匹配的关键词；门图层列为种类 'door' 但不保留，因为除非包含门，门洞保持开放）。可用此表选择“从 DXF/DWG 提取建筑结构”的 "
-         "LAYERS，或编写自己的 LAYER_RULES JSON 文件。\n"
-         "图层名称保持原样：规则匹配名称中有意义的部分（绑定外部参照的前缀，如 E1-RI-1F$0$A-WALL 中的前缀，会被忽略）；'matched' 列显示该部分。\n"
+        ("报告 INPUT（DXF 或 DWG 图纸；DWG：AutoCAD R13-2018，直接读取）的每个图层，包括按类型统计的实体数（"
+         "分解块之后：块内 0 图层上的实体计入 INSERT 的图层）、是否冻结或关闭，以及图层规则是否保留它（种类"
+         "和匹配的关键词；门图层列为种类 'door' 但不保留，因为除非包含门，门洞保持开放）。可用此表选择“从 "
+         "DXF/DWG 提取建筑结构”的 LAYERS，或编写自己的 LAYER_RULES JSON 文件。\n"
+         "图层名称保持原样：规则匹配名称中有意义的部分（绑定外部参照的前缀，如 E1-RI-1F$0$A-WALL 中的前缀，"
+         "会被忽略）；'matched' 列显示该部分。\n"
          "LAYER_RULES：图层关键词的 JSON 文件（留空：内置规则，algorithms/default_layer_rules.json）。\n"
-         "输出：OUTPUT，无几何的表格，每个图层一行（可另存为 CSV，或保留为临时图层）；LAYER_COUNT，图层数；KEPT_LAYERS，规则保留的图层（以 ';' "
-         "分隔）；HEADER_UNIT，图纸文件头中记录的单位（$INSUNITS）。"),
+         "输出：OUTPUT，无几何的表格，每个图层一行（可另存为 CSV，或保留为临时图层）；LAYER_COUNT，图层数；"
+         "KEPT_LAYERS，规则保留的图层（以 ';' 分隔）；HEADER_UNIT，图纸文件头中记录的单位（$INSUNITS）。"),
     "Layer report": "图层报告",
     "Number of layers": "图层数",
     "Layers the rules keep (semicolon separated)": "规则保留的图层（以分号分隔）",
     "Unit written in the header ($INSUNITS)": "文件头中记录的单位（$INSUNITS）",
     "{} layers, {} kept by the rules: {}": "{} 个图层，规则保留 {} 个：{}",
     # --- Cad2OsmagAlgorithm
+    "style not stored in {}: {}": "样式未保存到 {}：{}",
     "cannot convert to {}: {}": "无法转换到 {}：{}",
     "unclosed area ways (skipped): {}": "未闭合的区域 way（已跳过）：{}",
     "dangling references (skipped): nodes {} refs {}": "悬空引用（已跳过）：节点 {} 引用 {}",
@@ -496,15 +545,18 @@ T = {
      "Outputs: the number of areas and passages loaded (AREA_COUNT, PASSAGE_COUNT), the unclosed area ways "
      "(UNCLOSED) and dangling references (DANGLING) skipped, the root node's position (ROOT_LON, ROOT_LAT, "
      "degrees) and the VARIANT detected."):
-        ("将 osmAG 文件（semantic 或 fix-id 变体；由本插件、JOSM 或其他 osmAG 工具写出）打开为区域多边形图层和通道线图层，每个标签作为一个字段（另有 "
-         "osm_id，以及将每个通道的区域解析为其 way 标识的 from_id / to_id，两个楼梯或电梯区域之间的通道还有 vertical = yes）。区域按 osmAG:areatype "
-         "着色，通道绘制为粗红线，垂直通道为粗蓝线（styles/osmag_*.qml），两者都以名称标注；GeoPackage 输出保留样式。悬空引用（缺失的节点、引用未知区域的通道）和未闭合的区域 "
-         "way 会被报告并跳过。不含任何 osmAG 区域的文件将被拒绝。\n"
+        ("将 osmAG 文件（semantic 或 fix-id 变体；由本插件、JOSM 或其他 osmAG 工具写出）打开为区域多边形图层"
+         "和通道线图层，每个标签作为一个字段（另有 osm_id，以及将每个通道的区域解析为其 way 标识的 from_id "
+         "/ to_id，两个楼梯或电梯区域之间的通道还有 vertical = yes）。区域按 osmAG:areatype 着色，通道绘制为"
+         "粗红线，垂直通道为粗蓝线（styles/osmag_*.qml），两者都以名称标注；GeoPackage 输出保留样式。悬空引"
+         "用（缺失的节点、引用未知区域的通道）和未闭合的区域 way 会被报告并跳过。不含任何 osmAG 区域的文件将"
+         "被拒绝。\n"
          "INPUT：osmAG 文件（.osm，OpenStreetMap XML，坐标为 WGS84 度）。\n"
-         "TARGET_CRS：输出图层的坐标系（默认 WGS84，EPSG:4326）；如需测量或编辑区域，请选择以米为单位的投影坐标系。\n"
+         "TARGET_CRS：输出图层的坐标系（默认 WGS84，EPSG:4326）；如需测量或编辑区域，请选择以米为单位的投影"
+         "坐标系。\n"
          "OUTPUT_AREAS / OUTPUT_PASSAGES：两个图层（临时图层、GeoPackage……）。\n"
-         "输出：加载的区域和通道数量（AREA_COUNT、PASSAGE_COUNT），跳过的未闭合区域 "
-         "way（UNCLOSED）和悬空引用（DANGLING），根节点位置（ROOT_LON、ROOT_LAT，度）以及检测到的 VARIANT。"),
+         "输出：加载的区域和通道数量（AREA_COUNT、PASSAGE_COUNT），跳过的未闭合区域 way（UNCLOSED）和悬空引"
+         "用（DANGLING），根节点位置（ROOT_LON、ROOT_LAT，度）以及检测到的 VARIANT。"),
     "Output CRS": "输出坐标系",
     "osmAG areas": "osmAG 区域",
     "osmAG passages": "osmAG 通道",
@@ -520,8 +572,8 @@ T = {
     ("Fuses floors into one osmAG building. INPUT: osmAG floor files (semantic or fix-id), and/or "
      "AREAS/PASSAGES layers (e.g. from 'Load osmAG') split by their 'level' field.\n"
      "Level of each floor: LEVELS (comma-separated, in the order of the inputs), else the floor's level "
-     "tags, else its file name (*-F3*, *_L-1*, *B1*, *3F*, *三层*). HEIGHTS: metres per level (one value for "
-     "all, or one per floor; default: the floor's height tag, else 3.2).\n"
+     "tags, else its file name (*-F3*, *_L-1*, *B1*, *3F*, *三层*). HEIGHTS: metres per level (one value "
+     "for all, or one per floor; default: the floor's height tag, else 3.2).\n"
      "Registration: floors drawn in different frames are moved onto each other with their stairs and lifts "
      "(areas typed stairs/elevator, or named like one): matched by name first, else by type, size and "
      "position, by consensus (one wrong match does not move a floor); rotation when two anchors agree. The "
@@ -539,28 +591,33 @@ T = {
      "layers with a 'level' field; FLOOR_COUNT, VERTICAL_PASSAGES, AREA_COUNT and PASSAGE_COUNT (numbers "
      "written), RMS (registration residual in metres), DROPPED_PASSAGES (passages left out) and LEVELS_OUT "
      "(the levels, in order)."):
-        ("将各楼层合并为一个 osmAG 建筑。INPUT：osmAG 楼层文件（semantic 或 fix-id），和/或按 'level' 字段拆分的 AREAS/PASSAGES "
-         "图层（如来自“加载 osmAG”）。\n"
-         "每个楼层的楼层号：LEVELS（以逗号分隔，按输入顺序），否则为楼层的 level "
-         "标签，否则取自其文件名（*-F3*、*_L-1*、*B1*、*3F*、*三层*）。HEIGHTS：每层的米数（一个值用于全部楼层，或每层一个；默认：楼层的 height 标签，否则为 "
-         "3.2）。\n"
-         "配准：在不同坐标系中绘制的楼层通过楼梯和电梯（类型为 stairs/elevator "
-         "或按此命名的区域）相互对齐：先按名称匹配，否则按类型、大小和位置，以一致性投票决定（一个错误匹配不会移动楼层）；两个锚点一致时也求解旋转。日志给出每个锚点的残差和 "
-         "RMS。没有锚点的楼层按其轮廓配准，并给出警告。\n"
-         "拼接：相邻楼层重叠的楼梯/电梯获得一个垂直通道（位于两个竖井内的两节点 "
-         "way，标注上层楼层和高度）。一个建筑结构区域是每层一个结构区域的父区域，后者又是该层各区域的父区域；标识和名称在整栋建筑内唯一。引用不存在区域的通道会连同其标识一起报告并被舍弃（STRICT：改为停止）。REGISTER（默认开启）：按上述方法将各楼层对齐；关闭：每个楼层保持原位。BUILDING：建筑名称（根结构区域）。VARIANT：写出的 "
+        ("将各楼层合并为一个 osmAG 建筑。INPUT：osmAG 楼层文件（semantic 或 fix-id），和/或按 'level' 字段拆"
+         "分的 AREAS/PASSAGES 图层（如来自“加载 osmAG”）。\n"
+         "每个楼层的楼层号：LEVELS（以逗号分隔，按输入顺序），否则为楼层的 level 标签，否则取自其文件名（"
+         "*-F3*、*_L-1*、*B1*、*3F*、*三层*）。HEIGHTS：每层的米数（一个值用于全部楼层，或每层一个；默认：楼"
+         "层的 height 标签，否则为 3.2）。\n"
+         "配准：在不同坐标系中绘制的楼层通过楼梯和电梯（类型为 stairs/elevator 或按此命名的区域）相互对齐："
+         "先按名称匹配，否则按类型、大小和位置，以一致性投票决定（一个错误匹配不会移动楼层）；两个锚点一致时"
+         "也求解旋转。日志给出每个锚点的残差和 RMS。没有锚点的楼层按其轮廓配准，并给出警告。\n"
+         "拼接：相邻楼层重叠的楼梯/电梯获得一个垂直通道（位于两个竖井内的两节点 way，标注上层楼层和高度）。"
+         "一个建筑结构区域是每层一个结构区域的父区域，后者又是该层各区域的父区域；标识和名称在整栋建筑内唯一"
+         "。引用不存在区域的通道会连同其标识一起报告并被舍弃（STRICT：改为停止）。REGISTER（默认开启）：按上"
+         "述方法将各楼层对齐；关闭：每个楼层保持原位。BUILDING：建筑名称（根结构区域）。VARIANT：写出的 "
          "osmAG 变体：与输入相同、semantic（通道按名称引用区域）或 fix-id（通道给出 way 标识）。\n"
-         "输出：OUTPUT，一个 osmAG 文件（以原子方式写出）；可选的 OUTPUT_AREAS 和 OUTPUT_PASSAGES 图层，带 'level' "
-         "字段；FLOOR_COUNT、VERTICAL_PASSAGES、AREA_COUNT 和 "
-         "PASSAGE_COUNT（写出的数量）、RMS（配准残差，单位米）、DROPPED_PASSAGES（舍弃的通道）和 LEVELS_OUT（各楼层，按顺序）。"),
+         "输出：OUTPUT，一个 osmAG 文件（以原子方式写出）；可选的 OUTPUT_AREAS 和 OUTPUT_PASSAGES 图层，带 "
+         "'level' 字段；FLOOR_COUNT、VERTICAL_PASSAGES、AREA_COUNT 和 PASSAGE_COUNT（写出的数量）、RMS（配准"
+         "残差，单位米）、DROPPED_PASSAGES（舍弃的通道）和 LEVELS_OUT（各楼层，按顺序）。"),
     "osmAG floor files": "osmAG 楼层文件",
     "Areas layer (several floors, 'level' field)": "区域图层（多个楼层，'level' 字段）",
     "Passages layer": "通道图层",
-    "Levels, one per floor file (empty: level tags, else file names)": "楼层，每个楼层文件一个（留空：level 标签，否则取自文件名）",
+    "Levels, one per floor file (empty: level tags, else file names)":
+        "楼层，每个楼层文件一个（留空：level 标签，否则取自文件名）",
     "Height per level in metres (one value, or one per floor)": "每层高度，单位米（一个值，或每层一个）",
     "Building name": "建筑名称",
-    "Register the floors on their stairs/lifts (off: keep them where they are)": "通过楼梯/电梯对齐各楼层（关闭：保持原位）",
-    "Stop on passages whose areas are missing (off: report and leave them out)": "遇到引用缺失区域的通道时停止（关闭：报告并舍弃）",
+    "Register the floors on their stairs/lifts (off: keep them where they are)":
+        "通过楼梯/电梯对齐各楼层（关闭：保持原位）",
+    "Stop on passages whose areas are missing (off: report and leave them out)":
+        "遇到引用缺失区域的通道时停止（关闭：报告并舍弃）",
     "Building osmAG file": "建筑 osmAG 文件",
     "Building areas": "建筑区域",
     "Building passages": "建筑通道",
@@ -569,14 +626,17 @@ T = {
     "Registration residual RMS (m)": "配准残差 RMS（米）",
     "Passages left out": "舍弃的通道",
     "Levels": "楼层",
-    "INPUT: give at least one osmAG floor file (or an AREAS layer)": "INPUT：请至少给出一个 osmAG 楼层文件（或一个 AREAS 图层）",
-    "HEIGHTS must be numbers (metres), e.g. 3.2 or 4.5,3.2,3.2": "HEIGHTS 必须是数字（米），如 3.2 或 4.5,3.2,3.2",
+    "INPUT: give at least one osmAG floor file (or an AREAS layer)":
+        "INPUT：请至少给出一个 osmAG 楼层文件（或一个 AREAS 图层）",
+    "HEIGHTS must be numbers (metres), e.g. 3.2 or 4.5,3.2,3.2":
+        "HEIGHTS 必须是数字（米），如 3.2 或 4.5,3.2,3.2",
     "floor file '{}' does not exist": "楼层文件 '{}' 不存在",
     "AREAS has no CRS (CAD frame): georeference it first (cad2osmag:georeference)":
         "AREAS 没有坐标系（CAD 坐标系）：请先进行地理配准（cad2osmag:georeference）",
     "LEVELS gives {} levels for {} floors; give one per floor, in the order of the inputs":
         "LEVELS 给出了 {} 个楼层，而楼层文件有 {} 个；请按输入顺序每层给出一个",
-    "level {}: shift ({:.3f}, {:.3f}) m, rotation {:.3f}°, {}": "楼层 {}：平移 ({:.3f}, {:.3f}) m，旋转 {:.3f}°，{}",
+    "level {}: shift ({:.3f}, {:.3f}) m, rotation {:.3f}°, {}":
+        "楼层 {}：平移 ({:.3f}, {:.3f}) m，旋转 {:.3f}°，{}",
     # --- RasterizeAlgorithm
     "Rasterize structure": "栅格化建筑结构",
     ("Turns structure lines (the WALLS output of 'Extract structure from DXF/DWG', or any line/polygon "
@@ -601,18 +661,23 @@ T = {
      "'Extract structure') kept open even where a door layer is drawn.\n"
      "Outputs: OCCUPANCY, the GeoTIFF (in the drawing frame, metres); WIDTH and HEIGHT in pixels; "
      "OCCUPIED_SHARE, the share of occupied pixels (0-1)."):
-        ("将结构线（“从 DXF/DWG 提取建筑结构”的 WALLS 输出，或任何以米为单位的线/面图层）转换为单波段占用 GeoTIFF：0 = 空闲，255 = 占用（与 ROS "
-         "map_server 图像相反，后者黑色为占用）。细线按 0.15 m 宽绘制，宽多段线按其宽度绘制，填充轮廓（实体填充）按填充绘制。\n"
-         "范围为所有顶点的 PERCENTILES（下限、上限），扩展到伸入其中的实体，再加上 PADDING（建筑尺寸的比例），使远处零散的实体不会把栅格撑大。原点对齐到 RESOLUTION "
-         "的整数倍，地理变换将像素精确映射回图纸坐标系。\n"
-         "修复：用 KERNEL x KERNEL 的正方形做闭运算，弥合约 0.2 m "
-         "以内的缝隙，然后做开运算去除孤立斑点（开运算后不复存在且较小的连通块）。STROKE：绘制细线所用的宽度，单位米（0.15 m）。\n"
-         "多楼层组：将所有楼层的结构图层作为 FLOOR_LAYERS 给出（和/或在第一层坐标系中给出 "
-         "COMMON_EXTENT）；以相同参数栅格化的每个楼层都得到逐像素相同的栅格。原点不同的楼层（范围不重叠）通过互相关配准（ALIGN_FLOORS）；每个栅格的地理变换仍将其像素映射到各自的图纸坐标系，因此原点相差楼层偏移量，但像素对齐。\n"
+        ("将结构线（“从 DXF/DWG 提取建筑结构”的 WALLS 输出，或任何以米为单位的线/面图层）转换为单波段占用 "
+         "GeoTIFF：0 = 空闲，255 = 占用（与 ROS map_server 图像相反，后者黑色为占用）。细线按 0.15 m 宽绘制"
+         "，宽多段线按其宽度绘制，填充轮廓（实体填充）按填充绘制。\n"
+         "范围为所有顶点的 PERCENTILES（下限、上限），扩展到伸入其中的实体，再加上 PADDING（建筑尺寸的比例）"
+         "，使远处零散的实体不会把栅格撑大。原点对齐到 RESOLUTION 的整数倍，地理变换将像素精确映射回图纸坐标"
+         "系。\n"
+         "修复：用 KERNEL x KERNEL 的正方形做闭运算，弥合约 0.2 m 以内的缝隙，然后做开运算去除孤立斑点（开运"
+         "算后不复存在且较小的连通块）。STROKE：绘制细线所用的宽度，单位米（0.15 m）。\n"
+         "多楼层组：将所有楼层的结构图层作为 FLOOR_LAYERS 给出（和/或在第一层坐标系中给出 COMMON_EXTENT）；"
+         "以相同参数栅格化的每个楼层都得到逐像素相同的栅格。原点不同的楼层（范围不重叠）通过互相关配准（"
+         "ALIGN_FLOORS）；每个栅格的地理变换仍将其像素映射到各自的图纸坐标系，因此原点相差楼层偏移量，但像素"
+         "对齐。\n"
          "超过 MAX_MPX 百万像素的栅格会以错误停止，错误信息会建议一个分辨率。\n"
-         "STAIRS_AS_OBSTACLES：将楼梯和电梯符号绘制为墙（默认关闭：楼梯和电梯保持为空闲空间，从而成为区域）。DOORS（可选）：门洞线（门垛到门垛，“提取建筑结构”的 DOORS "
-         "输出），即使绘有门图层也保持开放。\n"
-         "输出：OCCUPANCY，GeoTIFF（位于图纸坐标系，单位米）；WIDTH 和 HEIGHT，单位像素；OCCUPIED_SHARE，占用像素的比例（0-1）。"),
+         "STAIRS_AS_OBSTACLES：将楼梯和电梯符号绘制为墙（默认关闭：楼梯和电梯保持为空闲空间，从而成为区域）"
+         "。DOORS（可选）：门洞线（门垛到门垛，“提取建筑结构”的 DOORS 输出），即使绘有门图层也保持开放。\n"
+         "输出：OCCUPANCY，GeoTIFF（位于图纸坐标系，单位米）；WIDTH 和 HEIGHT，单位像素；OCCUPIED_SHARE，占"
+         "用像素的比例（0-1）。"),
     "Resolution (m/pixel)": "分辨率（米/像素）",
     "Padding (fraction of the building size)": "外扩边距（建筑尺寸的比例）",
     "Vertex percentiles for the extent (low, high)": "用于确定范围的顶点百分位数（下限, 上限）",
@@ -620,7 +685,8 @@ T = {
     "Width of hairlines (m)": "细线宽度（米）",
     "Pixel budget (megapixels)": "像素预算（百万像素）",
     "Common extent for multi-floor sets (optional)": "多楼层组的公共范围（可选）",
-    "Structure layers of all floors: rasterize on their common extent (optional)": "所有楼层的结构图层：在其公共范围上栅格化（可选）",
+    "Structure layers of all floors: rasterize on their common extent (optional)":
+        "所有楼层的结构图层：在其公共范围上栅格化（可选）",
     "Register the floors (translation) before building the common grid": "在建立公共栅格之前配准各楼层（平移）",
     "automatic (only when the floors do not overlap)": "自动（仅当各楼层不重叠时）",
     "yes": "是",
@@ -636,11 +702,20 @@ T = {
         "PERCENTILES 必须是两个数字，如 '0.5, 99.5'，实际为 '{}'",
     ("The structure layer is in a geographic CRS ({}); rasterize needs metres: use the WALLS output of "
      "'Extract structure from DXF/DWG' or reproject to a projected CRS first."):
-        "结构图层采用地理坐标系（{}）；栅格化需要以米为单位：请使用“从 DXF/DWG 提取建筑结构”的 WALLS 输出，或先重投影到投影坐标系。",
-    "This floor is offset by ({:.3f}, {:.3f}) m from the first floor layer": "该楼层相对于第一层图层偏移 ({:.3f}, {:.3f}) m",
+        ("结构图层采用地理坐标系（{}）；栅格化需要以米为单位：请使用“从 DXF/DWG 提取建筑结构”的 WALLS 输出，"
+         "或先重投影到投影坐标系。"),
+    "This floor is offset by ({:.3f}, {:.3f}) m from the first floor layer":
+        "该楼层相对于第一层图层偏移 ({:.3f}, {:.3f}) m",
     "Cannot write the raster '{}': {}": "无法写出栅格 '{}'：{}",
     "{} x {} px at {} m/px, origin ({:.3f}, {:.3f}), {:.1%} occupied":
         "{} x {} px，{} m/px，原点 ({:.3f}, {:.3f})，占用 {:.1%}",
+    # --- Cad2OsmagAlgorithm
+    "{}: features with ids {} have empty or missing geometries; remove them or fix the layer":
+        "{}：标识为 {} 的要素几何为空或缺失；请删除这些要素或修复图层",
+    "PASSAGES: passage {} has no valid {} (value {!r}); it must name the id of an area":
+        "PASSAGES：通道 {} 没有有效的 {}（值 {!r}）；它必须给出某个区域的标识",
+    "PASSAGES: passage {} has no line geometry": "PASSAGES：通道 {} 没有线几何",
+    "cannot write passage {} to the output layer": "无法将通道 {} 写入输出图层",
     # --- RefineAlgorithm
     "Refine areas (simplify, remove spikes, merge small areas)": "优化区域（简化、去除尖刺、合并小区域）",
     ("Makes the segmented areas light and clean while adjacent areas keep identical vertices along their "
@@ -658,16 +733,17 @@ T = {
      "the tolerance in metres; AREA_COUNT and PASSAGE_COUNT written; MERGED and DROPPED small areas; "
      "COMPONENTS, the connected parts of the area graph, and LARGEST_COMPONENT_SHARE, the share of the area "
      "in the largest one."):
-        ("使分割得到的区域轻量、整洁，同时相邻区域沿共享边界保持相同的顶点。两个交汇点之间的每条边界只用 Douglas-Peucker 简化一次（容差 EPSILON_PX x "
-         "RESOLUTION，即报告的物理误差上限），反复去除尖刺（角度小于 SPIKE_ANGLE、突出小于 "
-         "SPIKE_LENGTH），通道端点固定不动，因此每个通道仍是一条线段，其两端都是所连接两个区域的顶点。小于 MIN_AREA "
-         "的区域并入与其共享边界最长的相邻区域（楼梯和电梯保留）；孤立的小区域被舍弃。请以米为单位工作：在 CAD 坐标系中运行（地理配准之前），或在投影坐标系中运行。\n"
-         "AREAS 和 PASSAGES：“分割”的输出（PASSAGES 可选）。RESOLUTION：描绘区域时所用的栅格分辨率，单位米/像素。EPSILON_PX "
-         "单位为像素，SPIKE_ANGLE 单位为度，SPIKE_LENGTH 单位为米，MIN_AREA 单位为 m²。\n"
+        ("使分割得到的区域轻量、整洁，同时相邻区域沿共享边界保持相同的顶点。两个交汇点之间的每条边界只用 "
+         "Douglas-Peucker 简化一次（容差 EPSILON_PX x RESOLUTION，即报告的物理误差上限），反复去除尖刺（角度"
+         "小于 SPIKE_ANGLE、突出小于 SPIKE_LENGTH），通道端点固定不动，因此每个通道仍是一条线段，其两端都是"
+         "所连接两个区域的顶点。小于 MIN_AREA 的区域并入与其共享边界最长的相邻区域（楼梯和电梯保留）；孤立的"
+         "小区域被舍弃。请以米为单位工作：在 CAD 坐标系中运行（地理配准之前），或在投影坐标系中运行。\n"
+         "AREAS 和 PASSAGES：“分割”的输出（PASSAGES 可选）。RESOLUTION：描绘区域时所用的栅格分辨率，单位米/"
+         "像素。EPSILON_PX 单位为像素，SPIKE_ANGLE 单位为度，SPIKE_LENGTH 单位为米，MIN_AREA 单位为 m²。\n"
          "输出：OUTPUT_AREAS 和 OUTPUT_PASSAGES，优化后的图层；VERTICES_BEFORE、VERTICES_AFTER 和 "
-         "VERTEX_REDUCTION（%）；MAX_DEVIATION，与未简化区域的最大距离（米）；EPSILON_M，以米为单位的容差；写出的 AREA_COUNT 和 "
-         "PASSAGE_COUNT；MERGED 和 DROPPED，合并和舍弃的小区域；COMPONENTS，区域图的连通部分数，以及 "
-         "LARGEST_COMPONENT_SHARE，最大连通部分所占的面积比例。"),
+         "VERTEX_REDUCTION（%）；MAX_DEVIATION，与未简化区域的最大距离（米）；EPSILON_M，以米为单位的容差；"
+         "写出的 AREA_COUNT 和 PASSAGE_COUNT；MERGED 和 DROPPED，合并和舍弃的小区域；COMPONENTS，区域图的连"
+         "通部分数，以及 LARGEST_COMPONENT_SHARE，最大连通部分所占的面积比例。"),
     "Raster resolution r the areas were traced at (m/px)": "描绘区域时的栅格分辨率 r（米/像素）",
     "Douglas-Peucker tolerance ε (pixels)": "Douglas-Peucker 容差 ε（像素）",
     "Spike angle below (degrees)": "尖刺角度小于（度）",
@@ -685,7 +761,8 @@ T = {
     "Share of the area in the largest component": "最大连通分量的面积比例",
     ("AREAS is in a geographic CRS ({}); refinement works in metres: run it on the CAD frame (before "
      "georeferencing) or reproject to a projected CRS first"):
-        "AREAS 采用地理坐标系（{}）；优化以米为单位进行：请在 CAD 坐标系中运行（地理配准之前），或先重投影到投影坐标系",
+        ("AREAS 采用地理坐标系（{}）；优化以米为单位进行：请在 CAD 坐标系中运行（地理配准之前），或先重投影"
+         "到投影坐标系"),
     # --- RouteAlgorithm
     "Plan a route on an osmAG map": "在 osmAG 地图上规划路线",
     ("Shortest route for a round robot of radius ROBOT_RADIUS (metres) over an osmAG map: INPUT, an osmAG "
@@ -702,14 +779,17 @@ T = {
      "Outputs: OUTPUT, the route line; LENGTH (m) and COST (length + vertical cost, m); LEVEL_CHANGES; "
      "START_SNAP and END_SNAP, how far the start and end were moved (m); QUERY_MS, the search time in "
      "milliseconds; AREAS_CROSSED, PASSAGES_CROSSED and LEVELS (the level of every vertex)."):
-        ("在 osmAG 地图上为半径 ROBOT_RADIUS（米）的圆形机器人规划最短路线：INPUT，osmAG 文件（本插件或任何其他工具写出，semantic 或 fix-id），或 "
-         "AREAS/PASSAGES 图层（如来自 loadosmag 或 refine）。START 和 END "
-         "是在地图画布上拾取的点（任意坐标系）及其楼层（START_LEVEL/END_LEVEL，楼层重叠时需要），或区域名称（START_NAME/END_NAME）。位于机器人可通行空间之外 1 m "
-         "以内的点会被移入其中；更远则报错。窄于两倍半径的通道被关闭；在每个区域内，路线是绕开墙体的最短无碰撞路径。垂直通道（楼梯、电梯）每层的代价为 VERTICAL_COST 米；AVOID "
-         "排除楼梯（只用电梯）或电梯。结果是一条三维线（z = 楼层 x "
-         "高度），附带长度、代价、每个顶点的楼层以及经过的区域和通道。没有路线时，消息会指出起点和终点所在的地图互不连通的部分，以及对机器人来说过窄的通道。\n"
+        ("在 osmAG 地图上为半径 ROBOT_RADIUS（米）的圆形机器人规划最短路线：INPUT，osmAG 文件（本插件或任何"
+         "其他工具写出，semantic 或 fix-id），或 AREAS/PASSAGES 图层（如来自 loadosmag 或 refine）。START 和"
+         " END 是在地图画布上拾取的点（任意坐标系）及其楼层（START_LEVEL/END_LEVEL，楼层重叠时需要），或区域"
+         "名称（START_NAME/END_NAME）。位于机器人可通行空间之外 1 m 以内的点会被移入其中；更远则报错。窄于两"
+         "倍半径的通道被关闭；在每个区域内，路线是绕开墙体的最短无碰撞路径。垂直通道（楼梯、电梯）每层的代价"
+         "为 VERTICAL_COST 米；AVOID 排除楼梯（只用电梯）或电梯。结果是一条三维线（z = 楼层 x 高度），附带长"
+         "度、代价、每个顶点的楼层以及经过的区域和通道。没有路线时，消息会指出起点和终点所在的地图互不连通的"
+         "部分，以及对机器人来说过窄的通道。\n"
          "输出：OUTPUT，路线；LENGTH（米）和 COST（长度 + 垂直代价，米）；LEVEL_CHANGES；START_SNAP 和 "
-         "END_SNAP，起点和终点被移动的距离（米）；QUERY_MS，搜索时间，单位毫秒；AREAS_CROSSED、PASSAGES_CROSSED 和 LEVELS（每个顶点的楼层）。"),
+         "END_SNAP，起点和终点被移动的距离（米）；QUERY_MS，搜索时间，单位毫秒；AREAS_CROSSED、"
+         "PASSAGES_CROSSED 和 LEVELS（每个顶点的楼层）。"),
     "osmAG file (or give AREAS and PASSAGES)": "osmAG 文件（或给出 AREAS 和 PASSAGES）",
     "Areas layer (instead of the file)": "区域图层（代替文件）",
     "Start point": "起点",
@@ -731,8 +811,10 @@ T = {
     "Areas crossed": "经过的区域",
     "Passages crossed": "经过的通道",
     "Level of every vertex": "每个顶点的楼层",
-    "give an osmAG file (INPUT) or an AREAS layer (with PASSAGES)": "请给出 osmAG 文件（INPUT）或 AREAS 图层（及 PASSAGES）",
-    "PASSAGES is in {} but AREAS is in {}; reproject it first": "PASSAGES 位于 {}，但 AREAS 位于 {}；请先重投影",
+    "give an osmAG file (INPUT) or an AREAS layer (with PASSAGES)":
+        "请给出 osmAG 文件（INPUT）或 AREAS 图层（及 PASSAGES）",
+    "PASSAGES is in {} but AREAS is in {}; reproject it first":
+        "PASSAGES 位于 {}，但 AREAS 位于 {}；请先重投影",
     "{}: give a point or an area name ({})": "{}：请给出一个点或一个区域名称（{}）",
     "route: {:.2f} m ({} level changes) through {}": "路线：{:.2f} m（{} 次楼层变换），经过 {}",
     # --- SampleBuildingAlgorithm
@@ -749,14 +831,17 @@ T = {
      "OUTPUT_FOLDER: where the files are written (created when missing).\n"
      "Outputs: FIRST_FLOOR_DXF (the first floor's DXF), DXF_FILES (every DXF, ';' separated), "
      "GROUND_TRUTH_FILES (the ground-truth GeoJSON files, ';' separated) and FLOOR_COUNT (floors written)."):
-        ("将一栋逼真的多层办公楼写为 DXF 文件（毫米、NCS 图层、有实际厚度的墙、以块表示的门、玻璃、一个楼梯核心筒和一部电梯、以 TEXT、MTEXT 和 ATTRIB 表示的房间名称、0 "
-         "图层上的嵌套块、家具和尺寸标注），并为每层写出一个真值 GeoJSON（房间、门、楼梯/电梯锚点，单位米）。相同的种子总是得到逐字节相同的文件。可用它试用或评测处理流程。\n"
-         "FLOORS：楼层数（1-20），每层一个 DXF 和一个真值文件；所有楼层共用楼梯核心筒和电梯，因此上下对齐。\n"
+        ("将一栋逼真的多层办公楼写为 DXF 文件（毫米、NCS 图层、有实际厚度的墙、以块表示的门、玻璃、一个楼梯"
+         "核心筒和一部电梯、以 TEXT、MTEXT 和 ATTRIB 表示的房间名称、0 图层上的嵌套块、家具和尺寸标注），并"
+         "为每层写出一个真值 GeoJSON（房间、门、楼梯/电梯锚点，单位米）。相同的种子总是得到逐字节相同的文件"
+         "。可用它试用或评测处理流程。\n"
+         "FLOORS：楼层数（1-20），每层一个 DXF 和一个真值文件；所有楼层共用楼梯核心筒和电梯，因此上下对齐。"
+         "\n"
          "SEED：任意整数；改变房间布局（0 为 README 中展示的布局）。\n"
          "PREFIX：文件名的开头：PREFIX-F1.dxf、PREFIX-F1.gt.geojson……\n"
          "OUTPUT_FOLDER：写出文件的位置（不存在时创建）。\n"
-         "输出：FIRST_FLOOR_DXF（第一层的 DXF）、DXF_FILES（所有 DXF，以 ';' 分隔）、GROUND_TRUTH_FILES（真值 GeoJSON 文件，以 ';' "
-         "分隔）和 FLOOR_COUNT（写出的楼层数）。"),
+         "输出：FIRST_FLOOR_DXF（第一层的 DXF）、DXF_FILES（所有 DXF，以 ';' 分隔）、GROUND_TRUTH_FILES（真"
+         "值 GeoJSON 文件，以 ';' 分隔）和 FLOOR_COUNT（写出的楼层数）。"),
     "Number of floors": "楼层数",
     "Random seed (layout variations)": "随机种子（布局变化）",
     "File name prefix": "文件名前缀",
@@ -794,21 +879,26 @@ T = {
      "Figures: AREA_COUNT, ROOM_COUNT, CORRIDOR_COUNT, PASSAGE_COUNT; INTERIOR_AREA_M2, the free area "
      "inside the building (m²); COMPONENTS and LARGEST_COMPONENT_SHARE (share of the area in the largest "
      "component); ALPHA, the probe disk in px²; SECONDS, the segmentation time."):
-        ("区域图（Area Graph）分割（Hou 等，2019），采用 CAD-to-osmAG 方法的动态 alpha。INPUT 为“栅格化”的输出，或任何占用栅格：GeoTIFF、带 "
-         "RESOLUTION（米/像素）的 PNG/PGM 图像，或 ROS map.yaml（使用其 resolution、origin、negate "
-         "和阈值；未知栅格单元永不视为空闲）。只分割建筑外围以内的空闲空间：窄于 ENVELOPE_GAP 的立面开口会被弥合，室外空间永远不是区域；日志报告室内面积。alpha = "
-         "ceil((min(DOOR_WIDTH, CORRIDOR_WIDTH) + DELTA)^2 / (4 r^2)) px^2 "
-         "为探测圆盘：它穿过开口扫过的空间属于同一房间；明显窄于其后空间的门宽收窄处将房间分开（这也能找到对圆盘来说过窄的房间）；在没有理由拆分的地方合并走廊单元；空闲空间被细化为骨架（广义 "
-         "Voronoi 图），删除短于 PRUNE 的末端分支，每条骨架边（在收窄处断开）起初为一个区域。输出：AREAS（沿像素边的精确多边形：id、type "
-         "room/corridor、面积、周长、最大净空），PASSAGES（横跨两个区域之间每个开口的线段，两端在墙上：from、to、width），LABELS（输入栅格上的区域标识，区域外为 "
-         "0），以及按需输出的 SKELETON（每条骨架边一条线：id、长度、最小和最大净空）。对室外开放的空间在有证据时仍视为室内：平面图的建筑轮廓（开口最大为 3 x "
-         "ENVELOPE_GAP，在立面墙端点之间的弦处封闭，该处经门洞通向室内）以及可选的 "
-         "TEXTS（房间名称，来自“提取建筑结构”：包含房间名称的空间永远不在室外）。FOOTPRINT：默认对“栅格化”生成的栅格（CAD 平面图）使用建筑轮廓，对图像和 ROS "
-         "地图（机器人地图，房间旁的空闲空间是扫描结束的地方）不使用。可选的 DOORS（门垛到门垛的线）保持开放，并在分割遗漏的地方成为通道。每个区域都有 'component' "
-         "字段：其在区域图中的连通分量（0 = 最大的）；日志列出其他分量（没有通道可达的房间）。STRUCTURE（可选）：图纸的结构线（“提取建筑结构”的 "
-         "WALLS）；其中的楼梯和电梯符号将所在区域的类型设为 stairs/elevator。\n"
-         "统计值：AREA_COUNT、ROOM_COUNT、CORRIDOR_COUNT、PASSAGE_COUNT；INTERIOR_AREA_M2，建筑内的空闲面积（m²）；COMPONENTS 和 "
-         "LARGEST_COMPONENT_SHARE（最大连通分量所占的面积比例）；ALPHA，探测圆盘，单位 px²；SECONDS，分割用时。"),
+        ("区域图（Area Graph）分割（Hou 等，2019），采用 CAD-to-osmAG 方法的动态 alpha。INPUT 为“栅格化”的输"
+         "出，或任何占用栅格：GeoTIFF、带 RESOLUTION（米/像素）的 PNG/PGM 图像，或 ROS map.yaml（使用其 "
+         "resolution、origin、negate 和阈值；未知栅格单元永不视为空闲）。只分割建筑外围以内的空闲空间：窄于 "
+         "ENVELOPE_GAP 的立面开口会被弥合，室外空间永远不是区域；日志报告室内面积。alpha = "
+         "ceil((min(DOOR_WIDTH, CORRIDOR_WIDTH) + DELTA)^2 / (4 r^2)) px^2 为探测圆盘：它穿过开口扫过的空间"
+         "属于同一房间；明显窄于其后空间的门宽收窄处将房间分开（这也能找到对圆盘来说过窄的房间）；在没有理由"
+         "拆分的地方合并走廊单元；空闲空间被细化为骨架（广义 Voronoi 图），删除短于 PRUNE 的末端分支，每条骨"
+         "架边（在收窄处断开）起初为一个区域。输出：AREAS（沿像素边的精确多边形：id、type room/corridor、面"
+         "积、周长、最大净空），PASSAGES（横跨两个区域之间每个开口的线段，两端在墙上：from、to、width），"
+         "LABELS（输入栅格上的区域标识，区域外为 0），以及按需输出的 SKELETON（每条骨架边一条线：id、长度、"
+         "最小和最大净空）。对室外开放的空间在有证据时仍视为室内：平面图的建筑轮廓（开口最大为 3 x "
+         "ENVELOPE_GAP，在立面墙端点之间的弦处封闭，该处经门洞通向室内）以及可选的 TEXTS（房间名称，来自“提"
+         "取建筑结构”：包含房间名称的空间永远不在室外）。FOOTPRINT：默认对“栅格化”生成的栅格（CAD 平面图）使"
+         "用建筑轮廓，对图像和 ROS 地图（机器人地图，房间旁的空闲空间是扫描结束的地方）不使用。可选的 DOORS"
+         "（门垛到门垛的线）保持开放，并在分割遗漏的地方成为通道。每个区域都有 'component' 字段：其在区域图"
+         "中的连通分量（0 = 最大的）；日志列出其他分量（没有通道可达的房间）。STRUCTURE（可选）：图纸的结构"
+         "线（“提取建筑结构”的 WALLS）；其中的楼梯和电梯符号将所在区域的类型设为 stairs/elevator。\n"
+         "统计值：AREA_COUNT、ROOM_COUNT、CORRIDOR_COUNT、PASSAGE_COUNT；INTERIOR_AREA_M2，建筑内的空闲面积"
+         "（m²）；COMPONENTS 和 LARGEST_COMPONENT_SHARE（最大连通分量所占的面积比例）；ALPHA，探测圆盘，单位"
+         " px²；SECONDS，分割用时。"),
     "Occupancy grid (GeoTIFF, PNG/PGM, or ROS map.yaml)": "占用栅格（GeoTIFF、PNG/PGM 或 ROS map.yaml）",
     "Resolution of a plain image (m/px; 0 = from the raster)": "普通图像的分辨率（米/像素；0 = 取自栅格）",
     "Narrowest corridor (m)": "最窄走廊（米）",
@@ -820,7 +910,8 @@ T = {
     "Use the plan's footprint as evidence of inside space": "将平面图的建筑轮廓作为室内空间的证据",
     "automatic (CAD rasters from 'Rasterize': yes; images and ROS maps: no)":
         "自动（来自“栅格化”的 CAD 栅格：是；图像和 ROS 地图：否）",
-    "Room names (TEXTS of 'Extract structure'): evidence of inside space": "房间名称（“提取建筑结构”的 TEXTS）：室内空间的证据",
+    "Room names (TEXTS of 'Extract structure'): evidence of inside space":
+        "房间名称（“提取建筑结构”的 TEXTS）：室内空间的证据",
     "Doorways (jamb-to-jamb lines) kept open and made passages": "保持开放并作为通道的门洞（门垛到门垛的线）",
     "Area id raster": "区域标识栅格",
     "Skeleton (Voronoi graph edges)": "骨架（Voronoi 图的边）",
@@ -837,7 +928,8 @@ T = {
     "{} room-name points used as evidence of inside space": "{} 个房间名称点被用作室内空间的证据",
     "Footprint evidence: {}": "建筑轮廓证据：{}",
     "{} stair/lift areas recognised from their symbols": "根据符号识别出 {} 个楼梯/电梯区域",
-    "Interior free area: {:.1f} m² (of {:.1f} m² free in the raster)": "室内空闲面积：{:.1f} m²（栅格中空闲面积共 {:.1f} m²）",
+    "Interior free area: {:.1f} m² (of {:.1f} m² free in the raster)":
+        "室内空闲面积：{:.1f} m²（栅格中空闲面积共 {:.1f} m²）",
     "Timing (s): ": "耗时（秒）：",
     "Skeleton: {} nodes, {} edges, {} branches shorter than PRUNE pruned":
         "骨架：{} 个节点，{} 条边，剪除了 {} 条短于 PRUNE 的分支",
@@ -851,7 +943,8 @@ T = {
     "1. Floor plans": "1. 平面图",
     ("Pick the DXF/DWG files of the building, one per floor (bottom floor first). The table shows the "
      "layers of the selected file and which ones the layer rules keep as structure."):
-        "选择建筑的 DXF/DWG 文件，每层一个（最底层在前）。表格显示所选文件的图层，以及图层规则将哪些图层保留为结构。",
+        ("选择建筑的 DXF/DWG 文件，每层一个（最底层在前）。表格显示所选文件的图层，以及图层规则将哪些图层保"
+         "留为结构。"),
     "Add files…": "添加文件…",
     "Remove": "移除",
     "Up": "上移",
@@ -882,7 +975,8 @@ T = {
     "3. Place the plan on the map": "3. 在地图上放置平面图",
     ("Add a basemap, then drag the plan to its place, turn it with the round handle, or click control "
      "points (drawing point, then map point). Every floor uses this placement."):
-        "添加底图，然后将平面图拖到其位置，用圆形手柄旋转，或点击控制点（先图纸点，再地图点）。所有楼层都使用此放置结果。",
+        ("添加底图，然后将平面图拖到其位置，用圆形手柄旋转，或点击控制点（先图纸点，再地图点）。所有楼层都使"
+         "用此放置结果。"),
     "4. Convert and export": "4. 转换并导出",
     "One osmAG file per floor is written to the output folder; the floors are added to the map, styled.":
         "每层一个 osmAG 文件写入输出文件夹；各楼层以带样式的形式添加到地图。",
@@ -899,7 +993,8 @@ T = {
     "5. Names and types": "5. 名称和类型",
     ("Correct the name and the type of any area (room, corridor, stairs, elevator, structure), then save: "
      "the osmAG files are written again."):
-        "更正任意区域的名称和类型（room、corridor、stairs、elevator、structure），然后保存：osmAG 文件将重新写出。",
+        ("更正任意区域的名称和类型（room、corridor、stairs、elevator、structure），然后保存：osmAG 文件将重"
+         "新写出。"),
     "Area": "区域",
     "Name": "名称",
     "Type": "类型",
@@ -932,7 +1027,8 @@ T = {
     "Drawing origin latitude": "图纸原点纬度",
     "Rotation (clockwise from north)": "旋转角（自正北顺时针）",
     "Scale (ground m per drawing m)": "比例（地面米/图纸米）",
-    "Control points: keep the scale (solve position and rotation only)": "控制点：保持比例不变（只求解位置和旋转）",
+    "Control points: keep the scale (solve position and rotation only)":
+        "控制点：保持比例不变（只求解位置和旋转）",
     "Drawing x (m)": "图纸 x（米）",
     "Drawing y (m)": "图纸 y（米）",
     "Longitude": "经度",
@@ -940,7 +1036,8 @@ T = {
     "Residual (m)": "残差（米）",
     "RMS: – (add at least 2 control points)": "RMS：–（请至少添加 2 个控制点）",
     "Remove point": "删除点",
-    "The placement is saved with the project and used for every floor of the building.": "放置结果随项目保存，并用于建筑的每一层。",
+    "The placement is saved with the project and used for every floor of the building.":
+        "放置结果随项目保存，并用于建筑的每一层。",
     "Floor plan": "平面图",
     "Cannot load {}: {}": "无法加载 {}：{}",
     "{}: {} lines, {:.1f} × {:.1f} m": "{}：{} 条线，{:.1f} × {:.1f} m",
@@ -948,14 +1045,9 @@ T = {
     "RMS: {:.3f} m ({} points)": "RMS：{:.3f} 米（{} 个点）",
     "Place the plan on the map": "在地图上放置平面图",
     # --- not in the sources of this branch (kept for strings other branches add)
-    "Convert DXF floor plan to osmAG":
-        "将 DXF 平面图转换为 osmAG",
-    "Extract structure from DXF":
-        "从 DXF 提取建筑结构",
-    "List DXF layers":
-        "列出 DXF 图层",
-    "DXF floor plan":
-        "DXF 平面图",
-    "DXF drawing":
-        "DXF 图纸",
+    "Convert DXF floor plan to osmAG": "将 DXF 平面图转换为 osmAG",
+    "Extract structure from DXF": "从 DXF 提取建筑结构",
+    "List DXF layers": "列出 DXF 图层",
+    "DXF floor plan": "DXF 平面图",
+    "DXF drawing": "DXF 图纸",
 }

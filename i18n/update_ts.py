@@ -15,10 +15,11 @@ The translations live in one table per language, keyed by the English source tex
 ``translations_de.py`` and ``translations_zh_CN.py`` (read by ``seed_translations.py``; a key may also be
 a ``(context, source)`` pair for a context-specific translation). The tables win; a translation found only
 in a .ts file (e.g. made in Qt Linguist) is kept; anything else stays "unfinished" (Qt then shows the
-English text). ``python3 i18n/update_ts.py --missing`` lists the strings without a translation, to add to
-the tables; ``--check`` exits 1 when there is one.
+English text). ``python3 i18n/update_ts.py --missing`` lists the strings without a translation as lines to
+paste into both tables (an empty translation still counts as missing); ``--check`` exits 1 when there is one.
 """
 import ast
+import json
 import os
 import sys
 import xml.etree.ElementTree as ET
@@ -80,6 +81,8 @@ def collect(path):
                     # alg.tr("...") in a helper shared by several algorithms: Cad2OsmagAlgorithm.tr falls back
                     # to this common context
                     out.append(("Cad2OsmagAlgorithm", _str(child.args[0]), rel))
+                elif isinstance(f, ast.Name) and f.id == "tr_common" and child.args and _str(child.args[0]):
+                    out.append(("Cad2OsmagAlgorithm", _str(child.args[0]), rel))  # base.tr_common
                 elif isinstance(f, ast.Name) and f.id == "tr" and child.args and _str(child.args[0]):
                     ctx = module_ctx or cls
                     if ctx:
@@ -179,8 +182,8 @@ def main(argv=None):
         gaps = missing(messages)
         for suffix, items in gaps.items():
             print(f"{suffix}: {len(items)} of {len(messages)} strings without a translation")
-            for ctx, text in items:
-                print(f"  [{ctx}] {text!r}")
+            for ctx, text in items:  # lines to paste into translations_<lang>.py, then fill in
+                print(f"    {json.dumps(text, ensure_ascii=False)}: \"\",  # {ctx}")
         return 1 if "--check" in argv and any(gaps.values()) else 0
     for suffix, lang in LANGUAGES.items():
         path = os.path.join(HERE, f"cad2osmag_{suffix}.ts")

@@ -26,7 +26,7 @@ from qgis.PyQt.QtGui import QColor
 
 from ..algorithms.osmag import get_tag
 from .alg_georeference import qgs_crs_to_pyproj
-from .base import Cad2OsmagAlgorithm, FIELD_LONG, FIELD_STRING, make_fields, to_qgs
+from .base import Cad2OsmagAlgorithm, FIELD_LONG, FIELD_STRING, make_fields, to_qgs, tr_common
 
 AREA_COLOURS = {  # osmAG:areatype -> (fill RGBA, outline)
     "room": ("255,235,160,180", "120,100,40"),
@@ -114,7 +114,7 @@ def save_default_style(layer, feedback=None):
         return False
     error = layer.saveStyleToDatabase("cad2osmag", "osmAG style (cad2osmag)", True, "")
     if error and feedback is not None:
-        feedback.pushInfo(f"style not stored in {layer.source()}: {error}")
+        feedback.pushInfo(tr_common("style not stored in {}: {}").format(layer.source(), error))
     return not error
 
 

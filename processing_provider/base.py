@@ -35,6 +35,12 @@ else:
         QVariant.Type.String, QVariant.Type.Double, QVariant.Type.Int, QVariant.Type.LongLong, QVariant.Type.Bool)
 
 
+def tr_common(text):
+    """Translate a message of a helper shared by several algorithms (context ``Cad2OsmagAlgorithm``, the one
+    ``Cad2OsmagAlgorithm.tr`` falls back to; i18n/update_ts.py collects these calls)."""
+    return QCoreApplication.translate("Cad2OsmagAlgorithm", text)
+
+
 class FeedbackProgress(Progress):
     """Adapter: pipeline ``Progress`` -> ``QgsProcessingFeedback``."""
 
