@@ -39,6 +39,8 @@ def test_help_names_every_parameter_and_output(qgis_app, name):
     assert not missing, f"{name}: the help does not explain the parameters {missing}"
     outputs = [o.name() for o in alg.outputDefinitions() if o.name() not in text and o.description() not in text]
     assert not outputs, f"{name}: the help does not say what the outputs {outputs} hold"
+    # the Processing dialog shows the help as HTML (one <p> per line): a <word> would silently vanish
+    assert not re.search(r"<[A-Za-z/]", text), f"{name}: write NAME, not <name>, in the help"
     numeric = [p.name() for p in alg.parameterDefinitions() if p.type() == "number"]
     if numeric:
         assert any(unit in text for unit in UNITS), f"{name}: numeric parameters {numeric} but no unit in the help"

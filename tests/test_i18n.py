@@ -179,3 +179,41 @@ def test_terms_are_consistent():
                 if re.search(rf"\b{en}", words, re.I) and want not in value:
                     bad.append((lang, en, source[:60], value[:60]))
         assert not bad, bad
+
+
+def test_processing_dialog_in_german(qgis_iface, qgis_app, qgis_processing, repo_root, monkeypatch):
+    """The algorithm dialog a user opens: title, parameter labels and the help panel in German
+    (screenshot tests/artifacts/dialog_de_dxftoosmag.png)."""
+    from processing.gui.AlgorithmDialog import AlgorithmDialog
+    from qgis.core import QgsApplication
+    from qgis.PyQt.QtCore import QSettings
+    from qgis.PyQt.QtWidgets import QLabel, QTextBrowser
+
+    from qgis.gui import QgsBrowserGuiModel
+
+    browser = QgsBrowserGuiModel()  # the test iface has none; the dialog's file widgets ask for it
+    monkeypatch.setattr(qgis_iface, "browserModel", lambda: browser, raising=False)
+    settings = QSettings()
+    old = settings.value("locale/userLocale", "")
+    settings.setValue("locale/userLocale", "de")
+    plugin = plugin_package().classFactory(qgis_iface)
+    try:
+        plugin.initGui()
+        alg = QgsApplication.processingRegistry().createAlgorithmById("cad2osmag:dxftoosmag")
+        dialog = AlgorithmDialog(alg, False, None)
+        dialog.resize(1100, 800)
+        dialog.show()
+        qgis_app.processEvents()
+        art = repo_root / "tests" / "artifacts"
+        art.mkdir(exist_ok=True)
+        dialog.grab().save(str(art / "dialog_de_dxftoosmag.png"))
+        assert dialog.windowTitle().startswith("DXF/DWG-Grundriss in osmAG umwandeln")
+        labels = {w.text() for w in dialog.findChildren(QLabel)}
+        assert any("Breiteste Tür (m)" in t for t in labels), sorted(labels)[:20]
+        help_text = " ".join(w.toPlainText() for w in dialog.findChildren(QTextBrowser))
+        assert "Führt die ganze Verarbeitungskette" in help_text
+        assert "RESOLUTION: Pixelgröße des Rasters in Metern" in help_text
+        dialog.close()
+    finally:
+        plugin.unload()
+        settings.setValue("locale/userLocale", old)
