@@ -712,6 +712,36 @@ Ausgaben: OUTPUT, die osmAG-Datei (.osm); OUTPUT_AREAS und OUTPUT_PASSAGES, dies
       <source>Stage times: {}</source>
       <translation>Laufzeiten der Schritte: {}</translation>
     </message>
+    <message>
+      <location filename="../processing_provider/alg_dxf_to_osmag.py" />
+      <source>auto</source>
+      <translation>automatisch</translation>
+    </message>
+    <message>
+      <location filename="../processing_provider/alg_dxf_to_osmag.py" />
+      <source>mm</source>
+      <translation>mm</translation>
+    </message>
+    <message>
+      <location filename="../processing_provider/alg_dxf_to_osmag.py" />
+      <source>cm</source>
+      <translation>cm</translation>
+    </message>
+    <message>
+      <location filename="../processing_provider/alg_dxf_to_osmag.py" />
+      <source>m</source>
+      <translation>m</translation>
+    </message>
+    <message>
+      <location filename="../processing_provider/alg_dxf_to_osmag.py" />
+      <source>inch</source>
+      <translation>Zoll</translation>
+    </message>
+    <message>
+      <location filename="../processing_provider/alg_dxf_to_osmag.py" />
+      <source>feet</source>
+      <translation>Fuß</translation>
+    </message>
   </context>
   <context>
     <name>DxfToOsmagBatchAlgorithm</name>
@@ -1057,6 +1087,16 @@ Ausgaben: AREA_COUNT, PASSAGE_COUNT und NODE_COUNT geschrieben; SHARED_NODES, di
     </message>
     <message>
       <location filename="../processing_provider/alg_export_osmag.py" />
+      <source>semantic (names)</source>
+      <translation>semantic (Namen)</translation>
+    </message>
+    <message>
+      <location filename="../processing_provider/alg_export_osmag.py" />
+      <source>fix-id (way ids)</source>
+      <translation>fix-id (Weg-Kennungen)</translation>
+    </message>
+    <message>
+      <location filename="../processing_provider/alg_export_osmag.py" />
       <source>Anchor / root longitude (CAD-frame layers: where the CAD origin lies)</source>
       <translation>Längengrad des Ankers / Wurzelknotens (Layer im CAD-System: wo der CAD-Ursprung liegt)</translation>
     </message>
@@ -1198,6 +1238,16 @@ Ausgaben, in Metern im eigenen System der Zeichnung (ein lokales technisches KBS
       <location filename="../processing_provider/alg_extract_structure.py" />
       <source>automatic (header + plausibility)</source>
       <translation>automatisch (Dateikopf + Plausibilität)</translation>
+    </message>
+    <message>
+      <location filename="../processing_provider/alg_extract_structure.py" />
+      <source>inch</source>
+      <translation>Zoll</translation>
+    </message>
+    <message>
+      <location filename="../processing_provider/alg_extract_structure.py" />
+      <source>feet</source>
+      <translation>Fuß</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_extract_structure.py" />
@@ -2412,6 +2462,21 @@ Ausgaben: OUTPUT, die Routenlinie; LENGTH (m) und COST (Länge + vertikale Koste
       <location filename="../processing_provider/alg_route.py" />
       <source>route: {:.2f} m ({} level changes) through {}</source>
       <translation>Route: {:.2f} m ({} Geschosswechsel) über {}</translation>
+    </message>
+    <message>
+      <location filename="../processing_provider/alg_route.py" />
+      <source>nothing</source>
+      <translation>nichts</translation>
+    </message>
+    <message>
+      <location filename="../processing_provider/alg_route.py" />
+      <source>stairs (wheelchairs, wheeled robots: lifts only)</source>
+      <translation>Treppen (Rollstühle, Roboter auf Rädern: nur Aufzüge)</translation>
+    </message>
+    <message>
+      <location filename="../processing_provider/alg_route.py" />
+      <source>lifts (evacuation: stairs only)</source>
+      <translation>Aufzüge (Evakuierung: nur Treppen)</translation>
     </message>
   </context>
   <context>

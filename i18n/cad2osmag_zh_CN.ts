@@ -712,6 +712,36 @@ LEVEL：该楼层的楼层号（osmAG 的 level 标签，如 1、-1）。HEIGHT�
       <source>Stage times: {}</source>
       <translation>各阶段耗时：{}</translation>
     </message>
+    <message>
+      <location filename="../processing_provider/alg_dxf_to_osmag.py" />
+      <source>auto</source>
+      <translation>自动</translation>
+    </message>
+    <message>
+      <location filename="../processing_provider/alg_dxf_to_osmag.py" />
+      <source>mm</source>
+      <translation>毫米</translation>
+    </message>
+    <message>
+      <location filename="../processing_provider/alg_dxf_to_osmag.py" />
+      <source>cm</source>
+      <translation>厘米</translation>
+    </message>
+    <message>
+      <location filename="../processing_provider/alg_dxf_to_osmag.py" />
+      <source>m</source>
+      <translation>米</translation>
+    </message>
+    <message>
+      <location filename="../processing_provider/alg_dxf_to_osmag.py" />
+      <source>inch</source>
+      <translation>英寸</translation>
+    </message>
+    <message>
+      <location filename="../processing_provider/alg_dxf_to_osmag.py" />
+      <source>feet</source>
+      <translation>英尺</translation>
+    </message>
   </context>
   <context>
     <name>DxfToOsmagBatchAlgorithm</name>
@@ -1057,6 +1087,16 @@ OUTPUT：要写出的 .osm 文件。
     </message>
     <message>
       <location filename="../processing_provider/alg_export_osmag.py" />
+      <source>semantic (names)</source>
+      <translation>semantic（名称）</translation>
+    </message>
+    <message>
+      <location filename="../processing_provider/alg_export_osmag.py" />
+      <source>fix-id (way ids)</source>
+      <translation>fix-id（way 标识）</translation>
+    </message>
+    <message>
+      <location filename="../processing_provider/alg_export_osmag.py" />
       <source>Anchor / root longitude (CAD-frame layers: where the CAD origin lies)</source>
       <translation>锚点/根节点经度（CAD 坐标系图层：CAD 原点所在位置）</translation>
     </message>
@@ -1198,6 +1238,16 @@ LAYER_RULES：不区分大小写的关键词 JSON 文件（复制 algorithms/def
       <location filename="../processing_provider/alg_extract_structure.py" />
       <source>automatic (header + plausibility)</source>
       <translation>自动（文件头 + 合理性检查）</translation>
+    </message>
+    <message>
+      <location filename="../processing_provider/alg_extract_structure.py" />
+      <source>inch</source>
+      <translation>英寸</translation>
+    </message>
+    <message>
+      <location filename="../processing_provider/alg_extract_structure.py" />
+      <source>feet</source>
+      <translation>英尺</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_extract_structure.py" />
@@ -2412,6 +2462,21 @@ Outputs: OUTPUT, the route line; LENGTH (m) and COST (length + vertical cost, m)
       <location filename="../processing_provider/alg_route.py" />
       <source>route: {:.2f} m ({} level changes) through {}</source>
       <translation>路线：{:.2f} m（{} 次楼层变换），经过 {}</translation>
+    </message>
+    <message>
+      <location filename="../processing_provider/alg_route.py" />
+      <source>nothing</source>
+      <translation>无</translation>
+    </message>
+    <message>
+      <location filename="../processing_provider/alg_route.py" />
+      <source>stairs (wheelchairs, wheeled robots: lifts only)</source>
+      <translation>楼梯（轮椅、轮式机器人：只用电梯）</translation>
+    </message>
+    <message>
+      <location filename="../processing_provider/alg_route.py" />
+      <source>lifts (evacuation: stairs only)</source>
+      <translation>电梯（疏散：只用楼梯）</translation>
     </message>
   </context>
   <context>

@@ -189,6 +189,12 @@ T = {
     "Passages": "Durchgänge",
     "OUTPUT: give the .osm file to write": "OUTPUT: die zu schreibende .osm-Datei angeben",
     "Stage times: {}": "Laufzeiten der Schritte: {}",
+    "auto": "automatisch",
+    "mm": "mm",
+    "cm": "cm",
+    "m": "m",
+    "inch": "Zoll",
+    "feet": "Fuß",
     # --- DxfToOsmagBatchAlgorithm
     "Convert a folder of floor plans to osmAG (parallel)":
         "Einen Ordner mit Grundrissen in osmAG umwandeln (parallel)",
@@ -347,6 +353,8 @@ T = {
     "Level (empty: the areas' own level field, else 1)": "Geschoss (leer: das Feld level der Flächen, sonst 1)",
     "Height per level (m)": "Höhe je Geschoss (m)",
     "Variant": "Variante",
+    "semantic (names)": "semantic (Namen)",
+    "fix-id (way ids)": "fix-id (Weg-Kennungen)",
     "Anchor / root longitude (CAD-frame layers: where the CAD origin lies)":
         "Längengrad des Ankers / Wurzelknotens (Layer im CAD-System: wo der CAD-Ursprung liegt)",
     "Anchor / root latitude": "Breitengrad des Ankers / Wurzelknotens",
@@ -937,6 +945,9 @@ T = {
         "PASSAGES liegt in {}, AREAS aber in {}; zuerst umprojizieren",
     "{}: give a point or an area name ({})": "{}: einen Punkt oder einen Flächennamen angeben ({})",
     "route: {:.2f} m ({} level changes) through {}": "Route: {:.2f} m ({} Geschosswechsel) über {}",
+    "nothing": "nichts",
+    "stairs (wheelchairs, wheeled robots: lifts only)": "Treppen (Rollstühle, Roboter auf Rädern: nur Aufzüge)",
+    "lifts (evacuation: stairs only)": "Aufzüge (Evakuierung: nur Treppen)",
     # --- SampleBuildingAlgorithm
     "Generate sample building (DXF)": "Beispielgebäude erzeugen (DXF)",
     ("Writes a realistic multi-floor office building as DXF files (millimetres, NCS layers, walls with real "
@@ -1199,4 +1210,5 @@ T = {
     "List DXF layers": "DXF-Layer auflisten",
     "DXF floor plan": "DXF-Grundriss",
     "DXF drawing": "DXF-Zeichnung",
+    "as the inputs": "wie die Eingaben",
 }

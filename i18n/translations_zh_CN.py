@@ -168,6 +168,12 @@ T = {
     "Passages": "通道",
     "OUTPUT: give the .osm file to write": "OUTPUT：请指定要写出的 .osm 文件",
     "Stage times: {}": "各阶段耗时：{}",
+    "auto": "自动",
+    "mm": "毫米",
+    "cm": "厘米",
+    "m": "米",
+    "inch": "英寸",
+    "feet": "英尺",
     # --- DxfToOsmagBatchAlgorithm
     "Convert a folder of floor plans to osmAG (parallel)": "将文件夹中的平面图转换为 osmAG（并行）",
     ("Converts every floor plan of FOLDER (files matching PATTERN, e.g. '*.dxf') with the whole pipeline of "
@@ -309,6 +315,8 @@ T = {
     "Level (empty: the areas' own level field, else 1)": "楼层（留空：区域自身的 level 字段，否则为 1）",
     "Height per level (m)": "每层高度（米）",
     "Variant": "变体",
+    "semantic (names)": "semantic（名称）",
+    "fix-id (way ids)": "fix-id（way 标识）",
     "Anchor / root longitude (CAD-frame layers: where the CAD origin lies)":
         "锚点/根节点经度（CAD 坐标系图层：CAD 原点所在位置）",
     "Anchor / root latitude": "锚点/根节点纬度",
@@ -817,6 +825,9 @@ T = {
         "PASSAGES 位于 {}，但 AREAS 位于 {}；请先重投影",
     "{}: give a point or an area name ({})": "{}：请给出一个点或一个区域名称（{}）",
     "route: {:.2f} m ({} level changes) through {}": "路线：{:.2f} m（{} 次楼层变换），经过 {}",
+    "nothing": "无",
+    "stairs (wheelchairs, wheeled robots: lifts only)": "楼梯（轮椅、轮式机器人：只用电梯）",
+    "lifts (evacuation: stairs only)": "电梯（疏散：只用楼梯）",
     # --- SampleBuildingAlgorithm
     "Generate sample building (DXF)": "生成示例建筑 (DXF)",
     ("Writes a realistic multi-floor office building as DXF files (millimetres, NCS layers, walls with real "
@@ -1050,4 +1061,5 @@ T = {
     "List DXF layers": "列出 DXF 图层",
     "DXF floor plan": "DXF 平面图",
     "DXF drawing": "DXF 图纸",
+    "as the inputs": "与输入相同",
 }

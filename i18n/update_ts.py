@@ -9,7 +9,8 @@ attributes (DISPLAY_NAME, GROUP, HELP, MODES) translated at run time with the cl
 * ``tr("...")`` at module level in ``ui/*`` -> the context of that module's ``tr`` helper;
 * ``QCoreApplication.translate("Context", "...")`` anywhere;
 * DISPLAY_NAME / GROUP / HELP / MODES class attributes of every algorithm class;
-* ``(key, "label")`` tuples looped into ``self.tr(label)`` (output labels).
+* ``(key, "label")`` tuples looped into ``self.tr(label)`` (output labels);
+* module-level lists translated in a comprehension, ``[self.tr(label) for _, label in CHOICES]``.
 
 The translations live in one table per language, keyed by the English source text:
 ``translations_de.py`` and ``translations_zh_CN.py`` (read by ``seed_translations.py``; a key may also be
@@ -99,7 +100,42 @@ def collect(path):
             visit(child, cls)
 
     visit(tree, None)
+    out.extend(_translated_constants(tree, rel))
     # the provider's class-level name() uses the context Cad2OsmagProvider already (translate call)
+    return out
+
+
+def _translated_constants(tree, rel):
+    """Strings of a module-level list translated in a comprehension inside a class:
+    ``[self.tr(label) for _, label in CHOICES]`` / ``[self.tr(u) for u in UNITS]`` -> the labels / units."""
+    constants = {}
+    for node in tree.body:
+        if isinstance(node, ast.Assign) and len(node.targets) == 1 and isinstance(node.targets[0], ast.Name) \
+                and isinstance(node.value, (ast.List, ast.Tuple)):
+            constants[node.targets[0].id] = node.value.elts
+    out = []
+    for cls in (n for n in ast.walk(tree) if isinstance(n, ast.ClassDef)):
+        for comp in (n for n in ast.walk(cls) if isinstance(n, (ast.ListComp, ast.GeneratorExp))):
+            call, gen = comp.elt, comp.generators[0]
+            if not (isinstance(call, ast.Call) and getattr(call.func, "attr", "") == "tr" and call.args
+                    and isinstance(call.args[0], ast.Name) and isinstance(gen.iter, ast.Name)
+                    and gen.iter.id in constants):
+                continue
+            var = call.args[0].id
+            if isinstance(gen.target, ast.Name) and gen.target.id == var:
+                index = None
+            elif isinstance(gen.target, ast.Tuple):
+                names = [getattr(e, "id", None) for e in gen.target.elts]
+                if var not in names:
+                    continue
+                index = names.index(var)
+            else:
+                continue
+            for elt in constants[gen.iter.id]:
+                if index is not None and isinstance(elt, ast.Tuple) and len(elt.elts) > index:
+                    elt = elt.elts[index]
+                if _str(elt):
+                    out.append((cls.name, _str(elt), rel))
     return out
 
 
@@ -182,8 +218,11 @@ def main(argv=None):
         gaps = missing(messages)
         for suffix, items in gaps.items():
             print(f"{suffix}: {len(items)} of {len(messages)} strings without a translation")
+            shown = set()
             for ctx, text in items:  # lines to paste into translations_<lang>.py, then fill in
-                print(f"    {json.dumps(text, ensure_ascii=False)}: \"\",  # {ctx}")
+                if text not in shown:
+                    shown.add(text)
+                    print(f"    {json.dumps(text, ensure_ascii=False)}: \"\",  # {ctx}")
         return 1 if "--check" in argv and any(gaps.values()) else 0
     for suffix, lang in LANGUAGES.items():
         path = os.path.join(HERE, f"cad2osmag_{suffix}.ts")

@@ -62,7 +62,8 @@ class DxfToOsmagAlgorithm(Cad2OsmagAlgorithm):
         self.addParameter(QgsProcessingParameterFile("INPUT", self.tr("DXF or DWG floor plan"), fileFilter=CAD_FILTER))
         self.addParameter(QgsProcessingParameterFile("LAYER_RULES", self.tr("Layer rules (JSON, optional)"),
                                                      extension="json", optional=True))
-        self.addParameter(QgsProcessingParameterEnum("UNITS", self.tr("Drawing units"), UNITS, defaultValue=0))
+        self.addParameter(QgsProcessingParameterEnum("UNITS", self.tr("Drawing units"), [self.tr(u) for u in UNITS],
+                                                     defaultValue=0))
         self.addParameter(QgsProcessingParameterNumber("RESOLUTION", self.tr("Raster resolution (m/px)"),
                                                        QgsProcessingParameterNumber.Type.Double, 0.044, False, 0.005, 1.0))
         self.addParameter(QgsProcessingParameterNumber("DOOR_WIDTH", self.tr("Widest door (m)"),

@@ -68,7 +68,8 @@ class ExportOsmagAlgorithm(Cad2OsmagAlgorithm):
             self.HEIGHT, self.tr("Height per level (m)"), QgsProcessingParameterNumber.Type.Double, 3.2, False, 0.01,
             1000.0))
         self.addParameter(QgsProcessingParameterEnum(
-            self.VARIANT, self.tr("Variant"), ["semantic (names)", "fix-id (way ids)"], defaultValue=0))
+            self.VARIANT, self.tr("Variant"), [self.tr("semantic (names)"), self.tr("fix-id (way ids)")],
+            defaultValue=0))
         self.addParameter(QgsProcessingParameterNumber(
             self.ANCHOR_LON, self.tr("Anchor / root longitude (CAD-frame layers: where the CAD origin lies)"),
             QgsProcessingParameterNumber.Type.Double, None, True, -180.0, 180.0))

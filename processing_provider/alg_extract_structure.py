@@ -142,7 +142,7 @@ class ExtractStructureAlgorithm(Cad2OsmagAlgorithm):
             self.LAYERS, self.tr("Layers to keep (';' separated, overrides the rules)"), optional=True))
         self.addParameter(QgsProcessingParameterEnum(
             self.UNITS, self.tr("Drawing units"),
-            options=[self.tr("automatic (header + plausibility)"), "mm", "cm", "m", "inch", "feet"],
+            options=[self.tr("automatic (header + plausibility)"), "mm", "cm", "m", self.tr("inch"), self.tr("feet")],
             defaultValue=0))
         self.addParameter(QgsProcessingParameterBoolean(
             self.INCLUDE_DOORS, self.tr("Include doors (rasterize doorways as closed)"), defaultValue=False))

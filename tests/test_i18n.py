@@ -61,6 +61,10 @@ def test_plugin_speaks_the_qgis_locale(qgis_iface, qgis_app, tmp_path, locale, n
         assert alg.group() != "Pipeline"
         assert registry.providerById("cad2osmag").name() != "CAD to osmAG"
         assert menu in [a.text() for a in plugin.actions]
+        # enum options, also those of a module-level list translated in a comprehension
+        avoid = registry.algorithmById("cad2osmag:route").parameterDefinition("AVOID").options()
+        assert avoid[1].startswith({"de": "Treppen (", "zh_CN": "楼梯（"}[locale]), avoid
+        assert "feet" not in registry.algorithmById("cad2osmag:dxftoosmag").parameterDefinition("UNITS").options()
         # a log message of a real run
         sample = registry.createAlgorithmById("cad2osmag:samplebuilding")
         feedback = Log()
