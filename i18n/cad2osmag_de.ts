@@ -220,6 +220,124 @@ Ausgaben: OUTPUT_AREAS, die benannten Flächen (Felder name, ref, type, indoor, 
     </message>
   </context>
   <context>
+    <name>Cad2OsmagModel</name>
+    <message>
+      <location filename="../models/cad_to_osmag.model3" />
+      <source>The whole conversion of one floor as a graphical model of the individual algorithms: extract the structure of the DXF, rasterize it, segment the free space into an Area Graph (stairs and lifts typed from the drawing), refine the areas, georeference them (the drawing origin at ANCHOR, ROTATION clockwise from north, SCALE) and export osmAG. Open it in the graphical modeler to add or change steps.</source>
+      <translation>Die ganze Umwandlung eines Geschosses als grafisches Modell der einzelnen Algorithmen: die Bauteile der DXF extrahieren, rastern, den freien Raum in einen Area Graph segmentieren (Treppen und Aufzüge aus der Zeichnung typisiert), die Flächen verfeinern, georeferenzieren (der Zeichnungsursprung bei ANCHOR, ROTATION im Uhrzeigersinn von Norden, SCALE) und als osmAG exportieren. Im grafischen Modellierer öffnen, um Schritte hinzuzufügen oder zu ändern.</translation>
+    </message>
+    <message>
+      <location filename="../models/cad_to_osmag.model3" />
+      <source>Where the drawing origin (0, 0) lies on the map: pick it on a basemap, or use the placement of Vector ▸ CAD to osmAG ▸ Place a floor plan on the map.</source>
+      <translation>Wo der Zeichnungsursprung (0, 0) auf der Karte liegt: auf einer Hintergrundkarte wählen oder die Platzierung von Vektor ▸ CAD zu osmAG ▸ Einen Grundriss auf der Karte platzieren verwenden.</translation>
+    </message>
+    <message>
+      <location filename="../models/cad_to_osmag.model3" />
+      <source>Corridor width in metres (8 m, the segment default).</source>
+      <translation>Flurbreite in Metern (8 m, die Vorgabe von Segmentieren).</translation>
+    </message>
+    <message>
+      <location filename="../models/cad_to_osmag.model3" />
+      <source>Widest door in metres (2.8 m, the segment default).</source>
+      <translation>Breiteste Tür in Metern (2.8 m, die Vorgabe von Segmentieren).</translation>
+    </message>
+    <message>
+      <location filename="../models/cad_to_osmag.model3" />
+      <source>The floor plan (DXF).</source>
+      <translation>Der Grundriss (DXF).</translation>
+    </message>
+    <message>
+      <location filename="../models/cad_to_osmag.model3" />
+      <source>Level of the floor (osmAG level tag).</source>
+      <translation>Geschoss (osmAG-Tag level).</translation>
+    </message>
+    <message>
+      <location filename="../models/cad_to_osmag.model3" />
+      <source>Areas smaller than this (m²) merge into a neighbour (stairs and lifts are kept).</source>
+      <translation>Flächen kleiner als dieser Wert (m²) werden mit einer Nachbarfläche zusammengeführt (Treppen und Aufzüge bleiben erhalten).</translation>
+    </message>
+    <message>
+      <location filename="../models/cad_to_osmag.model3" />
+      <source>The osmAG file written (.osm).</source>
+      <translation>Die geschriebene osmAG-Datei (.osm).</translation>
+    </message>
+    <message>
+      <location filename="../models/cad_to_osmag.model3" />
+      <source>Raster resolution in metres per pixel (0.044 m by default).</source>
+      <translation>Rasterauflösung in Metern je Pixel (Vorgabe 0.044 m).</translation>
+    </message>
+    <message>
+      <location filename="../models/cad_to_osmag.model3" />
+      <source>Direction of the drawing's +y axis, in degrees clockwise from north.</source>
+      <translation>Richtung der +y-Achse der Zeichnung, in Grad im Uhrzeigersinn von Norden.</translation>
+    </message>
+    <message>
+      <location filename="../models/cad_to_osmag.model3" />
+      <source>Ground metres per drawing metre (1 for a correct drawing).</source>
+      <translation>Meter im Gelände je Zeichnungsmeter (1 für eine maßstabsgetreue Zeichnung).</translation>
+    </message>
+    <message>
+      <location filename="../models/cad_to_osmag.model3" />
+      <source>Position of the drawing origin</source>
+      <translation>Lage des Zeichnungsursprungs</translation>
+    </message>
+    <message>
+      <location filename="../models/cad_to_osmag.model3" />
+      <source>Narrowest corridor (m)</source>
+      <translation>Schmalster Flur (m)</translation>
+    </message>
+    <message>
+      <location filename="../models/cad_to_osmag.model3" />
+      <source>Widest door (m)</source>
+      <translation>Breiteste Tür (m)</translation>
+    </message>
+    <message>
+      <location filename="../models/cad_to_osmag.model3" />
+      <source>DXF floor plan</source>
+      <translation>DXF-Grundriss</translation>
+    </message>
+    <message>
+      <location filename="../models/cad_to_osmag.model3" />
+      <source>Level</source>
+      <translation>Geschoss</translation>
+    </message>
+    <message>
+      <location filename="../models/cad_to_osmag.model3" />
+      <source>Merge areas smaller than (m²)</source>
+      <translation>Flächen zusammenführen, die kleiner sind als (m²)</translation>
+    </message>
+    <message>
+      <location filename="../models/cad_to_osmag.model3" />
+      <source>Raster resolution (m/px)</source>
+      <translation>Rasterauflösung (m/px)</translation>
+    </message>
+    <message>
+      <location filename="../models/cad_to_osmag.model3" />
+      <source>Rotation (degrees clockwise from north)</source>
+      <translation>Drehung (Grad im Uhrzeigersinn von Norden)</translation>
+    </message>
+    <message>
+      <location filename="../models/cad_to_osmag.model3" />
+      <source>Scale (ground metres per drawing metre)</source>
+      <translation>Maßstab (Meter im Gelände je Zeichnungsmeter)</translation>
+    </message>
+    <message>
+      <location filename="../models/cad_to_osmag.model3" />
+      <source>osmAG file</source>
+      <translation>osmAG-Datei</translation>
+    </message>
+    <message>
+      <location filename="../models/cad_to_osmag.model3" />
+      <source>osmAG areas (WGS84)</source>
+      <translation>osmAG-Flächen (WGS84)</translation>
+    </message>
+    <message>
+      <location filename="../models/cad_to_osmag.model3" />
+      <source>osmAG passages (WGS84)</source>
+      <translation>osmAG-Durchgänge (WGS84)</translation>
+    </message>
+  </context>
+  <context>
     <name>Cad2OsmagPlugin</name>
     <message>
       <location filename="../plugin.py" />

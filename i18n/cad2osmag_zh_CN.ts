@@ -220,6 +220,124 @@ PASSAGES（可选）：区域的通道；被拆分的区域获得各自的通道
     </message>
   </context>
   <context>
+    <name>Cad2OsmagModel</name>
+    <message>
+      <location filename="../models/cad_to_osmag.model3" />
+      <source>The whole conversion of one floor as a graphical model of the individual algorithms: extract the structure of the DXF, rasterize it, segment the free space into an Area Graph (stairs and lifts typed from the drawing), refine the areas, georeference them (the drawing origin at ANCHOR, ROTATION clockwise from north, SCALE) and export osmAG. Open it in the graphical modeler to add or change steps.</source>
+      <translation>以各个算法组成的图形模型完成一个楼层的完整转换：提取 DXF 的建筑结构，栅格化，将空闲空间分割为区域图（Area Graph，楼梯和电梯的类型取自图纸），优化区域，进行地理配准（图纸原点位于 ANCHOR，ROTATION 为自正北顺时针的角度，SCALE）并导出 osmAG。可在图形建模器中打开以添加或修改步骤。</translation>
+    </message>
+    <message>
+      <location filename="../models/cad_to_osmag.model3" />
+      <source>Where the drawing origin (0, 0) lies on the map: pick it on a basemap, or use the placement of Vector ▸ CAD to osmAG ▸ Place a floor plan on the map.</source>
+      <translation>图纸原点 (0, 0) 在地图上的位置：在底图上拾取，或使用 矢量 ▸ CAD 转 osmAG ▸ 在地图上放置平面图 的放置结果。</translation>
+    </message>
+    <message>
+      <location filename="../models/cad_to_osmag.model3" />
+      <source>Corridor width in metres (8 m, the segment default).</source>
+      <translation>走廊宽度，单位米（8 m，“分割”的默认值）。</translation>
+    </message>
+    <message>
+      <location filename="../models/cad_to_osmag.model3" />
+      <source>Widest door in metres (2.8 m, the segment default).</source>
+      <translation>最宽的门，单位米（2.8 m，“分割”的默认值）。</translation>
+    </message>
+    <message>
+      <location filename="../models/cad_to_osmag.model3" />
+      <source>The floor plan (DXF).</source>
+      <translation>平面图（DXF）。</translation>
+    </message>
+    <message>
+      <location filename="../models/cad_to_osmag.model3" />
+      <source>Level of the floor (osmAG level tag).</source>
+      <translation>楼层（osmAG 的 level 标签）。</translation>
+    </message>
+    <message>
+      <location filename="../models/cad_to_osmag.model3" />
+      <source>Areas smaller than this (m²) merge into a neighbour (stairs and lifts are kept).</source>
+      <translation>小于此面积（m²）的区域并入相邻区域（楼梯和电梯保留）。</translation>
+    </message>
+    <message>
+      <location filename="../models/cad_to_osmag.model3" />
+      <source>The osmAG file written (.osm).</source>
+      <translation>写出的 osmAG 文件（.osm）。</translation>
+    </message>
+    <message>
+      <location filename="../models/cad_to_osmag.model3" />
+      <source>Raster resolution in metres per pixel (0.044 m by default).</source>
+      <translation>栅格分辨率，单位米/像素（默认 0.044 m）。</translation>
+    </message>
+    <message>
+      <location filename="../models/cad_to_osmag.model3" />
+      <source>Direction of the drawing's +y axis, in degrees clockwise from north.</source>
+      <translation>图纸 +y 轴的方向，自正北顺时针的度数。</translation>
+    </message>
+    <message>
+      <location filename="../models/cad_to_osmag.model3" />
+      <source>Ground metres per drawing metre (1 for a correct drawing).</source>
+      <translation>每图纸米对应的地面米数（比例正确的图纸为 1）。</translation>
+    </message>
+    <message>
+      <location filename="../models/cad_to_osmag.model3" />
+      <source>Position of the drawing origin</source>
+      <translation>图纸原点的位置</translation>
+    </message>
+    <message>
+      <location filename="../models/cad_to_osmag.model3" />
+      <source>Narrowest corridor (m)</source>
+      <translation>最窄走廊（米）</translation>
+    </message>
+    <message>
+      <location filename="../models/cad_to_osmag.model3" />
+      <source>Widest door (m)</source>
+      <translation>最宽门宽（米）</translation>
+    </message>
+    <message>
+      <location filename="../models/cad_to_osmag.model3" />
+      <source>DXF floor plan</source>
+      <translation>DXF 平面图</translation>
+    </message>
+    <message>
+      <location filename="../models/cad_to_osmag.model3" />
+      <source>Level</source>
+      <translation>楼层</translation>
+    </message>
+    <message>
+      <location filename="../models/cad_to_osmag.model3" />
+      <source>Merge areas smaller than (m²)</source>
+      <translation>合并小于此面积的区域（平方米）</translation>
+    </message>
+    <message>
+      <location filename="../models/cad_to_osmag.model3" />
+      <source>Raster resolution (m/px)</source>
+      <translation>栅格分辨率（米/像素）</translation>
+    </message>
+    <message>
+      <location filename="../models/cad_to_osmag.model3" />
+      <source>Rotation (degrees clockwise from north)</source>
+      <translation>旋转角（自正北顺时针，度）</translation>
+    </message>
+    <message>
+      <location filename="../models/cad_to_osmag.model3" />
+      <source>Scale (ground metres per drawing metre)</source>
+      <translation>比例（每图纸米对应的地面米数）</translation>
+    </message>
+    <message>
+      <location filename="../models/cad_to_osmag.model3" />
+      <source>osmAG file</source>
+      <translation>osmAG 文件</translation>
+    </message>
+    <message>
+      <location filename="../models/cad_to_osmag.model3" />
+      <source>osmAG areas (WGS84)</source>
+      <translation>osmAG 区域（WGS84）</translation>
+    </message>
+    <message>
+      <location filename="../models/cad_to_osmag.model3" />
+      <source>osmAG passages (WGS84)</source>
+      <translation>osmAG 通道（WGS84）</translation>
+    </message>
+  </context>
+  <context>
     <name>Cad2OsmagPlugin</name>
     <message>
       <location filename="../plugin.py" />

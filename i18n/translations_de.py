@@ -1204,11 +1204,44 @@ T = {
     "Cannot fit: {}": "Anpassung nicht möglich: {}",
     "RMS: {:.3f} m ({} points)": "RMS: {:.3f} m ({} Punkte)",
     "Place the plan on the map": "Plan auf der Karte platzieren",
+    # --- Cad2OsmagModel
+    ("The whole conversion of one floor as a graphical model of the individual algorithms: extract the "
+     "structure of the DXF, rasterize it, segment the free space into an Area Graph (stairs and lifts typed "
+     "from the drawing), refine the areas, georeference them (the drawing origin at ANCHOR, ROTATION "
+     "clockwise from north, SCALE) and export osmAG. Open it in the graphical modeler to add or change "
+     "steps."):
+        ("Die ganze Umwandlung eines Geschosses als grafisches Modell der einzelnen Algorithmen: die "
+         "Bauteile der DXF extrahieren, rastern, den freien Raum in einen Area Graph segmentieren (Treppen "
+         "und Aufzüge aus der Zeichnung typisiert), die Flächen verfeinern, georeferenzieren (der "
+         "Zeichnungsursprung bei ANCHOR, ROTATION im Uhrzeigersinn von Norden, SCALE) und als osmAG "
+         "exportieren. Im grafischen Modellierer öffnen, um Schritte hinzuzufügen oder zu ändern."),
+    ("Where the drawing origin (0, 0) lies on the map: pick it on a basemap, or use the placement of Vector "
+     "▸ CAD to osmAG ▸ Place a floor plan on the map."):
+        ("Wo der Zeichnungsursprung (0, 0) auf der Karte liegt: auf einer Hintergrundkarte wählen oder die "
+         "Platzierung von Vektor ▸ CAD zu osmAG ▸ Einen Grundriss auf der Karte platzieren verwenden."),
+    "Corridor width in metres (8 m, the segment default).":
+        "Flurbreite in Metern (8 m, die Vorgabe von Segmentieren).",
+    "Widest door in metres (2.8 m, the segment default).":
+        "Breiteste Tür in Metern (2.8 m, die Vorgabe von Segmentieren).",
+    "The floor plan (DXF).": "Der Grundriss (DXF).",
+    "Level of the floor (osmAG level tag).": "Geschoss (osmAG-Tag level).",
+    "Areas smaller than this (m²) merge into a neighbour (stairs and lifts are kept).":
+        ("Flächen kleiner als dieser Wert (m²) werden mit einer Nachbarfläche zusammengeführt (Treppen und "
+         "Aufzüge bleiben erhalten)."),
+    "The osmAG file written (.osm).": "Die geschriebene osmAG-Datei (.osm).",
+    "Raster resolution in metres per pixel (0.044 m by default).":
+        "Rasterauflösung in Metern je Pixel (Vorgabe 0.044 m).",
+    "Direction of the drawing's +y axis, in degrees clockwise from north.":
+        "Richtung der +y-Achse der Zeichnung, in Grad im Uhrzeigersinn von Norden.",
+    "Ground metres per drawing metre (1 for a correct drawing).":
+        "Meter im Gelände je Zeichnungsmeter (1 für eine maßstabsgetreue Zeichnung).",
+    "DXF floor plan": "DXF-Grundriss",
+    "osmAG areas (WGS84)": "osmAG-Flächen (WGS84)",
+    "osmAG passages (WGS84)": "osmAG-Durchgänge (WGS84)",
     # --- not in the sources of this branch (kept for strings other branches add)
     "Convert DXF floor plan to osmAG": "DXF-Grundriss in osmAG umwandeln",
     "Extract structure from DXF": "Bauteile aus DXF extrahieren",
     "List DXF layers": "DXF-Layer auflisten",
-    "DXF floor plan": "DXF-Grundriss",
     "DXF drawing": "DXF-Zeichnung",
     "as the inputs": "wie die Eingaben",
 }

@@ -1055,11 +1055,38 @@ T = {
     "Cannot fit: {}": "无法拟合：{}",
     "RMS: {:.3f} m ({} points)": "RMS：{:.3f} 米（{} 个点）",
     "Place the plan on the map": "在地图上放置平面图",
+    # --- Cad2OsmagModel
+    ("The whole conversion of one floor as a graphical model of the individual algorithms: extract the "
+     "structure of the DXF, rasterize it, segment the free space into an Area Graph (stairs and lifts typed "
+     "from the drawing), refine the areas, georeference them (the drawing origin at ANCHOR, ROTATION "
+     "clockwise from north, SCALE) and export osmAG. Open it in the graphical modeler to add or change "
+     "steps."):
+        ("以各个算法组成的图形模型完成一个楼层的完整转换：提取 DXF 的建筑结构，栅格化，将空闲空间分割为区域"
+         "图（Area Graph，楼梯和电梯的类型取自图纸），优化区域，进行地理配准（图纸原点位于 ANCHOR，ROTATION "
+         "为自正北顺时针的角度，SCALE）并导出 osmAG。可在图形建模器中打开以添加或修改步骤。"),
+    ("Where the drawing origin (0, 0) lies on the map: pick it on a basemap, or use the placement of Vector "
+     "▸ CAD to osmAG ▸ Place a floor plan on the map."):
+        ("图纸原点 (0, 0) 在地图上的位置：在底图上拾取，或使用 矢量 ▸ CAD 转 osmAG ▸ 在地图上放置平面图 的放"
+         "置结果。"),
+    "Corridor width in metres (8 m, the segment default).": "走廊宽度，单位米（8 m，“分割”的默认值）。",
+    "Widest door in metres (2.8 m, the segment default).": "最宽的门，单位米（2.8 m，“分割”的默认值）。",
+    "The floor plan (DXF).": "平面图（DXF）。",
+    "Level of the floor (osmAG level tag).": "楼层（osmAG 的 level 标签）。",
+    "Areas smaller than this (m²) merge into a neighbour (stairs and lifts are kept).":
+        "小于此面积（m²）的区域并入相邻区域（楼梯和电梯保留）。",
+    "The osmAG file written (.osm).": "写出的 osmAG 文件（.osm）。",
+    "Raster resolution in metres per pixel (0.044 m by default).": "栅格分辨率，单位米/像素（默认 0.044 m）。",
+    "Direction of the drawing's +y axis, in degrees clockwise from north.":
+        "图纸 +y 轴的方向，自正北顺时针的度数。",
+    "Ground metres per drawing metre (1 for a correct drawing).":
+        "每图纸米对应的地面米数（比例正确的图纸为 1）。",
+    "DXF floor plan": "DXF 平面图",
+    "osmAG areas (WGS84)": "osmAG 区域（WGS84）",
+    "osmAG passages (WGS84)": "osmAG 通道（WGS84）",
     # --- not in the sources of this branch (kept for strings other branches add)
     "Convert DXF floor plan to osmAG": "将 DXF 平面图转换为 osmAG",
     "Extract structure from DXF": "从 DXF 提取建筑结构",
     "List DXF layers": "列出 DXF 图层",
-    "DXF floor plan": "DXF 平面图",
     "DXF drawing": "DXF 图纸",
     "as the inputs": "与输入相同",
 }

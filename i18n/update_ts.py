@@ -30,6 +30,9 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 REPO = os.path.dirname(HERE)
 LANGUAGES = {"de": "de_DE", "zh_CN": "zh_CN"}
 SOURCES = ["plugin.py", "processing_provider", "ui"]
+MODELS = "models"  # *.model3: help and parameter descriptions, context Cad2OsmagModel (provider.translate_model)
+MODEL_CONTEXT = "Cad2OsmagModel"
+MODEL_HELP_KEYS_SKIPPED = {"ALG_CREATOR", "ALG_HELP_CREATOR", "ALG_VERSION", "EXAMPLES", "HELP_URL", "SHORT_DESCRIPTION"}
 
 sys.path.insert(0, HERE)
 from seed_translations import SEED  # noqa: E402
@@ -139,6 +142,23 @@ def _translated_constants(tree, rel):
     return out
 
 
+def collect_model(path):
+    """[(context, source text, file)] of a graphical model (.model3): its help texts and the descriptions of
+    its parameters (outputs take theirs from the destination parameters)."""
+    rel = os.path.relpath(path, HERE)
+    root = ET.parse(path).getroot()
+    out = []
+    for top in root.findall("Option"):
+        if top.get("name") == "help":
+            out.extend((MODEL_CONTEXT, o.get("value"), rel) for o in top.findall("Option")
+                       if o.get("value") and o.get("name") not in MODEL_HELP_KEYS_SKIPPED)
+        elif top.get("name") == "parameterDefinitions":
+            for param in top.findall("Option"):
+                out.extend((MODEL_CONTEXT, o.get("value"), rel) for o in param.findall("Option")
+                           if o.get("name") == "description" and o.get("value"))
+    return out
+
+
 def all_messages():
     messages = OrderedDict()  # (context, source) -> file
     for src in SOURCES:
@@ -147,6 +167,11 @@ def all_messages():
             os.path.join(path, n) for n in os.listdir(path) if n.endswith(".py"))
         for f in files:
             for ctx, text, rel in collect(f):
+                messages.setdefault((ctx, text), rel)
+    models = os.path.join(REPO, MODELS)
+    for name in sorted(os.listdir(models)) if os.path.isdir(models) else []:
+        if name.endswith(".model3"):
+            for ctx, text, rel in collect_model(os.path.join(models, name)):
                 messages.setdefault((ctx, text), rel)
     return messages
 

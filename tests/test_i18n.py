@@ -61,6 +61,12 @@ def test_plugin_speaks_the_qgis_locale(qgis_iface, qgis_app, tmp_path, locale, n
         assert alg.group() != "Pipeline"
         assert registry.providerById("cad2osmag").name() != "CAD to osmAG"
         assert menu in [a.text() for a in plugin.actions]
+        # the shipped model: parameters and help (also in the copy a dialog creates)
+        model = registry.algorithmById("cad2osmag:cad_to_osmag").create()
+        assert model.parameterDefinition("DOOR_WIDTH").description() == {"de": "Breiteste Tür (m)",
+                                                                        "zh_CN": "最宽门宽（米）"}[locale]
+        assert {"de": "Die ganze Umwandlung eines Geschosses", "zh_CN": "以各个算法组成的图形模型"}[locale] in \
+            model.shortHelpString()
         # enum options, also those of a module-level list translated in a comprehension
         avoid = registry.algorithmById("cad2osmag:route").parameterDefinition("AVOID").options()
         assert avoid[1].startswith({"de": "Treppen (", "zh_CN": "楼梯（"}[locale]), avoid
