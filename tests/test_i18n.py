@@ -227,3 +227,44 @@ def test_processing_dialog_in_german(qgis_iface, qgis_app, qgis_processing, repo
     finally:
         plugin.unload()
         settings.setValue("locale/userLocale", old)
+
+
+def _qgis_process_in(locale, tmp_path, *args):
+    """scripts/qgis-process with a throw-away QGIS profile whose user locale is ``locale`` (plugin enabled)."""
+    import os
+    import subprocess
+    import sysconfig
+
+    profile = tmp_path / f"profile-{locale}"
+    plugins = profile / "profiles" / "default" / "python" / "plugins"
+    plugins.mkdir(parents=True)
+    (plugins / "cad2osmag").symlink_to(REPO)
+    ini = profile / "profiles" / "default" / "QGIS" / "QGIS3.ini"
+    ini.parent.mkdir(parents=True)
+    ini.write_text(f"[PythonPlugins]\ncad2osmag=true\n\n[locale]\nuserLocale={locale}\noverrideFlag=true\n")
+    env = dict(os.environ, QGIS_CUSTOM_CONFIG_PATH=str(profile), QT_QPA_PLATFORM="offscreen",
+               PYTHONPATH=sysconfig.get_paths()["purelib"])
+    env.setdefault("XDG_RUNTIME_DIR", f"/tmp/runtime-{os.getuid()}")
+    proc = subprocess.run(["/usr/bin/qgis_process.bin", *args], capture_output=True, text=True, timeout=600,
+                          env=env, stdin=subprocess.DEVNULL)
+    return proc.returncode, proc.stdout + proc.stderr
+
+
+@pytest.mark.qgis_process
+@pytest.mark.parametrize("locale, title, parameter, option, help_start", [
+    ("de", "DXF/DWG-Grundriss in osmAG umwandeln", "DOOR_WIDTH: Breiteste Tür (m)", "4: Zoll",
+     "Führt die ganze Verarbeitungskette"),
+    ("zh_CN", "将 DXF/DWG 平面图转换为 osmAG", "DOOR_WIDTH: 最宽门宽（米）", "4: 英寸", "对一个楼层运行完整的处理流程"),
+])
+def test_qgis_process_help_in_the_users_language(tmp_path, locale, title, parameter, option, help_start):
+    code, out = _qgis_process_in(locale, tmp_path, "help", "cad2osmag:dxftoosmag")
+    assert code == 0, out[-3000:]
+    assert title in out and parameter in out and option in out and help_start in out, out[:3000]
+
+
+@pytest.mark.qgis_process
+def test_qgis_process_log_in_german(tmp_path):
+    code, out = _qgis_process_in("de", tmp_path, "run", "cad2osmag:samplebuilding", "--", "FLOORS=1",
+                                 f"OUTPUT_FOLDER={tmp_path / 'out'}")
+    assert code == 0, out[-3000:]
+    assert f"{tmp_path / 'out'}" in out and " geschrieben" in out and "Wrote " not in out, out[-3000:]
