@@ -1244,4 +1244,65 @@ T = {
     "List DXF layers": "DXF-Layer auflisten",
     "DXF drawing": "DXF-Zeichnung",
     "as the inputs": "wie die Eingaben",
+    "List the plans on a DXF/DWG sheet": "Die Pläne auf einem DXF/DWG-Blatt auflisten",
+    ("Finds the plans on a whole drawing sheet (DXF or DWG), as 'Extract structure from DXF/DWG' does, and "
+     "lists every group instead of keeping one: INPUT is the drawing, LAYER_RULES the optional JSON layer "
+     "rules. OUTPUT holds one rectangle per group, in metres in the drawing's own frame, with its index "
+     "(the value of PLAN), kind (plan, detail, legend, other), title (e.g. '三层平面图'), width and height "
+     "in metres, metres of walls, and main = true for the plan converted by default (index 0 when it is a "
+     "plan). STRUCTURE (optional) holds the structure lines of the whole sheet (title frames and legends "
+     "left out) to draw the sheet under the rectangles; draw an extent over it to give PLAN_EXTENT. "
+     "MAIN_PLAN is the index of the main plan (-1 when the sheet holds only details)."):
+        ("Findet die Pläne auf einem ganzen Zeichnungsblatt (DXF oder DWG) wie „Bauteile aus DXF/DWG "
+         "extrahieren“ und listet jede Gruppe auf, statt eine zu behalten: INPUT ist die Zeichnung, "
+         "LAYER_RULES die optionalen JSON-Layer-Regeln. OUTPUT enthält ein Rechteck je Gruppe, in Metern im "
+         "eigenen System der Zeichnung, mit Index (der Wert für PLAN), Art (plan, detail, legend, other), "
+         "Titel (z. B. '三层平面图'), Breite und Höhe in Metern, Metern an Wänden und main = true für den "
+         "Plan, der als Vorgabe umgewandelt wird (Index 0, wenn es ein Plan ist). STRUCTURE (optional) "
+         "enthält die Bauteillinien des ganzen Blatts (ohne Rahmen und Legenden), um das Blatt unter den "
+         "Rechtecken zu zeichnen; darüber eine Ausdehnung zeichnen, um PLAN_EXTENT anzugeben. MAIN_PLAN ist "
+         "der Index des Hauptplans (-1, wenn das Blatt nur Details enthält)."),
+    "Plans on the sheet": "Pläne auf dem Blatt",
+    "Structure lines of the whole sheet": "Bauteillinien des ganzen Blatts",
+    "Index of the main plan (-1: none)": "Index des Hauptplans (-1: keiner)",
+    "plan": "Plan",
+    "detail": "Detail",
+    "legend": "Legende",
+    "other": "Sonstiges",
+    ("Pick the DXF/DWG files of the building, one per floor (bottom floor first). The table shows the "
+     "layers of the selected file and which ones the layer rules keep as structure; below, the plans found "
+     "on its sheet: the main plan is pre-selected, pick another or draw an extent."):
+        ("Die DXF/DWG-Dateien des Gebäudes wählen, eine je Geschoss (unterstes Geschoss zuerst). Die "
+         "Tabelle zeigt die Layer der gewählten Datei und welche davon die Layer-Regeln als Bauteile "
+         "behalten; darunter die auf ihrem Blatt gefundenen Pläne: Der Hauptplan ist vorausgewählt, einen "
+         "anderen wählen oder eine Ausdehnung zeichnen."),
+    "Plans on the sheet (the selected one is converted):":
+        "Pläne auf dem Blatt (der gewählte wird umgewandelt):",
+    "Plan": "Plan",
+    "Size": "Größe",
+    "Title": "Titel",
+    "Draw an extent on the sheet": "Eine Ausdehnung auf dem Blatt zeichnen",
+    ("Drag a rectangle over the sheet to convert only what lies in it (e.g. one half of a floor drawn in "
+     "two parts)."):
+        ("Ein Rechteck über das Blatt ziehen, um nur umzuwandeln, was darin liegt (z. B. eine Hälfte eines "
+         "in zwei Teilen gezeichneten Geschosses)."),
+    "Finding the plans on {}": "Pläne auf {} werden gesucht",
+    "Finding the plans on the sheet…": "Pläne auf dem Blatt werden gesucht…",
+    "plans": "Pläne",
+    "sheet": "Blatt",
+    "Cannot find the plans: {}": "Die Pläne können nicht gefunden werden: {}",
+    "{:.0f} × {:.0f} m": "{:.0f} × {:.0f} m",
+    "{} group(s) on the sheet and no floor plan among them: pick one, or draw an extent.":
+        "{} Gruppe(n) auf dem Blatt und kein Grundriss darunter: eine wählen oder eine Ausdehnung zeichnen.",
+    "Converting the extent {:.1f}, {:.1f} – {:.1f}, {:.1f} m of {} group(s).":
+        "Die Ausdehnung {:.1f}, {:.1f} – {:.1f}, {:.1f} m von {} Gruppe(n) wird umgewandelt.",
+    "Converting plan [{}] ({}{}) of {} group(s).": "Plan [{}] ({}{}) von {} Gruppe(n) wird umgewandelt.",
+    "Snap the rotation to building edges (polygon layers on the map, within 3°)":
+        "Drehung an Gebäudekanten einrasten (Polygonlayer auf der Karte, innerhalb von 3°)",
+    ("Load building footprints (e.g. OpenStreetMap buildings) as a vector layer: while you turn the plan, "
+     "its walls snap to their edges. Shift turns in whole degrees instead."):
+        ("Gebäudegrundrisse (z. B. OpenStreetMap-Gebäude) als Vektorlayer laden: Beim Drehen des Plans "
+         "rasten seine Wände an ihren Kanten ein. Umschalt dreht stattdessen in ganzen Grad."),
+    "Rotation snapped to the building edges at {:.1f}° (modulo 90°).":
+        "Drehung an den Gebäudekanten bei {:.1f}° eingerastet (modulo 90°).",
 }

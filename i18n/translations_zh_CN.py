@@ -1089,4 +1089,58 @@ T = {
     "List DXF layers": "列出 DXF 图层",
     "DXF drawing": "DXF 图纸",
     "as the inputs": "与输入相同",
+    "List the plans on a DXF/DWG sheet": "列出 DXF/DWG 图幅上的平面图",
+    ("Finds the plans on a whole drawing sheet (DXF or DWG), as 'Extract structure from DXF/DWG' does, and "
+     "lists every group instead of keeping one: INPUT is the drawing, LAYER_RULES the optional JSON layer "
+     "rules. OUTPUT holds one rectangle per group, in metres in the drawing's own frame, with its index "
+     "(the value of PLAN), kind (plan, detail, legend, other), title (e.g. '三层平面图'), width and height "
+     "in metres, metres of walls, and main = true for the plan converted by default (index 0 when it is a "
+     "plan). STRUCTURE (optional) holds the structure lines of the whole sheet (title frames and legends "
+     "left out) to draw the sheet under the rectangles; draw an extent over it to give PLAN_EXTENT. "
+     "MAIN_PLAN is the index of the main plan (-1 when the sheet holds only details)."):
+        ("像“从 DXF/DWG 提取建筑结构”一样查找整张图幅（DXF 或 DWG）上的平面图，并列出每一组，而不是只保留一"
+         "组：INPUT 为图纸，LAYER_RULES 为可选的 JSON 图层规则。OUTPUT 为每组一个矩形，以米为单位、位于图纸"
+         "自身坐标系中，字段包括序号（即 PLAN 的取值）、种类（plan、detail、legend、other）、标题（如 '三层"
+         "平面图'）、宽度和高度（米）、墙体长度（米），默认转换的平面图 main = true（若序号 0 为平面图则为序"
+         "号 0）。STRUCTURE（可选）为整张图幅的结构线（不含图框和图例），用于在矩形下方绘制图幅；在其上绘制"
+         "范围即可给出 PLAN_EXTENT。MAIN_PLAN 为主平面图的序号（图幅上只有详图时为 -1）。"),
+    "Plans on the sheet": "图幅上的平面图",
+    "Structure lines of the whole sheet": "整张图幅的结构线",
+    "Index of the main plan (-1: none)": "主平面图的序号（-1：无）",
+    "plan": "平面图",
+    "detail": "详图",
+    "legend": "图例",
+    "other": "其他",
+    ("Pick the DXF/DWG files of the building, one per floor (bottom floor first). The table shows the "
+     "layers of the selected file and which ones the layer rules keep as structure; below, the plans found "
+     "on its sheet: the main plan is pre-selected, pick another or draw an extent."):
+        ("选择建筑的 DXF/DWG 文件，每层一个（最底层在前）。表格显示所选文件的图层，以及图层规则将哪些图层保"
+         "留为结构；下方为在其图幅上找到的平面图：主平面图已预先选中，可选择其他平面图或绘制范围。"),
+    "Plans on the sheet (the selected one is converted):": "图幅上的平面图（转换选中的一个）：",
+    "Plan": "平面图",
+    "Size": "尺寸",
+    "Title": "标题",
+    "Draw an extent on the sheet": "在图幅上绘制范围",
+    ("Drag a rectangle over the sheet to convert only what lies in it (e.g. one half of a floor drawn in "
+     "two parts)."):
+        "在图幅上拖出一个矩形，只转换其中的内容（例如分两部分绘制的楼层的一半）。",
+    "Finding the plans on {}": "正在查找 {} 上的平面图",
+    "Finding the plans on the sheet…": "正在查找图幅上的平面图…",
+    "plans": "平面图",
+    "sheet": "图幅",
+    "Cannot find the plans: {}": "无法找到平面图：{}",
+    "{:.0f} × {:.0f} m": "{:.0f} × {:.0f} m",
+    "{} group(s) on the sheet and no floor plan among them: pick one, or draw an extent.":
+        "图幅上有 {} 组，但其中没有楼层平面图：请选择一组，或绘制范围。",
+    "Converting the extent {:.1f}, {:.1f} – {:.1f}, {:.1f} m of {} group(s).":
+        "正在转换范围 {:.1f}, {:.1f} – {:.1f}, {:.1f} m（共 {} 组）。",
+    "Converting plan [{}] ({}{}) of {} group(s).": "正在转换平面图 [{}]（{}{}）（共 {} 组）。",
+    "Snap the rotation to building edges (polygon layers on the map, within 3°)":
+        "将旋转吸附到建筑边线（地图上的面图层，3° 以内）",
+    ("Load building footprints (e.g. OpenStreetMap buildings) as a vector layer: while you turn the plan, "
+     "its walls snap to their edges. Shift turns in whole degrees instead."):
+        ("将建筑轮廓（如 OpenStreetMap 建筑）加载为矢量图层：旋转平面图时，其墙体会吸附到这些边线上。按住 "
+         "Shift 则改为按整度旋转。"),
+    "Rotation snapped to the building edges at {:.1f}° (modulo 90°).":
+        "旋转已吸附到建筑边线，角度 {:.1f}°（模 90°）。",
 }
