@@ -1305,4 +1305,23 @@ T = {
          "rasten seine Wände an ihren Kanten ein. Umschalt dreht stattdessen in ganzen Grad."),
     "Rotation snapped to the building edges at {:.1f}° (modulo 90°).":
         "Drehung an den Gebäudekanten bei {:.1f}° eingerastet (modulo 90°).",
+    ("Finds the plans on a whole drawing sheet (DXF or DWG), as 'Extract structure from DXF/DWG' does, and "
+     "lists every group instead of keeping one: INPUT is the drawing, LAYER_RULES the optional JSON layer "
+     "rules. OUTPUT holds one rectangle per group, in metres in the drawing's own frame, with its index "
+     "(the value of PLAN), kind (plan, detail, legend, other), title (e.g. '三层平面图'), width and height "
+     "in metres, metres of walls, and main = true for the plan converted by default (index 0 when it is a "
+     "plan). STRUCTURE (optional) holds the structure lines of the whole sheet (title frames and legends "
+     "left out) to draw the sheet under the rectangles; draw an extent over it to give PLAN_EXTENT. "
+     "MAIN_PLAN is the index of the main plan (-1 when the sheet holds only details). PLAN_COUNT is the "
+     "number of groups and PLANS lists them as text."):
+        ("Findet die Pläne auf einem ganzen Zeichnungsblatt (DXF oder DWG) wie „Bauteile aus DXF/DWG "
+         "extrahieren“ und listet jede Gruppe auf, statt eine zu behalten: INPUT ist die Zeichnung, "
+         "LAYER_RULES die optionalen JSON-Layer-Regeln. OUTPUT enthält ein Rechteck je Gruppe, in Metern im "
+         "eigenen System der Zeichnung, mit Index (der Wert für PLAN), Art (plan, detail, legend, other), "
+         "Titel (z. B. '三层平面图'), Breite und Höhe in Metern, Metern an Wänden und main = true für den "
+         "Plan, der als Vorgabe umgewandelt wird (Index 0, wenn es ein Plan ist). STRUCTURE (optional) "
+         "enthält die Bauteillinien des ganzen Blatts (ohne Rahmen und Legenden), um das Blatt unter den "
+         "Rechtecken zu zeichnen; darüber eine Ausdehnung zeichnen, um PLAN_EXTENT anzugeben. MAIN_PLAN ist "
+         "der Index des Hauptplans (-1, wenn das Blatt nur Details enthält). PLAN_COUNT ist die Anzahl der "
+         "Gruppen, PLANS listet sie als Text."),
 }

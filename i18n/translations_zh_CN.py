@@ -1143,4 +1143,20 @@ T = {
          "Shift 则改为按整度旋转。"),
     "Rotation snapped to the building edges at {:.1f}° (modulo 90°).":
         "旋转已吸附到建筑边线，角度 {:.1f}°（模 90°）。",
+    ("Finds the plans on a whole drawing sheet (DXF or DWG), as 'Extract structure from DXF/DWG' does, and "
+     "lists every group instead of keeping one: INPUT is the drawing, LAYER_RULES the optional JSON layer "
+     "rules. OUTPUT holds one rectangle per group, in metres in the drawing's own frame, with its index "
+     "(the value of PLAN), kind (plan, detail, legend, other), title (e.g. '三层平面图'), width and height "
+     "in metres, metres of walls, and main = true for the plan converted by default (index 0 when it is a "
+     "plan). STRUCTURE (optional) holds the structure lines of the whole sheet (title frames and legends "
+     "left out) to draw the sheet under the rectangles; draw an extent over it to give PLAN_EXTENT. "
+     "MAIN_PLAN is the index of the main plan (-1 when the sheet holds only details). PLAN_COUNT is the "
+     "number of groups and PLANS lists them as text."):
+        ("像“从 DXF/DWG 提取建筑结构”一样查找整张图幅（DXF 或 DWG）上的平面图，并列出每一组，而不是只保留一"
+         "组：INPUT 为图纸，LAYER_RULES 为可选的 JSON 图层规则。OUTPUT 为每组一个矩形，以米为单位、位于图纸"
+         "自身坐标系中，字段包括序号（即 PLAN 的取值）、种类（plan、detail、legend、other）、标题（如 '三层"
+         "平面图'）、宽度和高度（米）、墙体长度（米），默认转换的平面图 main = true（若序号 0 为平面图则为序"
+         "号 0）。STRUCTURE（可选）为整张图幅的结构线（不含图框和图例），用于在矩形下方绘制图幅；在其上绘制"
+         "范围即可给出 PLAN_EXTENT。MAIN_PLAN 为主平面图的序号（图幅上只有详图时为 -1）。PLAN_COUNT 为组数，"
+         "PLANS 以文字形式列出各组。"),
 }
