@@ -1324,4 +1324,12 @@ T = {
          "Rechtecken zu zeichnen; darüber eine Ausdehnung zeichnen, um PLAN_EXTENT anzugeben. MAIN_PLAN ist "
          "der Index des Hauptplans (-1, wenn das Blatt nur Details enthält). PLAN_COUNT ist die Anzahl der "
          "Gruppen, PLANS listet sie als Text."),
+    ("Pick the DXF/DWG files of the building, one per floor (bottom floor first). The table shows the "
+     "layers of the selected file and which ones the layer rules keep as structure; below, the plans found "
+     "on its sheet: the main plan is pre-selected, click another (in the list or on the sheet) or draw an "
+     "extent."):
+        ("Die DXF/DWG-Dateien des Gebäudes wählen, eine je Geschoss (unterstes Geschoss zuerst). Die "
+         "Tabelle zeigt die Layer der gewählten Datei und welche davon die Layer-Regeln als Bauteile "
+         "behalten; darunter die auf ihrem Blatt gefundenen Pläne: Der Hauptplan ist vorausgewählt, einen "
+         "anderen anklicken (in der Liste oder auf dem Blatt) oder eine Ausdehnung zeichnen."),
 }

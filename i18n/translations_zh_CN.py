@@ -1159,4 +1159,11 @@ T = {
          "号 0）。STRUCTURE（可选）为整张图幅的结构线（不含图框和图例），用于在矩形下方绘制图幅；在其上绘制"
          "范围即可给出 PLAN_EXTENT。MAIN_PLAN 为主平面图的序号（图幅上只有详图时为 -1）。PLAN_COUNT 为组数，"
          "PLANS 以文字形式列出各组。"),
+    ("Pick the DXF/DWG files of the building, one per floor (bottom floor first). The table shows the "
+     "layers of the selected file and which ones the layer rules keep as structure; below, the plans found "
+     "on its sheet: the main plan is pre-selected, click another (in the list or on the sheet) or draw an "
+     "extent."):
+        ("选择建筑的 DXF/DWG 文件，每层一个（最底层在前）。表格显示所选文件的图层，以及图层规则将哪些图层保"
+         "留为结构；下方为在其图幅上找到的平面图：主平面图已预先选中，可点击其他平面图（在列表中或图幅上）或"
+         "绘制范围。"),
 }
