@@ -393,7 +393,7 @@ Ausgaben: OUTPUT_AREAS, die benannten Flächen (Felder name, ref, type, indoor, 
     <message>
       <location filename="../ui/convert_wizard.py" />
       <source>Pick the DXF/DWG files of the building, one per floor (bottom floor first). The table shows the layers of the selected file and which ones the layer rules keep as structure.</source>
-      <translation>Die DXF/DWG-Dateien des Gebäudes wählen, eine je Geschoss (unterstes Geschoss zuerst). Die Tabelle zeigt die Layer der gewählten Datei und welche davon die Layer-Regeln als Bauteile behalten.</translation>
+      <translation>DXF/DWG-Dateien des Gebäudes wählen, eine je Geschoss (unterstes zuerst). Die Tabelle zeigt die Layer der gewählten Datei und welche die Regeln als Bauteile behalten.</translation>
     </message>
     <message>
       <location filename="../ui/convert_wizard.py" />

@@ -1095,9 +1095,8 @@ T = {
     "1. Floor plans": "1. Grundrisse",
     ("Pick the DXF/DWG files of the building, one per floor (bottom floor first). The table shows the "
      "layers of the selected file and which ones the layer rules keep as structure."):
-        ("Die DXF/DWG-Dateien des Gebäudes wählen, eine je Geschoss (unterstes Geschoss zuerst). Die "
-         "Tabelle zeigt die Layer der gewählten Datei und welche davon die Layer-Regeln als Bauteile "
-         "behalten."),
+        ("DXF/DWG-Dateien des Gebäudes wählen, eine je Geschoss (unterstes zuerst). Die Tabelle zeigt die "
+         "Layer der gewählten Datei und welche die Regeln als Bauteile behalten."),
     "Add files…": "Dateien hinzufügen…",
     "Remove": "Entfernen",
     "Up": "Nach oben",
@@ -1272,10 +1271,9 @@ T = {
     ("Pick the DXF/DWG files of the building, one per floor (bottom floor first). The table shows the "
      "layers of the selected file and which ones the layer rules keep as structure; below, the plans found "
      "on its sheet: the main plan is pre-selected, pick another or draw an extent."):
-        ("Die DXF/DWG-Dateien des Gebäudes wählen, eine je Geschoss (unterstes Geschoss zuerst). Die "
-         "Tabelle zeigt die Layer der gewählten Datei und welche davon die Layer-Regeln als Bauteile "
-         "behalten; darunter die auf ihrem Blatt gefundenen Pläne: Der Hauptplan ist vorausgewählt, einen "
-         "anderen wählen oder eine Ausdehnung zeichnen."),
+        ("DXF/DWG-Dateien des Gebäudes wählen, eine je Geschoss (unterstes zuerst). Die Tabelle zeigt die "
+         "Layer der gewählten Datei und welche die Regeln als Bauteile behalten; darunter die Pläne ihres "
+         "Blatts: Der Hauptplan ist vorgewählt, einen anderen wählen oder eine Ausdehnung zeichnen."),
     "Plans on the sheet (the selected one is converted):":
         "Pläne auf dem Blatt (der gewählte wird umgewandelt):",
     "Plan": "Plan",
@@ -1328,8 +1326,8 @@ T = {
      "layers of the selected file and which ones the layer rules keep as structure; below, the plans found "
      "on its sheet: the main plan is pre-selected, click another (in the list or on the sheet) or draw an "
      "extent."):
-        ("Die DXF/DWG-Dateien des Gebäudes wählen, eine je Geschoss (unterstes Geschoss zuerst). Die "
-         "Tabelle zeigt die Layer der gewählten Datei und welche davon die Layer-Regeln als Bauteile "
-         "behalten; darunter die auf ihrem Blatt gefundenen Pläne: Der Hauptplan ist vorausgewählt, einen "
-         "anderen anklicken (in der Liste oder auf dem Blatt) oder eine Ausdehnung zeichnen."),
+        ("DXF/DWG-Dateien des Gebäudes wählen, eine je Geschoss (unterstes zuerst). Die Tabelle zeigt die "
+         "Layer der gewählten Datei und welche die Regeln als Bauteile behalten; darunter die Pläne ihres "
+         "Blatts: Der Hauptplan ist vorgewählt, einen anderen anklicken (in der Liste oder auf dem Blatt) "
+         "oder eine Ausdehnung zeichnen."),
 }

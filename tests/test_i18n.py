@@ -268,3 +268,54 @@ def test_qgis_process_log_in_german(tmp_path):
                                  f"OUTPUT_FOLDER={tmp_path / 'out'}")
     assert code == 0, out[-3000:]
     assert f"{tmp_path / 'out'}" in out and " geschrieben" in out and "Wrote " not in out, out[-3000:]
+
+
+def test_wizard_in_german(qgis_iface, qgis_app, provider, tmp_path, repo_root):
+    """The guided conversion in German: page titles, table headers and the yes/no of the layer table
+    (screenshot tests/artifacts/wizard_de_files.png)."""
+    from qgis.gui import QgsMapCanvas
+    from qgis.PyQt.QtCore import QSettings
+
+    sys.path.insert(0, str(REPO))
+    from algorithms.sample_building import generate_building
+
+    settings = QSettings()
+    old = settings.value("locale/userLocale", "")
+    settings.setValue("locale/userLocale", "de")
+    plugin = plugin_package().classFactory(qgis_iface)
+    try:
+        from cad2osmag.ui.convert_wizard import ConvertWizard
+
+        sample = generate_building(str(tmp_path / "dxf"), floors=1, seed=0)
+        canvas = QgsMapCanvas()
+        wiz = ConvertWizard(canvas)
+        wiz.resize(900, 700)
+        wiz.show()
+        page = wiz.files_page
+        page.add_files(sample["dxf"])
+        qgis_app.processEvents()
+        art = repo_root / "tests" / "artifacts"
+        art.mkdir(exist_ok=True)
+        wiz.grab().save(str(art / "wizard_de_files.png"))
+        assert wiz.windowTitle() == "Einen Grundriss in osmAG umwandeln"
+        assert page.title() == "1. Grundrisse"
+        headers = [page.layers.horizontalHeaderItem(c).text() for c in range(page.layers.columnCount())]
+        assert "Layer" in headers and "Behalten" in headers, headers
+        kept = {page.layers.item(r, 2).text() for r in range(page.layers.rowCount())}
+        assert kept <= {"ja", "nein"} and "ja" in kept, kept
+        # the page's explanation is not cut off: the header has the room the German text needs
+        from qgis.PyQt.QtCore import QRect, Qt
+        from qgis.PyQt.QtGui import QFontMetrics
+        from qgis.PyQt.QtWidgets import QLabel
+
+        label = next(w for w in wiz.findChildren(QLabel) if w.text() == page.subTitle() and w.isVisible())
+        need = QFontMetrics(label.font()).boundingRect(QRect(0, 0, label.width(), 10000),
+                                                       Qt.TextFlag.TextWordWrap, label.text()).height()
+        assert need <= label.height() + 2, (need, label.height(), label.text())
+        twice = QFontMetrics(label.font()).boundingRect(QRect(0, 0, label.width(), 10000), Qt.TextFlag.TextWordWrap,
+                                                        label.text() + " " + label.text()).height()
+        assert twice > label.height() + 2  # the measure would see a text that does not fit
+        wiz.close()
+    finally:
+        plugin.unload()
+        settings.setValue("locale/userLocale", old)
