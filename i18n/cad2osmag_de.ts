@@ -543,7 +543,7 @@ Ausgaben: OUTPUT_AREAS, die benannten Flächen (Felder name, ref, type, indoor, 
     <message>
       <location filename="../ui/convert_wizard.py" />
       <source>Add a basemap, then drag the plan to its place, turn it with the round handle, or click control points (drawing point, then map point). Every floor uses this placement.</source>
-      <translation>Eine Hintergrundkarte hinzufügen, dann den Plan an seinen Ort ziehen, mit dem runden Griff drehen oder Passpunkte klicken (Zeichnungspunkt, dann Kartenpunkt). Jedes Geschoss verwendet diese Platzierung.</translation>
+      <translation>Hintergrundkarte hinzufügen, den Plan an seinen Ort ziehen, mit dem runden Griff drehen oder Passpunkte klicken (erst Zeichnung, dann Karte). Gilt für jedes Geschoss.</translation>
     </message>
     <message>
       <location filename="../ui/convert_wizard.py" />

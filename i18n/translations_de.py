@@ -1128,9 +1128,8 @@ T = {
     "3. Place the plan on the map": "3. Plan auf der Karte platzieren",
     ("Add a basemap, then drag the plan to its place, turn it with the round handle, or click control "
      "points (drawing point, then map point). Every floor uses this placement."):
-        ("Eine Hintergrundkarte hinzufügen, dann den Plan an seinen Ort ziehen, mit dem runden Griff drehen "
-         "oder Passpunkte klicken (Zeichnungspunkt, dann Kartenpunkt). Jedes Geschoss verwendet diese "
-         "Platzierung."),
+        ("Hintergrundkarte hinzufügen, den Plan an seinen Ort ziehen, mit dem runden Griff drehen oder "
+         "Passpunkte klicken (erst Zeichnung, dann Karte). Gilt für jedes Geschoss."),
     "4. Convert and export": "4. Umwandeln und exportieren",
     "One osmAG file per floor is written to the output folder; the floors are added to the map, styled.":
         ("Eine osmAG-Datei je Geschoss wird in den Ausgabeordner geschrieben; die Geschosse werden "
