@@ -17,10 +17,18 @@
       <location filename="../processing_provider/alg_assign_names.py" />
       <source>Names, numbers and types the AREAS from the drawing's TEXTS (the text output of 'Extract structure from DXF', with block attributes).
 Which texts are room names: configurable rules (NAME_RULES, a copy of algorithms/default_name_rules.json) classify every text as a room name, a room number (kept as ref) or ignored, with the reason (dimension, area, elevation, door/window code, axis, stair arrow, note, title, title block, furniture...), using the text itself, the layer it sits on (room-name layers such as A-ANNO-ROOM, *-SYMB-NAME, 房间; bound-xref prefixes are stripped) and its block and attribute tag. Lines of a multi-line TEXT label are joined first.
-Which area: every text is scored against every area as in the CAD-to-osmAG paper (inside: 100 - 50 rho up to rho_max 0.7, then 50 - 25 (rho - 0.7); outside but within 2.2 m of the border: 40 + 30 f_size + 20 f_dist) and goes to its best area; a text inside an area belongs to it. Name and number join; an area holding two different room names is split at the narrowing between them (SPLIT, watershed of its clearance map; a corridor between them becomes its own area), else it keeps the best-placed name and lists the others in label_conflict. Duplicate names get a suffix (the room number, else (1), (2)...); areas without text get the stable id &lt;level&gt;-&lt;area id&gt;.
+Which area: every text is scored against every area as in the CAD-to-osmAG paper (inside: 100 - 50 rho up to rho_max 0.7, then 50 - 25 (rho - 0.7); outside but within 2.2 m of the border: 40 + 30 f_size + 20 f_dist) and goes to its best area; a text inside an area belongs to it. Name and number join; an area holding two different room names is split at the narrowing between them (SPLIT, watershed of its clearance map; a corridor between them becomes its own area), else it keeps the best-placed name and lists the others in label_conflict. Duplicate names get a suffix (the room number, else (1), (2)...); areas without text get the stable id level-area id (e.g. 2-17).
 Types: keywords (English, Italian, Spanish, German, French, Chinese...) and codes (*-ST-* stairs, *-P1/*-OP-*/*-FG-* lifts) set type stairs/elevator/corridor/room and the Simple Indoor Tagging fields indoor and room; long, narrow unnamed areas with three or more passages become corridors.
-Edit name, ref or type in the output layer to fix them: 'Export osmAG' keeps the edits and the passages follow renamed areas. TEXT_REPORT (optional) lists every label with its role, reason, area and score.</source>
-      <translation type="unfinished" />
+Edit name, ref or type in the output layer to fix them: 'Export osmAG' keeps the edits and the passages follow renamed areas. TEXT_REPORT (optional) lists every label with its role, reason, area and score.
+PASSAGES (optional): the passages of the areas; split areas get theirs, and corridors are recognised by their number of passages. LEVEL: the level used in generated ids (empty: the areas' level field, else 1).
+Outputs: OUTPUT_AREAS, the named areas (fields name, ref, type, indoor, room, label_conflict); OUTPUT_PASSAGES, the passages including those of split areas; counts NAMED (areas named from the drawing), NUMBERED (with a room number), AUTO_IDS (with a generated id), CONFLICTS (holding several names), SPLITS (areas split), IGNORED (texts ignored) and OUTSIDE (room texts outside every area).</source>
+      <translation>根据图纸的 TEXTS（“从 DXF 提取建筑结构”输出的文字，含块属性）为 AREAS（区域）命名、编号并指定类型。
+哪些文字是房间名称：可配置的规则（NAME_RULES，algorithms/default_name_rules.json 的副本）将每段文字归为房间名称、房间编号（保存为 ref）或忽略，并给出原因（尺寸标注、面积、标高、门窗编号、轴线、楼梯箭头、注释、标题、图签、家具……），依据是文字本身、所在图层（房间名称图层，如 A-ANNO-ROOM、*-SYMB-NAME、房间；绑定外部参照的前缀会被去除）以及所属块和属性标记。多行 TEXT 标注的各行先合并。
+归属哪个区域：按 CAD-to-osmAG 论文的方法，每段文字对每个区域打分（在区域内：100 - 50 rho，直到 rho_max 0.7，之后 50 - 25 (rho - 0.7)；在区域外但距边界不超过 2.2 m：40 + 30 f_size + 20 f_dist），并归入得分最高的区域；位于区域内部的文字属于该区域。名称与编号合并；含有两个不同房间名称的区域在二者之间的收窄处被拆分（SPLIT，基于其净空图的分水岭；二者之间的走廊成为单独的区域），否则保留位置最佳的名称，其余名称列在 label_conflict 中。重复的名称会加上后缀（房间编号，否则为 (1)、(2)……）；没有文字的区域获得稳定的标识“楼层-区域标识”（如 2-17）。
+类型：关键词（英语、意大利语、西班牙语、德语、法语、中文……）和编码（*-ST-* 楼梯，*-P1/*-OP-*/*-FG-* 电梯）设定类型 stairs/elevator/corridor/room 以及 Simple Indoor Tagging 字段 indoor 和 room；细长、未命名且有三个或更多通道的区域成为走廊。
+如需更正，在输出图层中编辑 name、ref 或 type：“导出 osmAG”会保留这些修改，通道也会跟随改名后的区域。TEXT_REPORT（可选）列出每个标注的角色、原因、区域和得分。
+PASSAGES（可选）：区域的通道；被拆分的区域获得各自的通道，走廊按其通道数量识别。LEVEL：生成标识所用的楼层（留空：区域的 level 字段，否则为 1）。
+输出：OUTPUT_AREAS，已命名的区域（字段 name、ref、type、indoor、room、label_conflict）；OUTPUT_PASSAGES，通道，含被拆分区域的通道；计数 NAMED（根据图纸命名的区域）、NUMBERED（有房间编号）、AUTO_IDS（使用生成标识）、CONFLICTS（含多个名称）、SPLITS（被拆分的区域）、IGNORED（被忽略的文字）和 OUTSIDE（位于所有区域之外的房间文字）。</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_assign_names.py" />
@@ -30,116 +38,176 @@ Edit name, ref or type in the output layer to fix them: 'Export osmAG' keeps the
     <message>
       <location filename="../processing_provider/alg_assign_names.py" />
       <source>Texts (from 'Extract structure from DXF')</source>
-      <translation type="unfinished" />
+      <translation>文字（来自“从 DXF 提取建筑结构”）</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_assign_names.py" />
       <source>Passages (optional: split areas get their passages, corridors their degree)</source>
-      <translation type="unfinished" />
+      <translation>通道（可选：拆分的区域获得其通道，走廊获得其连接度）</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_assign_names.py" />
       <source>Level (for generated ids; empty: the areas' level field, else 1)</source>
-      <translation type="unfinished" />
+      <translation>楼层（用于生成标识；留空：区域的 level 字段，否则为 1）</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_assign_names.py" />
       <source>Name rules (JSON, empty = built-in defaults)</source>
-      <translation type="unfinished" />
+      <translation>名称规则（JSON，留空 = 内置规则）</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_assign_names.py" />
       <source>Split areas holding two room names at the narrowing between them</source>
-      <translation type="unfinished" />
+      <translation>在两个房间名称之间的收窄处拆分区域</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_assign_names.py" />
       <source>Named areas</source>
-      <translation type="unfinished" />
+      <translation>已命名的区域</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_assign_names.py" />
       <source>Passages (with those of split areas)</source>
-      <translation type="unfinished" />
+      <translation>通道（含拆分区域的通道）</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_assign_names.py" />
       <source>Text report (role, reason, area of every label)</source>
-      <translation type="unfinished" />
+      <translation>文字报告（每个标注的角色、原因、区域）</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_assign_names.py" />
       <source>Areas named from the drawing</source>
-      <translation type="unfinished" />
+      <translation>根据图纸命名的区域</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_assign_names.py" />
       <source>Areas with a room number</source>
-      <translation type="unfinished" />
+      <translation>有房间编号的区域</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_assign_names.py" />
       <source>Areas with a generated id</source>
-      <translation type="unfinished" />
+      <translation>使用生成标识的区域</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_assign_names.py" />
       <source>Areas holding several names</source>
-      <translation type="unfinished" />
+      <translation>含多个名称的区域</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_assign_names.py" />
       <source>Areas split</source>
-      <translation type="unfinished" />
+      <translation>被拆分的区域</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_assign_names.py" />
       <source>Texts ignored</source>
-      <translation type="unfinished" />
+      <translation>被忽略的文字</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_assign_names.py" />
       <source>Room texts outside every area</source>
-      <translation type="unfinished" />
+      <translation>位于所有区域之外的房间文字</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_assign_names.py" />
       <source>AREAS: the input layer cannot be opened</source>
-      <translation type="unfinished" />
+      <translation>AREAS：无法打开输入图层</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_assign_names.py" />
       <source>TEXTS: the input layer cannot be opened</source>
-      <translation type="unfinished" />
+      <translation>TEXTS：无法打开输入图层</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_assign_names.py" />
       <source>TEXTS</source>
-      <translation type="unfinished" />
+      <translation>TEXTS</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_assign_names.py" />
       <source>PASSAGES</source>
-      <translation type="unfinished" />
+      <translation>PASSAGES</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_assign_names.py" />
       <source>{} is in {} but AREAS is in {}: reproject it to the CRS of AREAS first</source>
-      <translation type="unfinished" />
+      <translation>{} 位于 {}，但 AREAS 位于 {}：请先将其重投影到 AREAS 的坐标系</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_assign_names.py" />
       <source>AREAS is in a geographic CRS (degrees); the scores use metres: run this on the CAD-frame layers (before georeferencing) or reproject to a projected CRS</source>
-      <translation type="unfinished" />
+      <translation>AREAS 采用地理坐标系（度）；打分以米为单位：请在 CAD 坐标系下的图层上运行（地理配准之前），或重投影到投影坐标系</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_assign_names.py" />
       <source>cannot write area {} to the output layer</source>
-      <translation type="unfinished" />
+      <translation>无法将区域 {} 写入输出图层</translation>
     </message>
   </context>
   <context>
     <name>Cad2OsmagAlgorithm</name>
+    <message>
+      <location filename="../processing_provider/alg_extract_structure.py" />
+      <source>Plan on the sheet (empty = main plan; an index of the log's plan list, or xmin,ymin,xmax,ymax in metres)</source>
+      <translation>图幅上的平面图（留空 = 主平面图；日志中平面图列表的序号，或以米为单位的 xmin,ymin,xmax,ymax）</translation>
+    </message>
+    <message>
+      <location filename="../processing_provider/alg_extract_structure.py" />
+      <source>Plan extent (drawn on the canvas over the extracted structure; wins over PLAN)</source>
+      <translation>平面图范围（在地图画布上、于提取的结构之上绘制；优先于 PLAN）</translation>
+    </message>
+    <message>
+      <location filename="../processing_provider/alg_georeference.py" />
+      <source>the point {}, {} [{}] cannot be converted to longitude/latitude: {}</source>
+      <translation>点 {}, {} [{}] 无法转换为经纬度：{}</translation>
+    </message>
+    <message>
+      <location filename="../processing_provider/alg_load_osmag.py" />
+      <source>style not stored in {}: {}</source>
+      <translation>样式未保存到 {}：{}</translation>
+    </message>
+    <message>
+      <location filename="../processing_provider/alg_load_osmag.py" />
+      <source>cannot convert to {}: {}</source>
+      <translation>无法转换到 {}：{}</translation>
+    </message>
+    <message>
+      <location filename="../processing_provider/alg_load_osmag.py" />
+      <source>unclosed area ways (skipped): {}</source>
+      <translation>未闭合的区域 way（已跳过）：{}</translation>
+    </message>
+    <message>
+      <location filename="../processing_provider/alg_load_osmag.py" />
+      <source>dangling references (skipped): nodes {} refs {}</source>
+      <translation>悬空引用（已跳过）：节点 {} 引用 {}</translation>
+    </message>
+    <message>
+      <location filename="../processing_provider/alg_refine.py" />
+      <source>{}: features with ids {} have empty or missing geometries; remove them or fix the layer</source>
+      <translation>{}：标识为 {} 的要素几何为空或缺失；请删除这些要素或修复图层</translation>
+    </message>
+    <message>
+      <location filename="../processing_provider/alg_refine.py" />
+      <source>PASSAGES: passage {} has no valid {} (value {!r}); it must name the id of an area</source>
+      <translation>PASSAGES：通道 {} 没有有效的 {}（值 {!r}）；它必须给出某个区域的标识</translation>
+    </message>
+    <message>
+      <location filename="../processing_provider/alg_refine.py" />
+      <source>PASSAGES: passage {} has no line geometry</source>
+      <translation>PASSAGES：通道 {} 没有线几何</translation>
+    </message>
+    <message>
+      <location filename="../processing_provider/alg_refine.py" />
+      <source>cannot write area {} to the output layer</source>
+      <translation>无法将区域 {} 写入输出图层</translation>
+    </message>
+    <message>
+      <location filename="../processing_provider/alg_refine.py" />
+      <source>cannot write passage {} to the output layer</source>
+      <translation>无法将通道 {} 写入输出图层</translation>
+    </message>
     <message>
       <location filename="../processing_provider/base.py" />
       <source>Pipeline</source>
@@ -149,6 +217,124 @@ Edit name, ref or type in the output layer to fix them: 'Export osmAG' keeps the
       <location filename="../processing_provider/base.py" />
       <source>Canceled by the user.</source>
       <translation>已被用户取消。</translation>
+    </message>
+  </context>
+  <context>
+    <name>Cad2OsmagModel</name>
+    <message>
+      <location filename="../models/cad_to_osmag.model3" />
+      <source>The whole conversion of one floor as a graphical model of the individual algorithms: extract the structure of the DXF, rasterize it, segment the free space into an Area Graph (stairs and lifts typed from the drawing), refine the areas, georeference them (the drawing origin at ANCHOR, ROTATION clockwise from north, SCALE) and export osmAG. Open it in the graphical modeler to add or change steps.</source>
+      <translation>以各个算法组成的图形模型完成一个楼层的完整转换：提取 DXF 的建筑结构，栅格化，将空闲空间分割为区域图（Area Graph，楼梯和电梯的类型取自图纸），优化区域，进行地理配准（图纸原点位于 ANCHOR，ROTATION 为自正北顺时针的角度，SCALE）并导出 osmAG。可在图形建模器中打开以添加或修改步骤。</translation>
+    </message>
+    <message>
+      <location filename="../models/cad_to_osmag.model3" />
+      <source>Where the drawing origin (0, 0) lies on the map: pick it on a basemap, or use the placement of Vector ▸ CAD to osmAG ▸ Place a floor plan on the map.</source>
+      <translation>图纸原点 (0, 0) 在地图上的位置：在底图上拾取，或使用 矢量 ▸ CAD 转 osmAG ▸ 在地图上放置平面图 的放置结果。</translation>
+    </message>
+    <message>
+      <location filename="../models/cad_to_osmag.model3" />
+      <source>Corridor width in metres (8 m, the segment default).</source>
+      <translation>走廊宽度，单位米（8 m，“分割”的默认值）。</translation>
+    </message>
+    <message>
+      <location filename="../models/cad_to_osmag.model3" />
+      <source>Widest door in metres (2.8 m, the segment default).</source>
+      <translation>最宽的门，单位米（2.8 m，“分割”的默认值）。</translation>
+    </message>
+    <message>
+      <location filename="../models/cad_to_osmag.model3" />
+      <source>The floor plan (DXF).</source>
+      <translation>平面图（DXF）。</translation>
+    </message>
+    <message>
+      <location filename="../models/cad_to_osmag.model3" />
+      <source>Level of the floor (osmAG level tag).</source>
+      <translation>楼层（osmAG 的 level 标签）。</translation>
+    </message>
+    <message>
+      <location filename="../models/cad_to_osmag.model3" />
+      <source>Areas smaller than this (m²) merge into a neighbour (stairs and lifts are kept).</source>
+      <translation>小于此面积（m²）的区域并入相邻区域（楼梯和电梯保留）。</translation>
+    </message>
+    <message>
+      <location filename="../models/cad_to_osmag.model3" />
+      <source>The osmAG file written (.osm).</source>
+      <translation>写出的 osmAG 文件（.osm）。</translation>
+    </message>
+    <message>
+      <location filename="../models/cad_to_osmag.model3" />
+      <source>Raster resolution in metres per pixel (0.044 m by default).</source>
+      <translation>栅格分辨率，单位米/像素（默认 0.044 m）。</translation>
+    </message>
+    <message>
+      <location filename="../models/cad_to_osmag.model3" />
+      <source>Direction of the drawing's +y axis, in degrees clockwise from north.</source>
+      <translation>图纸 +y 轴的方向，自正北顺时针的度数。</translation>
+    </message>
+    <message>
+      <location filename="../models/cad_to_osmag.model3" />
+      <source>Ground metres per drawing metre (1 for a correct drawing).</source>
+      <translation>每图纸米对应的地面米数（比例正确的图纸为 1）。</translation>
+    </message>
+    <message>
+      <location filename="../models/cad_to_osmag.model3" />
+      <source>Position of the drawing origin</source>
+      <translation>图纸原点的位置</translation>
+    </message>
+    <message>
+      <location filename="../models/cad_to_osmag.model3" />
+      <source>Narrowest corridor (m)</source>
+      <translation>最窄走廊（米）</translation>
+    </message>
+    <message>
+      <location filename="../models/cad_to_osmag.model3" />
+      <source>Widest door (m)</source>
+      <translation>最宽门宽（米）</translation>
+    </message>
+    <message>
+      <location filename="../models/cad_to_osmag.model3" />
+      <source>DXF floor plan</source>
+      <translation>DXF 平面图</translation>
+    </message>
+    <message>
+      <location filename="../models/cad_to_osmag.model3" />
+      <source>Level</source>
+      <translation>楼层</translation>
+    </message>
+    <message>
+      <location filename="../models/cad_to_osmag.model3" />
+      <source>Merge areas smaller than (m²)</source>
+      <translation>合并小于此面积的区域（平方米）</translation>
+    </message>
+    <message>
+      <location filename="../models/cad_to_osmag.model3" />
+      <source>Raster resolution (m/px)</source>
+      <translation>栅格分辨率（米/像素）</translation>
+    </message>
+    <message>
+      <location filename="../models/cad_to_osmag.model3" />
+      <source>Rotation (degrees clockwise from north)</source>
+      <translation>旋转角（自正北顺时针，度）</translation>
+    </message>
+    <message>
+      <location filename="../models/cad_to_osmag.model3" />
+      <source>Scale (ground metres per drawing metre)</source>
+      <translation>比例（每图纸米对应的地面米数）</translation>
+    </message>
+    <message>
+      <location filename="../models/cad_to_osmag.model3" />
+      <source>osmAG file</source>
+      <translation>osmAG 文件</translation>
+    </message>
+    <message>
+      <location filename="../models/cad_to_osmag.model3" />
+      <source>osmAG areas (WGS84)</source>
+      <translation>osmAG 区域（WGS84）</translation>
+    </message>
+    <message>
+      <location filename="../models/cad_to_osmag.model3" />
+      <source>osmAG passages (WGS84)</source>
+      <translation>osmAG 通道（WGS84）</translation>
     </message>
   </context>
   <context>
@@ -207,7 +393,7 @@ Edit name, ref or type in the output layer to fix them: 'Export osmAG' keeps the
     <message>
       <location filename="../ui/convert_wizard.py" />
       <source>Pick the DXF/DWG files of the building, one per floor (bottom floor first). The table shows the layers of the selected file and which ones the layer rules keep as structure.</source>
-      <translation type="unfinished" />
+      <translation>选择建筑的 DXF/DWG 文件，每层一个（最底层在前）。表格显示所选文件的图层，以及图层规则将哪些图层保留为结构。</translation>
     </message>
     <message>
       <location filename="../ui/convert_wizard.py" />
@@ -252,17 +438,17 @@ Edit name, ref or type in the output layer to fix them: 'Export osmAG' keeps the
     <message>
       <location filename="../ui/convert_wizard.py" />
       <source>Floor plans</source>
-      <translation type="unfinished" />
+      <translation>平面图</translation>
     </message>
     <message>
       <location filename="../ui/convert_wizard.py" />
       <source>CAD drawings (*.dxf *.dwg *.DXF *.DWG)</source>
-      <translation type="unfinished" />
+      <translation>CAD 图纸 (*.dxf *.dwg *.DXF *.DWG)</translation>
     </message>
     <message>
       <location filename="../ui/convert_wizard.py" />
       <source>Cannot read the layers of {}.</source>
-      <translation type="unfinished" />
+      <translation>无法读取 {} 的图层。</translation>
     </message>
     <message>
       <location filename="../ui/convert_wizard.py" />
@@ -277,7 +463,7 @@ Edit name, ref or type in the output layer to fix them: 'Export osmAG' keeps the
     <message>
       <location filename="../ui/convert_wizard.py" />
       <source>{}: {} layers, kept: {}</source>
-      <translation type="unfinished" />
+      <translation>{}：{} 个图层，保留：{}</translation>
     </message>
     <message>
       <location filename="../ui/convert_wizard.py" />
@@ -287,7 +473,7 @@ Edit name, ref or type in the output layer to fix them: 'Export osmAG' keeps the
     <message>
       <location filename="../ui/convert_wizard.py" />
       <source>The defaults suit most buildings. Smaller pixels follow thin walls better but take longer.</source>
-      <translation type="unfinished" />
+      <translation>默认值适合大多数建筑。像素越小越能贴合薄墙，但耗时越长。</translation>
     </message>
     <message>
       <location filename="../ui/convert_wizard.py" />
@@ -327,27 +513,27 @@ Edit name, ref or type in the output layer to fix them: 'Export osmAG' keeps the
     <message>
       <location filename="../ui/convert_wizard.py" />
       <source>Previewing the segmentation</source>
-      <translation type="unfinished" />
+      <translation>正在预览分割结果</translation>
     </message>
     <message>
       <location filename="../ui/convert_wizard.py" />
       <source>Preview failed: {}</source>
-      <translation type="unfinished" />
+      <translation>预览失败：{}</translation>
     </message>
     <message>
       <location filename="../ui/convert_wizard.py" />
       <source>canceled</source>
-      <translation type="unfinished" />
+      <translation>已取消</translation>
     </message>
     <message>
       <location filename="../ui/convert_wizard.py" />
       <source>Computing…</source>
-      <translation type="unfinished" />
+      <translation>正在计算…</translation>
     </message>
     <message>
       <location filename="../ui/convert_wizard.py" />
       <source>{} areas, {} passages</source>
-      <translation type="unfinished" />
+      <translation>{} 个区域，{} 个通道</translation>
     </message>
     <message>
       <location filename="../ui/convert_wizard.py" />
@@ -357,7 +543,7 @@ Edit name, ref or type in the output layer to fix them: 'Export osmAG' keeps the
     <message>
       <location filename="../ui/convert_wizard.py" />
       <source>Add a basemap, then drag the plan to its place, turn it with the round handle, or click control points (drawing point, then map point). Every floor uses this placement.</source>
-      <translation type="unfinished" />
+      <translation>添加底图，然后将平面图拖到其位置，用圆形手柄旋转，或点击控制点（先图纸点，再地图点）。所有楼层都使用此放置结果。</translation>
     </message>
     <message>
       <location filename="../ui/convert_wizard.py" />
@@ -367,12 +553,12 @@ Edit name, ref or type in the output layer to fix them: 'Export osmAG' keeps the
     <message>
       <location filename="../ui/convert_wizard.py" />
       <source>One osmAG file per floor is written to the output folder; the floors are added to the map, styled.</source>
-      <translation type="unfinished" />
+      <translation>每层一个 osmAG 文件写入输出文件夹；各楼层以带样式的形式添加到地图。</translation>
     </message>
     <message>
       <location filename="../ui/convert_wizard.py" />
       <source>…</source>
-      <translation type="unfinished" />
+      <translation>…</translation>
     </message>
     <message>
       <location filename="../ui/convert_wizard.py" />
@@ -402,27 +588,27 @@ Edit name, ref or type in the output layer to fix them: 'Export osmAG' keeps the
     <message>
       <location filename="../ui/convert_wizard.py" />
       <source>Choose an output folder first.</source>
-      <translation type="unfinished" />
+      <translation>请先选择输出文件夹。</translation>
     </message>
     <message>
       <location filename="../ui/convert_wizard.py" />
       <source>Converting floor plans to osmAG</source>
-      <translation type="unfinished" />
+      <translation>正在将平面图转换为 osmAG</translation>
     </message>
     <message>
       <location filename="../ui/convert_wizard.py" />
       <source>Converting {} floor(s)…</source>
-      <translation type="unfinished" />
+      <translation>正在转换 {} 个楼层…</translation>
     </message>
     <message>
       <location filename="../ui/convert_wizard.py" />
       <source>Done: {} floor(s) written to {}</source>
-      <translation type="unfinished" />
+      <translation>完成：{} 个楼层已写入 {}</translation>
     </message>
     <message>
       <location filename="../ui/convert_wizard.py" />
       <source>Stopped: {}</source>
-      <translation type="unfinished" />
+      <translation>已停止：{}</translation>
     </message>
     <message>
       <location filename="../ui/convert_wizard.py" />
@@ -432,7 +618,7 @@ Edit name, ref or type in the output layer to fix them: 'Export osmAG' keeps the
     <message>
       <location filename="../ui/convert_wizard.py" />
       <source>Correct the name and the type of any area (room, corridor, stairs, elevator, structure), then save: the osmAG files are written again.</source>
-      <translation type="unfinished" />
+      <translation>更正任意区域的名称和类型（room、corridor、stairs、elevator、structure），然后保存：osmAG 文件将重新写出。</translation>
     </message>
     <message>
       <location filename="../ui/convert_wizard.py" />
@@ -462,27 +648,27 @@ Edit name, ref or type in the output layer to fix them: 'Export osmAG' keeps the
     <message>
       <location filename="../ui/convert_wizard.py" />
       <source>{} areas</source>
-      <translation type="unfinished" />
+      <translation>{} 个区域</translation>
     </message>
     <message>
       <location filename="../ui/convert_wizard.py" />
       <source>Exporting osmAG again</source>
-      <translation type="unfinished" />
+      <translation>正在重新导出 osmAG</translation>
     </message>
     <message>
       <location filename="../ui/convert_wizard.py" />
       <source>Saving {} changed areas…</source>
-      <translation type="unfinished" />
+      <translation>正在保存 {} 个已更改的区域…</translation>
     </message>
     <message>
       <location filename="../ui/convert_wizard.py" />
       <source>{} areas changed; osmAG files written again.</source>
-      <translation type="unfinished" />
+      <translation>{} 个区域已更改；osmAG 文件已重新写出。</translation>
     </message>
     <message>
       <location filename="../ui/convert_wizard.py" />
       <source>Export failed: {}</source>
-      <translation type="unfinished" />
+      <translation>导出失败：{}</translation>
     </message>
     <message>
       <location filename="../ui/convert_wizard.py" />
@@ -504,8 +690,20 @@ Edit name, ref or type in the output layer to fix them: 'Export osmAG' keeps the
     </message>
     <message>
       <location filename="../processing_provider/alg_dxf_to_osmag.py" />
-      <source>Runs the whole pipeline on one floor (a DXF, or a DWG of AutoCAD R13-2018 read directly): structural layers of the drawing are kept (walls, columns, glazing, stairs), rasterized, segmented into an Area Graph of rooms, corridors and the passages between them, refined (simplified polygons with shared borders) and written as an osmAG file anchored on the Earth. With NAMES (on by default) the drawing's texts name, number and type the areas (see 'Assign room names and types from texts'; NAME_RULES adapts the rules). ANCHOR is the position of the drawing origin (pick it on a basemap), ROTATION the direction of the drawing's +y axis in degrees clockwise from north. Each step is also available as its own algorithm for finer control.</source>
-      <translation type="unfinished" />
+      <source>Runs the whole pipeline on one floor (a DXF, or a DWG of AutoCAD R13-2018 read directly): structural layers of the drawing are kept (walls, columns, glazing, stairs), rasterized, segmented into an Area Graph of rooms, corridors and the passages between them, refined (simplified polygons with shared borders) and written as an osmAG file anchored on the Earth. Each step is also available as its own algorithm for finer control.
+INPUT: the floor plan (.dxf or .dwg). LAYER_RULES: a JSON file of layer keywords (empty: the built-in rules; see 'List DXF/DWG layers'). UNITS: the unit the drawing is drawn in (auto: read from the header and checked for a plausible building size).
+RESOLUTION: raster pixel size in metres (0.044 m by default; smaller follows thin walls better but is slower). DOOR_WIDTH: the widest door in metres (2.8 m): narrower openings separate rooms. CORRIDOR_WIDTH: corridor width in metres (8 m). MIN_AREA: areas smaller than this (m²) merge into a neighbour (stairs and lifts are kept). INCLUDE_DOORS: draw door layers as walls (doorways closed; off by default, so that doorways stay open).
+PLAN / PLAN_EXTENT: which plan of a sheet with several (empty: the main plan; an index of the plan list in the log, or xmin,ymin,xmax,ymax in metres, or an extent drawn on the canvas).
+NAMES (on by default): the drawing's texts name, number and type the areas (see 'Assign room names and types from texts'); NAME_RULES: a JSON file that adapts those rules.
+LEVEL: the floor's level (osmAG level tag, e.g. 1, -1). HEIGHT: floor height in metres (3.2 m). ANCHOR: where the drawing origin (0, 0) lies on the map (pick it on a basemap; empty: longitude 0, latitude 0). ROTATION: the direction of the drawing's +y axis in degrees clockwise from north. VARIANT: semantic (passages name their areas) or fix-id (passages give way ids).
+Outputs: OUTPUT, the osmAG file (.osm); OUTPUT_AREAS and OUTPUT_PASSAGES, the same areas and passages as layers in WGS84 to show on the map; PREVIEW, an optional PNG picture of the areas; AREA_COUNT and PASSAGE_COUNT, the numbers written.</source>
+      <translation>对一个楼层运行完整的处理流程（DXF，或直接读取的 AutoCAD R13-2018 DWG）：保留图纸的结构图层（墙、柱、玻璃、楼梯），栅格化，分割为由房间、走廊及其间通道组成的区域图（Area Graph），优化（共享边界的简化多边形），并写出锚定在地球上的 osmAG 文件。每一步也可作为单独的算法运行，以便更精细地控制。
+INPUT：平面图（.dxf 或 .dwg）。LAYER_RULES：图层关键词的 JSON 文件（留空：内置规则；参见“列出 DXF/DWG 图层”）。UNITS：图纸的绘图单位（auto：从文件头读取，并按合理的建筑尺寸校验）。
+RESOLUTION：栅格像素大小，单位米（默认 0.044 m；越小越能贴合薄墙，但速度越慢）。DOOR_WIDTH：最宽的门，单位米（2.8 m）：更窄的开口将房间分开。CORRIDOR_WIDTH：走廊宽度，单位米（8 m）。MIN_AREA：小于此面积（m²）的区域并入相邻区域（楼梯和电梯保留）。INCLUDE_DOORS：将门图层作为墙绘制（门洞封闭；默认关闭，使门洞保持开放）。
+PLAN / PLAN_EXTENT：图幅上有多个平面图时选用哪一个（留空：主平面图；日志中平面图列表的序号，或以米为单位的 xmin,ymin,xmax,ymax，或在地图画布上绘制的范围）。
+NAMES（默认开启）：用图纸中的文字为区域命名、编号并指定类型（参见“根据文字指定房间名称和类型”）；NAME_RULES：调整这些规则的 JSON 文件。
+LEVEL：该楼层的楼层号（osmAG 的 level 标签，如 1、-1）。HEIGHT：层高，单位米（3.2 m）。ANCHOR：图纸原点 (0, 0) 在地图上的位置（在底图上拾取；留空：经度 0、纬度 0）。ROTATION：图纸 +y 轴的方向，自正北顺时针的度数。VARIANT：semantic（通道按名称引用区域）或 fix-id（通道给出 way 标识）。
+输出：OUTPUT，osmAG 文件（.osm）；OUTPUT_AREAS 和 OUTPUT_PASSAGES，相同的区域和通道，作为 WGS84 图层显示在地图上；PREVIEW，可选的区域 PNG 预览图；AREA_COUNT 和 PASSAGE_COUNT，写出的数量。</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_dxf_to_osmag.py" />
@@ -545,17 +743,17 @@ Edit name, ref or type in the output layer to fix them: 'Export osmAG' keeps the
     <message>
       <location filename="../processing_provider/alg_dxf_to_osmag.py" />
       <source>Close doorways (rasterize door layers)</source>
-      <translation type="unfinished" />
+      <translation>封闭门洞（栅格化门图层）</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_dxf_to_osmag.py" />
       <source>Room names, numbers and types from the drawing's texts</source>
-      <translation type="unfinished" />
+      <translation>根据图纸文字确定房间名称、编号和类型</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_dxf_to_osmag.py" />
       <source>Name rules (JSON, optional)</source>
-      <translation type="unfinished" />
+      <translation>名称规则（JSON，可选）</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_dxf_to_osmag.py" />
@@ -590,17 +788,17 @@ Edit name, ref or type in the output layer to fix them: 'Export osmAG' keeps the
     <message>
       <location filename="../processing_provider/alg_dxf_to_osmag.py" />
       <source>OpenStreetMap XML (*.osm)</source>
-      <translation type="unfinished" />
+      <translation>OpenStreetMap XML (*.osm)</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_dxf_to_osmag.py" />
       <source>Areas (to show on the map)</source>
-      <translation type="unfinished" />
+      <translation>区域（显示在地图上）</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_dxf_to_osmag.py" />
       <source>Passages (to show on the map)</source>
-      <translation type="unfinished" />
+      <translation>通道（显示在地图上）</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_dxf_to_osmag.py" />
@@ -610,7 +808,7 @@ Edit name, ref or type in the output layer to fix them: 'Export osmAG' keeps the
     <message>
       <location filename="../processing_provider/alg_dxf_to_osmag.py" />
       <source>PNG image (*.png)</source>
-      <translation type="unfinished" />
+      <translation>PNG 图像 (*.png)</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_dxf_to_osmag.py" />
@@ -625,12 +823,42 @@ Edit name, ref or type in the output layer to fix them: 'Export osmAG' keeps the
     <message>
       <location filename="../processing_provider/alg_dxf_to_osmag.py" />
       <source>OUTPUT: give the .osm file to write</source>
-      <translation type="unfinished" />
+      <translation>OUTPUT：请指定要写出的 .osm 文件</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_dxf_to_osmag.py" />
       <source>Stage times: {}</source>
-      <translation type="unfinished" />
+      <translation>各阶段耗时：{}</translation>
+    </message>
+    <message>
+      <location filename="../processing_provider/alg_dxf_to_osmag.py" />
+      <source>auto</source>
+      <translation>自动</translation>
+    </message>
+    <message>
+      <location filename="../processing_provider/alg_dxf_to_osmag.py" />
+      <source>mm</source>
+      <translation>毫米</translation>
+    </message>
+    <message>
+      <location filename="../processing_provider/alg_dxf_to_osmag.py" />
+      <source>cm</source>
+      <translation>厘米</translation>
+    </message>
+    <message>
+      <location filename="../processing_provider/alg_dxf_to_osmag.py" />
+      <source>m</source>
+      <translation>米</translation>
+    </message>
+    <message>
+      <location filename="../processing_provider/alg_dxf_to_osmag.py" />
+      <source>inch</source>
+      <translation>英寸</translation>
+    </message>
+    <message>
+      <location filename="../processing_provider/alg_dxf_to_osmag.py" />
+      <source>feet</source>
+      <translation>英尺</translation>
     </message>
   </context>
   <context>
@@ -647,12 +875,18 @@ Edit name, ref or type in the output layer to fix them: 'Export osmAG' keeps the
     </message>
     <message>
       <location filename="../processing_provider/alg_dxf_to_osmag_batch.py" />
-      <source>Converts every floor plan of FOLDER (files matching PATTERN, e.g. '*.dxf') with the whole pipeline of 'Convert DXF floor plan to osmAG', several files at once: WORKERS processes (0 = one per processor core). Each file writes OUTPUT_FOLDER/&lt;file name&gt;.osm. A file that fails (not a drawing, no walls, …) is reported with its reason and never stops the others.
+      <source>Converts every floor plan of FOLDER (files matching PATTERN, e.g. '*.dxf') with the whole pipeline of 'Convert DXF floor plan to osmAG', several files at once: WORKERS processes (0 = one per processor core). Each file writes OUTPUT_FOLDER/NAME.osm (NAME: the drawing's file name). A file that fails (not a drawing, no walls, …) is reported with its reason and never stops the others.
 FIRST_LEVEL: the level of the first file in natural name order (floor-2 before floor-10); each next file is one level up. HEIGHT: floor height in metres.
 Placement, the same for every floor: ANCHOR is where the drawing origin (0, 0) lies (pick it on the map), ROTATION the direction of the drawing's +y axis in degrees clockwise from north, SCALE ground metres per drawing metre. Without ANCHOR the placement saved in the project by 'Place a floor plan on the map' is used, if any.
 RESOLUTION (m/px), DOOR_WIDTH and CORRIDOR_WIDTH (m), MIN_AREA (m²): as in the single-file algorithm. MERGE also writes OUTPUT_FOLDER/building.osm with every converted floor.
-REPORT: a CSV with one row per file (file, level, status, areas, passages, seconds, message).</source>
-      <translation type="unfinished" />
+REPORT: a CSV with one row per file (file, level, status, areas, passages, seconds, message).
+Outputs: SUCCEEDED and FAILED, the numbers of floors converted and failed (one bad file never stops the others), and OUTPUT_FOLDER.</source>
+      <translation>用“将 DXF 平面图转换为 osmAG”的完整流程转换 FOLDER 中的每个平面图（匹配 PATTERN 的文件，如 '*.dxf'），同时处理多个文件：WORKERS 个进程（0 = 每个处理器核心一个）。每个文件写出 OUTPUT_FOLDER/NAME.osm（NAME：图纸的文件名）。失败的文件（不是图纸、没有墙……）会连同原因一起报告，绝不会中断其他文件。
+FIRST_LEVEL：按自然名称顺序（floor-2 在 floor-10 之前）第一个文件的楼层；之后每个文件高一层。HEIGHT：层高，单位米。
+放置方式，所有楼层相同：ANCHOR 为图纸原点 (0, 0) 所在位置（在地图上拾取），ROTATION 为图纸 +y 轴的方向，自正北顺时针的度数，SCALE 为每图纸米对应的地面米数。未给出 ANCHOR 时，使用“在地图上放置平面图”保存在项目中的放置结果（如有）。
+RESOLUTION（米/像素）、DOOR_WIDTH 和 CORRIDOR_WIDTH（米）、MIN_AREA（m²）：与单文件算法相同。MERGE 还会写出包含所有已转换楼层的 OUTPUT_FOLDER/building.osm。
+REPORT：CSV 文件，每个文件一行（文件、楼层、状态、区域、通道、秒数、消息）。
+输出：SUCCEEDED 和 FAILED，转换成功和失败的楼层数（一个坏文件绝不会中断其他文件），以及 OUTPUT_FOLDER。</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_dxf_to_osmag_batch.py" />
@@ -662,12 +896,12 @@ REPORT: a CSV with one row per file (file, level, status, areas, passages, secon
     <message>
       <location filename="../processing_provider/alg_dxf_to_osmag_batch.py" />
       <source>File name patterns (';' separated)</source>
-      <translation type="unfinished" />
+      <translation>文件名模式（以 ';' 分隔）</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_dxf_to_osmag_batch.py" />
       <source>Level of the first file</source>
-      <translation type="unfinished" />
+      <translation>第一个文件的楼层</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_dxf_to_osmag_batch.py" />
@@ -712,12 +946,12 @@ REPORT: a CSV with one row per file (file, level, status, areas, passages, secon
     <message>
       <location filename="../processing_provider/alg_dxf_to_osmag_batch.py" />
       <source>Parallel processes (0 = every core)</source>
-      <translation type="unfinished" />
+      <translation>并行进程数（0 = 所有核心）</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_dxf_to_osmag_batch.py" />
       <source>Also merge the floors into building.osm</source>
-      <translation type="unfinished" />
+      <translation>同时将各楼层合并为 building.osm</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_dxf_to_osmag_batch.py" />
@@ -727,57 +961,57 @@ REPORT: a CSV with one row per file (file, level, status, areas, passages, secon
     <message>
       <location filename="../processing_provider/alg_dxf_to_osmag_batch.py" />
       <source>Report (CSV)</source>
-      <translation type="unfinished" />
+      <translation>报告（CSV）</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_dxf_to_osmag_batch.py" />
       <source>CSV files (*.csv)</source>
-      <translation type="unfinished" />
+      <translation>CSV 文件 (*.csv)</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_dxf_to_osmag_batch.py" />
       <source>Floors converted</source>
-      <translation type="unfinished" />
+      <translation>已转换的楼层</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_dxf_to_osmag_batch.py" />
       <source>Floors that failed</source>
-      <translation type="unfinished" />
+      <translation>转换失败的楼层</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_dxf_to_osmag_batch.py" />
       <source>using the placement saved in the project: {:.7f}, {:.7f}, {:.2f}°</source>
-      <translation type="unfinished" />
+      <translation>使用项目中保存的放置结果：{:.7f}, {:.7f}, {:.2f}°</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_dxf_to_osmag_batch.py" />
       <source>FOLDER: '{}' is not a folder</source>
-      <translation type="unfinished" />
+      <translation>FOLDER：'{}' 不是文件夹</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_dxf_to_osmag_batch.py" />
       <source>no file in '{}' matches '{}': check the folder and the pattern</source>
-      <translation type="unfinished" />
+      <translation>'{}' 中没有文件匹配 '{}'：请检查文件夹和模式</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_dxf_to_osmag_batch.py" />
       <source>{} files, {} parallel processes</source>
-      <translation type="unfinished" />
+      <translation>{} 个文件，{} 个并行进程</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_dxf_to_osmag_batch.py" />
       <source>merged {} floors into {}</source>
-      <translation type="unfinished" />
+      <translation>已将 {} 个楼层合并到 {}</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_dxf_to_osmag_batch.py" />
       <source>{} of {} files failed: {}</source>
-      <translation type="unfinished" />
+      <translation>{} 个文件失败（共 {} 个）：{}</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_dxf_to_osmag_batch.py" />
       <source>started {} (level {})</source>
-      <translation type="unfinished" />
+      <translation>已开始 {}（楼层 {}）</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_dxf_to_osmag_batch.py" />
@@ -787,22 +1021,22 @@ REPORT: a CSV with one row per file (file, level, status, areas, passages, secon
     <message>
       <location filename="../processing_provider/alg_dxf_to_osmag_batch.py" />
       <source>exit code {}</source>
-      <translation type="unfinished" />
+      <translation>退出码 {}</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_dxf_to_osmag_batch.py" />
       <source>the worker process ended without a result: {}</source>
-      <translation type="unfinished" />
+      <translation>工作进程结束但没有结果：{}</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_dxf_to_osmag_batch.py" />
       <source>{}: {} areas, {} passages in {:.1f} s -&gt; {}</source>
-      <translation type="unfinished" />
+      <translation>{}：{} 个区域，{} 个通道，用时 {:.1f} s -&gt; {}</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_dxf_to_osmag_batch.py" />
       <source>{}: failed: {}</source>
-      <translation type="unfinished" />
+      <translation>{}：失败：{}</translation>
     </message>
   </context>
   <context>
@@ -824,83 +1058,88 @@ LABELS: the area id raster written by 'Segment' (one integer per pixel).
 GROUND_TRUTH: a PNG, BMP or TIFF image with exactly the raster's width and height in pixels.
 MIN_ROOM_PX: ground-truth colours covering fewer pixels than this are antialiasing or labels, not rooms, and are ignored (pixels; at 0.05 m/px, 40 px are 0.1 m²).
 REPORT (optional): a CSV with one row per ground-truth room (colour, pixels, matched area, recall, precision, IoU).
-Outputs: MCC, F1, mean RECALL and PRECISION (0-1), the number of ground-truth rooms, predicted areas and rooms matched at IoU &gt;= 0.5.</source>
-      <translation type="unfinished" />
+Outputs: MCC, F1, mean RECALL and PRECISION (0-1), the number of ground-truth rooms (GT_ROOMS), predicted areas (PREDICTED_AREAS) and rooms matched at IoU &gt;= 0.5 (MATCHED).</source>
+      <translation>将“分割”输出的 LABELS 栅格（区域标识，0 = 无）与同样大小的真值图像进行比较，真值图像中每个房间涂成各自的颜色（墙为黑色，室外为白色或灰色）。对每个真值房间，重叠最大的预测区域为其匹配：该匹配的召回率和精确率、两个掩膜在已标注和已分割像素上的 Matthews 相关系数（MCC，按房间面积加权），以及在 IoU &gt;= 0.5 下一一匹配的房间的 F1 分数。
+LABELS：“分割”写出的区域标识栅格（每像素一个整数）。
+GROUND_TRUTH：PNG、BMP 或 TIFF 图像，宽度和高度（像素）须与栅格完全相同。
+MIN_ROOM_PX：覆盖像素少于此值的真值颜色是抗锯齿或标注，不是房间，将被忽略（像素；在 0.05 m/px 下，40 px 为 0.1 m²）。
+REPORT（可选）：CSV 文件，每个真值房间一行（颜色、像素、匹配的区域、召回率、精确率、IoU）。
+输出：MCC、F1、平均 RECALL 和 PRECISION（0-1），真值房间数（GT_ROOMS）、预测区域数（PREDICTED_AREAS）以及在 IoU &gt;= 0.5 下匹配的房间数（MATCHED）。</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_evaluate_segmentation.py" />
       <source>Area id raster (LABELS of Segment)</source>
-      <translation type="unfinished" />
+      <translation>区域标识栅格（“分割”的 LABELS）</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_evaluate_segmentation.py" />
       <source>Ground-truth colour image</source>
-      <translation type="unfinished" />
+      <translation>真值彩色图像</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_evaluate_segmentation.py" />
       <source>Ignore ground-truth colours covering fewer pixels than</source>
-      <translation type="unfinished" />
+      <translation>忽略覆盖像素少于此值的真值颜色</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_evaluate_segmentation.py" />
       <source>Per-room report</source>
-      <translation type="unfinished" />
+      <translation>逐房间报告</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_evaluate_segmentation.py" />
       <source>MCC (area-weighted)</source>
-      <translation type="unfinished" />
+      <translation>MCC（面积加权）</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_evaluate_segmentation.py" />
       <source>F1 at IoU &gt;= 0.5</source>
-      <translation type="unfinished" />
+      <translation>IoU &gt;= 0.5 时的 F1</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_evaluate_segmentation.py" />
       <source>Mean recall</source>
-      <translation type="unfinished" />
+      <translation>平均召回率</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_evaluate_segmentation.py" />
       <source>Mean precision</source>
-      <translation type="unfinished" />
+      <translation>平均精确率</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_evaluate_segmentation.py" />
       <source>Ground-truth rooms</source>
-      <translation type="unfinished" />
+      <translation>真值房间</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_evaluate_segmentation.py" />
       <source>Predicted areas</source>
-      <translation type="unfinished" />
+      <translation>预测区域</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_evaluate_segmentation.py" />
       <source>Rooms matched at IoU &gt;= 0.5</source>
-      <translation type="unfinished" />
+      <translation>在 IoU &gt;= 0.5 下匹配的房间</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_evaluate_segmentation.py" />
       <source>LABELS: the raster cannot be opened</source>
-      <translation type="unfinished" />
+      <translation>LABELS：无法打开栅格</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_evaluate_segmentation.py" />
       <source>GROUND_TRUTH: '{}' does not exist</source>
-      <translation type="unfinished" />
+      <translation>GROUND_TRUTH：'{}' 不存在</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_evaluate_segmentation.py" />
       <source>{} ground-truth rooms, {} predicted areas</source>
-      <translation type="unfinished" />
+      <translation>{} 个真值房间，{} 个预测区域</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_evaluate_segmentation.py" />
       <source>recall {:.3f}  precision {:.3f}  MCC {:.3f}  F1 {:.3f}</source>
-      <translation type="unfinished" />
+      <translation>召回率 {:.3f}  精确率 {:.3f}  MCC {:.3f}  F1 {:.3f}</translation>
     </message>
   </context>
   <context>
@@ -923,8 +1162,16 @@ VARIANT 'semantic' references areas by name (survives JOSM editing), 'fix-id' by
 STRUCTURE (optional): polygons of the floor or building outline, written as structure areas.
 LEVEL: the level tag of every area and passage (e.g. 1, -1); empty keeps the layers' own level field, else 1. HEIGHT: height per level in metres (height tag).
 ANCHOR_LON / ANCHOR_LAT in degrees (WGS84), ROTATION in degrees clockwise from north, SCALE in ground metres per CAD metre: the placement of 'Place a floor plan on the map' gives all four.
-OUTPUT: the .osm file to write.</source>
-      <translation type="unfinished" />
+OUTPUT: the .osm file to write.
+Outputs: AREA_COUNT, PASSAGE_COUNT and NODE_COUNT written; SHARED_NODES, the nodes shared by two or more areas; HOLES_DROPPED, the holes of areas left out (osmAG areas have no holes).</source>
+      <translation>将 AREAS 和 PASSAGES（以及可选的楼层/建筑轮廓，作为结构区域，成为其内部区域的 osmAG:parent）写为 osmAG 文件：JOSM、GDAL 和 osmium 可打开的 OpenStreetMap XML，含一个根节点、负数标识、共享边界节点的闭合区域 way，以及两个节点同时属于其连接的两个区域的通道 way。
+地理配准：地理或投影坐标系中的图层转换为 WGS84（如给出 ANCHOR_LON/ANCHOR_LAT，根节点位于该处，否则位于数据中心）。CAD 坐标系（无坐标系）中的图层用 ANCHOR_LON/ANCHOR_LAT（CAD 原点所在位置，同时也是根节点）、ROTATION 和 SCALE 放置；没有锚点时导出会停止，并提示先进行地理配准。
+VARIANT 'semantic' 按名称引用区域（经 JOSM 编辑后仍然有效），'fix-id' 按 way 标识引用。文件以原子方式写出：导出失败不会留下文件。孔洞（柱子）不属于 osmAG 区域 way，会被舍弃（在日志中计数）。
+STRUCTURE（可选）：楼层或建筑轮廓多边形，写为结构区域。
+LEVEL：每个区域和通道的 level 标签（如 1、-1）；留空则保留图层自身的 level 字段，否则为 1。HEIGHT：每层高度，单位米（height 标签）。
+ANCHOR_LON / ANCHOR_LAT 以度为单位（WGS84），ROTATION 为自正北顺时针的度数，SCALE 为每 CAD 米对应的地面米数：“在地图上放置平面图”的放置结果给出这四个值。
+OUTPUT：要写出的 .osm 文件。
+输出：写出的 AREA_COUNT、PASSAGE_COUNT 和 NODE_COUNT；SHARED_NODES，被两个或更多区域共享的节点数；HOLES_DROPPED，被舍弃的区域孔洞数（osmAG 区域没有孔洞）。</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_export_osmag.py" />
@@ -939,42 +1186,52 @@ OUTPUT: the .osm file to write.</source>
     <message>
       <location filename="../processing_provider/alg_export_osmag.py" />
       <source>Floor / building outlines (structure areas)</source>
-      <translation type="unfinished" />
+      <translation>楼层/建筑轮廓（结构区域）</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_export_osmag.py" />
       <source>Level (empty: the areas' own level field, else 1)</source>
-      <translation type="unfinished" />
+      <translation>楼层（留空：区域自身的 level 字段，否则为 1）</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_export_osmag.py" />
       <source>Height per level (m)</source>
-      <translation type="unfinished" />
+      <translation>每层高度（米）</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_export_osmag.py" />
       <source>Variant</source>
-      <translation type="unfinished" />
+      <translation>变体</translation>
+    </message>
+    <message>
+      <location filename="../processing_provider/alg_export_osmag.py" />
+      <source>semantic (names)</source>
+      <translation>semantic（名称）</translation>
+    </message>
+    <message>
+      <location filename="../processing_provider/alg_export_osmag.py" />
+      <source>fix-id (way ids)</source>
+      <translation>fix-id（way 标识）</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_export_osmag.py" />
       <source>Anchor / root longitude (CAD-frame layers: where the CAD origin lies)</source>
-      <translation type="unfinished" />
+      <translation>锚点/根节点经度（CAD 坐标系图层：CAD 原点所在位置）</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_export_osmag.py" />
       <source>Anchor / root latitude</source>
-      <translation type="unfinished" />
+      <translation>锚点/根节点纬度</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_export_osmag.py" />
       <source>Rotation of CAD-frame layers (degrees clockwise from north)</source>
-      <translation type="unfinished" />
+      <translation>CAD 坐标系图层的旋转角（自正北顺时针，度）</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_export_osmag.py" />
       <source>Scale of CAD-frame layers</source>
-      <translation type="unfinished" />
+      <translation>CAD 坐标系图层的比例</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_export_osmag.py" />
@@ -984,72 +1241,72 @@ OUTPUT: the .osm file to write.</source>
     <message>
       <location filename="../processing_provider/alg_export_osmag.py" />
       <source>OpenStreetMap XML (*.osm)</source>
-      <translation type="unfinished" />
+      <translation>OpenStreetMap XML (*.osm)</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_export_osmag.py" />
       <source>Areas written</source>
-      <translation type="unfinished" />
+      <translation>已写出的区域</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_export_osmag.py" />
       <source>Passages written</source>
-      <translation type="unfinished" />
+      <translation>已写出的通道</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_export_osmag.py" />
       <source>Nodes written</source>
-      <translation type="unfinished" />
+      <translation>已写出的节点</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_export_osmag.py" />
       <source>Nodes shared by 2+ areas</source>
-      <translation type="unfinished" />
+      <translation>被 2 个以上区域共享的节点</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_export_osmag.py" />
       <source>Holes left out</source>
-      <translation type="unfinished" />
+      <translation>舍弃的孔洞</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_export_osmag.py" />
       <source>AREAS: the input layer cannot be opened</source>
-      <translation type="unfinished" />
+      <translation>AREAS：无法打开输入图层</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_export_osmag.py" />
       <source>PASSAGES</source>
-      <translation type="unfinished" />
+      <translation>PASSAGES</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_export_osmag.py" />
       <source>STRUCTURE</source>
-      <translation type="unfinished" />
+      <translation>STRUCTURE</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_export_osmag.py" />
       <source>{} is in {} but AREAS is in {}; reproject it to the CRS of AREAS first</source>
-      <translation type="unfinished" />
+      <translation>{} 位于 {}，但 AREAS 位于 {}；请先将其重投影到 AREAS 的坐标系</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_export_osmag.py" />
       <source>AREAS holds several levels ({}): export one level at a time (filter the layer, or set LEVEL), then combine the files with 'Merge osmAG floors into a building'</source>
-      <translation type="unfinished" />
+      <translation>AREAS 包含多个楼层（{}）：请逐层导出（筛选图层或设置 LEVEL），然后用“将 osmAG 楼层合并为建筑”合并这些文件</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_export_osmag.py" />
       <source>layers are in {}: converting to WGS84</source>
-      <translation type="unfinished" />
+      <translation>图层位于 {}：正在转换为 WGS84</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_export_osmag.py" />
       <source>AREAS has no CRS (CAD frame): georeference the layers first (cad2osmag:georeference), or give ANCHOR_LON and ANCHOR_LAT (where the CAD origin lies) and ROTATION</source>
-      <translation type="unfinished" />
+      <translation>AREAS 没有坐标系（CAD 坐标系）：请先对图层进行地理配准（cad2osmag:georeference），或给出 ANCHOR_LON 和 ANCHOR_LAT（CAD 原点所在位置）以及 ROTATION</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_export_osmag.py" />
       <source>CAD-frame layers placed with {}</source>
-      <translation type="unfinished" />
+      <translation>CAD 坐标系图层的放置方式：{}</translation>
     </message>
   </context>
   <context>
@@ -1066,16 +1323,19 @@ OUTPUT: the .osm file to write.</source>
     </message>
     <message>
       <location filename="../processing_provider/alg_extract_structure.py" />
-      <source>Reads a DXF floor plan, or a DWG (AutoCAD R13-2018, read directly: no converter needed), explodes blocks (with scale, rotation, mirror and MINSERT arrays; entities on layer 0 inside a block take the INSERT's layer), skips frozen and off layers, keeps the structural layers chosen by the layer rules (walls, columns, windows/glazing, stairs, lifts, and the reference layers 0 and Defpoints) and flattens curves to 1 cm.
+      <source>Reads INPUT, a DXF floor plan or a DWG (AutoCAD R13-2018, read directly: no converter needed), explodes blocks (with scale, rotation, mirror and MINSERT arrays; entities on layer 0 inside a block take the INSERT's layer), skips frozen and off layers, keeps the structural layers chosen by the layer rules (walls, columns, windows/glazing, stairs, lifts, and the reference layers 0 and Defpoints) and flattens curves to 1 cm.
 LAYER_RULES: a JSON file of case-insensitive keywords (copy algorithms/default_layer_rules.json). LAYERS: explicit layer names (separated by ';') that override the rules. UNITS: the header's $INSUNITS is only a hint; by default the unit is chosen so that the building is 5-500 m across (a warning names both units). Door layers are left out unless INCLUDE_DOORS is set, so that doorways stay open; door swings and door blocks (by name, in many languages) are found on any layer and written as DOORS (jamb to jamb); furniture blocks, free-standing furniture on layer 0 and pattern hatches are left out (the log counts every class).
 Whole sheets: title frames, title blocks and legends are left out and the structure is grouped into plans (groups more than 5 m apart); the main plan (largest wall mass) is kept, the log lists every group with its index, extent, title and kind (plan / detail / legend). PLAN picks another (an index, or xmin,ymin,xmax,ymax in metres); PLAN_EXTENT is the same extent drawn on the canvas.
-Outputs, in metres in the drawing's own frame (a local engineering CRS, not georeferenced): WALLS (lines with fields layer, kind, entity, closed, filled, width; 'Rasterize structure' rebuilds the geometry from them; block, class), TEXTS (points with text, height, rotation, layer, entity, block, tag = ATTRIB tag, id; 'Assign room names and types from texts' reads them) and DOORS (doorway lines with source and width).</source>
-      <translation type="unfinished" />
+Outputs, in metres in the drawing's own frame (a local engineering CRS, not georeferenced): WALLS (lines with fields layer, kind, entity, closed, filled, width; 'Rasterize structure' rebuilds the geometry from them; block, class), TEXTS (points with text, height, rotation, layer, entity, block, tag = ATTRIB tag, id; 'Assign room names and types from texts' reads them) and DOORS (doorway lines with source and width). Figures: PLANS (the plans found on the sheet) and PLAN_COUNT (their number), DOOR_COUNT (doorways found), CLASSES (entities counted per class), UNIT and UNIT_SCALE (the unit used and metres per drawing unit), GEOMETRY_COUNT (structure features written) and TEXT_COUNT (texts written).</source>
+      <translation>读取 INPUT，即 DXF 平面图或 DWG（AutoCAD R13-2018，直接读取：无需转换器），分解块（含缩放、旋转、镜像和 MINSERT 阵列；块内 0 图层上的实体采用 INSERT 的图层），跳过冻结和关闭的图层，保留图层规则选出的结构图层（墙、柱、窗/玻璃、楼梯、电梯，以及参考图层 0 和 Defpoints），并以 1 cm 精度将曲线折线化。
+LAYER_RULES：不区分大小写的关键词 JSON 文件（复制 algorithms/default_layer_rules.json）。LAYERS：显式的图层名称（以 ';' 分隔），优先于规则。UNITS：文件头中的 $INSUNITS 仅作参考；默认选择使建筑尺寸为 5-500 m 的单位（警告中会给出两种单位）。除非设置 INCLUDE_DOORS，门图层将被排除，使门洞保持开放；门的开启弧线和门块（按名称，支持多种语言）会在任意图层上被识别，并写为 DOORS（门垛到门垛）；家具块、0 图层上的独立家具和图案填充会被排除（日志统计每一类）。
+整张图幅：图框、图签和图例会被排除，结构按平面图分组（相距超过 5 m 的组）；保留主平面图（墙体最多的一组），日志列出每组的序号、范围、标题和种类（平面图 / 详图 / 图例）。PLAN 选择其他平面图（序号，或以米为单位的 xmin,ymin,xmax,ymax）；PLAN_EXTENT 为在地图画布上绘制的同样范围。
+输出，以米为单位、位于图纸自身坐标系中（局部工程坐标系，未地理配准）：WALLS（线，字段 layer、kind、entity、closed、filled、width；“栅格化建筑结构”据此重建几何；block、class）、TEXTS（点，字段 text、height、rotation、layer、entity、block、tag = ATTRIB 标记、id；“根据文字指定房间名称和类型”读取它们）和 DOORS（门洞线，字段 source 和 width）。统计值：PLANS（图幅上找到的平面图）和 PLAN_COUNT（其数量）、DOOR_COUNT（找到的门洞）、CLASSES（按类统计的实体数）、UNIT 和 UNIT_SCALE（所用单位及每图纸单位对应的米数）、GEOMETRY_COUNT（写出的结构要素数）和 TEXT_COUNT（写出的文字数）。</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_extract_structure.py" />
       <source>DXF or DWG drawing</source>
-      <translation type="unfinished" />
+      <translation>DXF 或 DWG 图纸</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_extract_structure.py" />
@@ -1085,7 +1345,7 @@ Outputs, in metres in the drawing's own frame (a local engineering CRS, not geor
     <message>
       <location filename="../processing_provider/alg_extract_structure.py" />
       <source>Layers to keep (';' separated, overrides the rules)</source>
-      <translation type="unfinished" />
+      <translation>要保留的图层（以 ';' 分隔，优先于规则）</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_extract_structure.py" />
@@ -1095,12 +1355,22 @@ Outputs, in metres in the drawing's own frame (a local engineering CRS, not geor
     <message>
       <location filename="../processing_provider/alg_extract_structure.py" />
       <source>automatic (header + plausibility)</source>
-      <translation type="unfinished" />
+      <translation>自动（文件头 + 合理性检查）</translation>
+    </message>
+    <message>
+      <location filename="../processing_provider/alg_extract_structure.py" />
+      <source>inch</source>
+      <translation>英寸</translation>
+    </message>
+    <message>
+      <location filename="../processing_provider/alg_extract_structure.py" />
+      <source>feet</source>
+      <translation>英尺</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_extract_structure.py" />
       <source>Include doors (rasterize doorways as closed)</source>
-      <translation type="unfinished" />
+      <translation>包含门（将门洞栅格化为封闭）</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_extract_structure.py" />
@@ -1115,62 +1385,62 @@ Outputs, in metres in the drawing's own frame (a local engineering CRS, not geor
     <message>
       <location filename="../processing_provider/alg_extract_structure.py" />
       <source>Doorways found (door swings and door blocks)</source>
-      <translation type="unfinished" />
+      <translation>找到的门洞（门的开启弧线和门块）</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_extract_structure.py" />
       <source>Plans found on the sheet</source>
-      <translation type="unfinished" />
+      <translation>图幅上找到的平面图</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_extract_structure.py" />
       <source>Number of groups found on the sheet</source>
-      <translation type="unfinished" />
+      <translation>图幅上找到的组数</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_extract_structure.py" />
       <source>Number of doorways found</source>
-      <translation type="unfinished" />
+      <translation>找到的门洞数</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_extract_structure.py" />
       <source>Entity counts per class</source>
-      <translation type="unfinished" />
+      <translation>各类实体数量</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_extract_structure.py" />
       <source>Unit used</source>
-      <translation type="unfinished" />
+      <translation>所用单位</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_extract_structure.py" />
       <source>Drawing units to metres</source>
-      <translation type="unfinished" />
+      <translation>图纸单位换算为米</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_extract_structure.py" />
       <source>Number of structure features</source>
-      <translation type="unfinished" />
+      <translation>结构要素数</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_extract_structure.py" />
       <source>Number of texts</source>
-      <translation type="unfinished" />
+      <translation>文字数</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_extract_structure.py" />
       <source>Entity classes: {}; {} doorways found</source>
-      <translation type="unfinished" />
+      <translation>实体类别：{}；找到 {} 个门洞</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_extract_structure.py" />
       <source>Sheet: {}</source>
-      <translation type="unfinished" />
+      <translation>图幅：{}</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_extract_structure.py" />
       <source>Kept {} features on layers: {}; {} texts; unit {} (header: {})</source>
-      <translation type="unfinished" />
+      <translation>保留了 {} 个要素，所在图层：{}；{} 段文字；单位 {}（文件头：{}）</translation>
     </message>
   </context>
   <context>
@@ -1192,83 +1462,90 @@ Mode 'Anchor': pick ANCHOR on the map canvas (any CRS) for the CAD point CAD_ANC
 Mode 'Control points': GCPS is a point layer whose geometry is each point picked against a basemap and whose fields cad_x, cad_y (or sourceX, sourceY) hold its CAD coordinates; at least 2 points, not all on one line. A least-squares similarity (Helmert) is solved and the residual of every point and their RMS are reported in metres.
 FIX_SCALE keeps SCALE during the fit (solves position and rotation only).
 AREAS and PASSAGES: layers in the CAD frame (metres, no CRS), e.g. the outputs of 'Refine'; OUTPUT_AREAS and OUTPUT_PASSAGES get them in TARGET_CRS (default WGS84, EPSG:4326) with all their fields. MODE chooses 'Anchor point + rotation' or 'Control points'. CAD_ANCHOR_X / CAD_ANCHOR_Y and CAD_ROTATION_X / CAD_ROTATION_Y are CAD coordinates in metres.
-All conversions go through a transverse Mercator projection centred on the anchor (pyproj/PROJ), never a flat-earth approximation. Add a basemap (Vector ▸ CAD to osmAG ▸ Add … basemap) to pick points against real imagery, or drag the plan into place with Vector ▸ CAD to osmAG ▸ Place a floor plan on the map, whose placement gives ANCHOR, ROTATION and SCALE.</source>
-      <translation type="unfinished" />
+All conversions go through a transverse Mercator projection centred on the anchor (pyproj/PROJ), never a flat-earth approximation. Add a basemap (Vector ▸ CAD to osmAG ▸ Add … basemap) to pick points against real imagery, or drag the plan into place with Vector ▸ CAD to osmAG ▸ Place a floor plan on the map, whose placement gives ANCHOR, ROTATION and SCALE.
+Outputs: RMS and RESIDUALS, the control point residuals in metres (overall and per point); FRAME, the placement as text; ANCHOR_LON and ANCHOR_LAT (degrees), ROTATION_DEG (degrees clockwise from north) and SCALE_FACTOR of the placement, to reuse for the other floors.</source>
+      <translation>将在 CAD 坐标系中绘制的图层（米，无坐标系）转换到目标坐标系（默认 WGS84）。
+“锚点”模式：在地图画布上（任意坐标系）为 CAD 点 CAD_ANCHOR_X/Y（默认为图纸原点）拾取 ANCHOR；ROTATION 为平面图 +y 轴的方向，自正北顺时针的度数，或为 CAD 点 CAD_ROTATION_X/Y 给出 ROTATION_POINT（第二个地图点），由两个拾取点计算旋转角；SCALE 为每 CAD 米对应的地面米数。
+“控制点”模式：GCPS 为点图层，其几何为在底图上拾取的各点，字段 cad_x、cad_y（或 sourceX、sourceY）保存其 CAD 坐标；至少 2 个点，且不全在一条直线上。以最小二乘法求解相似变换（Helmert），并以米为单位报告每个点的残差及其 RMS。
+FIX_SCALE 在拟合时保持 SCALE 不变（只求解位置和旋转）。
+AREAS 和 PASSAGES：CAD 坐标系中的图层（米，无坐标系），如“优化”的输出；OUTPUT_AREAS 和 OUTPUT_PASSAGES 以 TARGET_CRS（默认 WGS84，EPSG:4326）得到它们，保留全部字段。MODE 选择“锚点 + 旋转”或“控制点”。CAD_ANCHOR_X / CAD_ANCHOR_Y 和 CAD_ROTATION_X / CAD_ROTATION_Y 为以米为单位的 CAD 坐标。
+所有转换都通过以锚点为中心的横轴墨卡托投影（pyproj/PROJ）进行，绝不使用平面地球近似。添加底图（矢量 ▸ CAD 转 osmAG ▸ 添加……底图）以便对照真实影像拾取点，或用 矢量 ▸ CAD 转 osmAG ▸ 在地图上放置平面图 将平面图拖到位置上，其放置结果给出 ANCHOR、ROTATION 和 SCALE。
+输出：RMS 和 RESIDUALS，控制点残差，单位米（总体和逐点）；FRAME，放置结果的文字描述；ANCHOR_LON 和 ANCHOR_LAT（度）、ROTATION_DEG（自正北顺时针的度数）和 SCALE_FACTOR，可在其他楼层重复使用。</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_georeference.py" />
       <source>Anchor point + rotation</source>
-      <translation type="unfinished" />
+      <translation>锚点 + 旋转</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_georeference.py" />
       <source>Control points (least squares)</source>
-      <translation type="unfinished" />
+      <translation>控制点（最小二乘）</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_georeference.py" />
       <source>Layer in the CAD frame (areas or any)</source>
-      <translation type="unfinished" />
+      <translation>CAD 坐标系中的图层（区域或任意图层）</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_georeference.py" />
       <source>Second layer in the CAD frame (passages)</source>
-      <translation type="unfinished" />
+      <translation>CAD 坐标系中的第二个图层（通道）</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_georeference.py" />
       <source>Mode</source>
-      <translation type="unfinished" />
+      <translation>模式</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_georeference.py" />
       <source>Anchor: where the CAD anchor point lies on the map</source>
-      <translation type="unfinished" />
+      <translation>锚点：CAD 锚点在地图上的位置</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_georeference.py" />
       <source>CAD anchor point x (m)</source>
-      <translation type="unfinished" />
+      <translation>CAD 锚点 x（米）</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_georeference.py" />
       <source>CAD anchor point y (m)</source>
-      <translation type="unfinished" />
+      <translation>CAD 锚点 y（米）</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_georeference.py" />
       <source>Rotation of the plan's +y axis (degrees clockwise from north)</source>
-      <translation type="unfinished" />
+      <translation>平面图 +y 轴的旋转角（自正北顺时针，度）</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_georeference.py" />
       <source>Or: second map point (defines the rotation)</source>
-      <translation type="unfinished" />
+      <translation>或：第二个地图点（确定旋转角）</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_georeference.py" />
       <source>CAD x of the second point (m)</source>
-      <translation type="unfinished" />
+      <translation>第二个点的 CAD x（米）</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_georeference.py" />
       <source>CAD y of the second point (m)</source>
-      <translation type="unfinished" />
+      <translation>第二个点的 CAD y（米）</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_georeference.py" />
       <source>Scale (ground metres per CAD metre)</source>
-      <translation type="unfinished" />
+      <translation>比例（每 CAD 米对应的地面米数）</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_georeference.py" />
       <source>Control points (fields cad_x, cad_y)</source>
-      <translation type="unfinished" />
+      <translation>控制点（字段 cad_x、cad_y）</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_georeference.py" />
       <source>Control points: keep the scale at SCALE (solve rotation and shift only)</source>
-      <translation type="unfinished" />
+      <translation>控制点：将比例固定为 SCALE（只求解旋转和平移）</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_georeference.py" />
@@ -1278,107 +1555,107 @@ All conversions go through a transverse Mercator projection centred on the ancho
     <message>
       <location filename="../processing_provider/alg_georeference.py" />
       <source>Georeferenced layer</source>
-      <translation type="unfinished" />
+      <translation>已地理配准的图层</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_georeference.py" />
       <source>Georeferenced second layer</source>
-      <translation type="unfinished" />
+      <translation>已地理配准的第二个图层</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_georeference.py" />
       <source>RMS of control point residuals (m)</source>
-      <translation type="unfinished" />
+      <translation>控制点残差的 RMS（米）</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_georeference.py" />
       <source>Residual per control point (m)</source>
-      <translation type="unfinished" />
+      <translation>每个控制点的残差（米）</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_georeference.py" />
       <source>Anchor, rotation, scale of the placement</source>
-      <translation type="unfinished" />
+      <translation>放置结果的锚点、旋转角和比例</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_georeference.py" />
       <source>Anchor longitude</source>
-      <translation type="unfinished" />
+      <translation>锚点经度</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_georeference.py" />
       <source>Anchor latitude</source>
-      <translation type="unfinished" />
+      <translation>锚点纬度</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_georeference.py" />
       <source>Rotation (deg)</source>
-      <translation type="unfinished" />
+      <translation>旋转角（度）</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_georeference.py" />
       <source>Scale</source>
-      <translation type="unfinished" />
+      <translation>比例</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_georeference.py" />
       <source>Mode 'Control points' needs the GCPS point layer</source>
-      <translation type="unfinished" />
+      <translation>“控制点”模式需要 GCPS 点图层</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_georeference.py" />
       <source>GCPS needs fields with the CAD coordinates of each point: cad_x and cad_y (found: {})</source>
-      <translation type="unfinished" />
+      <translation>GCPS 需要保存每个点 CAD 坐标的字段：cad_x 和 cad_y（找到的字段：{}）</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_georeference.py" />
       <source>control point {} has no geometry</source>
-      <translation type="unfinished" />
+      <translation>控制点 {} 没有几何</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_georeference.py" />
       <source>control point {} has no numeric {} / {}</source>
-      <translation type="unfinished" />
+      <translation>控制点 {} 没有数值型的 {} / {}</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_georeference.py" />
       <source>GCPS has no CRS: its points must be picked on a map</source>
-      <translation type="unfinished" />
+      <translation>GCPS 没有坐标系：其点必须在地图上拾取</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_georeference.py" />
       <source>control point {}: residual {:.4f} m</source>
-      <translation type="unfinished" />
+      <translation>控制点 {}：残差 {:.4f} m</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_georeference.py" />
       <source>RMS of residuals: {:.4f} m ({} points)</source>
-      <translation type="unfinished" />
+      <translation>残差的 RMS：{:.4f} m（{} 个点）</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_georeference.py" />
       <source>The control points do not fit a similarity transform well (RMS {:.2f} m, worst point {} off by {:.2f} m): check that each point's CAD x/y match where it was picked</source>
-      <translation type="unfinished" />
+      <translation>控制点与相似变换拟合不佳（RMS {:.2f} m，最差的点 {} 偏差 {:.2f} m）：请检查每个点的 CAD x/y 是否与其拾取位置一致</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_georeference.py" />
       <source>The fitted scale is {:.4f} (the plan would be stretched by {:+.1%}): check the drawing units or the control points, or set FIX_SCALE</source>
-      <translation type="unfinished" />
+      <translation>拟合得到的比例为 {:.4f}（平面图将被拉伸 {:+.1%}）：请检查图纸单位或控制点，或设置 FIX_SCALE</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_georeference.py" />
       <source>Mode 'Anchor' needs ANCHOR: pick the point on the map canvas where the CAD anchor point lies</source>
-      <translation type="unfinished" />
+      <translation>“锚点”模式需要 ANCHOR：请在地图画布上拾取 CAD 锚点所在的位置</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_georeference.py" />
       <source>rotation from the two picked points: {:.4f} degrees</source>
-      <translation type="unfinished" />
+      <translation>由两个拾取点得到的旋转角：{:.4f} 度</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_georeference.py" />
       <source>{} is already georeferenced ({}); this algorithm places layers in the CAD frame (the outputs of the segment and refine algorithms). Use 'Reproject layer' to change the CRS of a placed layer.</source>
-      <translation type="unfinished" />
+      <translation>{} 已经过地理配准（{}）；本算法用于放置 CAD 坐标系中的图层（分割和优化算法的输出）。要更改已放置图层的坐标系，请使用“重投影图层”。</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_georeference.py" />
@@ -1387,13 +1664,18 @@ All conversions go through a transverse Mercator projection centred on the ancho
     </message>
     <message>
       <location filename="../processing_provider/alg_georeference.py" />
+      <source>{} feature {}: {}</source>
+      <translation>{} 要素 {}：{}</translation>
+    </message>
+    <message>
+      <location filename="../processing_provider/alg_georeference.py" />
       <source>AREAS: the input layer cannot be opened</source>
-      <translation type="unfinished" />
+      <translation>AREAS：无法打开输入图层</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_georeference.py" />
       <source>placement: {}</source>
-      <translation type="unfinished" />
+      <translation>放置结果：{}</translation>
     </message>
   </context>
   <context>
@@ -1410,15 +1692,19 @@ All conversions go through a transverse Mercator projection centred on the ancho
     </message>
     <message>
       <location filename="../processing_provider/alg_list_layers.py" />
-      <source>Reports every layer of a DXF or DWG drawing (DWG: AutoCAD R13-2018, read directly) with its entity counts by type (after exploding blocks: entities on layer 0 inside a block count on the INSERT's layer), whether it is frozen or off, and whether the layer rules keep it (kind and matching keyword; door layers are listed with kind 'door' but not kept, since doorways stay open unless doors are included). Use the table to choose the LAYERS of 'Extract structure from DXF/DWG' or to write your own LAYER_RULES JSON file.
+      <source>Reports every layer of INPUT, a DXF or DWG drawing (DWG: AutoCAD R13-2018, read directly), with its entity counts by type (after exploding blocks: entities on layer 0 inside a block count on the INSERT's layer), whether it is frozen or off, and whether the layer rules keep it (kind and matching keyword; door layers are listed with kind 'door' but not kept, since doorways stay open unless doors are included). Use the table to choose the LAYERS of 'Extract structure from DXF/DWG' or to write your own LAYER_RULES JSON file.
 Layer names as delivered: the rules match the meaningful part of a name (the prefix of a bound external reference, as in E1-RI-1F$0$A-WALL, is ignored); the 'matched' column shows it.
-Output: a table without geometry (save it as CSV, or keep it as a memory layer).</source>
-      <translation type="unfinished" />
+LAYER_RULES: a JSON file of layer keywords (empty: the built-in rules, algorithms/default_layer_rules.json).
+Outputs: OUTPUT, a table without geometry, one row per layer (save it as CSV, or keep it as a memory layer); LAYER_COUNT, the number of layers; KEPT_LAYERS, the layers the rules keep (separated by ';'); HEADER_UNIT, the unit written in the drawing's header ($INSUNITS).</source>
+      <translation>报告 INPUT（DXF 或 DWG 图纸；DWG：AutoCAD R13-2018，直接读取）的每个图层，包括按类型统计的实体数（分解块之后：块内 0 图层上的实体计入 INSERT 的图层）、是否冻结或关闭，以及图层规则是否保留它（种类和匹配的关键词；门图层列为种类 'door' 但不保留，因为除非包含门，门洞保持开放）。可用此表选择“从 DXF/DWG 提取建筑结构”的 LAYERS，或编写自己的 LAYER_RULES JSON 文件。
+图层名称保持原样：规则匹配名称中有意义的部分（绑定外部参照的前缀，如 E1-RI-1F$0$A-WALL 中的前缀，会被忽略）；'matched' 列显示该部分。
+LAYER_RULES：图层关键词的 JSON 文件（留空：内置规则，algorithms/default_layer_rules.json）。
+输出：OUTPUT，无几何的表格，每个图层一行（可另存为 CSV，或保留为临时图层）；LAYER_COUNT，图层数；KEPT_LAYERS，规则保留的图层（以 ';' 分隔）；HEADER_UNIT，图纸文件头中记录的单位（$INSUNITS）。</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_list_layers.py" />
       <source>DXF or DWG drawing</source>
-      <translation type="unfinished" />
+      <translation>DXF 或 DWG 图纸</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_list_layers.py" />
@@ -1428,27 +1714,27 @@ Output: a table without geometry (save it as CSV, or keep it as a memory layer).
     <message>
       <location filename="../processing_provider/alg_list_layers.py" />
       <source>Layer report</source>
-      <translation type="unfinished" />
+      <translation>图层报告</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_list_layers.py" />
       <source>Number of layers</source>
-      <translation type="unfinished" />
+      <translation>图层数</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_list_layers.py" />
       <source>Layers the rules keep (semicolon separated)</source>
-      <translation type="unfinished" />
+      <translation>规则保留的图层（以分号分隔）</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_list_layers.py" />
       <source>Unit written in the header ($INSUNITS)</source>
-      <translation type="unfinished" />
+      <translation>文件头中记录的单位（$INSUNITS）</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_list_layers.py" />
       <source>{} layers, {} kept by the rules: {}</source>
-      <translation type="unfinished" />
+      <translation>{} 个图层，规则保留 {} 个：{}</translation>
     </message>
   </context>
   <context>
@@ -1469,8 +1755,12 @@ Output: a table without geometry (save it as CSV, or keep it as a memory layer).
 INPUT: the osmAG file (.osm, OpenStreetMap XML, coordinates in WGS84 degrees).
 TARGET_CRS: CRS of the output layers (default WGS84, EPSG:4326); choose a projected CRS in metres to measure or edit the areas.
 OUTPUT_AREAS / OUTPUT_PASSAGES: the two layers (temporary, GeoPackage, …).
-Outputs: the number of areas and passages loaded and the VARIANT detected.</source>
-      <translation type="unfinished" />
+Outputs: the number of areas and passages loaded (AREA_COUNT, PASSAGE_COUNT), the unclosed area ways (UNCLOSED) and dangling references (DANGLING) skipped, the root node's position (ROOT_LON, ROOT_LAT, degrees) and the VARIANT detected.</source>
+      <translation>将 osmAG 文件（semantic 或 fix-id 变体；由本插件、JOSM 或其他 osmAG 工具写出）打开为区域多边形图层和通道线图层，每个标签作为一个字段（另有 osm_id，以及将每个通道的区域解析为其 way 标识的 from_id / to_id，两个楼梯或电梯区域之间的通道还有 vertical = yes）。区域按 osmAG:areatype 着色，通道绘制为粗红线，垂直通道为粗蓝线（styles/osmag_*.qml），两者都以名称标注；GeoPackage 输出保留样式。悬空引用（缺失的节点、引用未知区域的通道）和未闭合的区域 way 会被报告并跳过。不含任何 osmAG 区域的文件将被拒绝。
+INPUT：osmAG 文件（.osm，OpenStreetMap XML，坐标为 WGS84 度）。
+TARGET_CRS：输出图层的坐标系（默认 WGS84，EPSG:4326）；如需测量或编辑区域，请选择以米为单位的投影坐标系。
+OUTPUT_AREAS / OUTPUT_PASSAGES：两个图层（临时图层、GeoPackage……）。
+输出：加载的区域和通道数量（AREA_COUNT、PASSAGE_COUNT），跳过的未闭合区域 way（UNCLOSED）和悬空引用（DANGLING），根节点位置（ROOT_LON、ROOT_LAT，度）以及检测到的 VARIANT。</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_load_osmag.py" />
@@ -1480,52 +1770,52 @@ Outputs: the number of areas and passages loaded and the VARIANT detected.</sour
     <message>
       <location filename="../processing_provider/alg_load_osmag.py" />
       <source>Output CRS</source>
-      <translation type="unfinished" />
+      <translation>输出坐标系</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_load_osmag.py" />
       <source>osmAG areas</source>
-      <translation type="unfinished" />
+      <translation>osmAG 区域</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_load_osmag.py" />
       <source>osmAG passages</source>
-      <translation type="unfinished" />
+      <translation>osmAG 通道</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_load_osmag.py" />
       <source>Areas loaded</source>
-      <translation type="unfinished" />
+      <translation>已加载的区域</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_load_osmag.py" />
       <source>Passages loaded</source>
-      <translation type="unfinished" />
+      <translation>已加载的通道</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_load_osmag.py" />
       <source>Unclosed area ways (skipped)</source>
-      <translation type="unfinished" />
+      <translation>未闭合的区域 way（已跳过）</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_load_osmag.py" />
       <source>Dangling references (skipped)</source>
-      <translation type="unfinished" />
+      <translation>悬空引用（已跳过）</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_load_osmag.py" />
       <source>Root node longitude</source>
-      <translation type="unfinished" />
+      <translation>根节点经度</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_load_osmag.py" />
       <source>Root node latitude</source>
-      <translation type="unfinished" />
+      <translation>根节点纬度</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_load_osmag.py" />
       <source>Variant detected</source>
-      <translation type="unfinished" />
+      <translation>检测到的变体</translation>
     </message>
   </context>
   <context>
@@ -1545,133 +1835,138 @@ Outputs: the number of areas and passages loaded and the VARIANT detected.</sour
       <source>Fuses floors into one osmAG building. INPUT: osmAG floor files (semantic or fix-id), and/or AREAS/PASSAGES layers (e.g. from 'Load osmAG') split by their 'level' field.
 Level of each floor: LEVELS (comma-separated, in the order of the inputs), else the floor's level tags, else its file name (*-F3*, *_L-1*, *B1*, *3F*, *三层*). HEIGHTS: metres per level (one value for all, or one per floor; default: the floor's height tag, else 3.2).
 Registration: floors drawn in different frames are moved onto each other with their stairs and lifts (areas typed stairs/elevator, or named like one): matched by name first, else by type, size and position, by consensus (one wrong match does not move a floor); rotation when two anchors agree. The log gives the residual per anchor and the RMS. Floors without anchors are registered by their outline, with a warning.
-Stitching: overlapping stairs/lifts of consecutive levels get a vertical passage (a two-node way inside both shafts, tagged with the upper level and height). One building structure area is the parent of one structure area per level, which is the parent of that floor's areas; ids and names are unique across the building. Passages naming areas that do not exist are reported with their ids and left out (STRICT: stop instead). Output: one osmAG file (written atomically) and optional AREAS/PASSAGES layers with a 'level' field.</source>
-      <translation type="unfinished" />
+Stitching: overlapping stairs/lifts of consecutive levels get a vertical passage (a two-node way inside both shafts, tagged with the upper level and height). One building structure area is the parent of one structure area per level, which is the parent of that floor's areas; ids and names are unique across the building. Passages naming areas that do not exist are reported with their ids and left out (STRICT: stop instead). REGISTER (on by default): move the floors onto each other as above; off: keep every floor where it is. BUILDING: the building's name (the root structure area). VARIANT: the osmAG variant written: as the inputs, semantic (passages name their areas) or fix-id (passages give way ids).
+Outputs: OUTPUT, one osmAG file (written atomically); optional OUTPUT_AREAS and OUTPUT_PASSAGES layers with a 'level' field; FLOOR_COUNT, VERTICAL_PASSAGES, AREA_COUNT and PASSAGE_COUNT (numbers written), RMS (registration residual in metres), DROPPED_PASSAGES (passages left out) and LEVELS_OUT (the levels, in order).</source>
+      <translation>将各楼层合并为一个 osmAG 建筑。INPUT：osmAG 楼层文件（semantic 或 fix-id），和/或按 'level' 字段拆分的 AREAS/PASSAGES 图层（如来自“加载 osmAG”）。
+每个楼层的楼层号：LEVELS（以逗号分隔，按输入顺序），否则为楼层的 level 标签，否则取自其文件名（*-F3*、*_L-1*、*B1*、*3F*、*三层*）。HEIGHTS：每层的米数（一个值用于全部楼层，或每层一个；默认：楼层的 height 标签，否则为 3.2）。
+配准：在不同坐标系中绘制的楼层通过楼梯和电梯（类型为 stairs/elevator 或按此命名的区域）相互对齐：先按名称匹配，否则按类型、大小和位置，以一致性投票决定（一个错误匹配不会移动楼层）；两个锚点一致时也求解旋转。日志给出每个锚点的残差和 RMS。没有锚点的楼层按其轮廓配准，并给出警告。
+拼接：相邻楼层重叠的楼梯/电梯获得一个垂直通道（位于两个竖井内的两节点 way，标注上层楼层和高度）。一个建筑结构区域是每层一个结构区域的父区域，后者又是该层各区域的父区域；标识和名称在整栋建筑内唯一。引用不存在区域的通道会连同其标识一起报告并被舍弃（STRICT：改为停止）。REGISTER（默认开启）：按上述方法将各楼层对齐；关闭：每个楼层保持原位。BUILDING：建筑名称（根结构区域）。VARIANT：写出的 osmAG 变体：与输入相同、semantic（通道按名称引用区域）或 fix-id（通道给出 way 标识）。
+输出：OUTPUT，一个 osmAG 文件（以原子方式写出）；可选的 OUTPUT_AREAS 和 OUTPUT_PASSAGES 图层，带 'level' 字段；FLOOR_COUNT、VERTICAL_PASSAGES、AREA_COUNT 和 PASSAGE_COUNT（写出的数量）、RMS（配准残差，单位米）、DROPPED_PASSAGES（舍弃的通道）和 LEVELS_OUT（各楼层，按顺序）。</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_merge_floors.py" />
       <source>osmAG floor files</source>
-      <translation type="unfinished" />
+      <translation>osmAG 楼层文件</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_merge_floors.py" />
       <source>Areas layer (several floors, 'level' field)</source>
-      <translation type="unfinished" />
+      <translation>区域图层（多个楼层，'level' 字段）</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_merge_floors.py" />
       <source>Passages layer</source>
-      <translation type="unfinished" />
+      <translation>通道图层</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_merge_floors.py" />
       <source>Levels, one per floor file (empty: level tags, else file names)</source>
-      <translation type="unfinished" />
+      <translation>楼层，每个楼层文件一个（留空：level 标签，否则取自文件名）</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_merge_floors.py" />
       <source>Height per level in metres (one value, or one per floor)</source>
-      <translation type="unfinished" />
+      <translation>每层高度，单位米（一个值，或每层一个）</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_merge_floors.py" />
       <source>Building name</source>
-      <translation type="unfinished" />
+      <translation>建筑名称</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_merge_floors.py" />
       <source>Variant</source>
-      <translation type="unfinished" />
+      <translation>变体</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_merge_floors.py" />
       <source>Register the floors on their stairs/lifts (off: keep them where they are)</source>
-      <translation type="unfinished" />
+      <translation>通过楼梯/电梯对齐各楼层（关闭：保持原位）</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_merge_floors.py" />
       <source>Stop on passages whose areas are missing (off: report and leave them out)</source>
-      <translation type="unfinished" />
+      <translation>遇到引用缺失区域的通道时停止（关闭：报告并舍弃）</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_merge_floors.py" />
       <source>Building osmAG file</source>
-      <translation type="unfinished" />
+      <translation>建筑 osmAG 文件</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_merge_floors.py" />
       <source>OpenStreetMap XML (*.osm)</source>
-      <translation type="unfinished" />
+      <translation>OpenStreetMap XML (*.osm)</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_merge_floors.py" />
       <source>Building areas</source>
-      <translation type="unfinished" />
+      <translation>建筑区域</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_merge_floors.py" />
       <source>Building passages</source>
-      <translation type="unfinished" />
+      <translation>建筑通道</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_merge_floors.py" />
       <source>Floors</source>
-      <translation type="unfinished" />
+      <translation>楼层</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_merge_floors.py" />
       <source>Vertical passages</source>
-      <translation type="unfinished" />
+      <translation>垂直通道</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_merge_floors.py" />
       <source>Areas written</source>
-      <translation type="unfinished" />
+      <translation>已写出的区域</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_merge_floors.py" />
       <source>Passages written</source>
-      <translation type="unfinished" />
+      <translation>已写出的通道</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_merge_floors.py" />
       <source>Registration residual RMS (m)</source>
-      <translation type="unfinished" />
+      <translation>配准残差 RMS（米）</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_merge_floors.py" />
       <source>Passages left out</source>
-      <translation type="unfinished" />
+      <translation>舍弃的通道</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_merge_floors.py" />
       <source>Levels</source>
-      <translation type="unfinished" />
+      <translation>楼层</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_merge_floors.py" />
       <source>INPUT: give at least one osmAG floor file (or an AREAS layer)</source>
-      <translation type="unfinished" />
+      <translation>INPUT：请至少给出一个 osmAG 楼层文件（或一个 AREAS 图层）</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_merge_floors.py" />
       <source>HEIGHTS must be numbers (metres), e.g. 3.2 or 4.5,3.2,3.2</source>
-      <translation type="unfinished" />
+      <translation>HEIGHTS 必须是数字（米），如 3.2 或 4.5,3.2,3.2</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_merge_floors.py" />
       <source>floor file '{}' does not exist</source>
-      <translation type="unfinished" />
+      <translation>楼层文件 '{}' 不存在</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_merge_floors.py" />
       <source>AREAS has no CRS (CAD frame): georeference it first (cad2osmag:georeference)</source>
-      <translation type="unfinished" />
+      <translation>AREAS 没有坐标系（CAD 坐标系）：请先进行地理配准（cad2osmag:georeference）</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_merge_floors.py" />
       <source>LEVELS gives {} levels for {} floors; give one per floor, in the order of the inputs</source>
-      <translation type="unfinished" />
+      <translation>LEVELS 给出了 {} 个楼层，而楼层文件有 {} 个；请按输入顺序每层给出一个</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_merge_floors.py" />
@@ -1681,7 +1976,7 @@ Stitching: overlapping stairs/lifts of consecutive levels get a vertical passage
     <message>
       <location filename="../processing_provider/alg_merge_floors.py" />
       <source>level {}: shift ({:.3f}, {:.3f}) m, rotation {:.3f}°, {}</source>
-      <translation type="unfinished" />
+      <translation>楼层 {}：平移 ({:.3f}, {:.3f}) m，旋转 {:.3f}°，{}</translation>
     </message>
   </context>
   <context>
@@ -1689,22 +1984,22 @@ Stitching: overlapping stairs/lifts of consecutive levels get a vertical passage
     <message>
       <location filename="../ui/placement.py" />
       <source>the plan has no structure lines to show</source>
-      <translation type="unfinished" />
+      <translation>平面图没有可显示的结构线</translation>
     </message>
     <message>
       <location filename="../ui/placement.py" />
       <source>Plan placement: {}</source>
-      <translation type="unfinished" />
+      <translation>平面图放置：{}</translation>
     </message>
     <message>
       <location filename="../ui/placement.py" />
       <source>the CAD to osmAG Processing provider is not loaded</source>
-      <translation type="unfinished" />
+      <translation>未加载 CAD 转 osmAG 处理提供程序</translation>
     </message>
     <message>
       <location filename="../ui/placement.py" />
       <source>cannot read the structure of {}</source>
-      <translation type="unfinished" />
+      <translation>无法读取 {} 的结构</translation>
     </message>
   </context>
   <context>
@@ -1737,7 +2032,7 @@ Stitching: overlapping stairs/lifts of consecutive levels get a vertical passage
     <message>
       <location filename="../ui/placement_dock.py" />
       <source>Drag the plan to move it, the round handle to rotate it (Shift: whole degrees), the square handle to scale it.</source>
-      <translation type="unfinished" />
+      <translation>拖动平面图以移动，拖动圆形手柄以旋转（Shift：整度），拖动方形手柄以缩放。</translation>
     </message>
     <message>
       <location filename="../ui/placement_dock.py" />
@@ -1747,7 +2042,7 @@ Stitching: overlapping stairs/lifts of consecutive levels get a vertical passage
     <message>
       <location filename="../ui/placement_dock.py" />
       <source>Click a point of the drawing, then the same point on the basemap; repeat (right click cancels a half pair).</source>
-      <translation type="unfinished" />
+      <translation>先点击图纸上的一个点，再点击底图上的同一点；重复此操作（右键取消未完成的一对）。</translation>
     </message>
     <message>
       <location filename="../ui/placement_dock.py" />
@@ -1772,32 +2067,32 @@ Stitching: overlapping stairs/lifts of consecutive levels get a vertical passage
     <message>
       <location filename="../ui/placement_dock.py" />
       <source>Control points: keep the scale (solve position and rotation only)</source>
-      <translation type="unfinished" />
+      <translation>控制点：保持比例不变（只求解位置和旋转）</translation>
     </message>
     <message>
       <location filename="../ui/placement_dock.py" />
       <source>Drawing x (m)</source>
-      <translation type="unfinished" />
+      <translation>图纸 x（米）</translation>
     </message>
     <message>
       <location filename="../ui/placement_dock.py" />
       <source>Drawing y (m)</source>
-      <translation type="unfinished" />
+      <translation>图纸 y（米）</translation>
     </message>
     <message>
       <location filename="../ui/placement_dock.py" />
       <source>Longitude</source>
-      <translation type="unfinished" />
+      <translation>经度</translation>
     </message>
     <message>
       <location filename="../ui/placement_dock.py" />
       <source>Latitude</source>
-      <translation type="unfinished" />
+      <translation>纬度</translation>
     </message>
     <message>
       <location filename="../ui/placement_dock.py" />
       <source>Residual (m)</source>
-      <translation type="unfinished" />
+      <translation>残差（米）</translation>
     </message>
     <message>
       <location filename="../ui/placement_dock.py" />
@@ -1817,27 +2112,27 @@ Stitching: overlapping stairs/lifts of consecutive levels get a vertical passage
     <message>
       <location filename="../ui/placement_dock.py" />
       <source>Floor plan</source>
-      <translation type="unfinished" />
+      <translation>平面图</translation>
     </message>
     <message>
       <location filename="../ui/placement_dock.py" />
       <source>CAD drawings (*.dxf *.dwg *.DXF *.DWG)</source>
-      <translation type="unfinished" />
+      <translation>CAD 图纸 (*.dxf *.dwg *.DXF *.DWG)</translation>
     </message>
     <message>
       <location filename="../ui/placement_dock.py" />
       <source>Cannot load {}: {}</source>
-      <translation type="unfinished" />
+      <translation>无法加载 {}：{}</translation>
     </message>
     <message>
       <location filename="../ui/placement_dock.py" />
       <source>{}: {} lines, {:.1f} × {:.1f} m</source>
-      <translation type="unfinished" />
+      <translation>{}：{} 条线，{:.1f} × {:.1f} m</translation>
     </message>
     <message>
       <location filename="../ui/placement_dock.py" />
       <source>Cannot fit: {}</source>
-      <translation type="unfinished" />
+      <translation>无法拟合：{}</translation>
     </message>
     <message>
       <location filename="../ui/placement_dock.py" />
@@ -1866,10 +2161,18 @@ Stitching: overlapping stairs/lifts of consecutive levels get a vertical passage
       <location filename="../processing_provider/alg_rasterize.py" />
       <source>Turns structure lines (the WALLS output of 'Extract structure from DXF/DWG', or any line/polygon layer in metres) into a single-band occupancy GeoTIFF: 0 = free, 255 = occupied (the inverse of a ROS map_server image, where black is occupied). Hairlines are drawn 0.15 m wide, wide polylines with their width, filled outlines (solid hatches) filled.
 The extent is the PERCENTILES (low, high) of all vertices grown to the entities that reach into them, plus PADDING (a fraction of the building size), so stray entities far away do not blow up the raster. The origin is snapped to a multiple of RESOLUTION and the geotransform maps pixels back to the drawing frame exactly.
-Repair: a closing with a KERNEL x KERNEL square bridges gaps up to about 0.2 m, then an opening removes isolated specks (components that do not survive the opening and are small).
+Repair: a closing with a KERNEL x KERNEL square bridges gaps up to about 0.2 m, then an opening removes isolated specks (components that do not survive the opening and are small). STROKE: the width in metres hairlines are drawn with (0.15 m).
 Multi-floor sets: give the structure layers of all floors as FLOOR_LAYERS (and/or a COMMON_EXTENT in the first floor's frame); every floor rasterized with the same values gets the same grid, pixel for pixel. Floors drawn with different origins (their extents do not overlap) are registered by cross-correlation (ALIGN_FLOORS); each raster's geotransform still maps its pixels onto its own drawing frame, so the origins differ by the floor offset but the pixels line up.
-A raster above MAX_MPX megapixels stops with an error that suggests a resolution.</source>
-      <translation type="unfinished" />
+A raster above MAX_MPX megapixels stops with an error that suggests a resolution.
+STAIRS_AS_OBSTACLES: draw stair and lift symbols as walls (off by default: stairs and lifts stay free space, so they become areas). DOORS (optional): doorway lines (jamb to jamb, the DOORS output of 'Extract structure') kept open even where a door layer is drawn.
+Outputs: OCCUPANCY, the GeoTIFF (in the drawing frame, metres); WIDTH and HEIGHT in pixels; OCCUPIED_SHARE, the share of occupied pixels (0-1).</source>
+      <translation>将结构线（“从 DXF/DWG 提取建筑结构”的 WALLS 输出，或任何以米为单位的线/面图层）转换为单波段占用 GeoTIFF：0 = 空闲，255 = 占用（与 ROS map_server 图像相反，后者黑色为占用）。细线按 0.15 m 宽绘制，宽多段线按其宽度绘制，填充轮廓（实体填充）按填充绘制。
+范围为所有顶点的 PERCENTILES（下限、上限），扩展到伸入其中的实体，再加上 PADDING（建筑尺寸的比例），使远处零散的实体不会把栅格撑大。原点对齐到 RESOLUTION 的整数倍，地理变换将像素精确映射回图纸坐标系。
+修复：用 KERNEL x KERNEL 的正方形做闭运算，弥合约 0.2 m 以内的缝隙，然后做开运算去除孤立斑点（开运算后不复存在且较小的连通块）。STROKE：绘制细线所用的宽度，单位米（0.15 m）。
+多楼层组：将所有楼层的结构图层作为 FLOOR_LAYERS 给出（和/或在第一层坐标系中给出 COMMON_EXTENT）；以相同参数栅格化的每个楼层都得到逐像素相同的栅格。原点不同的楼层（范围不重叠）通过互相关配准（ALIGN_FLOORS）；每个栅格的地理变换仍将其像素映射到各自的图纸坐标系，因此原点相差楼层偏移量，但像素对齐。
+超过 MAX_MPX 百万像素的栅格会以错误停止，错误信息会建议一个分辨率。
+STAIRS_AS_OBSTACLES：将楼梯和电梯符号绘制为墙（默认关闭：楼梯和电梯保持为空闲空间，从而成为区域）。DOORS（可选）：门洞线（门垛到门垛，“提取建筑结构”的 DOORS 输出），即使绘有门图层也保持开放。
+输出：OCCUPANCY，GeoTIFF（位于图纸坐标系，单位米）；WIDTH 和 HEIGHT，单位像素；OCCUPIED_SHARE，占用像素的比例（0-1）。</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_rasterize.py" />
@@ -1884,47 +2187,47 @@ A raster above MAX_MPX megapixels stops with an error that suggests a resolution
     <message>
       <location filename="../processing_provider/alg_rasterize.py" />
       <source>Padding (fraction of the building size)</source>
-      <translation type="unfinished" />
+      <translation>外扩边距（建筑尺寸的比例）</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_rasterize.py" />
       <source>Vertex percentiles for the extent (low, high)</source>
-      <translation type="unfinished" />
+      <translation>用于确定范围的顶点百分位数（下限, 上限）</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_rasterize.py" />
       <source>Repair kernel (pixels, 0 = no repair)</source>
-      <translation type="unfinished" />
+      <translation>修复核（像素，0 = 不修复）</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_rasterize.py" />
       <source>Width of hairlines (m)</source>
-      <translation type="unfinished" />
+      <translation>细线宽度（米）</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_rasterize.py" />
       <source>Pixel budget (megapixels)</source>
-      <translation type="unfinished" />
+      <translation>像素预算（百万像素）</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_rasterize.py" />
       <source>Common extent for multi-floor sets (optional)</source>
-      <translation type="unfinished" />
+      <translation>多楼层组的公共范围（可选）</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_rasterize.py" />
       <source>Structure layers of all floors: rasterize on their common extent (optional)</source>
-      <translation type="unfinished" />
+      <translation>所有楼层的结构图层：在其公共范围上栅格化（可选）</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_rasterize.py" />
       <source>Register the floors (translation) before building the common grid</source>
-      <translation type="unfinished" />
+      <translation>在建立公共栅格之前配准各楼层（平移）</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_rasterize.py" />
       <source>automatic (only when the floors do not overlap)</source>
-      <translation type="unfinished" />
+      <translation>自动（仅当各楼层不重叠时）</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_rasterize.py" />
@@ -1939,12 +2242,12 @@ A raster above MAX_MPX megapixels stops with an error that suggests a resolution
     <message>
       <location filename="../processing_provider/alg_rasterize.py" />
       <source>Draw stair and lift symbols as obstacles</source>
-      <translation type="unfinished" />
+      <translation>将楼梯和电梯符号绘制为障碍物</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_rasterize.py" />
       <source>Doorways (jamb-to-jamb lines) kept open (optional)</source>
-      <translation type="unfinished" />
+      <translation>保持开放的门洞（门垛到门垛的线，可选）</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_rasterize.py" />
@@ -1954,47 +2257,47 @@ A raster above MAX_MPX megapixels stops with an error that suggests a resolution
     <message>
       <location filename="../processing_provider/alg_rasterize.py" />
       <source>Raster width (pixels)</source>
-      <translation type="unfinished" />
+      <translation>栅格宽度（像素）</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_rasterize.py" />
       <source>Raster height (pixels)</source>
-      <translation type="unfinished" />
+      <translation>栅格高度（像素）</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_rasterize.py" />
       <source>Share of occupied pixels</source>
-      <translation type="unfinished" />
+      <translation>占用像素比例</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_rasterize.py" />
       <source>The structure layer (WALLS) could not be loaded.</source>
-      <translation type="unfinished" />
+      <translation>无法加载结构图层（WALLS）。</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_rasterize.py" />
       <source>PERCENTILES must be two numbers such as '0.5, 99.5', got '{}'</source>
-      <translation type="unfinished" />
+      <translation>PERCENTILES 必须是两个数字，如 '0.5, 99.5'，实际为 '{}'</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_rasterize.py" />
       <source>The structure layer is in a geographic CRS ({}); rasterize needs metres: use the WALLS output of 'Extract structure from DXF/DWG' or reproject to a projected CRS first.</source>
-      <translation type="unfinished" />
+      <translation>结构图层采用地理坐标系（{}）；栅格化需要以米为单位：请使用“从 DXF/DWG 提取建筑结构”的 WALLS 输出，或先重投影到投影坐标系。</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_rasterize.py" />
       <source>This floor is offset by ({:.3f}, {:.3f}) m from the first floor layer</source>
-      <translation type="unfinished" />
+      <translation>该楼层相对于第一层图层偏移 ({:.3f}, {:.3f}) m</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_rasterize.py" />
       <source>Cannot write the raster '{}': {}</source>
-      <translation type="unfinished" />
+      <translation>无法写出栅格 '{}'：{}</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_rasterize.py" />
       <source>{} x {} px at {} m/px, origin ({:.3f}, {:.3f}), {:.1%} occupied</source>
-      <translation type="unfinished" />
+      <translation>{} x {} px，{} m/px，原点 ({:.3f}, {:.3f})，占用 {:.1%}</translation>
     </message>
   </context>
   <context>
@@ -2011,8 +2314,12 @@ A raster above MAX_MPX megapixels stops with an error that suggests a resolution
     </message>
     <message>
       <location filename="../processing_provider/alg_refine.py" />
-      <source>Makes the segmented areas light and clean while adjacent areas keep identical vertices along their shared borders. Every border between two junctions is simplified once with Douglas-Peucker (tolerance EPSILON_PX x RESOLUTION, the reported physical bound), spikes (angle below SPIKE_ANGLE, protrusion below SPIKE_LENGTH) are removed iteratively, and passage end points are locked, so each passage stays a segment whose two ends are vertices of both areas it joins. Areas smaller than MIN_AREA are merged into the neighbour they share the longest border with (stairs and elevators are kept); isolated ones are dropped. Work in metres: run it on the CAD frame (before georeferencing) or on a projected CRS.</source>
-      <translation type="unfinished" />
+      <source>Makes the segmented areas light and clean while adjacent areas keep identical vertices along their shared borders. Every border between two junctions is simplified once with Douglas-Peucker (tolerance EPSILON_PX x RESOLUTION, the reported physical bound), spikes (angle below SPIKE_ANGLE, protrusion below SPIKE_LENGTH) are removed iteratively, and passage end points are locked, so each passage stays a segment whose two ends are vertices of both areas it joins. Areas smaller than MIN_AREA are merged into the neighbour they share the longest border with (stairs and elevators are kept); isolated ones are dropped. Work in metres: run it on the CAD frame (before georeferencing) or on a projected CRS.
+AREAS and PASSAGES: the outputs of 'Segment' (PASSAGES optional). RESOLUTION: the raster resolution the areas were traced at, in metres per pixel. EPSILON_PX in pixels, SPIKE_ANGLE in degrees, SPIKE_LENGTH in metres, MIN_AREA in m².
+Outputs: OUTPUT_AREAS and OUTPUT_PASSAGES, the refined layers; VERTICES_BEFORE, VERTICES_AFTER and VERTEX_REDUCTION (%); MAX_DEVIATION, the largest distance from the unsimplified areas (m); EPSILON_M, the tolerance in metres; AREA_COUNT and PASSAGE_COUNT written; MERGED and DROPPED small areas; COMPONENTS, the connected parts of the area graph, and LARGEST_COMPONENT_SHARE, the share of the area in the largest one.</source>
+      <translation>使分割得到的区域轻量、整洁，同时相邻区域沿共享边界保持相同的顶点。两个交汇点之间的每条边界只用 Douglas-Peucker 简化一次（容差 EPSILON_PX x RESOLUTION，即报告的物理误差上限），反复去除尖刺（角度小于 SPIKE_ANGLE、突出小于 SPIKE_LENGTH），通道端点固定不动，因此每个通道仍是一条线段，其两端都是所连接两个区域的顶点。小于 MIN_AREA 的区域并入与其共享边界最长的相邻区域（楼梯和电梯保留）；孤立的小区域被舍弃。请以米为单位工作：在 CAD 坐标系中运行（地理配准之前），或在投影坐标系中运行。
+AREAS 和 PASSAGES：“分割”的输出（PASSAGES 可选）。RESOLUTION：描绘区域时所用的栅格分辨率，单位米/像素。EPSILON_PX 单位为像素，SPIKE_ANGLE 单位为度，SPIKE_LENGTH 单位为米，MIN_AREA 单位为 m²。
+输出：OUTPUT_AREAS 和 OUTPUT_PASSAGES，优化后的图层；VERTICES_BEFORE、VERTICES_AFTER 和 VERTEX_REDUCTION（%）；MAX_DEVIATION，与未简化区域的最大距离（米）；EPSILON_M，以米为单位的容差；写出的 AREA_COUNT 和 PASSAGE_COUNT；MERGED 和 DROPPED，合并和舍弃的小区域；COMPONENTS，区域图的连通部分数，以及 LARGEST_COMPONENT_SHARE，最大连通部分所占的面积比例。</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_refine.py" />
@@ -2027,22 +2334,22 @@ A raster above MAX_MPX megapixels stops with an error that suggests a resolution
     <message>
       <location filename="../processing_provider/alg_refine.py" />
       <source>Raster resolution r the areas were traced at (m/px)</source>
-      <translation type="unfinished" />
+      <translation>描绘区域时的栅格分辨率 r（米/像素）</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_refine.py" />
       <source>Douglas-Peucker tolerance ε (pixels)</source>
-      <translation type="unfinished" />
+      <translation>Douglas-Peucker 容差 ε（像素）</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_refine.py" />
       <source>Spike angle below (degrees)</source>
-      <translation type="unfinished" />
+      <translation>尖刺角度小于（度）</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_refine.py" />
       <source>Spike protrusion below (m)</source>
-      <translation type="unfinished" />
+      <translation>尖刺突出小于（米）</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_refine.py" />
@@ -2052,77 +2359,77 @@ A raster above MAX_MPX megapixels stops with an error that suggests a resolution
     <message>
       <location filename="../processing_provider/alg_refine.py" />
       <source>Refined areas</source>
-      <translation type="unfinished" />
+      <translation>优化后的区域</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_refine.py" />
       <source>Refined passages</source>
-      <translation type="unfinished" />
+      <translation>优化后的通道</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_refine.py" />
       <source>Vertices before</source>
-      <translation type="unfinished" />
+      <translation>简化前顶点数</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_refine.py" />
       <source>Vertices after</source>
-      <translation type="unfinished" />
+      <translation>简化后顶点数</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_refine.py" />
       <source>Vertex reduction (%)</source>
-      <translation type="unfinished" />
+      <translation>顶点减少（%）</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_refine.py" />
       <source>Maximum deviation from the unsimplified areas (m)</source>
-      <translation type="unfinished" />
+      <translation>与未简化区域的最大偏差（米）</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_refine.py" />
       <source>Tolerance ε·r (m)</source>
-      <translation type="unfinished" />
+      <translation>容差 ε·r（米）</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_refine.py" />
       <source>Areas written</source>
-      <translation type="unfinished" />
+      <translation>已写出的区域</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_refine.py" />
       <source>Passages written</source>
-      <translation type="unfinished" />
+      <translation>已写出的通道</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_refine.py" />
       <source>Small areas merged</source>
-      <translation type="unfinished" />
+      <translation>合并的小区域</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_refine.py" />
       <source>Isolated small areas dropped</source>
-      <translation type="unfinished" />
+      <translation>舍弃的孤立小区域</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_refine.py" />
       <source>Connected components of the area graph</source>
-      <translation type="unfinished" />
+      <translation>区域图的连通分量</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_refine.py" />
       <source>Share of the area in the largest component</source>
-      <translation type="unfinished" />
+      <translation>最大连通分量的面积比例</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_refine.py" />
       <source>AREAS: the input layer cannot be opened</source>
-      <translation type="unfinished" />
+      <translation>AREAS：无法打开输入图层</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_refine.py" />
       <source>AREAS is in a geographic CRS ({}); refinement works in metres: run it on the CAD frame (before georeferencing) or reproject to a projected CRS first</source>
-      <translation type="unfinished" />
+      <translation>AREAS 采用地理坐标系（{}）；优化以米为单位进行：请在 CAD 坐标系中运行（地理配准之前），或先重投影到投影坐标系</translation>
     </message>
   </context>
   <context>
@@ -2139,138 +2446,155 @@ A raster above MAX_MPX megapixels stops with an error that suggests a resolution
     </message>
     <message>
       <location filename="../processing_provider/alg_route.py" />
-      <source>Shortest route for a round robot of radius ROBOT_RADIUS over an osmAG map: an osmAG file (ours or any other tool's, semantic or fix-id) or AREAS/PASSAGES layers (e.g. from loadosmag or refine). START and END are points picked on the canvas (any CRS) with their level (START_LEVEL/END_LEVEL, needed when floors overlap), or area names (START_NAME/END_NAME). A point up to 1 m outside the robot's free space is moved into it; farther away is an error. Passages narrower than twice the radius are closed; inside every area the route is the shortest collision-free path around its walls. Vertical passages (stairs, lifts) cost VERTICAL_COST metres per level; AVOID leaves out stairs (lifts only) or lifts. The result is a 3-D line (z = level x height) with its length, cost, levels per vertex and the areas and passages crossed. When no route exists the message names the separate parts of the map the start and the goal lie in, and the passages too narrow for the robot.</source>
-      <translation type="unfinished" />
+      <source>Shortest route for a round robot of radius ROBOT_RADIUS (metres) over an osmAG map: INPUT, an osmAG file (ours or any other tool's, semantic or fix-id) or AREAS/PASSAGES layers (e.g. from loadosmag or refine). START and END are points picked on the canvas (any CRS) with their level (START_LEVEL/END_LEVEL, needed when floors overlap), or area names (START_NAME/END_NAME). A point up to 1 m outside the robot's free space is moved into it; farther away is an error. Passages narrower than twice the radius are closed; inside every area the route is the shortest collision-free path around its walls. Vertical passages (stairs, lifts) cost VERTICAL_COST metres per level; AVOID leaves out stairs (lifts only) or lifts. The result is a 3-D line (z = level x height) with its length, cost, levels per vertex and the areas and passages crossed. When no route exists the message names the separate parts of the map the start and the goal lie in, and the passages too narrow for the robot.
+Outputs: OUTPUT, the route line; LENGTH (m) and COST (length + vertical cost, m); LEVEL_CHANGES; START_SNAP and END_SNAP, how far the start and end were moved (m); QUERY_MS, the search time in milliseconds; AREAS_CROSSED, PASSAGES_CROSSED and LEVELS (the level of every vertex).</source>
+      <translation>在 osmAG 地图上为半径 ROBOT_RADIUS（米）的圆形机器人规划最短路线：INPUT，osmAG 文件（本插件或任何其他工具写出，semantic 或 fix-id），或 AREAS/PASSAGES 图层（如来自 loadosmag 或 refine）。START 和 END 是在地图画布上拾取的点（任意坐标系）及其楼层（START_LEVEL/END_LEVEL，楼层重叠时需要），或区域名称（START_NAME/END_NAME）。位于机器人可通行空间之外 1 m 以内的点会被移入其中；更远则报错。窄于两倍半径的通道被关闭；在每个区域内，路线是绕开墙体的最短无碰撞路径。垂直通道（楼梯、电梯）每层的代价为 VERTICAL_COST 米；AVOID 排除楼梯（只用电梯）或电梯。结果是一条三维线（z = 楼层 x 高度），附带长度、代价、每个顶点的楼层以及经过的区域和通道。没有路线时，消息会指出起点和终点所在的地图互不连通的部分，以及对机器人来说过窄的通道。
+输出：OUTPUT，路线；LENGTH（米）和 COST（长度 + 垂直代价，米）；LEVEL_CHANGES；START_SNAP 和 END_SNAP，起点和终点被移动的距离（米）；QUERY_MS，搜索时间，单位毫秒；AREAS_CROSSED、PASSAGES_CROSSED 和 LEVELS（每个顶点的楼层）。</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_route.py" />
       <source>osmAG file (or give AREAS and PASSAGES)</source>
-      <translation type="unfinished" />
+      <translation>osmAG 文件（或给出 AREAS 和 PASSAGES）</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_route.py" />
       <source>Areas layer (instead of the file)</source>
-      <translation type="unfinished" />
+      <translation>区域图层（代替文件）</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_route.py" />
       <source>Passages layer</source>
-      <translation type="unfinished" />
+      <translation>通道图层</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_route.py" />
       <source>Start point</source>
-      <translation type="unfinished" />
+      <translation>起点</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_route.py" />
       <source>Start level</source>
-      <translation type="unfinished" />
+      <translation>起点楼层</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_route.py" />
       <source>Start area name (instead of a point)</source>
-      <translation type="unfinished" />
+      <translation>起点区域名称（代替点）</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_route.py" />
       <source>End point</source>
-      <translation type="unfinished" />
+      <translation>终点</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_route.py" />
       <source>End level</source>
-      <translation type="unfinished" />
+      <translation>终点楼层</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_route.py" />
       <source>End area name (instead of a point)</source>
-      <translation type="unfinished" />
+      <translation>终点区域名称（代替点）</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_route.py" />
       <source>Robot radius (m)</source>
-      <translation type="unfinished" />
+      <translation>机器人半径（米）</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_route.py" />
       <source>Avoid</source>
-      <translation type="unfinished" />
+      <translation>避开</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_route.py" />
       <source>Cost of one level of stairs or lift (m)</source>
-      <translation type="unfinished" />
+      <translation>楼梯或电梯每层的代价（米）</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_route.py" />
       <source>Route</source>
-      <translation type="unfinished" />
+      <translation>路线</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_route.py" />
       <source>Route length (m)</source>
-      <translation type="unfinished" />
+      <translation>路线长度（米）</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_route.py" />
       <source>Route cost (length + vertical cost)</source>
-      <translation type="unfinished" />
+      <translation>路线代价（长度 + 垂直代价）</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_route.py" />
       <source>Level changes</source>
-      <translation type="unfinished" />
+      <translation>楼层变换次数</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_route.py" />
       <source>Start moved by (m)</source>
-      <translation type="unfinished" />
+      <translation>起点移动距离（米）</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_route.py" />
       <source>End moved by (m)</source>
-      <translation type="unfinished" />
+      <translation>终点移动距离（米）</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_route.py" />
       <source>Search time (ms)</source>
-      <translation type="unfinished" />
+      <translation>搜索时间（毫秒）</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_route.py" />
       <source>Areas crossed</source>
-      <translation type="unfinished" />
+      <translation>经过的区域</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_route.py" />
       <source>Passages crossed</source>
-      <translation type="unfinished" />
+      <translation>经过的通道</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_route.py" />
       <source>Level of every vertex</source>
-      <translation type="unfinished" />
+      <translation>每个顶点的楼层</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_route.py" />
       <source>give an osmAG file (INPUT) or an AREAS layer (with PASSAGES)</source>
-      <translation type="unfinished" />
+      <translation>请给出 osmAG 文件（INPUT）或 AREAS 图层（及 PASSAGES）</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_route.py" />
       <source>PASSAGES is in {} but AREAS is in {}; reproject it first</source>
-      <translation type="unfinished" />
+      <translation>PASSAGES 位于 {}，但 AREAS 位于 {}；请先重投影</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_route.py" />
       <source>{}: give a point or an area name ({})</source>
-      <translation type="unfinished" />
+      <translation>{}：请给出一个点或一个区域名称（{}）</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_route.py" />
       <source>route: {:.2f} m ({} level changes) through {}</source>
-      <translation type="unfinished" />
+      <translation>路线：{:.2f} m（{} 次楼层变换），经过 {}</translation>
+    </message>
+    <message>
+      <location filename="../processing_provider/alg_route.py" />
+      <source>nothing</source>
+      <translation>无</translation>
+    </message>
+    <message>
+      <location filename="../processing_provider/alg_route.py" />
+      <source>stairs (wheelchairs, wheeled robots: lifts only)</source>
+      <translation>楼梯（轮椅、轮式机器人：只用电梯）</translation>
+    </message>
+    <message>
+      <location filename="../processing_provider/alg_route.py" />
+      <source>lifts (evacuation: stairs only)</source>
+      <translation>电梯（疏散：只用楼梯）</translation>
     </message>
   </context>
   <context>
@@ -2290,25 +2614,30 @@ A raster above MAX_MPX megapixels stops with an error that suggests a resolution
       <source>Writes a realistic multi-floor office building as DXF files (millimetres, NCS layers, walls with real thickness, doors as blocks, glazing, a stair core and a lift, room names as TEXT, MTEXT and ATTRIB, nested blocks on layer 0, furniture and dimensions) together with a ground-truth GeoJSON per floor (rooms, doors, stair/lift anchors, in metres). The same seed always gives byte-identical files. Use it to try the pipeline or to score it.
 FLOORS: number of floors (1-20), one DXF and one ground-truth file each; all floors share the stair core and the lift, so they stack.
 SEED: any whole number; it varies the room layout (0 is the layout the README shows).
-PREFIX: start of the file names: &lt;PREFIX&gt;-F1.dxf, &lt;PREFIX&gt;-F1.gt.geojson, …
+PREFIX: start of the file names: PREFIX-F1.dxf, PREFIX-F1.gt.geojson, …
 OUTPUT_FOLDER: where the files are written (created when missing).
-Outputs: FIRST_FLOOR_DXF (the first floor's DXF) and DXF_FILES (every DXF, ';' separated).</source>
-      <translation type="unfinished" />
+Outputs: FIRST_FLOOR_DXF (the first floor's DXF), DXF_FILES (every DXF, ';' separated), GROUND_TRUTH_FILES (the ground-truth GeoJSON files, ';' separated) and FLOOR_COUNT (floors written).</source>
+      <translation>将一栋逼真的多层办公楼写为 DXF 文件（毫米、NCS 图层、有实际厚度的墙、以块表示的门、玻璃、一个楼梯核心筒和一部电梯、以 TEXT、MTEXT 和 ATTRIB 表示的房间名称、0 图层上的嵌套块、家具和尺寸标注），并为每层写出一个真值 GeoJSON（房间、门、楼梯/电梯锚点，单位米）。相同的种子总是得到逐字节相同的文件。可用它试用或评测处理流程。
+FLOORS：楼层数（1-20），每层一个 DXF 和一个真值文件；所有楼层共用楼梯核心筒和电梯，因此上下对齐。
+SEED：任意整数；改变房间布局（0 为 README 中展示的布局）。
+PREFIX：文件名的开头：PREFIX-F1.dxf、PREFIX-F1.gt.geojson……
+OUTPUT_FOLDER：写出文件的位置（不存在时创建）。
+输出：FIRST_FLOOR_DXF（第一层的 DXF）、DXF_FILES（所有 DXF，以 ';' 分隔）、GROUND_TRUTH_FILES（真值 GeoJSON 文件，以 ';' 分隔）和 FLOOR_COUNT（写出的楼层数）。</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_sample_building.py" />
       <source>Number of floors</source>
-      <translation type="unfinished" />
+      <translation>楼层数</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_sample_building.py" />
       <source>Random seed (layout variations)</source>
-      <translation type="unfinished" />
+      <translation>随机种子（布局变化）</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_sample_building.py" />
       <source>File name prefix</source>
-      <translation type="unfinished" />
+      <translation>文件名前缀</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_sample_building.py" />
@@ -2318,27 +2647,27 @@ Outputs: FIRST_FLOOR_DXF (the first floor's DXF) and DXF_FILES (every DXF, ';' s
     <message>
       <location filename="../processing_provider/alg_sample_building.py" />
       <source>DXF of the first floor</source>
-      <translation type="unfinished" />
+      <translation>第一层的 DXF</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_sample_building.py" />
       <source>All DXF files (semicolon separated)</source>
-      <translation type="unfinished" />
+      <translation>所有 DXF 文件（以分号分隔）</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_sample_building.py" />
       <source>Ground-truth GeoJSON files (semicolon separated)</source>
-      <translation type="unfinished" />
+      <translation>真值 GeoJSON 文件（以分号分隔）</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_sample_building.py" />
       <source>Number of floors written</source>
-      <translation type="unfinished" />
+      <translation>写出的楼层数</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_sample_building.py" />
       <source>Wrote {}</source>
-      <translation type="unfinished" />
+      <translation>已写出 {}</translation>
     </message>
   </context>
   <context>
@@ -2355,18 +2684,20 @@ Outputs: FIRST_FLOOR_DXF (the first floor's DXF) and DXF_FILES (every DXF, ';' s
     </message>
     <message>
       <location filename="../processing_provider/alg_segment.py" />
-      <source>Area Graph segmentation (Hou et al. 2019) with the dynamic alpha of the CAD-to-osmAG method. INPUT is the output of 'Rasterize', or any occupancy grid: a GeoTIFF, a PNG/PGM image with RESOLUTION (m/px), or a ROS map.yaml (its resolution, origin, negate and thresholds are used; unknown cells are never free). Only the free space inside the building envelope is segmented: facade openings narrower than ENVELOPE_GAP are bridged, outside space is never an area; the log reports the interior area. alpha = ceil((min(DOOR_WIDTH, CORRIDOR_WIDTH) + DELTA)^2 / (4 r^2)) px^2 is the probe disk: spaces it sweeps through an opening are one room; door-sized narrowings that are clearly narrower than the space behind them separate rooms (this also finds rooms too narrow for the disk); corridor cells merge where nothing justifies a split; the free space is thinned to its skeleton (generalised Voronoi diagram), dead-end branches shorter than PRUNE are removed, and every skeleton edge (split at the narrowings) starts as one region. Outputs: AREAS (exact pixel-edge polygons: id, type room/corridor, area, perimeter, max clearance), PASSAGES (a segment across every opening between two areas, ends on the walls: from, to, width), LABELS (area ids on the input grid, 0 outside areas) and, when asked for, SKELETON (one line per skeleton edge: id, length, min and max clearance). Space open to the outside is still inside where there is evidence: the plan's footprint (openings up to 3 x ENVELOPE_GAP, closed at the chord between the facade wall ends, where it opens onto the interior through a doorway) and the optional TEXTS (room names, from 'Extract structure': the space holding one is never outside). FOOTPRINT: by default the footprint is used for rasters made by 'Rasterize' (CAD plans), not for images and ROS maps (robot maps, whose free space beside the rooms is where the scan ended). The optional DOORS (jamb-to-jamb lines) are kept open and become passages where the segmentation missed them. Every area has a 'component' field: its connected component in the area graph (0 = the largest); the log lists the others (rooms no passage reaches).</source>
-      <translation type="unfinished" />
+      <source>Area Graph segmentation (Hou et al. 2019) with the dynamic alpha of the CAD-to-osmAG method. INPUT is the output of 'Rasterize', or any occupancy grid: a GeoTIFF, a PNG/PGM image with RESOLUTION (m/px), or a ROS map.yaml (its resolution, origin, negate and thresholds are used; unknown cells are never free). Only the free space inside the building envelope is segmented: facade openings narrower than ENVELOPE_GAP are bridged, outside space is never an area; the log reports the interior area. alpha = ceil((min(DOOR_WIDTH, CORRIDOR_WIDTH) + DELTA)^2 / (4 r^2)) px^2 is the probe disk: spaces it sweeps through an opening are one room; door-sized narrowings that are clearly narrower than the space behind them separate rooms (this also finds rooms too narrow for the disk); corridor cells merge where nothing justifies a split; the free space is thinned to its skeleton (generalised Voronoi diagram), dead-end branches shorter than PRUNE are removed, and every skeleton edge (split at the narrowings) starts as one region. Outputs: AREAS (exact pixel-edge polygons: id, type room/corridor, area, perimeter, max clearance), PASSAGES (a segment across every opening between two areas, ends on the walls: from, to, width), LABELS (area ids on the input grid, 0 outside areas) and, when asked for, SKELETON (one line per skeleton edge: id, length, min and max clearance). Space open to the outside is still inside where there is evidence: the plan's footprint (openings up to 3 x ENVELOPE_GAP, closed at the chord between the facade wall ends, where it opens onto the interior through a doorway) and the optional TEXTS (room names, from 'Extract structure': the space holding one is never outside). FOOTPRINT: by default the footprint is used for rasters made by 'Rasterize' (CAD plans), not for images and ROS maps (robot maps, whose free space beside the rooms is where the scan ended). The optional DOORS (jamb-to-jamb lines) are kept open and become passages where the segmentation missed them. Every area has a 'component' field: its connected component in the area graph (0 = the largest); the log lists the others (rooms no passage reaches). STRUCTURE (optional): the structure lines of the drawing (WALLS of 'Extract structure'); stair and lift symbols in them type their areas stairs/elevator.
+Figures: AREA_COUNT, ROOM_COUNT, CORRIDOR_COUNT, PASSAGE_COUNT; INTERIOR_AREA_M2, the free area inside the building (m²); COMPONENTS and LARGEST_COMPONENT_SHARE (share of the area in the largest component); ALPHA, the probe disk in px²; SECONDS, the segmentation time.</source>
+      <translation>区域图（Area Graph）分割（Hou 等，2019），采用 CAD-to-osmAG 方法的动态 alpha。INPUT 为“栅格化”的输出，或任何占用栅格：GeoTIFF、带 RESOLUTION（米/像素）的 PNG/PGM 图像，或 ROS map.yaml（使用其 resolution、origin、negate 和阈值；未知栅格单元永不视为空闲）。只分割建筑外围以内的空闲空间：窄于 ENVELOPE_GAP 的立面开口会被弥合，室外空间永远不是区域；日志报告室内面积。alpha = ceil((min(DOOR_WIDTH, CORRIDOR_WIDTH) + DELTA)^2 / (4 r^2)) px^2 为探测圆盘：它穿过开口扫过的空间属于同一房间；明显窄于其后空间的门宽收窄处将房间分开（这也能找到对圆盘来说过窄的房间）；在没有理由拆分的地方合并走廊单元；空闲空间被细化为骨架（广义 Voronoi 图），删除短于 PRUNE 的末端分支，每条骨架边（在收窄处断开）起初为一个区域。输出：AREAS（沿像素边的精确多边形：id、type room/corridor、面积、周长、最大净空），PASSAGES（横跨两个区域之间每个开口的线段，两端在墙上：from、to、width），LABELS（输入栅格上的区域标识，区域外为 0），以及按需输出的 SKELETON（每条骨架边一条线：id、长度、最小和最大净空）。对室外开放的空间在有证据时仍视为室内：平面图的建筑轮廓（开口最大为 3 x ENVELOPE_GAP，在立面墙端点之间的弦处封闭，该处经门洞通向室内）以及可选的 TEXTS（房间名称，来自“提取建筑结构”：包含房间名称的空间永远不在室外）。FOOTPRINT：默认对“栅格化”生成的栅格（CAD 平面图）使用建筑轮廓，对图像和 ROS 地图（机器人地图，房间旁的空闲空间是扫描结束的地方）不使用。可选的 DOORS（门垛到门垛的线）保持开放，并在分割遗漏的地方成为通道。每个区域都有 'component' 字段：其在区域图中的连通分量（0 = 最大的）；日志列出其他分量（没有通道可达的房间）。STRUCTURE（可选）：图纸的结构线（“提取建筑结构”的 WALLS）；其中的楼梯和电梯符号将所在区域的类型设为 stairs/elevator。
+统计值：AREA_COUNT、ROOM_COUNT、CORRIDOR_COUNT、PASSAGE_COUNT；INTERIOR_AREA_M2，建筑内的空闲面积（m²）；COMPONENTS 和 LARGEST_COMPONENT_SHARE（最大连通分量所占的面积比例）；ALPHA，探测圆盘，单位 px²；SECONDS，分割用时。</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_segment.py" />
       <source>Occupancy grid (GeoTIFF, PNG/PGM, or ROS map.yaml)</source>
-      <translation type="unfinished" />
+      <translation>占用栅格（GeoTIFF、PNG/PGM 或 ROS map.yaml）</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_segment.py" />
       <source>Resolution of a plain image (m/px; 0 = from the raster)</source>
-      <translation type="unfinished" />
+      <translation>普通图像的分辨率（米/像素；0 = 取自栅格）</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_segment.py" />
@@ -2381,32 +2712,32 @@ Outputs: FIRST_FLOOR_DXF (the first floor's DXF) and DXF_FILES (every DXF, ';' s
     <message>
       <location filename="../processing_provider/alg_segment.py" />
       <source>Delta δ added to the width (m)</source>
-      <translation type="unfinished" />
+      <translation>宽度附加量 δ（米）</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_segment.py" />
       <source>Prune Voronoi branches shorter than (m)</source>
-      <translation type="unfinished" />
+      <translation>剪除短于此值的 Voronoi 分支（米）</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_segment.py" />
       <source>Bridge facade openings up to (m)</source>
-      <translation type="unfinished" />
+      <translation>弥合不超过此宽度的立面开口（米）</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_segment.py" />
       <source>Structure lines of the drawing (WALLS of 'Extract structure'), to recognise stairs and lifts</source>
-      <translation type="unfinished" />
+      <translation>图纸的结构线（“提取建筑结构”的 WALLS），用于识别楼梯和电梯</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_segment.py" />
       <source>Use the plan's footprint as evidence of inside space</source>
-      <translation type="unfinished" />
+      <translation>将平面图的建筑轮廓作为室内空间的证据</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_segment.py" />
       <source>automatic (CAD rasters from 'Rasterize': yes; images and ROS maps: no)</source>
-      <translation type="unfinished" />
+      <translation>自动（来自“栅格化”的 CAD 栅格：是；图像和 ROS 地图：否）</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_segment.py" />
@@ -2421,12 +2752,12 @@ Outputs: FIRST_FLOOR_DXF (the first floor's DXF) and DXF_FILES (every DXF, ';' s
     <message>
       <location filename="../processing_provider/alg_segment.py" />
       <source>Room names (TEXTS of 'Extract structure'): evidence of inside space</source>
-      <translation type="unfinished" />
+      <translation>房间名称（“提取建筑结构”的 TEXTS）：室内空间的证据</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_segment.py" />
       <source>Doorways (jamb-to-jamb lines) kept open and made passages</source>
-      <translation type="unfinished" />
+      <translation>保持开放并作为通道的门洞（门垛到门垛的线）</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_segment.py" />
@@ -2441,122 +2772,122 @@ Outputs: FIRST_FLOOR_DXF (the first floor's DXF) and DXF_FILES (every DXF, ';' s
     <message>
       <location filename="../processing_provider/alg_segment.py" />
       <source>Area id raster</source>
-      <translation type="unfinished" />
+      <translation>区域标识栅格</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_segment.py" />
       <source>Skeleton (Voronoi graph edges)</source>
-      <translation type="unfinished" />
+      <translation>骨架（Voronoi 图的边）</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_segment.py" />
       <source>Rooms</source>
-      <translation type="unfinished" />
+      <translation>房间</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_segment.py" />
       <source>Corridors</source>
-      <translation type="unfinished" />
+      <translation>走廊</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_segment.py" />
       <source>Free area inside the building (m²)</source>
-      <translation type="unfinished" />
+      <translation>建筑内的空闲面积（m²）</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_segment.py" />
       <source>Connected components of the area graph</source>
-      <translation type="unfinished" />
+      <translation>区域图的连通分量</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_segment.py" />
       <source>Share of the area in the largest component</source>
-      <translation type="unfinished" />
+      <translation>最大连通分量的面积比例</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_segment.py" />
       <source>alpha (px²)</source>
-      <translation type="unfinished" />
+      <translation>alpha（px²）</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_segment.py" />
       <source>Segmentation time (s)</source>
-      <translation type="unfinished" />
+      <translation>分割用时（秒）</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_segment.py" />
       <source>INPUT: '{}' does not exist</source>
-      <translation type="unfinished" />
+      <translation>INPUT：'{}' 不存在</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_segment.py" />
       <source>INPUT: the raster cannot be opened</source>
-      <translation type="unfinished" />
+      <translation>INPUT：无法打开栅格</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_segment.py" />
       <source>INPUT: '{}' is not a raster file on disk</source>
-      <translation type="unfinished" />
+      <translation>INPUT：'{}' 不是磁盘上的栅格文件</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_segment.py" />
       <source>RESOLUTION ignored: the GeoTIFF carries {} m/px</source>
-      <translation type="unfinished" />
+      <translation>已忽略 RESOLUTION：GeoTIFF 自带 {} m/px</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_segment.py" />
       <source>Grid {} x {} px at {} m/px</source>
-      <translation type="unfinished" />
+      <translation>栅格 {} x {} px，{} m/px</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_segment.py" />
       <source>{} room-name points used as evidence of inside space</source>
-      <translation type="unfinished" />
+      <translation>{} 个房间名称点被用作室内空间的证据</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_segment.py" />
       <source>Footprint evidence: {}</source>
-      <translation type="unfinished" />
+      <translation>建筑轮廓证据：{}</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_segment.py" />
       <source>{} stair/lift areas recognised from their symbols</source>
-      <translation type="unfinished" />
+      <translation>根据符号识别出 {} 个楼梯/电梯区域</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_segment.py" />
       <source>Interior free area: {:.1f} m² (of {:.1f} m² free in the raster)</source>
-      <translation type="unfinished" />
+      <translation>室内空闲面积：{:.1f} m²（栅格中空闲面积共 {:.1f} m²）</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_segment.py" />
       <source>Timing (s): </source>
-      <translation type="unfinished" />
+      <translation>耗时（秒）：</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_segment.py" />
       <source>Skeleton: {} nodes, {} edges, {} branches shorter than PRUNE pruned</source>
-      <translation type="unfinished" />
+      <translation>骨架：{} 个节点，{} 条边，剪除了 {} 条短于 PRUNE 的分支</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_segment.py" />
       <source>cannot write area {}</source>
-      <translation type="unfinished" />
+      <translation>无法写出区域 {}</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_segment.py" />
       <source>cannot write passage {}</source>
-      <translation type="unfinished" />
+      <translation>无法写出通道 {}</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_segment.py" />
       <source>cannot write skeleton edge {}</source>
-      <translation type="unfinished" />
+      <translation>无法写出骨架边 {}</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_segment.py" />
       <source>{} areas ({} rooms, {} corridors), {} passages</source>
-      <translation type="unfinished" />
+      <translation>{} 个区域（{} 个房间，{} 条走廊），{} 个通道</translation>
     </message>
   </context>
 </TS>

@@ -103,13 +103,21 @@ class AssignNamesAlgorithm(Cad2OsmagAlgorithm):
             "number join; an area holding two different room names is split at the narrowing between them "
             "(SPLIT, watershed of its clearance map; a corridor between them becomes its own area), else it "
             "keeps the best-placed name and lists the others in label_conflict. Duplicate names get a suffix "
-            "(the room number, else (1), (2)...); areas without text get the stable id <level>-<area id>.\n"
+            "(the room number, else (1), (2)...); areas without text get the stable id level-area id (e.g. 2-17).\n"
             "Types: keywords (English, Italian, Spanish, German, French, Chinese...) and codes (*-ST-* stairs, "
             "*-P1/*-OP-*/*-FG-* lifts) set type stairs/elevator/corridor/room and the Simple Indoor Tagging "
             "fields indoor and room; long, narrow unnamed areas with three or more passages become corridors.\n"
             "Edit name, ref or type in the output layer to fix them: 'Export osmAG' keeps the edits and the "
             "passages follow renamed areas. TEXT_REPORT (optional) lists every label with its role, reason, "
-            "area and score.")
+            "area and score.\n"
+            "PASSAGES (optional): the passages of the areas; split areas get theirs, and corridors are "
+            "recognised by their number of passages. LEVEL: the level used in generated ids (empty: the areas' "
+            "level field, else 1).\n"
+            "Outputs: OUTPUT_AREAS, the named areas (fields name, ref, type, indoor, room, label_conflict); "
+            "OUTPUT_PASSAGES, the passages including those of split areas; counts NAMED (areas named from the "
+            "drawing), NUMBERED (with a room number), AUTO_IDS (with a generated id), CONFLICTS (holding "
+            "several names), SPLITS (areas split), IGNORED (texts ignored) and OUTSIDE (room texts outside "
+            "every area).")
 
     AREAS = "AREAS"
     TEXTS = "TEXTS"

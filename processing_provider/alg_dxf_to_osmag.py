@@ -37,16 +37,33 @@ class DxfToOsmagAlgorithm(Cad2OsmagAlgorithm):
             "structural layers of the drawing are kept (walls, columns, "
             "glazing, stairs), rasterized, segmented into an Area Graph of rooms, corridors and the passages "
             "between them, refined (simplified polygons with shared borders) and written as an osmAG file "
-            "anchored on the Earth. With NAMES (on by default) the drawing's texts name, number and type the areas "
-            "(see 'Assign room names and types from texts'; NAME_RULES adapts the rules). ANCHOR is the position of the drawing origin (pick it on a basemap), "
-            "ROTATION the direction of the drawing's +y axis in degrees clockwise from north. Each step is "
-            "also available as its own algorithm for finer control.")
+            "anchored on the Earth. Each step is also available as its own algorithm for finer control.\n"
+            "INPUT: the floor plan (.dxf or .dwg). LAYER_RULES: a JSON file of layer keywords (empty: the "
+            "built-in rules; see 'List DXF/DWG layers'). UNITS: the unit the drawing is drawn in (auto: read "
+            "from the header and checked for a plausible building size).\n"
+            "RESOLUTION: raster pixel size in metres (0.044 m by default; smaller follows thin walls better "
+            "but is slower). DOOR_WIDTH: the widest door in metres (2.8 m): narrower openings separate rooms. "
+            "CORRIDOR_WIDTH: corridor width in metres (8 m). MIN_AREA: areas smaller than this (m²) merge into "
+            "a neighbour (stairs and lifts are kept). INCLUDE_DOORS: draw door layers as walls (doorways "
+            "closed; off by default, so that doorways stay open).\n"
+            "PLAN / PLAN_EXTENT: which plan of a sheet with several (empty: the main plan; an index of the "
+            "plan list in the log, or xmin,ymin,xmax,ymax in metres, or an extent drawn on the canvas).\n"
+            "NAMES (on by default): the drawing's texts name, number and type the areas "
+            "(see 'Assign room names and types from texts'); NAME_RULES: a JSON file that adapts those rules.\n"
+            "LEVEL: the floor's level (osmAG level tag, e.g. 1, -1). HEIGHT: floor height in metres (3.2 m). "
+            "ANCHOR: where the drawing origin (0, 0) lies on the map (pick it on a basemap; empty: longitude 0, "
+            "latitude 0). ROTATION: the direction of the drawing's +y axis in degrees clockwise from north. "
+            "VARIANT: semantic (passages name their areas) or fix-id (passages give way ids).\n"
+            "Outputs: OUTPUT, the osmAG file (.osm); OUTPUT_AREAS and OUTPUT_PASSAGES, the same areas and "
+            "passages as layers in WGS84 to show on the map; PREVIEW, an optional PNG picture of the areas; "
+            "AREA_COUNT and PASSAGE_COUNT, the numbers written.")
 
     def initAlgorithm(self, config=None):  # noqa: N802
         self.addParameter(QgsProcessingParameterFile("INPUT", self.tr("DXF or DWG floor plan"), fileFilter=CAD_FILTER))
         self.addParameter(QgsProcessingParameterFile("LAYER_RULES", self.tr("Layer rules (JSON, optional)"),
                                                      extension="json", optional=True))
-        self.addParameter(QgsProcessingParameterEnum("UNITS", self.tr("Drawing units"), UNITS, defaultValue=0))
+        self.addParameter(QgsProcessingParameterEnum("UNITS", self.tr("Drawing units"), [self.tr(u) for u in UNITS],
+                                                     defaultValue=0))
         self.addParameter(QgsProcessingParameterNumber("RESOLUTION", self.tr("Raster resolution (m/px)"),
                                                        QgsProcessingParameterNumber.Type.Double, 0.044, False, 0.005, 1.0))
         self.addParameter(QgsProcessingParameterNumber("DOOR_WIDTH", self.tr("Widest door (m)"),

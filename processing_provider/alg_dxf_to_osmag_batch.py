@@ -62,7 +62,7 @@ class DxfToOsmagBatchAlgorithm(Cad2OsmagAlgorithm):
     GROUP_ID = "pipeline"
     HELP = ("Converts every floor plan of FOLDER (files matching PATTERN, e.g. '*.dxf') with the whole "
             "pipeline of 'Convert DXF floor plan to osmAG', several files at once: WORKERS processes "
-            "(0 = one per processor core). Each file writes OUTPUT_FOLDER/<file name>.osm. A file that fails "
+            "(0 = one per processor core). Each file writes OUTPUT_FOLDER/NAME.osm (NAME: the drawing's file name). A file that fails "
             "(not a drawing, no walls, …) is reported with its reason and never stops the others.\n"
             "FIRST_LEVEL: the level of the first file in natural name order (floor-2 before floor-10); each "
             "next file is one level up. HEIGHT: floor height in metres.\n"
@@ -72,7 +72,9 @@ class DxfToOsmagBatchAlgorithm(Cad2OsmagAlgorithm):
             "'Place a floor plan on the map' is used, if any.\n"
             "RESOLUTION (m/px), DOOR_WIDTH and CORRIDOR_WIDTH (m), MIN_AREA (m²): as in the single-file "
             "algorithm. MERGE also writes OUTPUT_FOLDER/building.osm with every converted floor.\n"
-            "REPORT: a CSV with one row per file (file, level, status, areas, passages, seconds, message).")
+            "REPORT: a CSV with one row per file (file, level, status, areas, passages, seconds, message).\n"
+            "Outputs: SUCCEEDED and FAILED, the numbers of floors converted and failed (one bad file never "
+            "stops the others), and OUTPUT_FOLDER.")
 
     def initAlgorithm(self, config=None):  # noqa: N802
         self.addParameter(QgsProcessingParameterFile(

@@ -34,8 +34,8 @@ class EvaluateSegmentationAlgorithm(Cad2OsmagAlgorithm):
             "not rooms, and are ignored (pixels; at 0.05 m/px, 40 px are 0.1 m²).\n"
             "REPORT (optional): a CSV with one row per ground-truth room (colour, pixels, matched area, "
             "recall, precision, IoU).\n"
-            "Outputs: MCC, F1, mean RECALL and PRECISION (0-1), the number of ground-truth rooms, "
-            "predicted areas and rooms matched at IoU >= 0.5.")
+            "Outputs: MCC, F1, mean RECALL and PRECISION (0-1), the number of ground-truth rooms (GT_ROOMS), "
+            "predicted areas (PREDICTED_AREAS) and rooms matched at IoU >= 0.5 (MATCHED).")
 
     LABELS = "LABELS"
     GROUND_TRUTH = "GROUND_TRUTH"

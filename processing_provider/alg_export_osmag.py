@@ -38,7 +38,9 @@ class ExportOsmagAlgorithm(Cad2OsmagAlgorithm):
             "field, else 1. HEIGHT: height per level in metres (height tag).\n"
             "ANCHOR_LON / ANCHOR_LAT in degrees (WGS84), ROTATION in degrees clockwise from north, SCALE in "
             "ground metres per CAD metre: the placement of 'Place a floor plan on the map' gives all four.\n"
-            "OUTPUT: the .osm file to write.")
+            "OUTPUT: the .osm file to write.\n"
+            "Outputs: AREA_COUNT, PASSAGE_COUNT and NODE_COUNT written; SHARED_NODES, the nodes shared by two "
+            "or more areas; HOLES_DROPPED, the holes of areas left out (osmAG areas have no holes).")
 
     AREAS = "AREAS"
     PASSAGES = "PASSAGES"
@@ -66,7 +68,8 @@ class ExportOsmagAlgorithm(Cad2OsmagAlgorithm):
             self.HEIGHT, self.tr("Height per level (m)"), QgsProcessingParameterNumber.Type.Double, 3.2, False, 0.01,
             1000.0))
         self.addParameter(QgsProcessingParameterEnum(
-            self.VARIANT, self.tr("Variant"), ["semantic (names)", "fix-id (way ids)"], defaultValue=0))
+            self.VARIANT, self.tr("Variant"), [self.tr("semantic (names)"), self.tr("fix-id (way ids)")],
+            defaultValue=0))
         self.addParameter(QgsProcessingParameterNumber(
             self.ANCHOR_LON, self.tr("Anchor / root longitude (CAD-frame layers: where the CAD origin lies)"),
             QgsProcessingParameterNumber.Type.Double, None, True, -180.0, 180.0))

@@ -100,7 +100,7 @@ class ExtractStructureAlgorithm(Cad2OsmagAlgorithm):
     DISPLAY_NAME = "Extract structure from DXF/DWG"
     GROUP = "Pipeline"
     GROUP_ID = "pipeline"
-    HELP = ("Reads a DXF floor plan, or a DWG (AutoCAD R13-2018, read directly: no converter needed), "
+    HELP = ("Reads INPUT, a DXF floor plan or a DWG (AutoCAD R13-2018, read directly: no converter needed), "
             "explodes blocks (with scale, rotation, mirror and MINSERT arrays; "
             "entities on layer 0 inside a block take the INSERT's layer), skips frozen and off layers, keeps "
             "the structural layers chosen by the layer rules (walls, columns, windows/glazing, stairs, "
@@ -119,7 +119,10 @@ class ExtractStructureAlgorithm(Cad2OsmagAlgorithm):
             "Outputs, in metres in the drawing's own frame (a local engineering CRS, not georeferenced): "
             "WALLS (lines with fields layer, kind, entity, closed, filled, width; 'Rasterize structure' "
             "rebuilds the geometry from them; block, class), TEXTS (points with text, height, rotation, layer, "
-            "entity, block, tag = ATTRIB tag, id; 'Assign room names and types from texts' reads them) and DOORS (doorway lines with source and width).")
+            "entity, block, tag = ATTRIB tag, id; 'Assign room names and types from texts' reads them) and DOORS (doorway lines with source and width). "
+            "Figures: PLANS (the plans found on the sheet) and PLAN_COUNT (their number), DOOR_COUNT (doorways "
+            "found), CLASSES (entities counted per class), UNIT and UNIT_SCALE (the unit used and metres per "
+            "drawing unit), GEOMETRY_COUNT (structure features written) and TEXT_COUNT (texts written).")
 
     INPUT = "INPUT"
     LAYER_RULES = "LAYER_RULES"
@@ -139,7 +142,7 @@ class ExtractStructureAlgorithm(Cad2OsmagAlgorithm):
             self.LAYERS, self.tr("Layers to keep (';' separated, overrides the rules)"), optional=True))
         self.addParameter(QgsProcessingParameterEnum(
             self.UNITS, self.tr("Drawing units"),
-            options=[self.tr("automatic (header + plausibility)"), "mm", "cm", "m", "inch", "feet"],
+            options=[self.tr("automatic (header + plausibility)"), "mm", "cm", "m", self.tr("inch"), self.tr("feet")],
             defaultValue=0))
         self.addParameter(QgsProcessingParameterBoolean(
             self.INCLUDE_DOORS, self.tr("Include doors (rasterize doorways as closed)"), defaultValue=False))

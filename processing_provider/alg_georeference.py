@@ -20,7 +20,7 @@ from qgis.core import (
 )
 
 from ..algorithms.rasterize import is_local_frame
-from .base import Cad2OsmagAlgorithm, from_qgs, to_qgs
+from .base import Cad2OsmagAlgorithm, from_qgs, to_qgs, tr_common
 
 GCP_CAD_X = ("cad_x", "x_cad", "cadx", "sourceX", "source_x", "src_x")
 GCP_CAD_Y = ("cad_y", "y_cad", "cady", "sourceY", "source_y", "src_y")
@@ -64,8 +64,9 @@ def point_to_lonlat(point, point_crs, context):
         try:
             point = tr.transform(point)
         except QgsCsException as exc:
-            raise QgsProcessingException(f"the point {point.x()}, {point.y()} [{point_crs.authid()}] cannot be "
-                                         f"converted to longitude/latitude: {exc}")
+            raise QgsProcessingException(tr_common("the point {}, {} [{}] cannot be converted to "
+                                                   "longitude/latitude: {}").format(point.x(), point.y(),
+                                                                                    point_crs.authid(), exc))
     return float(point.x()), float(point.y())
 
 
@@ -92,7 +93,10 @@ class GeoreferenceAlgorithm(Cad2OsmagAlgorithm):
             "All conversions go through a transverse Mercator projection centred on the anchor (pyproj/PROJ), "
             "never a flat-earth approximation. Add a basemap (Vector ▸ CAD to osmAG ▸ Add … basemap) to pick "
             "points against real imagery, or drag the plan into place with Vector ▸ CAD to osmAG ▸ Place a floor "
-            "plan on the map, whose placement gives ANCHOR, ROTATION and SCALE.")
+            "plan on the map, whose placement gives ANCHOR, ROTATION and SCALE.\n"
+            "Outputs: RMS and RESIDUALS, the control point residuals in metres (overall and per point); FRAME, "
+            "the placement as text; ANCHOR_LON and ANCHOR_LAT (degrees), ROTATION_DEG (degrees clockwise from "
+            "north) and SCALE_FACTOR of the placement, to reuse for the other floors.")
 
     AREAS = "AREAS"
     PASSAGES = "PASSAGES"
@@ -263,7 +267,7 @@ class GeoreferenceAlgorithm(Cad2OsmagAlgorithm):
                 try:
                     out.setGeometry(to_qgs(frame.geometry_to_crs(g, target)))
                 except InputError as exc:
-                    raise QgsProcessingException(f"{what} feature {f.id()}: {exc}")
+                    raise QgsProcessingException(self.tr("{} feature {}: {}").format(what, f.id(), exc))
             feats.append(out)
             feedback.setProgress(100.0 * (i + 1) / total)
         return feats

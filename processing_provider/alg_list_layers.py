@@ -30,7 +30,7 @@ class ListLayersAlgorithm(Cad2OsmagAlgorithm):
     DISPLAY_NAME = "List DXF/DWG layers"
     GROUP = "Pipeline"
     GROUP_ID = "pipeline"
-    HELP = ("Reports every layer of a DXF or DWG drawing (DWG: AutoCAD R13-2018, read directly) with its "
+    HELP = ("Reports every layer of INPUT, a DXF or DWG drawing (DWG: AutoCAD R13-2018, read directly), with its "
             "entity counts by type (after exploding blocks: "
             "entities on layer 0 inside a block count on the INSERT's layer), whether it is frozen or off, "
             "and whether the layer rules keep it (kind and matching keyword; door layers are listed with kind "
@@ -38,7 +38,10 @@ class ListLayersAlgorithm(Cad2OsmagAlgorithm):
             "LAYERS of 'Extract structure from DXF/DWG' or to write your own LAYER_RULES JSON file.\n"
             "Layer names as delivered: the rules match the meaningful part of a name (the prefix of a bound "
             "external reference, as in E1-RI-1F$0$A-WALL, is ignored); the 'matched' column shows it.\n"
-            "Output: a table without geometry (save it as CSV, or keep it as a memory layer).")
+            "LAYER_RULES: a JSON file of layer keywords (empty: the built-in rules, algorithms/default_layer_rules.json).\n"
+            "Outputs: OUTPUT, a table without geometry, one row per layer (save it as CSV, or keep it as a "
+            "memory layer); LAYER_COUNT, the number of layers; KEPT_LAYERS, the layers the rules keep "
+            "(separated by ';'); HEADER_UNIT, the unit written in the drawing's header ($INSUNITS).")
 
     INPUT = "INPUT"
     LAYER_RULES = "LAYER_RULES"

@@ -26,7 +26,7 @@ from qgis.PyQt.QtGui import QColor
 
 from ..algorithms.osmag import get_tag
 from .alg_georeference import qgs_crs_to_pyproj
-from .base import Cad2OsmagAlgorithm, FIELD_LONG, FIELD_STRING, make_fields, to_qgs
+from .base import Cad2OsmagAlgorithm, FIELD_LONG, FIELD_STRING, make_fields, to_qgs, tr_common
 
 AREA_COLOURS = {  # osmAG:areatype -> (fill RGBA, outline)
     "room": ("255,235,160,180", "120,100,40"),
@@ -114,7 +114,7 @@ def save_default_style(layer, feedback=None):
         return False
     error = layer.saveStyleToDatabase("cad2osmag", "osmAG style (cad2osmag)", True, "")
     if error and feedback is not None:
-        feedback.pushInfo(f"style not stored in {layer.source()}: {error}")
+        feedback.pushInfo(tr_common("style not stored in {}: {}").format(layer.source(), error))
     return not error
 
 
@@ -215,7 +215,9 @@ class LoadOsmagAlgorithm(Cad2OsmagAlgorithm):
             "TARGET_CRS: CRS of the output layers (default WGS84, EPSG:4326); choose a projected CRS in metres "
             "to measure or edit the areas.\n"
             "OUTPUT_AREAS / OUTPUT_PASSAGES: the two layers (temporary, GeoPackage, …).\n"
-            "Outputs: the number of areas and passages loaded and the VARIANT detected.")
+            "Outputs: the number of areas and passages loaded (AREA_COUNT, PASSAGE_COUNT), the unclosed area ways "
+            "(UNCLOSED) and dangling references (DANGLING) skipped, the root node's position (ROOT_LON, "
+            "ROOT_LAT, degrees) and the VARIANT detected.")
 
     INPUT = "INPUT"
     TARGET_CRS = "TARGET_CRS"

@@ -49,8 +49,14 @@ class MergeFloorsAlgorithm(Cad2OsmagAlgorithm):
             "inside both shafts, tagged with the upper level and height). One building structure area is the "
             "parent of one structure area per level, which is the parent of that floor's areas; ids and names "
             "are unique across the building. Passages naming areas that do not exist are reported with their "
-            "ids and left out (STRICT: stop instead). Output: one osmAG file (written atomically) and optional "
-            "AREAS/PASSAGES layers with a 'level' field.")
+            "ids and left out (STRICT: stop instead). REGISTER (on by default): move the floors onto each other "
+            "as above; off: keep every floor where it is. BUILDING: the building's name (the root structure "
+            "area). VARIANT: the osmAG variant written: as the inputs, semantic (passages name their areas) or "
+            "fix-id (passages give way ids).\n"
+            "Outputs: OUTPUT, one osmAG file (written atomically); optional OUTPUT_AREAS and OUTPUT_PASSAGES "
+            "layers with a 'level' field; FLOOR_COUNT, VERTICAL_PASSAGES, AREA_COUNT and PASSAGE_COUNT (numbers "
+            "written), RMS (registration residual in metres), DROPPED_PASSAGES (passages left out) and "
+            "LEVELS_OUT (the levels, in order).")
 
     def initAlgorithm(self, config=None):  # noqa: N802
         self.addParameter(QgsProcessingParameterMultipleLayers(

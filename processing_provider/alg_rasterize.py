@@ -114,13 +114,19 @@ class RasterizeAlgorithm(Cad2OsmagAlgorithm):
             "up the raster. The origin is snapped to a multiple of RESOLUTION and the geotransform maps "
             "pixels back to the drawing frame exactly.\n"
             "Repair: a closing with a KERNEL x KERNEL square bridges gaps up to about 0.2 m, then an opening "
-            "removes isolated specks (components that do not survive the opening and are small).\n"
+            "removes isolated specks (components that do not survive the opening and are small). STROKE: the "
+            "width in metres hairlines are drawn with (0.15 m).\n"
             "Multi-floor sets: give the structure layers of all floors as FLOOR_LAYERS (and/or a COMMON_EXTENT "
             "in the first floor's frame); every floor rasterized with the same values gets the same grid, "
             "pixel for pixel. Floors drawn with different origins (their extents do not overlap) are "
             "registered by cross-correlation (ALIGN_FLOORS); each raster's geotransform still maps its pixels "
             "onto its own drawing frame, so the origins differ by the floor offset but the pixels line up.\n"
-            "A raster above MAX_MPX megapixels stops with an error that suggests a resolution.")
+            "A raster above MAX_MPX megapixels stops with an error that suggests a resolution.\n"
+            "STAIRS_AS_OBSTACLES: draw stair and lift symbols as walls (off by default: stairs and lifts stay "
+            "free space, so they become areas). DOORS (optional): doorway lines (jamb to jamb, the DOORS "
+            "output of 'Extract structure') kept open even where a door layer is drawn.\n"
+            "Outputs: OCCUPANCY, the GeoTIFF (in the drawing frame, metres); WIDTH and HEIGHT in pixels; "
+            "OCCUPIED_SHARE, the share of occupied pixels (0-1).")
 
     WALLS = "WALLS"
     RESOLUTION = "RESOLUTION"

@@ -23,7 +23,7 @@ from qgis.core import (
 )
 
 from ..algorithms.model import Area, AreaGraph, Passage
-from .base import Cad2OsmagAlgorithm, FIELD_DOUBLE, FIELD_LONG, FIELD_STRING, from_qgs, make_fields, to_qgs
+from .base import Cad2OsmagAlgorithm, FIELD_DOUBLE, FIELD_LONG, FIELD_STRING, from_qgs, make_fields, to_qgs, tr_common
 
 AREA_ID_FIELDS = ("id", "osm_id", "area_id", "fid")
 AREA_TYPE_FIELDS = ("type", "osmAG:areatype", "osmAG:areaType", "areatype")
@@ -75,8 +75,8 @@ def read_areas(source, feedback=None, what="AREAS"):
         areas.append(Area(id=aid, polygon=g, type=str(typ) if typ else "room", name=str(nm) if nm else "",
                           max_clearance=float(clear) if clear is not None else 0.0, tags=tags))
     if bad:
-        raise QgsProcessingException(f"{what}: features with ids {bad} have empty or missing geometries; "
-                                     "remove them or fix the layer")
+        raise QgsProcessingException(tr_common("{}: features with ids {} have empty or missing geometries; "
+                                               "remove them or fix the layer").format(what, bad))
     return areas
 
 
@@ -101,12 +101,12 @@ def read_passages(source, areas):
             try:
                 ends.append(int(x))
             except (TypeError, ValueError):
-                raise QgsProcessingException(f"PASSAGES: passage {pid} has no valid {key} "
-                                             f"(value {x!r}); it must name the id of an area")
+                raise QgsProcessingException(tr_common("PASSAGES: passage {} has no valid {} (value {!r}); it must "
+                                                       "name the id of an area").format(pid, key, x))
         if g is not None and g.geom_type == "MultiLineString" and len(g.geoms) == 1:
             g = g.geoms[0]
         if g is None or g.geom_type != "LineString":
-            raise QgsProcessingException(f"PASSAGES: passage {pid} has no line geometry")
+            raise QgsProcessingException(tr_common("PASSAGES: passage {} has no line geometry").format(pid))
         nm = _value(f, ("name",), names)
         out.append(Passage(id=pid, from_id=ends[0], to_id=ends[1], line=g, name=str(nm) if nm else "",
                            tags=_tags(f, names, INTERNAL_PASSAGE_FIELDS | {"name"})))
@@ -147,7 +147,7 @@ def write_areas(sink, fields, areas, metric=True):
             if fields.indexOf(k) >= 0 and k not in ("id", "type", "name", "max_clearance", "area_m2", "component"):
                 f[k] = str(v)
         if not sink.addFeature(f, QgsFeatureSink.Flag.FastInsert):
-            raise QgsProcessingException(f"cannot write area {a.id} to the output layer")
+            raise QgsProcessingException(tr_common("cannot write area {} to the output layer").format(a.id))
 
 
 def write_passages(sink, fields, passages, metric=True):
@@ -163,7 +163,7 @@ def write_passages(sink, fields, passages, metric=True):
             if fields.indexOf(k) >= 0 and k not in ("id", "from_id", "to_id", "name", "width_m"):
                 f[k] = str(v)
         if not sink.addFeature(f, QgsFeatureSink.Flag.FastInsert):
-            raise QgsProcessingException(f"cannot write passage {p.id} to the output layer")
+            raise QgsProcessingException(tr_common("cannot write passage {} to the output layer").format(p.id))
 
 
 def area_and_passage_fields(areas, passages):
@@ -183,7 +183,15 @@ class RefineAlgorithm(Cad2OsmagAlgorithm):
             "end points are locked, so each passage stays a segment whose two ends are vertices of both "
             "areas it joins. Areas smaller than MIN_AREA are merged into the neighbour they share the "
             "longest border with (stairs and elevators are kept); isolated ones are dropped. Work in "
-            "metres: run it on the CAD frame (before georeferencing) or on a projected CRS.")
+            "metres: run it on the CAD frame (before georeferencing) or on a projected CRS.\n"
+            "AREAS and PASSAGES: the outputs of 'Segment' (PASSAGES optional). RESOLUTION: the raster "
+            "resolution the areas were traced at, in metres per pixel. EPSILON_PX in pixels, SPIKE_ANGLE in "
+            "degrees, SPIKE_LENGTH in metres, MIN_AREA in m².\n"
+            "Outputs: OUTPUT_AREAS and OUTPUT_PASSAGES, the refined layers; VERTICES_BEFORE, VERTICES_AFTER and "
+            "VERTEX_REDUCTION (%); MAX_DEVIATION, the largest distance from the unsimplified areas (m); "
+            "EPSILON_M, the tolerance in metres; AREA_COUNT and PASSAGE_COUNT written; MERGED and DROPPED "
+            "small areas; COMPONENTS, the connected parts of the area graph, and LARGEST_COMPONENT_SHARE, the "
+            "share of the area in the largest one.")
 
     AREAS = "AREAS"
     PASSAGES = "PASSAGES"

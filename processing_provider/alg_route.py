@@ -34,7 +34,7 @@ class RouteAlgorithm(Cad2OsmagAlgorithm):
     DISPLAY_NAME = "Plan a route on an osmAG map"
     GROUP = "Tools"
     GROUP_ID = "tools"
-    HELP = ("Shortest route for a round robot of radius ROBOT_RADIUS over an osmAG map: an osmAG file (ours or "
+    HELP = ("Shortest route for a round robot of radius ROBOT_RADIUS (metres) over an osmAG map: INPUT, an osmAG file (ours or "
             "any other tool's, semantic or fix-id) or AREAS/PASSAGES layers (e.g. from loadosmag or refine). "
             "START and END are points picked on the canvas (any CRS) with their level (START_LEVEL/END_LEVEL, "
             "needed when floors overlap), or area names (START_NAME/END_NAME). A point up to 1 m outside the "
@@ -43,7 +43,10 @@ class RouteAlgorithm(Cad2OsmagAlgorithm):
             "walls. Vertical passages (stairs, lifts) cost VERTICAL_COST metres per level; AVOID leaves out "
             "stairs (lifts only) or lifts. The result is a 3-D line (z = level x height) with its length, cost, "
             "levels per vertex and the areas and passages crossed. When no route exists the message names the "
-            "separate parts of the map the start and the goal lie in, and the passages too narrow for the robot.")
+            "separate parts of the map the start and the goal lie in, and the passages too narrow for the robot.\n"
+            "Outputs: OUTPUT, the route line; LENGTH (m) and COST (length + vertical cost, m); LEVEL_CHANGES; "
+            "START_SNAP and END_SNAP, how far the start and end were moved (m); QUERY_MS, the search time in "
+            "milliseconds; AREAS_CROSSED, PASSAGES_CROSSED and LEVELS (the level of every vertex).")
 
     INPUT = "INPUT"
     AREAS = "AREAS"

@@ -25,9 +25,10 @@ class SampleBuildingAlgorithm(Cad2OsmagAlgorithm):
             "FLOORS: number of floors (1-20), one DXF and one ground-truth file each; all floors share the "
             "stair core and the lift, so they stack.\n"
             "SEED: any whole number; it varies the room layout (0 is the layout the README shows).\n"
-            "PREFIX: start of the file names: <PREFIX>-F1.dxf, <PREFIX>-F1.gt.geojson, …\n"
+            "PREFIX: start of the file names: PREFIX-F1.dxf, PREFIX-F1.gt.geojson, …\n"
             "OUTPUT_FOLDER: where the files are written (created when missing).\n"
-            "Outputs: FIRST_FLOOR_DXF (the first floor's DXF) and DXF_FILES (every DXF, ';' separated).")
+            "Outputs: FIRST_FLOOR_DXF (the first floor's DXF), DXF_FILES (every DXF, ';' separated), "
+            "GROUND_TRUTH_FILES (the ground-truth GeoJSON files, ';' separated) and FLOOR_COUNT (floors written).")
 
     FLOORS = "FLOORS"
     SEED = "SEED"

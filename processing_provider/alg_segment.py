@@ -97,7 +97,11 @@ class SegmentAlgorithm(Cad2OsmagAlgorithm):
             "space beside the rooms is where the scan ended). The optional DOORS (jamb-to-jamb "
             "lines) are kept open and become passages where the segmentation missed them. Every area has a "
             "'component' field: its connected component in the area graph (0 = the largest); the log lists the "
-            "others (rooms no passage reaches).")
+            "others (rooms no passage reaches). STRUCTURE (optional): the structure lines of the drawing (WALLS of "
+            "'Extract structure'); stair and lift symbols in them type their areas stairs/elevator.\n"
+            "Figures: AREA_COUNT, ROOM_COUNT, CORRIDOR_COUNT, PASSAGE_COUNT; INTERIOR_AREA_M2, the free area "
+            "inside the building (m²); COMPONENTS and LARGEST_COMPONENT_SHARE (share of the area in the largest "
+            "component); ALPHA, the probe disk in px²; SECONDS, the segmentation time.")
 
     INPUT = "INPUT"
     RESOLUTION = "RESOLUTION"

@@ -35,6 +35,12 @@ else:
         QVariant.Type.String, QVariant.Type.Double, QVariant.Type.Int, QVariant.Type.LongLong, QVariant.Type.Bool)
 
 
+def tr_common(text):
+    """Translate a message of a helper shared by several algorithms (context ``Cad2OsmagAlgorithm``, the one
+    ``Cad2OsmagAlgorithm.tr`` falls back to; i18n/update_ts.py collects these calls)."""
+    return QCoreApplication.translate("Cad2OsmagAlgorithm", text)
+
+
 class FeedbackProgress(Progress):
     """Adapter: pipeline ``Progress`` -> ``QgsProcessingFeedback``."""
 
@@ -71,7 +77,10 @@ class Cad2OsmagAlgorithm(QgsProcessingAlgorithm):
 
     # --- QgsProcessingAlgorithm boilerplate -----------------------------------------------
     def tr(self, text):
-        return QCoreApplication.translate(type(self).__name__, text)
+        out = QCoreApplication.translate(type(self).__name__, text)
+        if out == text:  # helpers shared by several algorithms (alg.tr(...)) use the common context
+            out = QCoreApplication.translate("Cad2OsmagAlgorithm", text)
+        return out
 
     def name(self):
         return self.NAME

@@ -32,10 +32,25 @@ def shipped_models():
             continue
         model = QgsProcessingModelAlgorithm()
         if model.fromFile(os.path.join(MODELS_DIR, name)):
+            translate_model(model)
             models.append(model)
         else:
             QgsMessageLog.logMessage(f"cannot load the model {name}", "cad2osmag", Qgis.MessageLevel.Critical)
     return models
+
+
+MODEL_CONTEXT = "Cad2OsmagModel"
+
+
+def translate_model(model):
+    """The shipped model's help, parameter and output descriptions in the user's language (the strings of
+    models/*.model3 are collected by i18n/update_ts.py under the context ``Cad2OsmagModel``)."""
+    def tr(text):
+        return QCoreApplication.translate(MODEL_CONTEXT, text) if text else text
+
+    for definition in list(model.parameterDefinitions()) + list(model.outputDefinitions()):
+        definition.setDescription(tr(definition.description()))
+    model.setHelpContent({k: tr(v) if isinstance(v, str) else v for k, v in model.helpContent().items()})
 
 
 def algorithm_classes():
