@@ -387,13 +387,33 @@ Ausgaben: OUTPUT_AREAS, die benannten Flächen (Felder name, ref, type, indoor, 
     <name>ConvertWizard</name>
     <message>
       <location filename="../ui/convert_wizard.py" />
+      <source>plan</source>
+      <translation>Plan</translation>
+    </message>
+    <message>
+      <location filename="../ui/convert_wizard.py" />
+      <source>detail</source>
+      <translation>Detail</translation>
+    </message>
+    <message>
+      <location filename="../ui/convert_wizard.py" />
+      <source>legend</source>
+      <translation>Legende</translation>
+    </message>
+    <message>
+      <location filename="../ui/convert_wizard.py" />
+      <source>other</source>
+      <translation>Sonstiges</translation>
+    </message>
+    <message>
+      <location filename="../ui/convert_wizard.py" />
       <source>1. Floor plans</source>
       <translation>1. Grundrisse</translation>
     </message>
     <message>
       <location filename="../ui/convert_wizard.py" />
-      <source>Pick the DXF/DWG files of the building, one per floor (bottom floor first). The table shows the layers of the selected file and which ones the layer rules keep as structure.</source>
-      <translation>DXF/DWG-Dateien des Gebäudes wählen, eine je Geschoss (unterstes zuerst). Die Tabelle zeigt die Layer der gewählten Datei und welche die Regeln als Bauteile behalten.</translation>
+      <source>Pick the DXF/DWG files of the building, one per floor (bottom floor first). The table shows the layers of the selected file and which ones the layer rules keep as structure; below, the plans found on its sheet: the main plan is pre-selected, click another (in the list or on the sheet) or draw an extent.</source>
+      <translation>DXF/DWG-Dateien des Gebäudes wählen, eine je Geschoss (unterstes zuerst). Die Tabelle zeigt die Layer der gewählten Datei und welche die Regeln als Bauteile behalten; darunter die Pläne ihres Blatts: Der Hauptplan ist vorgewählt, einen anderen anklicken (in der Liste oder auf dem Blatt) oder eine Ausdehnung zeichnen.</translation>
     </message>
     <message>
       <location filename="../ui/convert_wizard.py" />
@@ -437,6 +457,36 @@ Ausgaben: OUTPUT_AREAS, die benannten Flächen (Felder name, ref, type, indoor, 
     </message>
     <message>
       <location filename="../ui/convert_wizard.py" />
+      <source>Plans on the sheet (the selected one is converted):</source>
+      <translation>Pläne auf dem Blatt (der gewählte wird umgewandelt):</translation>
+    </message>
+    <message>
+      <location filename="../ui/convert_wizard.py" />
+      <source>Plan</source>
+      <translation>Plan</translation>
+    </message>
+    <message>
+      <location filename="../ui/convert_wizard.py" />
+      <source>Size</source>
+      <translation>Größe</translation>
+    </message>
+    <message>
+      <location filename="../ui/convert_wizard.py" />
+      <source>Title</source>
+      <translation>Titel</translation>
+    </message>
+    <message>
+      <location filename="../ui/convert_wizard.py" />
+      <source>Draw an extent on the sheet</source>
+      <translation>Eine Ausdehnung auf dem Blatt zeichnen</translation>
+    </message>
+    <message>
+      <location filename="../ui/convert_wizard.py" />
+      <source>Drag a rectangle over the sheet to convert only what lies in it (e.g. one half of a floor drawn in two parts).</source>
+      <translation>Ein Rechteck über das Blatt ziehen, um nur umzuwandeln, was darin liegt (z. B. eine Hälfte eines in zwei Teilen gezeichneten Geschosses).</translation>
+    </message>
+    <message>
+      <location filename="../ui/convert_wizard.py" />
       <source>Floor plans</source>
       <translation>Grundrisse</translation>
     </message>
@@ -464,6 +514,56 @@ Ausgaben: OUTPUT_AREAS, die benannten Flächen (Felder name, ref, type, indoor, 
       <location filename="../ui/convert_wizard.py" />
       <source>{}: {} layers, kept: {}</source>
       <translation>{}: {} Layer, behalten: {}</translation>
+    </message>
+    <message>
+      <location filename="../ui/convert_wizard.py" />
+      <source>Finding the plans on {}</source>
+      <translation>Pläne auf {} werden gesucht</translation>
+    </message>
+    <message>
+      <location filename="../ui/convert_wizard.py" />
+      <source>Finding the plans on the sheet…</source>
+      <translation>Pläne auf dem Blatt werden gesucht…</translation>
+    </message>
+    <message>
+      <location filename="../ui/convert_wizard.py" />
+      <source>canceled</source>
+      <translation>abgebrochen</translation>
+    </message>
+    <message>
+      <location filename="../ui/convert_wizard.py" />
+      <source>plans</source>
+      <translation>Pläne</translation>
+    </message>
+    <message>
+      <location filename="../ui/convert_wizard.py" />
+      <source>sheet</source>
+      <translation>Blatt</translation>
+    </message>
+    <message>
+      <location filename="../ui/convert_wizard.py" />
+      <source>Cannot find the plans: {}</source>
+      <translation>Die Pläne können nicht gefunden werden: {}</translation>
+    </message>
+    <message>
+      <location filename="../ui/convert_wizard.py" />
+      <source>{:.0f} × {:.0f} m</source>
+      <translation>{:.0f} × {:.0f} m</translation>
+    </message>
+    <message>
+      <location filename="../ui/convert_wizard.py" />
+      <source>{} group(s) on the sheet and no floor plan among them: pick one, or draw an extent.</source>
+      <translation>{} Gruppe(n) auf dem Blatt und kein Grundriss darunter: eine wählen oder eine Ausdehnung zeichnen.</translation>
+    </message>
+    <message>
+      <location filename="../ui/convert_wizard.py" />
+      <source>Converting the extent {:.1f}, {:.1f} – {:.1f}, {:.1f} m of {} group(s).</source>
+      <translation>Die Ausdehnung {:.1f}, {:.1f} – {:.1f}, {:.1f} m von {} Gruppe(n) wird umgewandelt.</translation>
+    </message>
+    <message>
+      <location filename="../ui/convert_wizard.py" />
+      <source>Converting plan [{}] ({}{}) of {} group(s).</source>
+      <translation>Plan [{}] ({}{}) von {} Gruppe(n) wird umgewandelt.</translation>
     </message>
     <message>
       <location filename="../ui/convert_wizard.py" />
@@ -519,11 +619,6 @@ Ausgaben: OUTPUT_AREAS, die benannten Flächen (Felder name, ref, type, indoor, 
       <location filename="../ui/convert_wizard.py" />
       <source>Preview failed: {}</source>
       <translation>Vorschau gescheitert: {}</translation>
-    </message>
-    <message>
-      <location filename="../ui/convert_wizard.py" />
-      <source>canceled</source>
-      <translation>abgebrochen</translation>
     </message>
     <message>
       <location filename="../ui/convert_wizard.py" />
@@ -1738,6 +1833,64 @@ Ausgaben: OUTPUT, eine Tabelle ohne Geometrie, eine Zeile je Layer (als CSV spei
     </message>
   </context>
   <context>
+    <name>ListPlansAlgorithm</name>
+    <message>
+      <location filename="../processing_provider/alg_list_plans.py" />
+      <source>List the plans on a DXF/DWG sheet</source>
+      <translation>Die Pläne auf einem DXF/DWG-Blatt auflisten</translation>
+    </message>
+    <message>
+      <location filename="../processing_provider/alg_list_plans.py" />
+      <source>Pipeline</source>
+      <translation>Verarbeitungskette</translation>
+    </message>
+    <message>
+      <location filename="../processing_provider/alg_list_plans.py" />
+      <source>Finds the plans on a whole drawing sheet (DXF or DWG), as 'Extract structure from DXF/DWG' does, and lists every group instead of keeping one: INPUT is the drawing, LAYER_RULES the optional JSON layer rules. OUTPUT holds one rectangle per group, in metres in the drawing's own frame, with its index (the value of PLAN), kind (plan, detail, legend, other), title (e.g. '三层平面图'), width and height in metres, metres of walls, and main = true for the plan converted by default (index 0 when it is a plan). STRUCTURE (optional) holds the structure lines of the whole sheet (title frames and legends left out) to draw the sheet under the rectangles; draw an extent over it to give PLAN_EXTENT. MAIN_PLAN is the index of the main plan (-1 when the sheet holds only details). PLAN_COUNT is the number of groups and PLANS lists them as text.</source>
+      <translation>Findet die Pläne auf einem ganzen Zeichnungsblatt (DXF oder DWG) wie „Bauteile aus DXF/DWG extrahieren“ und listet jede Gruppe auf, statt eine zu behalten: INPUT ist die Zeichnung, LAYER_RULES die optionalen JSON-Layer-Regeln. OUTPUT enthält ein Rechteck je Gruppe, in Metern im eigenen System der Zeichnung, mit Index (der Wert für PLAN), Art (plan, detail, legend, other), Titel (z. B. '三层平面图'), Breite und Höhe in Metern, Metern an Wänden und main = true für den Plan, der als Vorgabe umgewandelt wird (Index 0, wenn es ein Plan ist). STRUCTURE (optional) enthält die Bauteillinien des ganzen Blatts (ohne Rahmen und Legenden), um das Blatt unter den Rechtecken zu zeichnen; darüber eine Ausdehnung zeichnen, um PLAN_EXTENT anzugeben. MAIN_PLAN ist der Index des Hauptplans (-1, wenn das Blatt nur Details enthält). PLAN_COUNT ist die Anzahl der Gruppen, PLANS listet sie als Text.</translation>
+    </message>
+    <message>
+      <location filename="../processing_provider/alg_list_plans.py" />
+      <source>DXF or DWG drawing</source>
+      <translation>DXF- oder DWG-Zeichnung</translation>
+    </message>
+    <message>
+      <location filename="../processing_provider/alg_list_plans.py" />
+      <source>Layer rules (JSON, empty = built-in defaults)</source>
+      <translation>Layer-Regeln (JSON, leer = eingebaute Regeln)</translation>
+    </message>
+    <message>
+      <location filename="../processing_provider/alg_list_plans.py" />
+      <source>Plans on the sheet</source>
+      <translation>Pläne auf dem Blatt</translation>
+    </message>
+    <message>
+      <location filename="../processing_provider/alg_list_plans.py" />
+      <source>Structure lines of the whole sheet</source>
+      <translation>Bauteillinien des ganzen Blatts</translation>
+    </message>
+    <message>
+      <location filename="../processing_provider/alg_list_plans.py" />
+      <source>Number of groups found on the sheet</source>
+      <translation>Anzahl der auf dem Blatt gefundenen Gruppen</translation>
+    </message>
+    <message>
+      <location filename="../processing_provider/alg_list_plans.py" />
+      <source>Index of the main plan (-1: none)</source>
+      <translation>Index des Hauptplans (-1: keiner)</translation>
+    </message>
+    <message>
+      <location filename="../processing_provider/alg_list_plans.py" />
+      <source>Plans found on the sheet</source>
+      <translation>Auf dem Blatt gefundene Pläne</translation>
+    </message>
+    <message>
+      <location filename="../processing_provider/alg_list_plans.py" />
+      <source>Sheet: {}</source>
+      <translation>Blatt: {}</translation>
+    </message>
+  </context>
+  <context>
     <name>LoadOsmagAlgorithm</name>
     <message>
       <location filename="../processing_provider/alg_load_osmag.py" />
@@ -2066,6 +2219,16 @@ Ausgaben: OUTPUT, eine osmAG-Datei (atomar geschrieben); optionale Layer OUTPUT_
     </message>
     <message>
       <location filename="../ui/placement_dock.py" />
+      <source>Snap the rotation to building edges (polygon layers on the map, within 3°)</source>
+      <translation>Drehung an Gebäudekanten einrasten (Polygonlayer auf der Karte, innerhalb von 3°)</translation>
+    </message>
+    <message>
+      <location filename="../ui/placement_dock.py" />
+      <source>Load building footprints (e.g. OpenStreetMap buildings) as a vector layer: while you turn the plan, its walls snap to their edges. Shift turns in whole degrees instead.</source>
+      <translation>Gebäudegrundrisse (z. B. OpenStreetMap-Gebäude) als Vektorlayer laden: Beim Drehen des Plans rasten seine Wände an ihren Kanten ein. Umschalt dreht stattdessen in ganzen Grad.</translation>
+    </message>
+    <message>
+      <location filename="../ui/placement_dock.py" />
       <source>Control points: keep the scale (solve position and rotation only)</source>
       <translation>Passpunkte: Maßstab festhalten (nur Lage und Drehung lösen)</translation>
     </message>
@@ -2128,6 +2291,11 @@ Ausgaben: OUTPUT, eine osmAG-Datei (atomar geschrieben); optionale Layer OUTPUT_
       <location filename="../ui/placement_dock.py" />
       <source>{}: {} lines, {:.1f} × {:.1f} m</source>
       <translation>{}: {} Linien, {:.1f} × {:.1f} m</translation>
+    </message>
+    <message>
+      <location filename="../ui/placement_dock.py" />
+      <source>Rotation snapped to the building edges at {:.1f}° (modulo 90°).</source>
+      <translation>Drehung an den Gebäudekanten bei {:.1f}° eingerastet (modulo 90°).</translation>
     </message>
     <message>
       <location filename="../ui/placement_dock.py" />

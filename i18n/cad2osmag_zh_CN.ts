@@ -387,13 +387,33 @@ PASSAGES（可选）：区域的通道；被拆分的区域获得各自的通道
     <name>ConvertWizard</name>
     <message>
       <location filename="../ui/convert_wizard.py" />
+      <source>plan</source>
+      <translation>平面图</translation>
+    </message>
+    <message>
+      <location filename="../ui/convert_wizard.py" />
+      <source>detail</source>
+      <translation>详图</translation>
+    </message>
+    <message>
+      <location filename="../ui/convert_wizard.py" />
+      <source>legend</source>
+      <translation>图例</translation>
+    </message>
+    <message>
+      <location filename="../ui/convert_wizard.py" />
+      <source>other</source>
+      <translation>其他</translation>
+    </message>
+    <message>
+      <location filename="../ui/convert_wizard.py" />
       <source>1. Floor plans</source>
       <translation>1. 平面图</translation>
     </message>
     <message>
       <location filename="../ui/convert_wizard.py" />
-      <source>Pick the DXF/DWG files of the building, one per floor (bottom floor first). The table shows the layers of the selected file and which ones the layer rules keep as structure.</source>
-      <translation>选择建筑的 DXF/DWG 文件，每层一个（最底层在前）。表格显示所选文件的图层，以及图层规则将哪些图层保留为结构。</translation>
+      <source>Pick the DXF/DWG files of the building, one per floor (bottom floor first). The table shows the layers of the selected file and which ones the layer rules keep as structure; below, the plans found on its sheet: the main plan is pre-selected, click another (in the list or on the sheet) or draw an extent.</source>
+      <translation>选择建筑的 DXF/DWG 文件，每层一个（最底层在前）。表格显示所选文件的图层，以及图层规则将哪些图层保留为结构；下方为在其图幅上找到的平面图：主平面图已预先选中，可点击其他平面图（在列表中或图幅上）或绘制范围。</translation>
     </message>
     <message>
       <location filename="../ui/convert_wizard.py" />
@@ -437,6 +457,36 @@ PASSAGES（可选）：区域的通道；被拆分的区域获得各自的通道
     </message>
     <message>
       <location filename="../ui/convert_wizard.py" />
+      <source>Plans on the sheet (the selected one is converted):</source>
+      <translation>图幅上的平面图（转换选中的一个）：</translation>
+    </message>
+    <message>
+      <location filename="../ui/convert_wizard.py" />
+      <source>Plan</source>
+      <translation>平面图</translation>
+    </message>
+    <message>
+      <location filename="../ui/convert_wizard.py" />
+      <source>Size</source>
+      <translation>尺寸</translation>
+    </message>
+    <message>
+      <location filename="../ui/convert_wizard.py" />
+      <source>Title</source>
+      <translation>标题</translation>
+    </message>
+    <message>
+      <location filename="../ui/convert_wizard.py" />
+      <source>Draw an extent on the sheet</source>
+      <translation>在图幅上绘制范围</translation>
+    </message>
+    <message>
+      <location filename="../ui/convert_wizard.py" />
+      <source>Drag a rectangle over the sheet to convert only what lies in it (e.g. one half of a floor drawn in two parts).</source>
+      <translation>在图幅上拖出一个矩形，只转换其中的内容（例如分两部分绘制的楼层的一半）。</translation>
+    </message>
+    <message>
+      <location filename="../ui/convert_wizard.py" />
       <source>Floor plans</source>
       <translation>平面图</translation>
     </message>
@@ -464,6 +514,56 @@ PASSAGES（可选）：区域的通道；被拆分的区域获得各自的通道
       <location filename="../ui/convert_wizard.py" />
       <source>{}: {} layers, kept: {}</source>
       <translation>{}：{} 个图层，保留：{}</translation>
+    </message>
+    <message>
+      <location filename="../ui/convert_wizard.py" />
+      <source>Finding the plans on {}</source>
+      <translation>正在查找 {} 上的平面图</translation>
+    </message>
+    <message>
+      <location filename="../ui/convert_wizard.py" />
+      <source>Finding the plans on the sheet…</source>
+      <translation>正在查找图幅上的平面图…</translation>
+    </message>
+    <message>
+      <location filename="../ui/convert_wizard.py" />
+      <source>canceled</source>
+      <translation>已取消</translation>
+    </message>
+    <message>
+      <location filename="../ui/convert_wizard.py" />
+      <source>plans</source>
+      <translation>平面图</translation>
+    </message>
+    <message>
+      <location filename="../ui/convert_wizard.py" />
+      <source>sheet</source>
+      <translation>图幅</translation>
+    </message>
+    <message>
+      <location filename="../ui/convert_wizard.py" />
+      <source>Cannot find the plans: {}</source>
+      <translation>无法找到平面图：{}</translation>
+    </message>
+    <message>
+      <location filename="../ui/convert_wizard.py" />
+      <source>{:.0f} × {:.0f} m</source>
+      <translation>{:.0f} × {:.0f} m</translation>
+    </message>
+    <message>
+      <location filename="../ui/convert_wizard.py" />
+      <source>{} group(s) on the sheet and no floor plan among them: pick one, or draw an extent.</source>
+      <translation>图幅上有 {} 组，但其中没有楼层平面图：请选择一组，或绘制范围。</translation>
+    </message>
+    <message>
+      <location filename="../ui/convert_wizard.py" />
+      <source>Converting the extent {:.1f}, {:.1f} – {:.1f}, {:.1f} m of {} group(s).</source>
+      <translation>正在转换范围 {:.1f}, {:.1f} – {:.1f}, {:.1f} m（共 {} 组）。</translation>
+    </message>
+    <message>
+      <location filename="../ui/convert_wizard.py" />
+      <source>Converting plan [{}] ({}{}) of {} group(s).</source>
+      <translation>正在转换平面图 [{}]（{}{}）（共 {} 组）。</translation>
     </message>
     <message>
       <location filename="../ui/convert_wizard.py" />
@@ -519,11 +619,6 @@ PASSAGES（可选）：区域的通道；被拆分的区域获得各自的通道
       <location filename="../ui/convert_wizard.py" />
       <source>Preview failed: {}</source>
       <translation>预览失败：{}</translation>
-    </message>
-    <message>
-      <location filename="../ui/convert_wizard.py" />
-      <source>canceled</source>
-      <translation>已取消</translation>
     </message>
     <message>
       <location filename="../ui/convert_wizard.py" />
@@ -1738,6 +1833,64 @@ LAYER_RULES：图层关键词的 JSON 文件（留空：内置规则，algorithm
     </message>
   </context>
   <context>
+    <name>ListPlansAlgorithm</name>
+    <message>
+      <location filename="../processing_provider/alg_list_plans.py" />
+      <source>List the plans on a DXF/DWG sheet</source>
+      <translation>列出 DXF/DWG 图幅上的平面图</translation>
+    </message>
+    <message>
+      <location filename="../processing_provider/alg_list_plans.py" />
+      <source>Pipeline</source>
+      <translation>处理流程</translation>
+    </message>
+    <message>
+      <location filename="../processing_provider/alg_list_plans.py" />
+      <source>Finds the plans on a whole drawing sheet (DXF or DWG), as 'Extract structure from DXF/DWG' does, and lists every group instead of keeping one: INPUT is the drawing, LAYER_RULES the optional JSON layer rules. OUTPUT holds one rectangle per group, in metres in the drawing's own frame, with its index (the value of PLAN), kind (plan, detail, legend, other), title (e.g. '三层平面图'), width and height in metres, metres of walls, and main = true for the plan converted by default (index 0 when it is a plan). STRUCTURE (optional) holds the structure lines of the whole sheet (title frames and legends left out) to draw the sheet under the rectangles; draw an extent over it to give PLAN_EXTENT. MAIN_PLAN is the index of the main plan (-1 when the sheet holds only details). PLAN_COUNT is the number of groups and PLANS lists them as text.</source>
+      <translation>像“从 DXF/DWG 提取建筑结构”一样查找整张图幅（DXF 或 DWG）上的平面图，并列出每一组，而不是只保留一组：INPUT 为图纸，LAYER_RULES 为可选的 JSON 图层规则。OUTPUT 为每组一个矩形，以米为单位、位于图纸自身坐标系中，字段包括序号（即 PLAN 的取值）、种类（plan、detail、legend、other）、标题（如 '三层平面图'）、宽度和高度（米）、墙体长度（米），默认转换的平面图 main = true（若序号 0 为平面图则为序号 0）。STRUCTURE（可选）为整张图幅的结构线（不含图框和图例），用于在矩形下方绘制图幅；在其上绘制范围即可给出 PLAN_EXTENT。MAIN_PLAN 为主平面图的序号（图幅上只有详图时为 -1）。PLAN_COUNT 为组数，PLANS 以文字形式列出各组。</translation>
+    </message>
+    <message>
+      <location filename="../processing_provider/alg_list_plans.py" />
+      <source>DXF or DWG drawing</source>
+      <translation>DXF 或 DWG 图纸</translation>
+    </message>
+    <message>
+      <location filename="../processing_provider/alg_list_plans.py" />
+      <source>Layer rules (JSON, empty = built-in defaults)</source>
+      <translation>图层规则（JSON，留空 = 内置规则）</translation>
+    </message>
+    <message>
+      <location filename="../processing_provider/alg_list_plans.py" />
+      <source>Plans on the sheet</source>
+      <translation>图幅上的平面图</translation>
+    </message>
+    <message>
+      <location filename="../processing_provider/alg_list_plans.py" />
+      <source>Structure lines of the whole sheet</source>
+      <translation>整张图幅的结构线</translation>
+    </message>
+    <message>
+      <location filename="../processing_provider/alg_list_plans.py" />
+      <source>Number of groups found on the sheet</source>
+      <translation>图幅上找到的组数</translation>
+    </message>
+    <message>
+      <location filename="../processing_provider/alg_list_plans.py" />
+      <source>Index of the main plan (-1: none)</source>
+      <translation>主平面图的序号（-1：无）</translation>
+    </message>
+    <message>
+      <location filename="../processing_provider/alg_list_plans.py" />
+      <source>Plans found on the sheet</source>
+      <translation>图幅上找到的平面图</translation>
+    </message>
+    <message>
+      <location filename="../processing_provider/alg_list_plans.py" />
+      <source>Sheet: {}</source>
+      <translation>图幅：{}</translation>
+    </message>
+  </context>
+  <context>
     <name>LoadOsmagAlgorithm</name>
     <message>
       <location filename="../processing_provider/alg_load_osmag.py" />
@@ -2066,6 +2219,16 @@ Outputs: OUTPUT, one osmAG file (written atomically); optional OUTPUT_AREAS and 
     </message>
     <message>
       <location filename="../ui/placement_dock.py" />
+      <source>Snap the rotation to building edges (polygon layers on the map, within 3°)</source>
+      <translation>将旋转吸附到建筑边线（地图上的面图层，3° 以内）</translation>
+    </message>
+    <message>
+      <location filename="../ui/placement_dock.py" />
+      <source>Load building footprints (e.g. OpenStreetMap buildings) as a vector layer: while you turn the plan, its walls snap to their edges. Shift turns in whole degrees instead.</source>
+      <translation>将建筑轮廓（如 OpenStreetMap 建筑）加载为矢量图层：旋转平面图时，其墙体会吸附到这些边线上。按住 Shift 则改为按整度旋转。</translation>
+    </message>
+    <message>
+      <location filename="../ui/placement_dock.py" />
       <source>Control points: keep the scale (solve position and rotation only)</source>
       <translation>控制点：保持比例不变（只求解位置和旋转）</translation>
     </message>
@@ -2128,6 +2291,11 @@ Outputs: OUTPUT, one osmAG file (written atomically); optional OUTPUT_AREAS and 
       <location filename="../ui/placement_dock.py" />
       <source>{}: {} lines, {:.1f} × {:.1f} m</source>
       <translation>{}：{} 条线，{:.1f} × {:.1f} m</translation>
+    </message>
+    <message>
+      <location filename="../ui/placement_dock.py" />
+      <source>Rotation snapped to the building edges at {:.1f}° (modulo 90°).</source>
+      <translation>旋转已吸附到建筑边线，角度 {:.1f}°（模 90°）。</translation>
     </message>
     <message>
       <location filename="../ui/placement_dock.py" />

@@ -47,7 +47,8 @@ class ListPlansAlgorithm(Cad2OsmagAlgorithm):
             "height in metres, metres of walls, and main = true for the plan converted by default (index 0 when "
             "it is a plan). STRUCTURE (optional) holds the structure lines of the whole sheet (title frames and "
             "legends left out) to draw the sheet under the rectangles; draw an extent over it to give "
-            "PLAN_EXTENT. MAIN_PLAN is the index of the main plan (-1 when the sheet holds only details).")
+            "PLAN_EXTENT. MAIN_PLAN is the index of the main plan (-1 when the sheet holds only details)."
+            " PLAN_COUNT is the number of groups and PLANS lists them as text.")
 
     INPUT = "INPUT"
     LAYER_RULES = "LAYER_RULES"

@@ -72,7 +72,7 @@ class MergeFloorsAlgorithm(Cad2OsmagAlgorithm):
             "HEIGHTS", self.tr("Height per level in metres (one value, or one per floor)"), "", optional=True))
         self.addParameter(QgsProcessingParameterString("BUILDING", self.tr("Building name"), "Building"))
         self.addParameter(QgsProcessingParameterEnum(
-            "VARIANT", self.tr("Variant"), ["as the inputs", "semantic (names)", "fix-id (way ids)"], defaultValue=0))
+            "VARIANT", self.tr("Variant"), [self.tr(o) for o in ("as the inputs", "semantic (names)", "fix-id (way ids)")], defaultValue=0))
         self.addParameter(QgsProcessingParameterBoolean(
             "REGISTER", self.tr("Register the floors on their stairs/lifts (off: keep them where they are)"), True))
         self.addParameter(QgsProcessingParameterBoolean(
