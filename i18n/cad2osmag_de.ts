@@ -412,8 +412,8 @@ Ausgaben: OUTPUT_AREAS, die benannten Flächen (Felder name, ref, type, indoor, 
     </message>
     <message>
       <location filename="../ui/convert_wizard.py" />
-      <source>Pick the DXF/DWG files of the building, one per floor (bottom floor first). The table shows the layers of the selected file and which ones the layer rules keep as structure; below, the plans found on its sheet: the main plan is pre-selected, click another (in the list or on the sheet) or draw an extent.</source>
-      <translation>DXF/DWG-Dateien des Gebäudes wählen, eine je Geschoss (unterstes zuerst). Die Tabelle zeigt die Layer der gewählten Datei und welche die Regeln als Bauteile behalten; darunter die Pläne ihres Blatts: Der Hauptplan ist vorgewählt, einen anderen anklicken (in der Liste oder auf dem Blatt) oder eine Ausdehnung zeichnen.</translation>
+      <source>Pick the DXF/DWG files of the building, one per floor (bottom floor first), and check the layers kept as structure and the plan converted on each sheet.</source>
+      <translation>DXF/DWG-Dateien des Gebäudes wählen, eine je Geschoss (unterstes zuerst), und die als Bauteile behaltenen Layer sowie den umgewandelten Plan jedes Blatts prüfen.</translation>
     </message>
     <message>
       <location filename="../ui/convert_wizard.py" />
@@ -457,8 +457,8 @@ Ausgaben: OUTPUT_AREAS, die benannten Flächen (Felder name, ref, type, indoor, 
     </message>
     <message>
       <location filename="../ui/convert_wizard.py" />
-      <source>Plans on the sheet (the selected one is converted):</source>
-      <translation>Pläne auf dem Blatt (der gewählte wird umgewandelt):</translation>
+      <source>Plans on the sheet: the selected one is converted. The main plan (★) is pre-selected; click another in the list or on the sheet, or draw an extent.</source>
+      <translation>Pläne auf dem Blatt: der gewählte wird umgewandelt. Der Hauptplan (★) ist vorgewählt; einen anderen in der Liste oder auf dem Blatt anklicken oder einen Ausschnitt zeichnen.</translation>
     </message>
     <message>
       <location filename="../ui/convert_wizard.py" />

@@ -412,8 +412,8 @@ PASSAGES（可选）：区域的通道；被拆分的区域获得各自的通道
     </message>
     <message>
       <location filename="../ui/convert_wizard.py" />
-      <source>Pick the DXF/DWG files of the building, one per floor (bottom floor first). The table shows the layers of the selected file and which ones the layer rules keep as structure; below, the plans found on its sheet: the main plan is pre-selected, click another (in the list or on the sheet) or draw an extent.</source>
-      <translation>选择建筑的 DXF/DWG 文件，每层一个（最底层在前）。表格显示所选文件的图层，以及图层规则将哪些图层保留为结构；下方为在其图幅上找到的平面图：主平面图已预先选中，可点击其他平面图（在列表中或图幅上）或绘制范围。</translation>
+      <source>Pick the DXF/DWG files of the building, one per floor (bottom floor first), and check the layers kept as structure and the plan converted on each sheet.</source>
+      <translation>选择建筑的 DXF/DWG 文件，每层一个（最低层在前），并检查作为结构保留的图层以及每张图幅上要转换的平面图。</translation>
     </message>
     <message>
       <location filename="../ui/convert_wizard.py" />
@@ -457,8 +457,8 @@ PASSAGES（可选）：区域的通道；被拆分的区域获得各自的通道
     </message>
     <message>
       <location filename="../ui/convert_wizard.py" />
-      <source>Plans on the sheet (the selected one is converted):</source>
-      <translation>图幅上的平面图（转换选中的一个）：</translation>
+      <source>Plans on the sheet: the selected one is converted. The main plan (★) is pre-selected; click another in the list or on the sheet, or draw an extent.</source>
+      <translation>图幅上的平面图：转换选中的一个。主平面图（★）已预选；可在列表或图幅上点击另一个，或绘制一个范围。</translation>
     </message>
     <message>
       <location filename="../ui/convert_wizard.py" />

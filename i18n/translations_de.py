@@ -1329,4 +1329,10 @@ T = {
          "Layer der gewählten Datei und welche die Regeln als Bauteile behalten; darunter die Pläne ihres "
          "Blatts: Der Hauptplan ist vorgewählt, einen anderen anklicken (in der Liste oder auf dem Blatt) "
          "oder eine Ausdehnung zeichnen."),
+    ("Pick the DXF/DWG files of the building, one per floor (bottom floor first), "
+     "and check the layers kept as structure and the plan converted on each sheet."):
+        'DXF/DWG-Dateien des Gebäudes wählen, eine je Geschoss (unterstes zuerst), und die als Bauteile behaltenen Layer sowie den umgewandelten Plan jedes Blatts prüfen.',
+    ("Plans on the sheet: the selected one is converted. The main plan (★) is "
+     "pre-selected; click another in the list or on the sheet, or draw an extent."):
+        'Pläne auf dem Blatt: der gewählte wird umgewandelt. Der Hauptplan (★) ist vorgewählt; einen anderen in der Liste oder auf dem Blatt anklicken oder einen Ausschnitt zeichnen.',
 }

@@ -1166,4 +1166,10 @@ T = {
         ("选择建筑的 DXF/DWG 文件，每层一个（最底层在前）。表格显示所选文件的图层，以及图层规则将哪些图层保"
          "留为结构；下方为在其图幅上找到的平面图：主平面图已预先选中，可点击其他平面图（在列表中或图幅上）或"
          "绘制范围。"),
+    ("Pick the DXF/DWG files of the building, one per floor (bottom floor first), "
+     "and check the layers kept as structure and the plan converted on each sheet."):
+        '选择建筑的 DXF/DWG 文件，每层一个（最低层在前），并检查作为结构保留的图层以及每张图幅上要转换的平面图。',
+    ("Plans on the sheet: the selected one is converted. The main plan (★) is "
+     "pre-selected; click another in the list or on the sheet, or draw an extent."):
+        '图幅上的平面图：转换选中的一个。主平面图（★）已预选；可在列表或图幅上点击另一个，或绘制一个范围。',
 }

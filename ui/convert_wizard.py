@@ -143,10 +143,8 @@ class FilesPage(QWizardPage):
         super().__init__()
         self.wiz = wizard
         self.setTitle(tr("1. Floor plans"))
-        self.setSubTitle(tr("Pick the DXF/DWG files of the building, one per floor (bottom floor first). "
-                            "The table shows the layers of the selected file and which ones the layer rules "
-                            "keep as structure; below, the plans found on its sheet: the main plan is "
-                            "pre-selected, click another (in the list or on the sheet) or draw an extent."))
+        self.setSubTitle(tr("Pick the DXF/DWG files of the building, one per floor (bottom floor first), "
+                            "and check the layers kept as structure and the plan converted on each sheet."))
         lay = QVBoxLayout(self)
         row = QHBoxLayout()
         self.files = QListWidget()
@@ -175,7 +173,10 @@ class FilesPage(QWizardPage):
         lay.addWidget(self.summary)
         # plans on the sheet (cad2osmag:listplans): pick the main plan (pre-selected) or another view, or
         # draw an extent over the sheet; the choice is the PLAN of every algorithm the wizard runs
-        lay.addWidget(QLabel(tr("Plans on the sheet (the selected one is converted):")))
+        plans_label = QLabel(tr("Plans on the sheet: the selected one is converted. The main plan (★) is "
+                                "pre-selected; click another in the list or on the sheet, or draw an extent."))
+        plans_label.setWordWrap(True)
+        lay.addWidget(plans_label)
         row = QHBoxLayout()
         self.plans = QTableWidget(0, 4)
         self.plans.setHorizontalHeaderLabels([tr("Plan"), tr("Kind"), tr("Size"), tr("Title")])
