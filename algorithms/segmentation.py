@@ -524,27 +524,43 @@ def _cells(free: np.ndarray, dist: Optional[np.ndarray] = None) -> Tuple[np.ndar
     if dist is None:
         dist = _edt(free)
     rows, cols = free.shape
-    local_max = cv2.dilate(dist, np.ones((3, 3), np.uint8))
-    peaks = (dist >= local_max) & free
+    # steepest ascent pointer of every pixel (itself when no neighbour is strictly higher); the first
+    # direction wins a tie. Within the bounding box of the free pixels, one pixel of margin (no pixel
+    # outside it is free, and a non-free pixel is never higher than a free one).
+    rr = np.flatnonzero(free.any(axis=1))
+    cc = np.flatnonzero(free.any(axis=0))
+    cells = np.zeros((rows, cols), np.int32)
+    if len(rr) == 0:
+        return dist, cells, np.zeros(1, np.float64)
+    # even offsets: OpenCV numbers components by 2 x 2 pixel blocks, so the maxima get the numbers
+    # they get on the whole raster
+    r0, r1 = max(int(rr[0]) - 1, 0) // 2 * 2, min(int(rr[-1]) + 2, rows)
+    c0, c1 = max(int(cc[0]) - 1, 0) // 2 * 2, min(int(cc[-1]) + 2, cols)
+    R, C = r1 - r0, c1 - c0
+    dbox = np.ascontiguousarray(dist[r0:r1, c0:c1])
+    peaks = (dbox >= cv2.dilate(dbox, np.ones((3, 3), np.uint8))) & free[r0:r1, c0:c1]
     n, markers = cv2.connectedComponents(peaks.view(np.uint8), connectivity=8, ltype=cv2.CV_32S)
     peak_val = np.zeros(n, np.float64)
-    peak_val[markers[peaks]] = dist[peaks]
-    # steepest ascent pointer of every pixel (itself when no neighbour is strictly higher)
-    padded = np.pad(dist, 1, mode="constant", constant_values=-1.0)
-    best = dist.copy()
-    step = np.zeros(free.shape, np.int32)
+    peak_val[markers[peaks]] = dbox[peaks]
+    del peaks
+    padded = cv2.copyMakeBorder(dbox, 1, 1, 1, 1, cv2.BORDER_CONSTANT,
+                                value=-1.0)
+    best = padded[1:R + 1, 1:C + 1].copy()
+    step = np.zeros((R, C), np.int32)
+    better = np.empty((R, C), bool)
     for dr in (-1, 0, 1):
         for dc in (-1, 0, 1):
             if dr == 0 and dc == 0:
                 continue
-            nb = padded[1 + dr:rows + 1 + dr, 1 + dc:cols + 1 + dc]
-            better = nb > best
-            best[better] = nb[better]
-            step[better] = dr * cols + dc
-    del best, padded, local_max
-    flat_free = np.flatnonzero(free.ravel())
-    pos = np.full(rows * cols, -1, np.int64)
-    pos[flat_free] = np.arange(len(flat_free))
+            nb = padded[1 + dr:R + 1 + dr, 1 + dc:C + 1 + dc]
+            np.greater(nb, best, out=better)
+            np.maximum(best, nb, out=best)
+            np.copyto(step, np.int32(dr * C + dc), where=better)
+    del best, padded, better
+    free_box = free[r0:r1, c0:c1]
+    flat_free = np.flatnonzero(free_box.ravel()).astype(np.int32)
+    pos = np.full(R * C, -1, np.int32)
+    pos[flat_free] = np.arange(len(flat_free), dtype=np.int32)
     parent = pos[flat_free + step.ravel()[flat_free]]
     del step, pos
     while True:
@@ -552,9 +568,10 @@ def _cells(free: np.ndarray, dist: Optional[np.ndarray] = None) -> Tuple[np.ndar
         if np.array_equal(grand, parent):
             break
         parent = grand
-    cells = np.zeros(rows * cols, np.int32)
-    cells[flat_free] = markers.ravel()[flat_free[parent]]
-    return dist, cells.reshape(rows, cols), peak_val
+    box = np.zeros(R * C, np.int32)
+    box[flat_free] = markers.ravel()[flat_free[parent]]
+    cells[r0:r1, c0:c1] = box.reshape(R, C)
+    return dist, cells, peak_val
 
 
 def _edge_regions(skel: SkeletonGraph, space: np.ndarray, dist: np.ndarray):

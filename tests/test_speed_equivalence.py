@@ -7,18 +7,15 @@ A digest that changes because a *rule* changed on purpose (not a speed-up) is re
 of that rule: run ``python -m tests.test_speed_equivalence`` and paste the printed digests below.
 """
 import hashlib
-import os
-import sys
 from pathlib import Path
 
-import numpy as np
 import pytest
 
 from algorithms import pipeline
 
-from .conftest import REPO
+from .conftest import SHARED_DATA
 
-SIST = REPO.parent / "shared" / "data" / "dxf" / "sist"
+SIST = SHARED_DATA / "dxf" / "sist"
 ANCHOR = dict(anchor_lon=121.5906, anchor_lat=31.1790, rotation_deg=12.5, level="2")
 
 # sha256 of the osmAG file written by pipeline.convert_dxf(src, out, **ANCHOR)
