@@ -321,7 +321,7 @@ def _chord_pockets(claimed: np.ndarray, free_out: np.ndarray, max_chord: float =
 def building_interior(free: np.ndarray, resolution: float, envelope_gap: float = DEFAULT_ENVELOPE_GAP,
                       unknown: Optional[np.ndarray] = None, inside_points=None,
                       footprint_gap: Optional[float] = None, info: Optional[dict] = None,
-                      footprint: bool = False) -> Tuple[np.ndarray, np.ndarray]:
+                      footprint: bool = False, progress=None) -> Tuple[np.ndarray, np.ndarray]:
     """Free space inside the building envelope.
 
     Returns ``(interior_free, envelope)``: ``envelope`` is everything that is not outside, walls
@@ -348,9 +348,11 @@ def building_interior(free: np.ndarray, resolution: float, envelope_gap: float =
 
     Claimed space is closed at the chord between the two facade wall ends of its opening, never
     at the arc of the rolling disk (no bites). ``info`` (a dict) receives figures for the log.
+    ``progress`` is checked for cancel between the raster passes.
     """
     import cv2
 
+    check = progress.check if progress is not None else (lambda: None)
     info = {} if info is None else info
     passable = free if unknown is None else (free | unknown)
     rc0 = max(1.0, envelope_gap / 2.0 / resolution)
@@ -363,7 +365,9 @@ def building_interior(free: np.ndarray, resolution: float, envelope_gap: float =
     # the envelope and the footprint scale exactly (their arcs decide bites), larger scales coarsely
     pad = int(math.ceil(scales[1] if len(scales) > 1 else rc0)) + 2
     dist = _edt(np.pad(passable, pad, mode="constant", constant_values=True))
+    check()
     reach0 = _reach(_outside_centres(dist, rc0), rc0, pad)
+    check()
     interior0 = free & ~reach0
     # what the disk leaves in the corners of the outside (up to rc0^2: corners of 50 degrees and more)
     # is no interior a doorway could open onto
@@ -391,7 +395,9 @@ def building_interior(free: np.ndarray, resolution: float, envelope_gap: float =
     for k, rc in enumerate(scales[1:]):
         if not open_pts and (k > 0 or not footprint):
             break
+        check()
         reach = _reach(_outside_centres(dist, rc), rc, pad) if k == 0 else _coarse_reach(passable, rc)
+        check()
         if k == 0:
             del dist
         cand = free & reach0 & ~reach & ~claimed
@@ -574,7 +580,7 @@ def _cells(free: np.ndarray, dist: Optional[np.ndarray] = None) -> Tuple[np.ndar
     return dist, cells, peak_val
 
 
-def _edge_regions(skel: SkeletonGraph, space: np.ndarray, dist: np.ndarray):
+def _edge_regions(skel: SkeletonGraph, space: np.ndarray, dist: np.ndarray, progress=None):
     """The regions of the topology graph. Returns (regions int32, peak clearance px per region,
     number of clearance basins).
 
@@ -586,6 +592,8 @@ def _edge_regions(skel: SkeletonGraph, space: np.ndarray, dist: np.ndarray):
     pixels join the neighbouring regions.
     """
     _, basins, basin_peak = _cells(space, dist)
+    if progress is not None:
+        progress.check()
     er = skel.edge_raster(lone_nodes=True).ravel()
     skp = np.flatnonzero(er)
     key = er[skp].astype(np.int64) * (len(basin_peak) + 1) + basins.ravel()[skp]
@@ -593,7 +601,7 @@ def _edge_regions(skel: SkeletonGraph, space: np.ndarray, dist: np.ndarray):
     seeds = np.zeros(space.shape, np.int32)
     seeds.ravel()[skp] = inv + 1
     del er, skp, key, inv
-    regions = nearest_seed_regions(seeds, space, zones=basins)
+    regions = nearest_seed_regions(seeds, space, zones=basins, progress=progress)
     rest = (regions == 0) & (basins > 0)
     if rest.any():
         _, inv = np.unique(basins[rest], return_inverse=True)
@@ -1057,7 +1065,7 @@ def segment(grid: OccupancyGrid, door_width: float = DEFAULT_DOOR_WIDTH,
     # unknown cells are not passable for the envelope disk either: some maps draw walls in grey
     info: dict = {}
     interior, envelope = building_interior(free, res, envelope_gap, inside_points=pix_pts, info=info,
-                                           footprint=footprint)
+                                           footprint=footprint, progress=progress)
     del envelope
     stats["claimed_open_m2"] = info.get("claimed_px", 0) * res * res
     stats["inside_points"] = float(info.get("inside_points", 0))
@@ -1080,13 +1088,14 @@ def segment(grid: OccupancyGrid, door_width: float = DEFAULT_DOOR_WIDTH,
     t = time.perf_counter()
     space = _without_specks(interior, res) if SPECK_M2 > 0 else interior
     dist = _edt(space)
+    progress.check()
     pockets = _narrow_pockets(space, dist, res)
     if pockets is not None:
         stats["narrow_pockets_m2"] = float(pockets.sum()) * res * res
         space = space & ~pockets
         interior = interior & ~pockets
         dist[pockets] = 0
-    skel = skeleton_graph(space, res, prune=prune, dist=dist)
+    skel = skeleton_graph(space, res, prune=prune, dist=dist, progress=progress)
     stats["skeleton_s"] = time.perf_counter() - t
     stats.update(skeleton_nodes=float(skel.n_nodes), skeleton_edges=float(skel.n_edges),
                  skeleton_junctions=float(skel.junctions), skeleton_dead_ends=float(skel.dead_ends),
@@ -1095,7 +1104,7 @@ def segment(grid: OccupancyGrid, door_width: float = DEFAULT_DOOR_WIDTH,
                       f"{skel.n_edges} edges, {skel.pruned} branches shorter than {prune:g} m pruned")
 
     t = time.perf_counter()
-    cells, peak, n_basins = _edge_regions(skel, space, dist)
+    cells, peak, n_basins = _edge_regions(skel, space, dist, progress=progress)
     if space is not interior:
         cells[~interior] = 0
     stats["regions_s"] = time.perf_counter() - t
