@@ -456,7 +456,8 @@ def _narrow_pockets(space: np.ndarray, dist: np.ndarray, resolution: float) -> O
     if n <= 2:
         return None
     top = np.zeros(n)
-    np.maximum.at(top, lab.ravel(), dist.ravel().astype(np.float64))
+    inside = lab > 0  # the background's top is never used
+    np.maximum.at(top, lab[inside], dist[inside].astype(np.float64))
     narrow = (top - 0.5) * resolution < POCKET_CLEARANCE_M
     narrow[0] = False
     if narrow[1:].all():
@@ -804,7 +805,7 @@ def _drop_outside_pockets(labels: np.ndarray, outside: np.ndarray, group_peak: n
     keep_ids = np.nonzero(~drop[1:])[0] + 1
     lut = np.zeros(n + 1, np.int32)
     lut[keep_ids] = np.arange(1, len(keep_ids) + 1, dtype=np.int32)
-    dropped_px = int(np.isin(labels, np.nonzero(drop)[0]).sum())
+    dropped_px = int(np.count_nonzero(drop[labels]))
     return lut[labels], np.r_[0.0, group_peak[keep_ids]], dropped_px
 
 

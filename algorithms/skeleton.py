@@ -495,11 +495,11 @@ def nearest_seed_regions(seeds: np.ndarray, space: np.ndarray, zones: Optional[n
     cc = np.nonzero(space.any(axis=0))[0]
     r0, r1, c0, c1 = int(rr[0]), int(rr[-1]) + 1, int(cc[0]), int(cc[-1]) + 1
     sp = space[r0:r1, c0:c1]
-    sd = np.where(sp, seeds[r0:r1, c0:c1], 0).astype(np.int32)
+    sd = np.where(sp, seeds[r0:r1, c0:c1], np.int32(0)).astype(np.int32, copy=False)
     zn = None if zones is None else zones[r0:r1, c0:c1]
-    src = (sd == 0).view(np.uint8)
     seed_flat = np.flatnonzero(sd.ravel())
     if zn is None:
+        src = (sd == 0).view(np.uint8)
         _, near = cv2.distanceTransformWithLabels(src, cv2.DIST_L2, 5, labelType=cv2.DIST_LABEL_PIXEL)
         lab = np.r_[0, sd.ravel()[seed_flat]].astype(np.int32)[near]
         del near
