@@ -521,7 +521,7 @@ def nearest_seed_regions(seeds: np.ndarray, space: np.ndarray, zones: Optional[n
         # a zone with several: the closest of its labels
         multi = labels_in > 1
         multi[0] = False
-        boxes = ndi.find_objects(np.where(multi[zn], zn, 0))
+        boxes = ndi.find_objects(zn)  # the boxes of the zones with several labels are the same
         for i, z in enumerate(np.nonzero(multi)[0].tolist()):
             if progress is not None and i % 32 == 0:
                 progress.check()
