@@ -105,21 +105,21 @@ def _grow_to_touching(geometries: Sequence[CadGeometry], box, max_growth: float 
     Growth is capped at ``max_growth`` times the box size on each side.
     """
     xmin, ymin, xmax, ymax = box
-    mins, maxs = [], []
-    for g in geometries:
-        c = g.coords
-        if len(c) == 0:
-            continue
-        if len(c) == 2:
-            a, b = c[0], c[1]
-            mins.append((min(a[0], b[0]), min(a[1], b[1])))
-            maxs.append((max(a[0], b[0]), max(a[1], b[1])))
-        else:
-            mins.append(np.nanmin(c, axis=0))
-            maxs.append(np.nanmax(c, axis=0))
-    if not mins:
+    arrs = [g.coords for g in geometries if len(g.coords)]
+    if not arrs:
         return box
-    mn, mx = np.array(mins, dtype=np.float64), np.array(maxs, dtype=np.float64)
+    # per-geometry bounds in one pass over all vertices (NaN separators ignored, as by nanmin)
+    lens = np.array([len(c) for c in arrs])
+    starts = np.r_[0, np.cumsum(lens)[:-1]]
+    allc = np.concatenate(arrs, axis=0).astype(np.float64, copy=False)
+    with np.errstate(invalid="ignore"):
+        mn = np.fmin.reduceat(allc, starts, axis=0)
+        mx = np.fmax.reduceat(allc, starts, axis=0)
+    two = np.flatnonzero(lens == 2)
+    if len(two):  # two vertices: min()/max() of Python (a NaN first vertex wins)
+        a, b = allc[starts[two]], allc[starts[two] + 1]
+        mn[two] = np.where(b < a, b, a)
+        mx[two] = np.where(b > a, b, a)
     touch = (mx[:, 0] >= xmin) & (mn[:, 0] <= xmax) & (mx[:, 1] >= ymin) & (mn[:, 1] <= ymax)
     if not touch.any():
         return box
@@ -255,9 +255,18 @@ def draw_geometries(img: np.ndarray, geometries: Sequence[CadGeometry], ox: floa
         for ring in _split_rings(c):
             if len(ring) == 1:
                 ring = np.vstack((ring, ring))
-            (lst[0] if (g.closed and len(ring) >= 3) else lst[1]).append(_to_px(ring, ox, oy, res))
+            (lst[0] if (g.closed and len(ring) >= 3) else lst[1]).append(ring)
         if progress is not None and i % 5000 == 4999:
             progress.step(80.0 * i / n)
+    # one pixel conversion of all rings at once (per-ring calls were most of this step's time)
+    rings = [r for closed, opened in by_thickness.values() for r in closed + opened]
+    if rings:
+        px = np.split(_to_px(np.concatenate(rings), ox, oy, res), np.cumsum([len(r) for r in rings])[:-1])
+        k = 0
+        for closed, opened in by_thickness.values():
+            for lst in (closed, opened):
+                lst[:] = px[k:k + len(lst)]
+                k += len(lst)
     for t, (closed, opened) in by_thickness.items():
         if closed:
             cv2.polylines(img, closed, True, OCCUPIED, thickness=t, lineType=lt, shift=SHIFT)
@@ -285,12 +294,11 @@ def repair(img: np.ndarray, kernel: int) -> np.ndarray:
     if n <= 1:
         return closed
     keep = np.zeros(n, dtype=bool)
-    keep[np.unique(labels[opened > 0])] = True
+    keep[labels[opened > 0]] = True
     span = np.maximum(stats[:, cv2.CC_STAT_WIDTH], stats[:, cv2.CC_STAT_HEIGHT])
     keep |= span > 2 * k
     keep[0] = False
-    out = np.where(keep[labels], OCCUPIED, FREE).astype(np.uint8)
-    return out
+    return np.where(keep, OCCUPIED, FREE).astype(np.uint8)[labels]
 
 
 DOOR_CLEAR_DEPTH = 0.6  # metres across a door hint that are kept free (walls up to this thick)

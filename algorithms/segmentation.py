@@ -321,7 +321,7 @@ def _chord_pockets(claimed: np.ndarray, free_out: np.ndarray, max_chord: float =
 def building_interior(free: np.ndarray, resolution: float, envelope_gap: float = DEFAULT_ENVELOPE_GAP,
                       unknown: Optional[np.ndarray] = None, inside_points=None,
                       footprint_gap: Optional[float] = None, info: Optional[dict] = None,
-                      footprint: bool = False) -> Tuple[np.ndarray, np.ndarray]:
+                      footprint: bool = False, progress=None) -> Tuple[np.ndarray, np.ndarray]:
     """Free space inside the building envelope.
 
     Returns ``(interior_free, envelope)``: ``envelope`` is everything that is not outside, walls
@@ -348,9 +348,11 @@ def building_interior(free: np.ndarray, resolution: float, envelope_gap: float =
 
     Claimed space is closed at the chord between the two facade wall ends of its opening, never
     at the arc of the rolling disk (no bites). ``info`` (a dict) receives figures for the log.
+    ``progress`` is checked for cancel between the raster passes.
     """
     import cv2
 
+    check = progress.check if progress is not None else (lambda: None)
     info = {} if info is None else info
     passable = free if unknown is None else (free | unknown)
     rc0 = max(1.0, envelope_gap / 2.0 / resolution)
@@ -363,7 +365,9 @@ def building_interior(free: np.ndarray, resolution: float, envelope_gap: float =
     # the envelope and the footprint scale exactly (their arcs decide bites), larger scales coarsely
     pad = int(math.ceil(scales[1] if len(scales) > 1 else rc0)) + 2
     dist = _edt(np.pad(passable, pad, mode="constant", constant_values=True))
+    check()
     reach0 = _reach(_outside_centres(dist, rc0), rc0, pad)
+    check()
     interior0 = free & ~reach0
     # what the disk leaves in the corners of the outside (up to rc0^2: corners of 50 degrees and more)
     # is no interior a doorway could open onto
@@ -391,7 +395,9 @@ def building_interior(free: np.ndarray, resolution: float, envelope_gap: float =
     for k, rc in enumerate(scales[1:]):
         if not open_pts and (k > 0 or not footprint):
             break
+        check()
         reach = _reach(_outside_centres(dist, rc), rc, pad) if k == 0 else _coarse_reach(passable, rc)
+        check()
         if k == 0:
             del dist
         cand = free & reach0 & ~reach & ~claimed
@@ -450,7 +456,8 @@ def _narrow_pockets(space: np.ndarray, dist: np.ndarray, resolution: float) -> O
     if n <= 2:
         return None
     top = np.zeros(n)
-    np.maximum.at(top, lab.ravel(), dist.ravel().astype(np.float64))
+    inside = lab > 0  # the background's top is never used
+    np.maximum.at(top, lab[inside], dist[inside].astype(np.float64))
     narrow = (top - 0.5) * resolution < POCKET_CLEARANCE_M
     narrow[0] = False
     if narrow[1:].all():
@@ -524,27 +531,43 @@ def _cells(free: np.ndarray, dist: Optional[np.ndarray] = None) -> Tuple[np.ndar
     if dist is None:
         dist = _edt(free)
     rows, cols = free.shape
-    local_max = cv2.dilate(dist, np.ones((3, 3), np.uint8))
-    peaks = (dist >= local_max) & free
+    # steepest ascent pointer of every pixel (itself when no neighbour is strictly higher); the first
+    # direction wins a tie. Within the bounding box of the free pixels, one pixel of margin (no pixel
+    # outside it is free, and a non-free pixel is never higher than a free one).
+    rr = np.flatnonzero(free.any(axis=1))
+    cc = np.flatnonzero(free.any(axis=0))
+    cells = np.zeros((rows, cols), np.int32)
+    if len(rr) == 0:
+        return dist, cells, np.zeros(1, np.float64)
+    # even offsets: OpenCV numbers components by 2 x 2 pixel blocks, so the maxima get the numbers
+    # they get on the whole raster
+    r0, r1 = max(int(rr[0]) - 1, 0) // 2 * 2, min(int(rr[-1]) + 2, rows)
+    c0, c1 = max(int(cc[0]) - 1, 0) // 2 * 2, min(int(cc[-1]) + 2, cols)
+    R, C = r1 - r0, c1 - c0
+    dbox = np.ascontiguousarray(dist[r0:r1, c0:c1])
+    peaks = (dbox >= cv2.dilate(dbox, np.ones((3, 3), np.uint8))) & free[r0:r1, c0:c1]
     n, markers = cv2.connectedComponents(peaks.view(np.uint8), connectivity=8, ltype=cv2.CV_32S)
     peak_val = np.zeros(n, np.float64)
-    peak_val[markers[peaks]] = dist[peaks]
-    # steepest ascent pointer of every pixel (itself when no neighbour is strictly higher)
-    padded = np.pad(dist, 1, mode="constant", constant_values=-1.0)
-    best = dist.copy()
-    step = np.zeros(free.shape, np.int32)
+    peak_val[markers[peaks]] = dbox[peaks]
+    del peaks
+    padded = cv2.copyMakeBorder(dbox, 1, 1, 1, 1, cv2.BORDER_CONSTANT,
+                                value=-1.0)
+    best = padded[1:R + 1, 1:C + 1].copy()
+    step = np.zeros((R, C), np.int32)
+    better = np.empty((R, C), bool)
     for dr in (-1, 0, 1):
         for dc in (-1, 0, 1):
             if dr == 0 and dc == 0:
                 continue
-            nb = padded[1 + dr:rows + 1 + dr, 1 + dc:cols + 1 + dc]
-            better = nb > best
-            best[better] = nb[better]
-            step[better] = dr * cols + dc
-    del best, padded, local_max
-    flat_free = np.flatnonzero(free.ravel())
-    pos = np.full(rows * cols, -1, np.int64)
-    pos[flat_free] = np.arange(len(flat_free))
+            nb = padded[1 + dr:R + 1 + dr, 1 + dc:C + 1 + dc]
+            np.greater(nb, best, out=better)
+            np.maximum(best, nb, out=best)
+            np.copyto(step, np.int32(dr * C + dc), where=better)
+    del best, padded, better
+    free_box = free[r0:r1, c0:c1]
+    flat_free = np.flatnonzero(free_box.ravel()).astype(np.int32)
+    pos = np.full(R * C, -1, np.int32)
+    pos[flat_free] = np.arange(len(flat_free), dtype=np.int32)
     parent = pos[flat_free + step.ravel()[flat_free]]
     del step, pos
     while True:
@@ -552,12 +575,13 @@ def _cells(free: np.ndarray, dist: Optional[np.ndarray] = None) -> Tuple[np.ndar
         if np.array_equal(grand, parent):
             break
         parent = grand
-    cells = np.zeros(rows * cols, np.int32)
-    cells[flat_free] = markers.ravel()[flat_free[parent]]
-    return dist, cells.reshape(rows, cols), peak_val
+    box = np.zeros(R * C, np.int32)
+    box[flat_free] = markers.ravel()[flat_free[parent]]
+    cells[r0:r1, c0:c1] = box.reshape(R, C)
+    return dist, cells, peak_val
 
 
-def _edge_regions(skel: SkeletonGraph, space: np.ndarray, dist: np.ndarray):
+def _edge_regions(skel: SkeletonGraph, space: np.ndarray, dist: np.ndarray, progress=None):
     """The regions of the topology graph. Returns (regions int32, peak clearance px per region,
     number of clearance basins).
 
@@ -569,6 +593,8 @@ def _edge_regions(skel: SkeletonGraph, space: np.ndarray, dist: np.ndarray):
     pixels join the neighbouring regions.
     """
     _, basins, basin_peak = _cells(space, dist)
+    if progress is not None:
+        progress.check()
     er = skel.edge_raster(lone_nodes=True).ravel()
     skp = np.flatnonzero(er)
     key = er[skp].astype(np.int64) * (len(basin_peak) + 1) + basins.ravel()[skp]
@@ -576,7 +602,7 @@ def _edge_regions(skel: SkeletonGraph, space: np.ndarray, dist: np.ndarray):
     seeds = np.zeros(space.shape, np.int32)
     seeds.ravel()[skp] = inv + 1
     del er, skp, key, inv
-    regions = nearest_seed_regions(seeds, space, zones=basins)
+    regions = nearest_seed_regions(seeds, space, zones=basins, progress=progress)
     rest = (regions == 0) & (basins > 0)
     if rest.any():
         _, inv = np.unique(basins[rest], return_inverse=True)
@@ -779,7 +805,7 @@ def _drop_outside_pockets(labels: np.ndarray, outside: np.ndarray, group_peak: n
     keep_ids = np.nonzero(~drop[1:])[0] + 1
     lut = np.zeros(n + 1, np.int32)
     lut[keep_ids] = np.arange(1, len(keep_ids) + 1, dtype=np.int32)
-    dropped_px = int(np.isin(labels, np.nonzero(drop)[0]).sum())
+    dropped_px = int(np.count_nonzero(drop[labels]))
     return lut[labels], np.r_[0.0, group_peak[keep_ids]], dropped_px
 
 
@@ -1040,7 +1066,7 @@ def segment(grid: OccupancyGrid, door_width: float = DEFAULT_DOOR_WIDTH,
     # unknown cells are not passable for the envelope disk either: some maps draw walls in grey
     info: dict = {}
     interior, envelope = building_interior(free, res, envelope_gap, inside_points=pix_pts, info=info,
-                                           footprint=footprint)
+                                           footprint=footprint, progress=progress)
     del envelope
     stats["claimed_open_m2"] = info.get("claimed_px", 0) * res * res
     stats["inside_points"] = float(info.get("inside_points", 0))
@@ -1063,13 +1089,14 @@ def segment(grid: OccupancyGrid, door_width: float = DEFAULT_DOOR_WIDTH,
     t = time.perf_counter()
     space = _without_specks(interior, res) if SPECK_M2 > 0 else interior
     dist = _edt(space)
+    progress.check()
     pockets = _narrow_pockets(space, dist, res)
     if pockets is not None:
         stats["narrow_pockets_m2"] = float(pockets.sum()) * res * res
         space = space & ~pockets
         interior = interior & ~pockets
         dist[pockets] = 0
-    skel = skeleton_graph(space, res, prune=prune, dist=dist)
+    skel = skeleton_graph(space, res, prune=prune, dist=dist, progress=progress)
     stats["skeleton_s"] = time.perf_counter() - t
     stats.update(skeleton_nodes=float(skel.n_nodes), skeleton_edges=float(skel.n_edges),
                  skeleton_junctions=float(skel.junctions), skeleton_dead_ends=float(skel.dead_ends),
@@ -1078,7 +1105,7 @@ def segment(grid: OccupancyGrid, door_width: float = DEFAULT_DOOR_WIDTH,
                       f"{skel.n_edges} edges, {skel.pruned} branches shorter than {prune:g} m pruned")
 
     t = time.perf_counter()
-    cells, peak, n_basins = _edge_regions(skel, space, dist)
+    cells, peak, n_basins = _edge_regions(skel, space, dist, progress=progress)
     if space is not interior:
         cells[~interior] = 0
     stats["regions_s"] = time.perf_counter() - t

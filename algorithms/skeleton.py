@@ -60,14 +60,14 @@ def _codes(img: np.ndarray, idx: np.ndarray, width: int) -> np.ndarray:
     return code
 
 
-def thin(mask: np.ndarray, dist: Optional[np.ndarray] = None) -> np.ndarray:
+def thin(mask: np.ndarray, dist: Optional[np.ndarray] = None, progress=None) -> np.ndarray:
     """One-pixel, 8-connected skeleton of ``mask`` that keeps its topology.
 
     Pixels are visited in order of their Euclidean distance ``dist`` to the nearest background pixel
     (computed when not given), one layer of one pixel at a time; inside a layer the two Guo-Hall
     sub-iterations repeat until nothing changes. Pixels a layer could not remove because they were
     not yet on the border are visited again with the next layer; a last round over the whole
-    skeleton removes what became removable later.
+    skeleton removes what became removable later. ``progress``: checked for cancel every few layers.
     """
     from .segmentation import _edt
 
@@ -80,11 +80,11 @@ def thin(mask: np.ndarray, dist: Optional[np.ndarray] = None) -> np.ndarray:
     if len(rr) == 0:
         return out
     box = (slice(int(rr[0]), int(rr[-1]) + 1), slice(int(cc[0]), int(cc[-1]) + 1))
-    out[box] = _thin_box(np.ascontiguousarray(mask[box]), dist[box])
+    out[box] = _thin_box(np.ascontiguousarray(mask[box]), dist[box], progress)
     return out
 
 
-def _thin_box(mask: np.ndarray, dist: np.ndarray) -> np.ndarray:
+def _thin_box(mask: np.ndarray, dist: np.ndarray, progress=None) -> np.ndarray:
     rows, cols = mask.shape
     width = cols + 2
     img = np.zeros((rows + 2, width), np.uint8)
@@ -105,6 +105,8 @@ def _thin_box(mask: np.ndarray, dist: np.ndarray) -> np.ndarray:
 
     def sweep(cand):
         while True:
+            if progress is not None:
+                progress.check()
             removed = 0
             for sub in (0, 1):
                 cand = cand[img[cand] == 1]
@@ -124,6 +126,8 @@ def _thin_box(mask: np.ndarray, dist: np.ndarray) -> np.ndarray:
             cand = np.concatenate([carry, cand])
         if len(cand) == 0:
             continue
+        if progress is not None and k % 16 == 0:
+            progress.check()
         cand = sweep(cand)
         border = np.zeros(len(cand), bool)
         for off in four:
@@ -283,7 +287,8 @@ def _chain_lengths(labels: np.ndarray, n: int) -> np.ndarray:
 
 
 def skeleton_graph(free_mask: np.ndarray, resolution: float, prune: float = 0.25,
-                   dist: Optional[np.ndarray] = None, skeleton: Optional[np.ndarray] = None) -> SkeletonGraph:
+                   dist: Optional[np.ndarray] = None, skeleton: Optional[np.ndarray] = None,
+                   progress=None) -> SkeletonGraph:
     """Skeleton graph of the free space ``free_mask`` (True = free) at ``resolution`` m/px.
 
     Nodes: dead ends and junctions of the thinned skeleton with their clearance in metres (distance
@@ -293,6 +298,7 @@ def skeleton_graph(free_mask: np.ndarray, resolution: float, prune: float = 0.25
     edge of its piece of skeleton stays), merging the nodes left with two branches.
     ``dist`` (Euclidean distance in px of every free pixel to the nearest non-free one, as
     ``cv2.distanceTransform`` gives) and ``skeleton`` may be passed when already computed.
+    ``progress`` (``progress.Progress``) is checked for cancel in the long loops.
     """
     import cv2
 
@@ -303,7 +309,7 @@ def skeleton_graph(free_mask: np.ndarray, resolution: float, prune: float = 0.25
     if dist is None:
         dist = _edt(free_mask)
     if skeleton is None:
-        skeleton = thin(free_mask, dist)
+        skeleton = thin(free_mask, dist, progress)
     # work inside the bounding box of the skeleton, one pixel of margin
     rr = np.nonzero(skeleton.any(axis=1))[0]
     cc = np.nonzero(skeleton.any(axis=0))[0]
@@ -407,6 +413,8 @@ def skeleton_graph(free_mask: np.ndarray, resolution: float, prune: float = 0.25
 
     changed = True
     while changed:
+        if progress is not None:
+            progress.check()
         changed = False
         # prune: dead-end branches shorter than PRUNE whose other end is a junction
         cut = []
@@ -470,13 +478,14 @@ def skeleton_graph(free_mask: np.ndarray, resolution: float, prune: float = 0.25
 
 # --------------------------------------------------------------------------- regions
 def nearest_seed_regions(seeds: np.ndarray, space: np.ndarray, zones: Optional[np.ndarray] = None,
-                         fill_zones: bool = True) -> np.ndarray:
+                         fill_zones: bool = True, progress=None) -> np.ndarray:
     """Give every pixel of ``space`` the label of the closest pixel of ``seeds`` (int32, 0 = no
     seed), through free space: the Euclidean nearest seed, except where that seed is only reached
     across a wall (a piece of a label that holds none of its seeds), whose pixels are grown into
     from the neighbouring labels. With ``zones`` (int raster, 0 = none; the seeds of one label lie
     in one zone) a label only takes pixels of its own zone; the zones that hold no seed are then
-    grown into from their neighbours (``fill_zones``) or stay 0. Pixels no seed reaches stay 0."""
+    grown into from their neighbours (``fill_zones``) or stay 0. Pixels no seed reaches stay 0.
+    ``progress`` is checked for cancel in the loops over zones and labels."""
     import cv2
 
     out = np.zeros(space.shape, np.int32)
@@ -486,11 +495,11 @@ def nearest_seed_regions(seeds: np.ndarray, space: np.ndarray, zones: Optional[n
     cc = np.nonzero(space.any(axis=0))[0]
     r0, r1, c0, c1 = int(rr[0]), int(rr[-1]) + 1, int(cc[0]), int(cc[-1]) + 1
     sp = space[r0:r1, c0:c1]
-    sd = np.where(sp, seeds[r0:r1, c0:c1], 0).astype(np.int32)
+    sd = np.where(sp, seeds[r0:r1, c0:c1], np.int32(0)).astype(np.int32, copy=False)
     zn = None if zones is None else zones[r0:r1, c0:c1]
-    src = (sd == 0).view(np.uint8)
     seed_flat = np.flatnonzero(sd.ravel())
     if zn is None:
+        src = (sd == 0).view(np.uint8)
         _, near = cv2.distanceTransformWithLabels(src, cv2.DIST_L2, 5, labelType=cv2.DIST_LABEL_PIXEL)
         lab = np.r_[0, sd.ravel()[seed_flat]].astype(np.int32)[near]
         del near
@@ -512,8 +521,10 @@ def nearest_seed_regions(seeds: np.ndarray, space: np.ndarray, zones: Optional[n
         # a zone with several: the closest of its labels
         multi = labels_in > 1
         multi[0] = False
-        boxes = ndi.find_objects(np.where(multi[zn], zn, 0))
-        for z in np.nonzero(multi)[0].tolist():
+        boxes = ndi.find_objects(zn)  # the boxes of the zones with several labels are the same
+        for i, z in enumerate(np.nonzero(multi)[0].tolist()):
+            if progress is not None and i % 32 == 0:
+                progress.check()
             sl = boxes[z - 1]
             inside = zn[sl] == z
             sub_seeds = np.where(inside, sd[sl], 0)
@@ -523,16 +534,16 @@ def nearest_seed_regions(seeds: np.ndarray, space: np.ndarray, zones: Optional[n
             sub_lab = np.r_[0, sub_seeds.ravel()[flat]].astype(np.int32)[nl]
             lab[sl][inside] = sub_lab[inside]
         lab[~sp] = 0
-    lab = _regrow_orphans(lab, sd, sp, zn, label_zone)
+    lab = _regrow_orphans(lab, sd, sp, zn, label_zone, progress=progress)
     if zn is not None and fill_zones and (sp & (lab == 0)).any():
         # the zones holding no seed: their pixels join the neighbouring labels
-        lab = _regrow_orphans(lab, sd, sp, check_pieces=False)
+        lab = _regrow_orphans(lab, sd, sp, check_pieces=False, progress=progress)
     out[r0:r1, c0:c1] = lab
     return out
 
 
 def _regrow_orphans(lab: np.ndarray, seeds: np.ndarray, space: np.ndarray, zones=None, label_zone=None,
-                    check_pieces: bool = True) -> np.ndarray:
+                    check_pieces: bool = True, progress=None) -> np.ndarray:
     """Clear the pieces (4-connected) of every label that hold none of its seed pixels (with
     ``check_pieces``) and grow the labels into them and into the other unlabelled pixels of
     ``space``, one pixel ring per round, through ``space`` only (and inside the label's zone when
@@ -542,6 +553,8 @@ def _regrow_orphans(lab: np.ndarray, seeds: np.ndarray, space: np.ndarray, zones
 
     orphan = space & (lab == 0)
     for lab_id, sl in enumerate(ndi.find_objects(lab) if check_pieces else [], start=1):
+        if progress is not None and lab_id % 64 == 0:
+            progress.check()
         if sl is None:
             continue
         sub = lab[sl] == lab_id
@@ -563,6 +576,8 @@ def _regrow_orphans(lab: np.ndarray, seeds: np.ndarray, space: np.ndarray, zones
     flat = lab.ravel()
     zflat = None if zones is None else zones.ravel()
     while len(todo):
+        if progress is not None:
+            progress.check()
         r, c = todo // cols, todo % cols
         best = np.zeros(len(todo), np.int32)
         for dr, dc in ((-1, 0), (1, 0), (0, -1), (0, 1)):
