@@ -654,6 +654,36 @@ def _shaft_segment(poly):
     return seg
 
 
+def shaft_link_candidates(lower: Sequence[Anchor], upper: Sequence[Anchor]):
+    """Pairs of anchors on two consecutive levels (already registered) that may be one shaft, best first:
+    [(overlap, lower anchor, upper anchor, intersection)]; the caller links them one to one in this order.
+
+    A shaft code names one shaft on every floor: two anchors carrying the same code (``E1-ST-07`` on both
+    levels) are linked first, whenever they touch at all (a stair drawn with its landing on one floor and
+    without it on the next overlaps little); two anchors carrying *different* codes are never linked, however
+    much they overlap (one of the codes sits on the wrong stair, or two stairs share a stairwell outline).
+    Anchors with at most one code are linked by overlap: same kind, the intersection covering at least
+    MIN_SHAFT_OVERLAP of the smaller one."""
+    out = []
+    for x in lower:
+        cx = shaft_code(x.name)
+        for y in upper:
+            if x.kind != y.kind:
+                continue
+            cy = shaft_code(y.name)
+            if cx and cy and cx != cy:
+                continue
+            inter = x.polygon.intersection(y.polygon)
+            if inter.is_empty:
+                continue
+            ov = inter.area / max(min(x.size, y.size), 1e-9)
+            same = bool(cx) and cx == cy
+            if ov >= MIN_SHAFT_OVERLAP or (same and inter.area > 0.0):
+                out.append((same, ov, x, y, inter))
+    out.sort(key=lambda c: (not c[0], -c[1]))
+    return [c[1:] for c in out]
+
+
 def fuse_floors(floors: Sequence[FloorData], out_path: str, frame, building_name: str = "Building",
                 levels: Optional[Sequence[str]] = None, heights: Optional[Sequence[float]] = None,
                 variant: str = "semantic", register: bool = True, strict_passages: bool = False,
@@ -855,18 +885,7 @@ def fuse_floors(floors: Sequence[FloorData], out_path: str, frame, building_name
             warn(f"levels {lo.level} and {hi.level} are consecutive in this set but not adjacent: their shafts "
                  "are linked directly")
         al, ah = floor_anchors(lo), floor_anchors(hi)
-        cands = []
-        for x in al:
-            for y in ah:
-                if x.kind != y.kind:
-                    continue
-                inter = x.polygon.intersection(y.polygon)
-                if inter.is_empty:
-                    continue
-                ov = inter.area / max(min(x.size, y.size), 1e-9)
-                if ov >= MIN_SHAFT_OVERLAP:
-                    cands.append((ov, x, y, inter))
-        cands.sort(key=lambda c: -c[0])
+        cands = shaft_link_candidates(al, ah)
         used_l, used_h = set(), set()
         for ov, x, y, inter in cands:
             if x.index in used_l or y.index in used_h:

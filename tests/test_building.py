@@ -443,3 +443,35 @@ def test_stairs_on_a_combined_stair_and_lift_layer_are_stairs():
     geoms += [g([(0.2, 20.5 + d), (11.8, 20.5 + d)]) for d in (0.0, 0.1, 0.9, 1.0)]
     changed = classify_vertical_areas([core, shaft, gallery, strip], geoms)
     assert changed == {1: "stairs", 2: "elevator"} and (gallery.type, strip.type) == ("room", "corridor")
+
+
+def _coded_floor(lv, shafts):
+    """A 40 x 12 m hall with coded stair areas cut out: shafts = [(code, polygon)]."""
+    hall = box(0, 0, 40, 12)
+    areas = []
+    for k, (code, poly) in enumerate(shafts, 2):
+        hall = hall.difference(poly)
+        areas.append(Area(id=k, polygon=poly, type="stairs", name=code))
+    return FloorData(source=f"F{lv}.osm", areas=[Area(id=1, polygon=hall, type="corridor", name=f"hall {lv}")]
+                     + areas, passages=[], level=lv)
+
+
+def test_links_join_the_same_shaft_code_and_never_two_different_codes(tmp_path):
+    """A stair code names one shaft on every floor. Level 1: E1-ST-07 drawn with its landing (8 x 3 m),
+    E1-ST-10 beside it; level 2: E1-ST-07 without the landing (3 x 3 m, a third of the lower one: the
+    overlap rule alone would not link it) and, where level 1 has E1-ST-10, a stair coded E1-ST-11 (the code
+    on the wrong stair, or another stair in that well): never linked. E1-ST-01 is drawn alike on both."""
+    lower = [("E1-ST-07", box(2, 0, 10, 3)), ("E1-ST-10", box(12, 0, 15, 3)), ("E1-ST-01", box(30, 0, 33, 4))]
+    upper = [("E1-ST-07", box(2, 0, 5, 3)), ("E1-ST-11", box(12, 0, 15, 3)), ("E1-ST-01", box(30, 0, 33, 4))]
+    cands = building.shaft_link_candidates(building.floor_anchors(_coded_floor("1", lower)),
+                                           building.floor_anchors(_coded_floor("2", upper)))
+    assert [(x.name, y.name) for _, x, y, _ in cands] == [("E1-ST-07", "E1-ST-07"), ("E1-ST-01", "E1-ST-01")]
+    st = fuse_floors([_coded_floor("1", lower), _coded_floor("2", upper)], str(tmp_path / "b.osm"),
+                     LocalFrame(0.0, 0.0), variant="fix-id", register=False)
+    links = sorted((v[2], v[3]) for v in st["vertical"])
+    assert links == [("E1-ST-01 (level 1)", "E1-ST-01 (level 2)"), ("E1-ST-07 (level 1)", "E1-ST-07 (level 2)")]
+    # an uncoded stair on one level still links by overlap with a coded one
+    upper[1] = ("", box(12, 0, 15, 3))
+    st = fuse_floors([_coded_floor("1", lower), _coded_floor("2", upper)], str(tmp_path / "c.osm"),
+                     LocalFrame(0.0, 0.0), variant="fix-id", register=False)
+    assert len(st["vertical"]) == 3
