@@ -521,10 +521,86 @@ def register_anchors(moving: Sequence[Anchor], fixed: Sequence[Anchor], tol: flo
             T = TR
     rot_ok = rotate and spread >= 1.0 and T.theta != 0.0
     T = _robust_refit(T, src, dst, rotate=rot_ok)
-    T = _polish_on_shapes(T, [(moving[i].polygon, fixed[j].polygon) for i, j, _ in inl], rotate=rot_ok)
-    P = T.apply(src)
-    matches = [(i, j, float(np.hypot(*(p - q)))) for (i, j, _), p, q in zip(inl, P, dst)]
+    pairs = [(moving[i].polygon, fixed[j].polygon) for i, j, _ in inl]
+    T = _polish_on_shapes(T, pairs, rotate=rot_ok)
+    T, shifts = _refit_on_local_fits(T, src, pairs, rotate=rot_ok)
+    matches = [(i, j, float(np.hypot(*v))) for (i, j, _), v in zip(inl, shifts)]
     return T, matches
+
+
+def anchor_shift(moved, partner, max_move: float = MATCH_TOLERANCE) -> np.ndarray:
+    """The registration error at one shaft: the smallest shift (x, y, metres) that lays the moved shaft's
+    outline on its partner's, i.e. minimises the part of the smaller of the two outside the other (plus
+    1 cm per metre of shift, to pick the nearest of equally good shifts).
+
+    Unlike the distance of the two centroids, it does not count a shaft cut differently on the two floors
+    as an error: a stair drawn with its landing on one floor and without it on the next fits with no shift
+    (the flight lies inside the larger outline), while two shafts drawn alike but offset by 0.3 m need
+    exactly that shift. Nelder-Mead from no shift; (0, 0) when nothing better is found within ``max_move``."""
+    import shapely
+    from scipy.optimize import minimize
+
+    small, big = (moved, partner) if moved.area <= partner.area else (partner, moved)
+    sign = 1.0 if small is moved else -1.0
+    a_small = max(float(small.area), 1e-9)
+    shapely.prepare(big)
+
+    def cost(v):
+        g = shapely.transform(small, lambda xy: xy + (v[0], v[1]))
+        return 1.0 - float(shapely.area(shapely.intersection(g, big))) / a_small + 0.01 * math.hypot(v[0], v[1])
+
+    c0 = cost((0.0, 0.0))
+    best = np.zeros(2)
+    for step in (0.3, 0.05):
+        x0 = best
+        simplex = np.array([x0, x0 + [step, 0.0], x0 + [0.0, step]])
+        try:
+            res = minimize(cost, x0, method="Nelder-Mead",
+                           options={"initial_simplex": simplex, "xatol": 1e-3, "fatol": 1e-6, "maxiter": 300})
+        except Exception:  # noqa: BLE001 - a degenerate outline: no correction
+            return np.zeros(2)
+        if res.fun < c0 - 1e-9 and math.hypot(*res.x) <= max_move:
+            best, c0 = np.asarray(res.x, float), float(res.fun)
+    return sign * best
+
+
+def _refit_on_local_fits(T: Rigid, src: np.ndarray, pairs, rotate: bool, rounds: int = 3, c: float = 0.15):
+    """ICP-like refinement on the shafts' outlines: each matched shaft proposes where its centroid should
+    land (where its outline lies best on its partner's, :func:`anchor_shift`); the rigid transform is refit
+    on those proposals with Cauchy weights (scale ``c`` m), a few rounds. A shaft cut differently on the
+    two floors proposes no move and so cannot drag the floor. Returns (T, shifts (n, 2)), the shifts being
+    the remaining error per shaft after the last fit."""
+    if not pairs:
+        return T, np.zeros((0, 2))
+
+    def shifts_of(R):
+        return np.array([anchor_shift(R.geometry(pm), pf) for pm, pf in pairs])
+
+    sh = shifts_of(T)
+    for _ in range(rounds if len(pairs) >= 1 else 0):
+        target = T.apply(src) + sh
+        r = np.linalg.norm(sh, axis=1)
+        w = 1.0 / (1.0 + (r / c) ** 2)
+        if len(src) >= 2 and rotate:
+            cs = (src * w[:, None]).sum(0) / w.sum()
+            cd = (target * w[:, None]).sum(0) / w.sum()
+            a, b = (src - cs) * np.sqrt(w)[:, None], (target - cd) * np.sqrt(w)[:, None]
+            theta = math.atan2(float((a[:, 0] * b[:, 1] - a[:, 1] * b[:, 0]).sum()), float((a * b).sum()))
+        else:
+            cs = (src * w[:, None]).sum(0) / w.sum()
+            cd = (target * w[:, None]).sum(0) / w.sum()
+            theta = T.theta
+        co, si = math.cos(theta), math.sin(theta)
+        t = cd - np.array([co * cs[0] - si * cs[1], si * cs[0] + co * cs[1]])
+        R = Rigid(theta, float(t[0]), float(t[1]))
+        sh_new = shifts_of(R)
+        # keep the refit only if it lowers the (robust) error of the shafts
+        def loss(x):
+            return float(np.sum(np.log1p((np.linalg.norm(x, axis=1) / c) ** 2)))
+        if loss(sh_new) >= loss(sh) - 1e-9:
+            break
+        T, sh = R, sh_new
+    return T, sh
 
 
 def _robust_refit(T: Rigid, src: np.ndarray, dst: np.ndarray, rotate: bool, c: float = 0.15,
@@ -760,6 +836,7 @@ def fuse_floors(floors: Sequence[FloorData], out_path: str, frame, building_name
     T: Dict[int, Rigid] = {ref: Rigid()}
     transforms: Dict[str, tuple] = {floors[ref].level: (0.0, 0.0, 0.0, "reference")}
     residuals: Dict[str, list] = {}
+    centroid_res: Dict[str, list] = {}
     rms: Dict[str, float] = {}
     medians: Dict[str, float] = {}
     todo = sorted((k for k in range(n) if k != ref), key=lambda k: abs(k - ref))
@@ -787,6 +864,10 @@ def fuse_floors(floors: Sequence[FloorData], out_path: str, frame, building_name
                         floors[j].areas[anchors[j][jj].index].name or str(floors[j].areas[anchors[j][jj].index].id),
                         round(d, 3)) for i, jj, d in matches]
                 residuals[fl.level] = res
+                fx = {a.index: a.xy for a in anchors[j]}
+                centroid_res[fl.level] = [(r[0], r[1], round(float(np.hypot(*(R.apply(anchors[k][i].xy)
+                                                                               - T[j].apply(fx[anchors[j][jj].index])))), 3))
+                                          for r, (i, jj, _) in zip(res, matches)]
                 rms[fl.level] = float(math.sqrt(np.mean([d * d for _, _, d in res]))) if res else 0.0
                 medians[fl.level] = float(np.median([d for _, _, d in res])) if res else 0.0
                 transforms[fl.level] = (R.tx, R.ty, R.degrees, f"anchors ({len(matches)} matched)")
@@ -928,7 +1009,7 @@ def fuse_floors(floors: Sequence[FloorData], out_path: str, frame, building_name
     areas_in = sum(len(fl.areas) + len(fl.structures) + (1 if fl.outline is not None else 0) for fl in floors)
     stats = {k: v for k, v in written.items() if k not in ("way_ids", "names")}
     stats.update({"floors": n, "levels": [fl.level for fl in floors], "transforms": transforms,
-                  "residuals": residuals, "rms": rms, "median_residual": medians, "vertical": links, "reference": floors[ref].level,
+                  "residuals": residuals, "centroid_residuals": centroid_res, "rms": rms, "median_residual": medians, "vertical": links, "reference": floors[ref].level,
                   "areas_in": areas_in, "areas_out": written["areas"] + written["structure_areas"] - 1,
                   "dropped_passages": {fl.level: fl.dropped_passages for fl in floors if fl.dropped_passages},
                   "warnings": warnings + written["warnings"],
