@@ -43,6 +43,8 @@ from .progress import ensure
 ANCHOR_TYPES = ("stairs", "elevator")
 MATCH_TOLERANCE = 1.5  # metres: an anchor lands on its partner within this after the transform
 MIN_SHAFT_OVERLAP = 0.3  # overlap / smaller shaft area for two anchors to be one shaft
+SHAFT_MAX_AREA = 200.0  # m²: a stair/lift area larger than this is a hall holding stairs, not one shaft
+MIN_SAME_CODE_OVERLAP = 0.1  # the same, for two anchors carrying the same shaft code (flight cut differently)
 MIN_FLOOR_OVERLAP = 0.2  # overlap / smaller floor outline for two floors to belong to one building
 DEFAULT_HEIGHT = 3.2
 
@@ -730,16 +732,31 @@ def _shaft_segment(poly):
     return seg
 
 
+def reliable_codes(anchors: Sequence[Anchor]) -> Dict[int, str]:
+    """{anchor index: shaft code} for the anchors of one floor whose code identifies them: the code is on
+    that anchor only (a code written on two areas of one floor is right on one of them at most) and the
+    anchor is shaft-sized (≤ SHAFT_MAX_AREA m²; a larger stair area is a hall the segmentation merged stairs
+    into, holding several codes, of which it carries the first found)."""
+    import collections
+
+    codes = {a.index: shaft_code(a.name) for a in anchors}
+    count = collections.Counter(c for c in codes.values() if c)
+    return {a.index: codes[a.index] for a in anchors
+            if codes[a.index] and count[codes[a.index]] == 1 and a.size <= SHAFT_MAX_AREA}
+
+
 def shaft_link_candidates(lower: Sequence[Anchor], upper: Sequence[Anchor]):
     """Pairs of anchors on two consecutive levels (already registered) that may be one shaft, best first:
     [(overlap, lower anchor, upper anchor, intersection)]; the caller links them one to one in this order.
 
     A shaft code names one shaft on every floor: two anchors carrying the same code (``E1-ST-07`` on both
-    levels) are linked first, whenever they touch at all (a stair drawn with its landing on one floor and
-    without it on the next overlaps little); two anchors carrying *different* codes are never linked, however
-    much they overlap (one of the codes sits on the wrong stair, or two stairs share a stairwell outline).
-    Anchors with at most one code are linked by overlap: same kind, the intersection covering at least
-    MIN_SHAFT_OVERLAP of the smaller one."""
+    levels) are linked first, when they overlap by MIN_SAME_CODE_OVERLAP of the smaller (the flights of one
+    stair cut differently on two floors); merely touching is not enough (a lift lobby carrying the lift's code
+    on one floor, next to the lift shaft on the next). Two anchors whose codes identify them
+    (:func:`reliable_codes`) and differ are never linked, however much they overlap (one of the codes sits
+    on the wrong stair, or two stairs share a stairwell outline). Other pairs are linked by overlap: same
+    kind, the intersection covering at least MIN_SHAFT_OVERLAP of the smaller one."""
+    rel_l, rel_h = reliable_codes(lower), reliable_codes(upper)
     out = []
     for x in lower:
         cx = shaft_code(x.name)
@@ -747,14 +764,14 @@ def shaft_link_candidates(lower: Sequence[Anchor], upper: Sequence[Anchor]):
             if x.kind != y.kind:
                 continue
             cy = shaft_code(y.name)
-            if cx and cy and cx != cy:
+            if x.index in rel_l and y.index in rel_h and rel_l[x.index] != rel_h[y.index]:
                 continue
             inter = x.polygon.intersection(y.polygon)
             if inter.is_empty:
                 continue
             ov = inter.area / max(min(x.size, y.size), 1e-9)
             same = bool(cx) and cx == cy
-            if ov >= MIN_SHAFT_OVERLAP or (same and inter.area > 0.0):
+            if ov >= MIN_SHAFT_OVERLAP or (same and ov >= MIN_SAME_CODE_OVERLAP):
                 out.append((same, ov, x, y, inter))
     out.sort(key=lambda c: (not c[0], -c[1]))
     return [c[1:] for c in out]

@@ -457,21 +457,24 @@ def _coded_floor(lv, shafts):
 
 
 def test_links_join_the_same_shaft_code_and_never_two_different_codes(tmp_path):
-    """A stair code names one shaft on every floor. Level 1: E1-ST-07 drawn with its landing (8 x 3 m),
-    E1-ST-10 beside it; level 2: E1-ST-07 without the landing (3 x 3 m, a third of the lower one: the
-    overlap rule alone would not link it) and, where level 1 has E1-ST-10, a stair coded E1-ST-11 (the code
-    on the wrong stair, or another stair in that well): never linked. E1-ST-01 is drawn alike on both."""
-    lower = [("E1-ST-07", box(2, 0, 10, 3)), ("E1-ST-10", box(12, 0, 15, 3)), ("E1-ST-01", box(30, 0, 33, 4))]
-    upper = [("E1-ST-07", box(2, 0, 5, 3)), ("E1-ST-11", box(12, 0, 15, 3)), ("E1-ST-01", box(30, 0, 33, 4))]
+    """A stair code names one shaft on every floor. Level 1: E1-ST-07 (8 x 3 m), E1-ST-10 beside it;
+    level 2: E1-ST-07 cut differently (3 x 3 m, overlapping the lower one by 17 % of its area: the overlap
+    rule alone would not link it) and, where level 1 has E1-ST-10, a stair coded E1-ST-11 (the code on the
+    wrong stair, or another stair in that well): never linked. E1-ST-01 is drawn alike on both; E1-ST-20
+    only touches its namesake (a lobby carrying the code beside the shaft): not linked."""
+    lower = [("E1-ST-07", box(2, 0, 10, 3)), ("E1-ST-10", box(14, 0, 17, 3)), ("E1-ST-01", box(30, 0, 33, 4)),
+             ("E1-ST-20", box(20, 0, 23, 3))]
+    upper = [("E1-ST-07", box(9.5, 0, 12.5, 3)), ("E1-ST-11", box(14, 0, 17, 3)), ("E1-ST-01", box(30, 0, 33, 4)),
+             ("E1-ST-20", box(23, 0, 26, 3))]
     cands = building.shaft_link_candidates(building.floor_anchors(_coded_floor("1", lower)),
                                            building.floor_anchors(_coded_floor("2", upper)))
-    assert [(x.name, y.name) for _, x, y, _ in cands] == [("E1-ST-07", "E1-ST-07"), ("E1-ST-01", "E1-ST-01")]
+    assert sorted((x.name, y.name) for _, x, y, _ in cands) == [("E1-ST-01", "E1-ST-01"), ("E1-ST-07", "E1-ST-07")]
     st = fuse_floors([_coded_floor("1", lower), _coded_floor("2", upper)], str(tmp_path / "b.osm"),
                      LocalFrame(0.0, 0.0), variant="fix-id", register=False)
     links = sorted((v[2], v[3]) for v in st["vertical"])
     assert links == [("E1-ST-01 (level 1)", "E1-ST-01 (level 2)"), ("E1-ST-07 (level 1)", "E1-ST-07 (level 2)")]
     # an uncoded stair on one level still links by overlap with a coded one
-    upper[1] = ("", box(12, 0, 15, 3))
+    upper[1] = ("", box(14, 0, 17, 3))
     st = fuse_floors([_coded_floor("1", lower), _coded_floor("2", upper)], str(tmp_path / "c.osm"),
                      LocalFrame(0.0, 0.0), variant="fix-id", register=False)
     assert len(st["vertical"]) == 3
