@@ -13,13 +13,16 @@
    transform is estimated by consensus (RANSAC over every pair of compatible matches, rotation from two
    anchors, translation from one): a wrong match never moves a floor, it is an outlier. The consensus
    is refined by least squares on the anchor centroids and polished on the shapes of the matched
-   anchors (the centroid of their overlap); the residual per anchor and overall (RMS) is reported.
+   anchors, then refit ICP-like on where each shaft's outline lies best on its partner's; the residual
+   per anchor (that local shift: a shaft only cut differently fits with ~0) and overall (RMS) is reported.
    Floors without a usable anchor match fall back to footprint registration (translation by
    cross-correlation of the area outlines, as ``rasterize.floor_offsets`` does for walls), with a
    warning.
 4. **Stitching.** On consecutive converted levels, anchors of the same type that overlap (overlap ≥
    ``MIN_SHAFT_OVERLAP`` of the smaller) are joined by a vertical passage: a two-node way inside both
-   shafts, with the upper floor's level and height (``../shared/docs/osmag-format.md``).
+   shafts, with the upper floor's level and height (``../shared/docs/osmag-format.md``). Same shaft code
+   first (overlap ≥ ``MIN_SAME_CODE_OVERLAP``); two codes that identify their areas and differ never link
+   (:func:`shaft_link_candidates`).
 5. **Hierarchy.** One building structure area (the union of the floor outlines) is the parent of one
    ``structure`` area per level (the floor's outline, computed when the floor has none), which is the
    parent of that floor's areas. Ids are renumbered across the building, names made unique
@@ -444,7 +447,8 @@ def register_anchors(moving: Sequence[Anchor], fixed: Sequence[Anchor], tol: flo
     orientation) and every two compatible pairs whose spacing agrees within ``tol`` (rotation and
     translation). Each is scored by its consensus (anchors landing within ``tol`` of a compatible
     partner, one-to-one); ties go to the smaller rotation, then the smaller residual. The winner is
-    refit by least squares on its inliers. Returns ``(Rigid, matches [(i_moving, i_fixed, residual)])``
+    refit by least squares on its inliers, robustly, then on the shafts' outlines. Returns ``(Rigid, matches
+    [(i_moving, i_fixed, residual)])``, the residual being :func:`anchor_shift`'s length
     or ``(None, [])`` when no anchor pair is compatible.
     """
     from scipy.spatial import cKDTree
@@ -785,8 +789,9 @@ def fuse_floors(floors: Sequence[FloorData], out_path: str, frame, building_name
 
     ``levels``/``heights``: per floor (None entries: from tags / file name / default 3.2 m). Returns
     figures: ``levels``, ``transforms`` {level: (dx, dy, degrees, method)}, ``residuals`` {level:
-    [(anchor, partner, metres)]} (distance of the shafts' centroids after registration: a shaft drawn
-    differently on the two floors shows its difference here), ``rms`` and ``median_residual`` {level:
+    [(anchor, partner, metres)]} (after registration, how far each shaft must move to lie on its partner,
+    :func:`anchor_shift`: a shaft only cut differently on the two floors fits with ~0), ``centroid_residuals``
+    (the same pairs, distance of the two centroids: cuts show here), ``rms`` and ``median_residual`` {level:
     metres}, ``overall_rms``, ``vertical`` [(lower area, upper area, kind)],
     ``areas_in``/``areas_out``, ``passages``, ``dropped_passages``, ``warnings``, plus the writer's stats.
     Raises InputError (nothing written) for unknown or repeated levels, floors that do not overlap,
