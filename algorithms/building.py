@@ -886,10 +886,8 @@ def fuse_floors(floors: Sequence[FloorData], out_path: str, frame, building_name
                         floors[j].areas[anchors[j][jj].index].name or str(floors[j].areas[anchors[j][jj].index].id),
                         round(d, 3)) for i, jj, d in matches]
                 residuals[fl.level] = res
-                fx = {a.index: a.xy for a in anchors[j]}
-                centroid_res[fl.level] = [(r[0], r[1], round(float(np.hypot(*(R.apply(anchors[k][i].xy)
-                                                                               - T[j].apply(fx[anchors[j][jj].index])))), 3))
-                                          for r, (i, jj, _) in zip(res, matches)]
+                cen = [R.apply(anchors[k][i].xy) - T[j].apply(anchors[j][jj].xy) for i, jj, _ in matches]
+                centroid_res[fl.level] = [(r[0], r[1], round(float(np.hypot(*c)), 3)) for r, c in zip(res, cen)]
                 rms[fl.level] = float(math.sqrt(np.mean([d * d for _, _, d in res]))) if res else 0.0
                 medians[fl.level] = float(np.median([d for _, _, d in res])) if res else 0.0
                 transforms[fl.level] = (R.tx, R.ty, R.degrees, f"anchors ({len(matches)} matched)")
