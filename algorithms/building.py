@@ -13,13 +13,16 @@
    transform is estimated by consensus (RANSAC over every pair of compatible matches, rotation from two
    anchors, translation from one): a wrong match never moves a floor, it is an outlier. The consensus
    is refined by least squares on the anchor centroids and polished on the shapes of the matched
-   anchors (the centroid of their overlap); the residual per anchor and overall (RMS) is reported.
+   anchors, then refit ICP-like on where each shaft's outline lies best on its partner's; the residual
+   per anchor (that local shift: a shaft only cut differently fits with ~0) and overall (RMS) is reported.
    Floors without a usable anchor match fall back to footprint registration (translation by
    cross-correlation of the area outlines, as ``rasterize.floor_offsets`` does for walls), with a
    warning.
 4. **Stitching.** On consecutive converted levels, anchors of the same type that overlap (overlap ≥
    ``MIN_SHAFT_OVERLAP`` of the smaller) are joined by a vertical passage: a two-node way inside both
-   shafts, with the upper floor's level and height (``../shared/docs/osmag-format.md``).
+   shafts, with the upper floor's level and height (``../shared/docs/osmag-format.md``). Same shaft code
+   first (overlap ≥ ``MIN_SAME_CODE_OVERLAP``); two codes that identify their areas and differ never link
+   (:func:`shaft_link_candidates`).
 5. **Hierarchy.** One building structure area (the union of the floor outlines) is the parent of one
    ``structure`` area per level (the floor's outline, computed when the floor has none), which is the
    parent of that floor's areas. Ids are renumbered across the building, names made unique
@@ -43,6 +46,8 @@ from .progress import ensure
 ANCHOR_TYPES = ("stairs", "elevator")
 MATCH_TOLERANCE = 1.5  # metres: an anchor lands on its partner within this after the transform
 MIN_SHAFT_OVERLAP = 0.3  # overlap / smaller shaft area for two anchors to be one shaft
+SHAFT_MAX_AREA = 200.0  # m²: a stair/lift area larger than this is a hall holding stairs, not one shaft
+MIN_SAME_CODE_OVERLAP = 0.1  # the same, for two anchors carrying the same shaft code (flight cut differently)
 MIN_FLOOR_OVERLAP = 0.2  # overlap / smaller floor outline for two floors to belong to one building
 DEFAULT_HEIGHT = 3.2
 
@@ -442,7 +447,8 @@ def register_anchors(moving: Sequence[Anchor], fixed: Sequence[Anchor], tol: flo
     orientation) and every two compatible pairs whose spacing agrees within ``tol`` (rotation and
     translation). Each is scored by its consensus (anchors landing within ``tol`` of a compatible
     partner, one-to-one); ties go to the smaller rotation, then the smaller residual. The winner is
-    refit by least squares on its inliers. Returns ``(Rigid, matches [(i_moving, i_fixed, residual)])``
+    refit by least squares on its inliers, robustly, then on the shafts' outlines. Returns ``(Rigid, matches
+    [(i_moving, i_fixed, residual)])``, the residual being :func:`anchor_shift`'s length
     or ``(None, [])`` when no anchor pair is compatible.
     """
     from scipy.spatial import cKDTree
@@ -521,10 +527,86 @@ def register_anchors(moving: Sequence[Anchor], fixed: Sequence[Anchor], tol: flo
             T = TR
     rot_ok = rotate and spread >= 1.0 and T.theta != 0.0
     T = _robust_refit(T, src, dst, rotate=rot_ok)
-    T = _polish_on_shapes(T, [(moving[i].polygon, fixed[j].polygon) for i, j, _ in inl], rotate=rot_ok)
-    P = T.apply(src)
-    matches = [(i, j, float(np.hypot(*(p - q)))) for (i, j, _), p, q in zip(inl, P, dst)]
+    pairs = [(moving[i].polygon, fixed[j].polygon) for i, j, _ in inl]
+    T = _polish_on_shapes(T, pairs, rotate=rot_ok)
+    T, shifts = _refit_on_local_fits(T, src, pairs, rotate=rot_ok)
+    matches = [(i, j, float(np.hypot(*v))) for (i, j, _), v in zip(inl, shifts)]
     return T, matches
+
+
+def anchor_shift(moved, partner, max_move: float = MATCH_TOLERANCE) -> np.ndarray:
+    """The registration error at one shaft: the smallest shift (x, y, metres) that lays the moved shaft's
+    outline on its partner's, i.e. minimises the part of the smaller of the two outside the other (plus
+    1 cm per metre of shift, to pick the nearest of equally good shifts).
+
+    Unlike the distance of the two centroids, it does not count a shaft cut differently on the two floors
+    as an error: a stair drawn with its landing on one floor and without it on the next fits with no shift
+    (the flight lies inside the larger outline), while two shafts drawn alike but offset by 0.3 m need
+    exactly that shift. Nelder-Mead from no shift; (0, 0) when nothing better is found within ``max_move``."""
+    import shapely
+    from scipy.optimize import minimize
+
+    small, big = (moved, partner) if moved.area <= partner.area else (partner, moved)
+    sign = 1.0 if small is moved else -1.0
+    a_small = max(float(small.area), 1e-9)
+    shapely.prepare(big)
+
+    def cost(v):
+        g = shapely.transform(small, lambda xy: xy + (v[0], v[1]))
+        return 1.0 - float(shapely.area(shapely.intersection(g, big))) / a_small + 0.01 * math.hypot(v[0], v[1])
+
+    c0 = cost((0.0, 0.0))
+    best = np.zeros(2)
+    for step in (0.3, 0.05):
+        x0 = best
+        simplex = np.array([x0, x0 + [step, 0.0], x0 + [0.0, step]])
+        try:
+            res = minimize(cost, x0, method="Nelder-Mead",
+                           options={"initial_simplex": simplex, "xatol": 1e-3, "fatol": 1e-6, "maxiter": 300})
+        except Exception:  # noqa: BLE001 - a degenerate outline: no correction
+            return np.zeros(2)
+        if res.fun < c0 - 1e-9 and math.hypot(*res.x) <= max_move:
+            best, c0 = np.asarray(res.x, float), float(res.fun)
+    return sign * best
+
+
+def _refit_on_local_fits(T: Rigid, src: np.ndarray, pairs, rotate: bool, rounds: int = 3, c: float = 0.15):
+    """ICP-like refinement on the shafts' outlines: each matched shaft proposes where its centroid should
+    land (where its outline lies best on its partner's, :func:`anchor_shift`); the rigid transform is refit
+    on those proposals with Cauchy weights (scale ``c`` m), a few rounds. A shaft cut differently on the
+    two floors proposes no move and so cannot drag the floor. Returns (T, shifts (n, 2)), the shifts being
+    the remaining error per shaft after the last fit."""
+    if not pairs:
+        return T, np.zeros((0, 2))
+
+    def shifts_of(R):
+        return np.array([anchor_shift(R.geometry(pm), pf) for pm, pf in pairs])
+
+    sh = shifts_of(T)
+    for _ in range(rounds if len(pairs) >= 1 else 0):
+        target = T.apply(src) + sh
+        r = np.linalg.norm(sh, axis=1)
+        w = 1.0 / (1.0 + (r / c) ** 2)
+        if len(src) >= 2 and rotate:
+            cs = (src * w[:, None]).sum(0) / w.sum()
+            cd = (target * w[:, None]).sum(0) / w.sum()
+            a, b = (src - cs) * np.sqrt(w)[:, None], (target - cd) * np.sqrt(w)[:, None]
+            theta = math.atan2(float((a[:, 0] * b[:, 1] - a[:, 1] * b[:, 0]).sum()), float((a * b).sum()))
+        else:
+            cs = (src * w[:, None]).sum(0) / w.sum()
+            cd = (target * w[:, None]).sum(0) / w.sum()
+            theta = T.theta
+        co, si = math.cos(theta), math.sin(theta)
+        t = cd - np.array([co * cs[0] - si * cs[1], si * cs[0] + co * cs[1]])
+        R = Rigid(theta, float(t[0]), float(t[1]))
+        sh_new = shifts_of(R)
+        # keep the refit only if it lowers the (robust) error of the shafts
+        def loss(x):
+            return float(np.sum(np.log1p((np.linalg.norm(x, axis=1) / c) ** 2)))
+        if loss(sh_new) >= loss(sh) - 1e-9:
+            break
+        T, sh = R, sh_new
+    return T, sh
 
 
 def _robust_refit(T: Rigid, src: np.ndarray, dst: np.ndarray, rotate: bool, c: float = 0.15,
@@ -654,6 +736,51 @@ def _shaft_segment(poly):
     return seg
 
 
+def reliable_codes(anchors: Sequence[Anchor]) -> Dict[int, str]:
+    """{anchor index: shaft code} for the anchors of one floor whose code identifies them: the code is on
+    that anchor only (a code written on two areas of one floor is right on one of them at most) and the
+    anchor is shaft-sized (≤ SHAFT_MAX_AREA m²; a larger stair area is a hall the segmentation merged stairs
+    into, holding several codes, of which it carries the first found)."""
+    import collections
+
+    codes = {a.index: shaft_code(a.name) for a in anchors}
+    count = collections.Counter(c for c in codes.values() if c)
+    return {a.index: codes[a.index] for a in anchors
+            if codes[a.index] and count[codes[a.index]] == 1 and a.size <= SHAFT_MAX_AREA}
+
+
+def shaft_link_candidates(lower: Sequence[Anchor], upper: Sequence[Anchor]):
+    """Pairs of anchors on two consecutive levels (already registered) that may be one shaft, best first:
+    [(overlap, lower anchor, upper anchor, intersection)]; the caller links them one to one in this order.
+
+    A shaft code names one shaft on every floor: two anchors carrying the same code (``E1-ST-07`` on both
+    levels) are linked first, when they overlap by MIN_SAME_CODE_OVERLAP of the smaller (the flights of one
+    stair cut differently on two floors); merely touching is not enough (a lift lobby carrying the lift's code
+    on one floor, next to the lift shaft on the next). Two anchors whose codes identify them
+    (:func:`reliable_codes`) and differ are never linked, however much they overlap (one of the codes sits
+    on the wrong stair, or two stairs share a stairwell outline). Other pairs are linked by overlap: same
+    kind, the intersection covering at least MIN_SHAFT_OVERLAP of the smaller one."""
+    rel_l, rel_h = reliable_codes(lower), reliable_codes(upper)
+    out = []
+    for x in lower:
+        cx = shaft_code(x.name)
+        for y in upper:
+            if x.kind != y.kind:
+                continue
+            cy = shaft_code(y.name)
+            if x.index in rel_l and y.index in rel_h and rel_l[x.index] != rel_h[y.index]:
+                continue
+            inter = x.polygon.intersection(y.polygon)
+            if inter.is_empty:
+                continue
+            ov = inter.area / max(min(x.size, y.size), 1e-9)
+            same = bool(cx) and cx == cy
+            if ov >= MIN_SHAFT_OVERLAP or (same and ov >= MIN_SAME_CODE_OVERLAP):
+                out.append((same, ov, x, y, inter))
+    out.sort(key=lambda c: (not c[0], -c[1]))
+    return [c[1:] for c in out]
+
+
 def fuse_floors(floors: Sequence[FloorData], out_path: str, frame, building_name: str = "Building",
                 levels: Optional[Sequence[str]] = None, heights: Optional[Sequence[float]] = None,
                 variant: str = "semantic", register: bool = True, strict_passages: bool = False,
@@ -662,8 +789,9 @@ def fuse_floors(floors: Sequence[FloorData], out_path: str, frame, building_name
 
     ``levels``/``heights``: per floor (None entries: from tags / file name / default 3.2 m). Returns
     figures: ``levels``, ``transforms`` {level: (dx, dy, degrees, method)}, ``residuals`` {level:
-    [(anchor, partner, metres)]} (distance of the shafts' centroids after registration: a shaft drawn
-    differently on the two floors shows its difference here), ``rms`` and ``median_residual`` {level:
+    [(anchor, partner, metres)]} (after registration, how far each shaft must move to lie on its partner,
+    :func:`anchor_shift`: a shaft only cut differently on the two floors fits with ~0), ``centroid_residuals``
+    (the same pairs, distance of the two centroids: cuts show here), ``rms`` and ``median_residual`` {level:
     metres}, ``overall_rms``, ``vertical`` [(lower area, upper area, kind)],
     ``areas_in``/``areas_out``, ``passages``, ``dropped_passages``, ``warnings``, plus the writer's stats.
     Raises InputError (nothing written) for unknown or repeated levels, floors that do not overlap,
@@ -730,6 +858,7 @@ def fuse_floors(floors: Sequence[FloorData], out_path: str, frame, building_name
     T: Dict[int, Rigid] = {ref: Rigid()}
     transforms: Dict[str, tuple] = {floors[ref].level: (0.0, 0.0, 0.0, "reference")}
     residuals: Dict[str, list] = {}
+    centroid_res: Dict[str, list] = {}
     rms: Dict[str, float] = {}
     medians: Dict[str, float] = {}
     todo = sorted((k for k in range(n) if k != ref), key=lambda k: abs(k - ref))
@@ -757,6 +886,8 @@ def fuse_floors(floors: Sequence[FloorData], out_path: str, frame, building_name
                         floors[j].areas[anchors[j][jj].index].name or str(floors[j].areas[anchors[j][jj].index].id),
                         round(d, 3)) for i, jj, d in matches]
                 residuals[fl.level] = res
+                cen = [R.apply(anchors[k][i].xy) - T[j].apply(anchors[j][jj].xy) for i, jj, _ in matches]
+                centroid_res[fl.level] = [(r[0], r[1], round(float(np.hypot(*c)), 3)) for r, c in zip(res, cen)]
                 rms[fl.level] = float(math.sqrt(np.mean([d * d for _, _, d in res]))) if res else 0.0
                 medians[fl.level] = float(np.median([d for _, _, d in res])) if res else 0.0
                 transforms[fl.level] = (R.tx, R.ty, R.degrees, f"anchors ({len(matches)} matched)")
@@ -855,18 +986,7 @@ def fuse_floors(floors: Sequence[FloorData], out_path: str, frame, building_name
             warn(f"levels {lo.level} and {hi.level} are consecutive in this set but not adjacent: their shafts "
                  "are linked directly")
         al, ah = floor_anchors(lo), floor_anchors(hi)
-        cands = []
-        for x in al:
-            for y in ah:
-                if x.kind != y.kind:
-                    continue
-                inter = x.polygon.intersection(y.polygon)
-                if inter.is_empty:
-                    continue
-                ov = inter.area / max(min(x.size, y.size), 1e-9)
-                if ov >= MIN_SHAFT_OVERLAP:
-                    cands.append((ov, x, y, inter))
-        cands.sort(key=lambda c: -c[0])
+        cands = shaft_link_candidates(al, ah)
         used_l, used_h = set(), set()
         for ov, x, y, inter in cands:
             if x.index in used_l or y.index in used_h:
@@ -909,7 +1029,7 @@ def fuse_floors(floors: Sequence[FloorData], out_path: str, frame, building_name
     areas_in = sum(len(fl.areas) + len(fl.structures) + (1 if fl.outline is not None else 0) for fl in floors)
     stats = {k: v for k, v in written.items() if k not in ("way_ids", "names")}
     stats.update({"floors": n, "levels": [fl.level for fl in floors], "transforms": transforms,
-                  "residuals": residuals, "rms": rms, "median_residual": medians, "vertical": links, "reference": floors[ref].level,
+                  "residuals": residuals, "centroid_residuals": centroid_res, "rms": rms, "median_residual": medians, "vertical": links, "reference": floors[ref].level,
                   "areas_in": areas_in, "areas_out": written["areas"] + written["structure_areas"] - 1,
                   "dropped_passages": {fl.level: fl.dropped_passages for fl in floors if fl.dropped_passages},
                   "warnings": warnings + written["warnings"],

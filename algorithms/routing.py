@@ -207,16 +207,22 @@ def _crossing(ax, ay, bx, by, E) -> np.ndarray:
     return hit.any(axis=1)
 
 
-def _crossing_from(px: float, py: float, bx, by, E) -> np.ndarray:
-    """:func:`_crossing` for segments that all start at one point (px, py): cheaper."""
-    cx, cy, dx, dy = E[:, 0], E[:, 1], E[:, 2], E[:, 3]
-    ex, ey = dx - cx, dy - cy
+def _edge_parts(E) -> Tuple[np.ndarray, ...]:
+    """Columns of an edge array used by :func:`_crossing_from`: (cx, cy, dx, dy, ex, ey), contiguous."""
+    cx, cy, dx, dy = (np.ascontiguousarray(E[:, k]) for k in range(4))
+    return cx, cy, dx, dy, dx - cx, dy - cy
+
+
+def _crossing_from(px: float, py: float, bx, by, E, parts=None) -> np.ndarray:
+    """:func:`_crossing` for segments that all start at one point (px, py): cheaper. ``parts``: the
+    edges' :func:`_edge_parts`, precomputed once per piece (queries are dominated by call overheads)."""
+    cx, cy, dx, dy, ex, ey = parts if parts is not None else _edge_parts(E)
     o3 = ex * (py - cy) - ey * (px - cx)  # (M,): side of the common start point
-    near = np.abs(o3) > 0  # edges through the start point cannot be crossed properly
-    E2 = E[near]
-    if not len(E2):
-        return np.zeros(len(bx), bool)
-    cx, cy, dx, dy, ex, ey, o3 = cx[near], cy[near], dx[near], dy[near], ex[near], ey[near], o3[near]
+    near = o3 != 0  # edges through the start point cannot be crossed properly
+    if not near.all():
+        if not near.any():
+            return np.zeros(len(bx), bool)
+        cx, cy, dx, dy, ex, ey, o3 = cx[near], cy[near], dx[near], dy[near], ex[near], ey[near], o3[near]
     ux, uy = (bx - px)[:, None], (by - py)[:, None]
     o1 = ux * (cy - py) - uy * (cx - px)
     o2 = ux * (dy - py) - uy * (dx - px)
@@ -224,6 +230,48 @@ def _crossing_from(px: float, py: float, bx, by, E) -> np.ndarray:
     o4 = ex * (by[:, None] - cy) - ey * (bx[:, None] - cx)
     hit &= o3 * o4 < -_EPS2
     return hit.any(axis=1)
+
+
+_SPARSE_FROM = 4000  # targets x edges above which the visibility from a point culls edges by angle first
+
+
+def _crossing_from_sparse(px: float, py: float, bx, by, parts) -> np.ndarray:
+    """:func:`_crossing_from` for many targets and edges (a large hall): an edge can only cross the segment
+    from p to a target if the target's direction, seen from p, lies within the angle the edge subtends; the
+    targets are sorted by angle and each edge is tested against the targets in its angle only (binary
+    search), instead of against all of them. Same result as the dense test."""
+    cx, cy, dx, dy, ex, ey = parts
+    K = len(bx)
+    o3 = ex * (py - cy) - ey * (px - cx)
+    near = o3 != 0
+    if not near.all():
+        cx, cy, dx, dy, ex, ey, o3 = cx[near], cy[near], dx[near], dy[near], ex[near], ey[near], o3[near]
+    a1 = np.arctan2(cy - py, cx - px)
+    a2 = np.arctan2(dy - py, dx - px)
+    d = np.mod(a2 - a1 + np.pi, 2 * np.pi) - np.pi  # the edge's signed angle seen from p, |d| < pi
+    start = np.where(d >= 0, a1, a2)
+    th = np.arctan2(by - py, bx - px)
+    order = np.argsort(th)
+    ts = th[order]
+    ext = np.concatenate([ts, ts + 2 * np.pi])
+    lo = np.searchsorted(ext, start - 1e-9, "left")
+    hi = np.searchsorted(ext, start + np.abs(d) + 1e-9, "right")
+    cnt = hi - lo
+    tot = int(cnt.sum())
+    hit = np.zeros(K, bool)
+    if tot == 0:
+        return hit
+    e_idx = np.repeat(np.arange(len(cnt)), cnt)
+    offs = np.arange(tot) - np.repeat(np.cumsum(cnt) - cnt, cnt)
+    t_idx = order[(np.repeat(lo, cnt) + offs) % K]
+    ux, uy = bx[t_idx] - px, by[t_idx] - py
+    ccx, ccy = cx[e_idx], cy[e_idx]
+    o1 = ux * (ccy - py) - uy * (ccx - px)
+    o2 = ux * (dy[e_idx] - py) - uy * (dx[e_idx] - px)
+    o4 = ex[e_idx] * (by[t_idx] - ccy) - ey[e_idx] * (bx[t_idx] - ccx)
+    ok = (o1 * o2 < -_EPS2) & (o3[e_idx] * o4 < -_EPS2)
+    hit[t_idx[ok]] = True
+    return hit
 
 
 class _Piece:
@@ -242,6 +290,7 @@ class _Piece:
         shapely.prepare(self.core)
         rings = _rings(poly)
         self.edges = _edges_of(rings)
+        self.edge_parts = _edge_parts(self.edges)
         self.V, self.prv, self.nxt = _reflex_vertices(rings)  # entries are appended later
         self.entries: List[Tuple[int, int, float]] = []  # (graph node, vertex index, snap distance)
         self.D = None
@@ -260,7 +309,11 @@ class _Piece:
         if len(targets) == 0:
             return np.zeros(0, bool)
         if interior:
-            return ~_crossing_from(float(p[0]), float(p[1]), targets[:, 0], targets[:, 1], self.edges)
+            if len(targets) * len(self.edges) > _SPARSE_FROM:
+                return ~_crossing_from_sparse(float(p[0]), float(p[1]), targets[:, 0], targets[:, 1],
+                                              self.edge_parts)
+            return ~_crossing_from(float(p[0]), float(p[1]), targets[:, 0], targets[:, 1], self.edges,
+                                   self.edge_parts)
         ax = np.full(len(targets), p[0])
         ay = np.full(len(targets), p[1])
         return self._visible(ax, ay, targets[:, 0], targets[:, 1], samples=True)
@@ -315,22 +368,47 @@ class _Piece:
 
         return bool(shapely.contains_xy(self.core, x, y))
 
-    def point_costs(self, p):
+    def _query_tables(self):
+        """Per-piece constants of :meth:`point_costs`, once the vertices are final (after :meth:`solve`):
+        the grazing test of a corner from a point p is linear in p (s = A + px B + py C), the vertex
+        columns and the entry vertices."""
+        V, P, N = self.V, self.prv, self.nxt
+        vx, vy = np.ascontiguousarray(V[:, 0]), np.ascontiguousarray(V[:, 1])
+        # s1 = (vx - px)(Py - py) - (vy - py)(Px - px) = vx Py - vy Px + px (vy - Py) + py (Px - vx)
+        t = [(vx * Q[:, 1] - vy * Q[:, 0], vy - Q[:, 1], Q[:, 0] - vx) for Q in (P, N)]
+        ent = np.unique(np.array([vi for _, vi, _ in self.entries], np.int64)) if self.entries else \
+            np.zeros(0, np.int64)
+        self._qt = (vx, vy, t[0], t[1], ent, self.D[:, ent] if self.D is not None and len(ent) else None)
+        return self._qt
+
+    def point_costs(self, p, entries_only: bool = False):
         """Shortest distances from point p (inside the piece) to every vertex, and the first vertex used.
 
-        Returns (dist (n,), via (n,)): via[k] = the vertex p sees directly on its way to k."""
+        Returns (dist (n,), via (n,)): via[k] = the vertex p sees directly on its way to k. With
+        ``entries_only`` only the entry vertices (the passage nodes) are filled in (inf / -1 elsewhere):
+        all a query between two pieces needs."""
         n = len(self.V)
+        qt = getattr(self, "_qt", None)
+        if qt is None or len(qt[0]) != n:
+            qt = self._query_tables()
+        vx, vy, (a1, b1, c1), (a2, b2, c2), ent, Dent = qt
         # only corners the line from p grazes can be the first bend of a shortest path
         px, py = float(p[0]), float(p[1])
-        dx, dy = self.V[:, 0] - px, self.V[:, 1] - py
-        s1 = dx * (self.prv[:, 1] - py) - dy * (self.prv[:, 0] - px)
-        s2 = dx * (self.nxt[:, 1] - py) - dy * (self.nxt[:, 0] - px)
+        s1 = a1 + px * b1 + py * c1
+        s2 = a2 + px * b2 + py * c2
         cand = np.nonzero(~((s1 * s2) < -1e-12))[0]
         interior = self._inside_xy(px, py)
         idx = cand[self.visible_from(p, self.V[cand], interior=interior)]
         if not len(idx):
             return np.full(n, np.inf), np.full(n, -1)
-        d0 = np.hypot(self.V[idx, 0] - p[0], self.V[idx, 1] - p[1])
+        d0 = np.hypot(vx[idx] - px, vy[idx] - py)
+        if entries_only and Dent is not None:
+            tot = d0[:, None] + Dent[idx]
+            best = np.argmin(tot, axis=0)
+            dist, via = np.full(n, np.inf), np.full(n, -1)
+            dist[ent] = tot[best, np.arange(len(ent))]
+            via[ent] = idx[best]
+            return dist, via
         tot = d0[:, None] + self.D[idx, :]
         best = np.argmin(tot, axis=0)
         return tot[best, np.arange(n)], idx[best]
@@ -751,7 +829,7 @@ class RouteMap:
         hits = [g.piece_list[int(i)] for i in g.piece_tree.query(pt, predicate="intersects")]
         hits = [pc for pc in hits if lev is None or pc.level == lev]
         if hits and (lev is not None or len({pc.level for pc in hits}) == 1):
-            pc = min(hits, key=lambda p: self.areas[p.area_index].polygon.area)
+            pc = hits[0] if len(hits) == 1 else min(hits, key=lambda p: self._area_size(p.area_index))
             return pc, np.array([x, y]), 0.0
         if self._tree is None:
             import shapely
@@ -796,6 +874,12 @@ class RouteMap:
         # step a hair inside so that the visibility test sees the point as in the piece
         return pc, np.array([q.x, q.y]), float(d)
 
+    def _area_size(self, k: int) -> float:
+        sizes = getattr(self, "_sizes", None)
+        if sizes is None:
+            sizes = self._sizes = [float(a.polygon.area) for a in self.areas]
+        return sizes[k]
+
     def route(self, start, goal, start_level=None, goal_level=None, robot_radius: float = DEFAULT_ROBOT_RADIUS,
               avoid: Sequence[str] = (), vertical_cost: float = DEFAULT_VERTICAL_COST, progress=None) -> RouteResult:
         """Shortest route from ``start`` to ``goal``: each an (x, y) point in the map frame (with its level,
@@ -834,8 +918,8 @@ class RouteMap:
         """A* from the start point to the goal point over the passage nodes (see the module docstring)."""
         spc, sp, ssnap = s_end
         tpc, tp, tsnap = t_end
-        sd, svia = spc.point_costs(sp)
-        td, tvia = tpc.point_costs(tp)
+        sd, svia = spc.point_costs(sp, entries_only=spc is not tpc)
+        td, tvia = tpc.point_costs(tp, entries_only=spc is not tpc)
         s_edges = [(n, float(sd[vi]) + d, vi) for (n, vi, d) in spc.entries if math.isfinite(sd[vi])]
         t_in: Dict[int, Tuple[float, int]] = {}
         for (n, vi, d) in tpc.entries:

@@ -443,3 +443,87 @@ def test_stairs_on_a_combined_stair_and_lift_layer_are_stairs():
     geoms += [g([(0.2, 20.5 + d), (11.8, 20.5 + d)]) for d in (0.0, 0.1, 0.9, 1.0)]
     changed = classify_vertical_areas([core, shaft, gallery, strip], geoms)
     assert changed == {1: "stairs", 2: "elevator"} and (gallery.type, strip.type) == ("room", "corridor")
+
+
+def _coded_floor(lv, shafts):
+    """A 40 x 12 m hall with coded stair areas cut out: shafts = [(code, polygon)]."""
+    hall = box(0, 0, 40, 12)
+    areas = []
+    for k, (code, poly) in enumerate(shafts, 2):
+        hall = hall.difference(poly)
+        areas.append(Area(id=k, polygon=poly, type="stairs", name=code))
+    return FloorData(source=f"F{lv}.osm", areas=[Area(id=1, polygon=hall, type="corridor", name=f"hall {lv}")]
+                     + areas, passages=[], level=lv)
+
+
+def test_links_join_the_same_shaft_code_and_never_two_different_codes(tmp_path):
+    """A stair code names one shaft on every floor. Level 1: E1-ST-07 (8 x 3 m), E1-ST-10 beside it;
+    level 2: E1-ST-07 cut differently (3 x 3 m, overlapping the lower one by 17 % of its area: the overlap
+    rule alone would not link it) and, where level 1 has E1-ST-10, a stair coded E1-ST-11 (the code on the
+    wrong stair, or another stair in that well): never linked. E1-ST-01 is drawn alike on both; E1-ST-20
+    only touches its namesake (a lobby carrying the code beside the shaft): not linked."""
+    lower = [("E1-ST-07", box(2, 0, 10, 3)), ("E1-ST-10", box(14, 0, 17, 3)), ("E1-ST-01", box(30, 0, 33, 4)),
+             ("E1-ST-20", box(20, 0, 23, 3))]
+    upper = [("E1-ST-07", box(9.5, 0, 12.5, 3)), ("E1-ST-11", box(14, 0, 17, 3)), ("E1-ST-01", box(30, 0, 33, 4)),
+             ("E1-ST-20", box(23, 0, 26, 3))]
+    cands = building.shaft_link_candidates(building.floor_anchors(_coded_floor("1", lower)),
+                                           building.floor_anchors(_coded_floor("2", upper)))
+    assert sorted((x.name, y.name) for _, x, y, _ in cands) == [("E1-ST-01", "E1-ST-01"), ("E1-ST-07", "E1-ST-07")]
+    st = fuse_floors([_coded_floor("1", lower), _coded_floor("2", upper)], str(tmp_path / "b.osm"),
+                     LocalFrame(0.0, 0.0), variant="fix-id", register=False)
+    links = sorted((v[2], v[3]) for v in st["vertical"])
+    assert links == [("E1-ST-01 (level 1)", "E1-ST-01 (level 2)"), ("E1-ST-07 (level 1)", "E1-ST-07 (level 2)")]
+    # an uncoded stair on one level still links by overlap with a coded one
+    upper[1] = ("", box(14, 0, 17, 3))
+    st = fuse_floors([_coded_floor("1", lower), _coded_floor("2", upper)], str(tmp_path / "c.osm"),
+                     LocalFrame(0.0, 0.0), variant="fix-id", register=False)
+    assert len(st["vertical"]) == 3
+
+
+def test_registration_residual_counts_misplacement_not_different_cuts_of_a_shaft(tmp_path):
+    """Three floors in different frames (kilometres apart, one rotated 9°). Six shafts; per floor the
+    segmentation cuts some differently: level 2 draws E1-ST-01 with its 2 m landing, level 3 cuts E1-ST-02's
+    flight 1 m shorter; level 2's lift E1-P2 is drawn 1.0 m off (a wrong match). The fit must follow the
+    shafts that agree (transform exact), and the residual per shaft must say where the floors disagree
+    (the lift, 1.0 m), not where the shaft is only cut differently (its centroid moves ~1 m, its outline
+    still fits: residual ~0)."""
+    base = {"E1-ST-01": box(2, 0, 5, 6), "E1-ST-02": box(14, 0, 17, 6), "E1-ST-03": box(30, 6, 33, 12),
+            "E1-ST-04": box(44, 0, 47, 5), "E1-P1": box(22, 0, 24, 2), "E1-P2": box(36, 9, 38, 11)}
+    moves = {"1": (0.0, 0.0, 0.0), "2": (2500.0, -900.0, 9.0), "3": (-40.0, 1200.0, 0.0)}
+    floors = []
+    for lv, (dx, dy, rot) in moves.items():
+        shafts = dict(base)
+        if lv == "2":
+            shafts["E1-ST-01"] = box(2, 0, 5, 8)  # landing included
+            shafts["E1-P2"] = box(37, 9, 39, 11)  # drawn 1 m off
+        if lv == "3":
+            shafts["E1-ST-02"] = box(14, 1, 17, 6)  # flight cut shorter
+        hall = box(0, 0, 50, 14)
+        areas = []
+        for k, (code, poly) in enumerate(shafts.items(), 2):
+            hall = hall.difference(poly)
+            areas.append(Area(id=k, polygon=poly, name=code, type="elevator" if "-P" in code else "stairs"))
+        areas.insert(0, Area(id=1, polygon=hall, type="corridor", name=f"hall {lv}"))
+        for a in areas:
+            a.polygon = affinity.translate(affinity.rotate(a.polygon, rot, origin=(0, 0)), dx, dy)
+        floors.append(FloorData(source=f"F{lv}.osm", areas=areas, passages=[], level=lv))
+    st = fuse_floors(floors, str(tmp_path / "b.osm"), LocalFrame(0.0, 0.0), variant="fix-id")
+    for lv, (dx, dy, rot) in moves.items():
+        tx, ty, deg, how = st["transforms"][lv]
+        T = Rigid(math.radians(deg), tx, ty)
+        # the floor's origin corner lands where level 1 has it
+        got = T.apply(np.array([dx, dy]))
+        assert np.hypot(*got) < 0.02 and abs(deg + rot) < 0.03, (lv, got, deg)
+    res2 = {a.split(" (")[0]: d for a, _, d in st["residuals"]["2"]}
+    res3 = {a.split(" (")[0]: d for a, _, d in st["residuals"]["3"]}
+    cen2 = {a.split(" (")[0]: d for a, _, d in st["centroid_residuals"]["2"]}
+    assert res2["E1-P2"] == pytest.approx(1.0, abs=0.02)
+    assert cen2["E1-ST-01"] == pytest.approx(1.0, abs=0.02)  # the centroid moved by the landing...
+    assert res2["E1-ST-01"] < 0.02  # ...the outline fits
+    # level 3 is registered on its neighbour, level 2, whose lift is off: that disagreement is reported
+    assert res3.pop("E1-P2") == pytest.approx(1.0, abs=0.02)
+    assert res3["E1-ST-02"] < 0.02 and max(res3.values()) < 0.02
+    assert st["median_residual"]["2"] < 0.01 and st["median_residual"]["3"] < 0.01
+    # 2 links per shaft pair of levels, codes joined to themselves
+    assert len(st["vertical"]) == 12
+    assert all(v[2].split(" (")[0] == v[3].split(" (")[0] for v in st["vertical"])

@@ -354,3 +354,32 @@ def test_shafts_renamed_by_fusion_still_link_by_name():
     assert len(rm.implicit) == 2
     wheel = rm.route("Office 1", "Office 2", robot_radius=0.3, avoid=["stairs"])
     assert wheel.level_changes == 1 and "E-P1 (level 1)" in wheel.areas
+
+
+def test_visibility_from_a_point_culled_by_angle_equals_the_dense_test():
+    """Large halls use the angle-culled visibility test (routing._crossing_from_sparse): it must give the
+    same answer as the dense one, on a comb-shaped room (many reflex corners, targets all around)."""
+    from shapely.geometry import Polygon, box as _box
+    from shapely.ops import unary_union
+
+    from algorithms import routing
+
+    teeth = [_box(2 * k, 10, 2 * k + 1, 14) for k in range(20)]
+    poly = unary_union([_box(0, 0, 40, 10)] + teeth)
+    poly = Polygon(poly.exterior).difference(_box(10, 3, 12, 5))  # a pillar too
+    rings = routing._rings(poly)
+    E = routing._edges_of(rings)
+    parts = routing._edge_parts(E)
+    V = np.vstack(rings)
+    rng = np.random.default_rng(5)
+    n = 0
+    for _ in range(200):
+        x, y = rng.uniform(0, 40), rng.uniform(0, 14)
+        if not poly.buffer(-1e-3).contains(routing._point(x, y)):
+            continue
+        n += 1
+        dense = routing._crossing_from(x, y, V[:, 0], V[:, 1], E, parts)
+        sparse = routing._crossing_from_sparse(x, y, V[:, 0], V[:, 1], parts)
+        assert (dense == sparse).all()
+        assert 0 < dense.sum() < len(V)  # some corners hidden, some seen
+    assert n > 100
