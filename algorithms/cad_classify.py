@@ -76,10 +76,16 @@ def merge_double_doors(hints: List[DoorHint], tol: float = 0.12) -> List[DoorHin
 def _swings(geoms: Sequence[CadGeometry], leaf_required: bool):
     """Core of find_door_swings: (indices to drop, [(cx, cy, closed-leaf end)] per arc with a leaf)."""
     arcs = []  # (index, cx, cy, r, end points)
+    combined = {}  # index -> (cx, cy, closed-leaf end): leaf and arc drawn as one polyline
     for i, g in enumerate(geoms):
         if g.entity not in ("ARC", "LWPOLYLINE", "POLYLINE") or g.kind == "column" or g.closed or len(g.coords) < 5:
             continue
         c = g.coords
+        if g.entity != "ARC":
+            one = _leaf_and_arc(c)
+            if one is not None:
+                combined[i] = one
+                continue
         circ = _circle_from_3(c[0], c[len(c) // 2], c[-1])
         if circ is None:
             continue
@@ -93,7 +99,7 @@ def _swings(geoms: Sequence[CadGeometry], leaf_required: bool):
         if DOOR_SWEEP[0] <= sweep <= DOOR_SWEEP[1]:
             arcs.append((i, cx, cy, r, c[0], c[-1]))
     if not arcs:
-        return [], []
+        return sorted(combined), list(combined.values())
     from scipy.spatial import cKDTree
 
     centres = np.array([(a[1], a[2]) for a in arcs])
@@ -146,7 +152,30 @@ def _swings(geoms: Sequence[CadGeometry], leaf_required: bool):
                     hints.append((cx, cy, e0 if n0 else e1))
                     with_leaf[ai] = hints[-1]
     drop |= {i for i in arc_set if i in with_leaf or (geoms[i].kind != "wall" and not leaf_required)}
-    return sorted(drop), hints
+    drop |= set(combined)
+    return sorted(drop), hints + list(combined.values())
+
+
+def _leaf_and_arc(c: np.ndarray):
+    """A door swing drawn as one open polyline (a common PLINE habit): the hinge, the open leaf's end, then
+    the arc around the hinge to the closed leaf's end (or the same backwards). Returns (cx, cy, closed
+    end) or None. The leaf is as long as the arc's radius (0.5-1.6 m) and the arc sweeps 60-100 degrees."""
+    if not np.isfinite(c).all():
+        return None
+    for hinge, rest in ((c[0], c[1:]), (c[-1], c[-2::-1])):
+        if len(rest) < 4:
+            continue
+        d = np.hypot(rest[:, 0] - hinge[0], rest[:, 1] - hinge[1])
+        r = float(d[0])
+        if not (DOOR_RADIUS[0] <= r <= DOOR_RADIUS[1]) or np.max(np.abs(d - r)) > 0.03 * r:
+            continue
+        a = np.unwrap(np.arctan2(rest[:, 1] - hinge[1], rest[:, 0] - hinge[0]))
+        step = np.diff(a)
+        if not (np.all(step > 0) or np.all(step < 0)):
+            continue
+        if DOOR_SWEEP[0] <= abs(math.degrees(a[-1] - a[0])) <= DOOR_SWEEP[1]:
+            return float(hinge[0]), float(hinge[1]), rest[-1].copy()
+    return None
 
 
 # ------------------------------------------------------------------------------------------ spaghetti

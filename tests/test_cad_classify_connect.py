@@ -1,0 +1,85 @@
+"""Connected floors: doorways drawn in ways that closed them (issue 8, item 6), one rule per kind of drawing.
+
+Each test builds the small drawing the rule is about with ezdxf and checks the door hint and, through the
+whole floor pipeline, that the floor's area graph is one connected component."""
+import math
+
+import ezdxf
+import numpy as np
+
+from algorithms import pipeline
+from algorithms.cad_classify import _leaf_and_arc
+from algorithms.cad_import import import_dxf
+
+
+def _doc():
+    doc = ezdxf.new("R2010", setup=False)
+    doc.header["$INSUNITS"] = 6  # metres
+    return doc
+
+
+def _two_rooms(msp, layer="A-WALL"):
+    """Two 6 x 6 m rooms; the partition between them (x = 6) is drawn straight through the doorway."""
+    msp.add_lwpolyline([(0, 0), (12, 0), (12, 6), (0, 6)], close=True, dxfattribs={"layer": layer})
+    msp.add_line((6, 0), (6, 6), dxfattribs={"layer": layer})
+
+
+def _pline_door(msp, layer="A-DOOR", hinge=(6.0, 2.0), r=0.9, reverse=False):
+    """A door swing drawn as ONE open polyline: hinge -> open leaf's end -> quarter arc (bulge) -> closed end."""
+    hx, hy = hinge
+    pts = [(hx, hy, 0.0), (hx - r, hy, -math.tan(math.radians(90) / 4)), (hx, hy + r, 0.0)]
+    if reverse:  # the same door drawn from the closed end back to the hinge
+        pts = [(hx, hy + r, math.tan(math.radians(90) / 4)), (hx - r, hy, 0.0), (hx, hy, 0.0)]
+    msp.add_lwpolyline(pts, format="xyb", dxfattribs={"layer": layer})
+
+
+def _save(doc, tmp_path, name="t.dxf"):
+    p = tmp_path / name
+    doc.saveas(p)
+    return str(p)
+
+
+def test_leaf_and_arc_polyline_shape():
+    hinge = np.array([6.0, 2.0])
+    ang = np.radians(np.linspace(180, 90, 12))
+    arc = np.c_[6.0 + 0.9 * np.cos(ang), 2.0 + 0.9 * np.sin(ang)]
+    c = np.vstack([hinge, arc])
+    cx, cy, end = _leaf_and_arc(c)
+    assert (cx, cy) == (6.0, 2.0) and np.allclose(end, (6.0, 2.9), atol=1e-6)
+    back = _leaf_and_arc(c[::-1])
+    assert back is not None and np.allclose(back[2], (6.0, 2.9), atol=1e-6)
+    # a wall polyline with a rounded corner: its first vertex is not the arc's centre
+    corner = np.vstack([[0.0, 0.0], [5.1, 2.0] + 0 * arc[0], arc])
+    assert _leaf_and_arc(corner) is None
+    # a half circle is no door swing (sweep 180 degrees), nor is a leaf longer than the radius
+    half = np.vstack([hinge, np.c_[6.0 + 0.9 * np.cos(np.radians(np.linspace(180, 0, 20))),
+                                   2.0 + 0.9 * np.sin(np.radians(np.linspace(180, 0, 20)))]])
+    assert _leaf_and_arc(half) is None
+    assert _leaf_and_arc(np.vstack([[6.0, 0.5], arc])) is None
+
+
+def test_pline_door_swing_becomes_a_hint_and_keeps_the_floor_connected(tmp_path):
+    doc = _doc()
+    msp = doc.modelspace()
+    _two_rooms(msp)
+    _pline_door(msp)
+    _pline_door(msp, hinge=(6.0, 4.0), reverse=True)  # a second door, drawn backwards
+    path = _save(doc, tmp_path)
+    d = import_dxf(path)
+    assert len(d.doors) == 2
+    ends = sorted(tuple(np.round(p, 2)) for h in d.doors for p in ((h.x0, h.y0), (h.x1, h.y1)))
+    assert ends == [(6.0, 2.0), (6.0, 2.9), (6.0, 4.0), (6.0, 4.9)]
+    assert not any(g.layer == "A-DOOR" for g in d.geometries)  # the swings are left out
+    floor = pipeline.process_floor(path, names=False)
+    rooms = [a for a in floor.refined.areas if a.polygon.area > 20]
+    assert len(rooms) == 2, [round(a.polygon.area, 1) for a in floor.refined.areas]
+    assert floor.stats["components"] == 1
+    assert floor.stats["largest_component_share"] == 1.0
+
+
+def test_without_the_door_the_partition_closes_the_rooms(tmp_path):
+    """The control: the same partition with no door keeps two components (the rule adds nothing else)."""
+    doc = _doc()
+    _two_rooms(doc.modelspace())
+    floor = pipeline.process_floor(_save(doc, tmp_path), names=False)
+    assert floor.stats["components"] == 2
