@@ -83,3 +83,38 @@ def test_without_the_door_the_partition_closes_the_rooms(tmp_path):
     _two_rooms(doc.modelspace())
     floor = pipeline.process_floor(_save(doc, tmp_path), names=False)
     assert floor.stats["components"] == 2
+
+
+def _rect(msp, x0, y0, x1, y1, layer="A-WALL"):
+    """Four lines (a closed rectangle standing free around everything would be taken for a sheet frame)."""
+    for a, b in (((x0, y0), (x1, y0)), ((x1, y0), (x1, y1)), ((x1, y1), (x0, y1)), ((x0, y1), (x0, y0))):
+        msp.add_line(a, b, dxfattribs={"layer": layer})
+
+
+def test_closed_cavities_and_named_shafts_count_out_but_orphaned_rooms_do_not(tmp_path):
+    """A thick outer wall drawn as two lines (its inside is a closed 0.9 m cavity), a shaft labelled 管井 and
+    an office whose door the drawing forgot: the cavity and the shaft are spaces the drawing really closes
+    (counted out of the connectivity figure, tagged), the office is an orphaned room (it counts)."""
+    doc = _doc()
+    msp = doc.modelspace()
+    _rect(msp, 0, 0, 24, 12)
+    _rect(msp, 0.9, 0.9, 23.1, 11.1)  # the wall's inner face: the cavity between is 0.9 m wide
+    msp.add_line((12, 0.9), (12, 5.0), dxfattribs={"layer": "A-WALL"})  # partition, doorway 5.0-6.0
+    msp.add_line((12, 6.0), (12, 11.1), dxfattribs={"layer": "A-WALL"})
+    _rect(msp, 2, 8, 4.5, 10.5)  # the shaft, 2.5 x 2.5 m
+    msp.add_text("管井", dxfattribs={"layer": "A-TEXT", "height": 0.3, "insert": (2.8, 9.2)})
+    _rect(msp, 18, 7, 22, 10.5)  # the office with no door, 4 x 3.5 m
+    msp.add_text("Office", dxfattribs={"layer": "A-TEXT", "height": 0.3, "insert": (19.0, 8.5)})
+    msp.add_text("Hall", dxfattribs={"layer": "A-TEXT", "height": 0.3, "insert": (6.0, 4.0)})
+    floor = pipeline.process_floor(_save(doc, tmp_path))
+    areas = {a.id: a for a in floor.refined.areas}
+    closed = floor.stats["closed_spaces"]
+    kinds = sorted(("shaft" if a.polygon.area < 8 else "cavity") for i, a in areas.items() if i in closed)
+    assert kinds == ["cavity", "shaft"], [(i, round(a.polygon.area, 1)) for i, a in areas.items()]
+    assert all(areas[i].tags.get("cad2osmag:closed") == "yes" for i in closed)
+    office = [a for a in areas.values() if a.polygon.contains(__import__("shapely").Point(19.0, 8.5))]
+    assert office and office[0].id not in closed and office[0].component != 0
+    main = sum(a.polygon.area for a in areas.values() if a.component == 0)
+    counted = sum(a.polygon.area for a in areas.values() if a.id not in closed)
+    assert abs(floor.stats["largest_component_share"] - main / counted) < 1e-6
+    assert floor.stats["largest_component_share"] < 1.0  # the office still counts against the figure
