@@ -6,6 +6,7 @@ import math
 
 import ezdxf
 import numpy as np
+import pytest
 
 from algorithms import pipeline
 from algorithms.cad_classify import _leaf_and_arc
@@ -91,10 +92,9 @@ def _rect(msp, x0, y0, x1, y1, layer="A-WALL"):
         msp.add_line(a, b, dxfattribs={"layer": layer})
 
 
-def test_closed_cavities_and_named_shafts_count_out_but_orphaned_rooms_do_not(tmp_path):
-    """A thick outer wall drawn as two lines (its inside is a closed 0.9 m cavity), a shaft labelled 管井 and
-    an office whose door the drawing forgot: the cavity and the shaft are spaces the drawing really closes
-    (counted out of the connectivity figure, tagged), the office is an orphaned room (it counts)."""
+def _closed_spaces_plan(tmp_path):
+    """A thick outer wall drawn as two lines (its inside is a closed 0.9 m cavity), a hall and a room joined
+    by a doorway, a shaft labelled 管井 and an office whose door the drawing forgot."""
     doc = _doc()
     msp = doc.modelspace()
     _rect(msp, 0, 0, 24, 12)
@@ -106,7 +106,14 @@ def test_closed_cavities_and_named_shafts_count_out_but_orphaned_rooms_do_not(tm
     _rect(msp, 18, 7, 22, 10.5)  # the office with no door, 4 x 3.5 m
     msp.add_text("Office", dxfattribs={"layer": "A-TEXT", "height": 0.3, "insert": (19.0, 8.5)})
     msp.add_text("Hall", dxfattribs={"layer": "A-TEXT", "height": 0.3, "insert": (6.0, 4.0)})
-    floor = pipeline.process_floor(_save(doc, tmp_path))
+    return _save(doc, tmp_path)
+
+
+def test_closed_cavities_and_named_shafts_count_out_but_orphaned_rooms_do_not(tmp_path):
+    """A thick outer wall drawn as two lines (its inside is a closed 0.9 m cavity), a shaft labelled 管井 and
+    an office whose door the drawing forgot: the cavity and the shaft are spaces the drawing really closes
+    (counted out of the connectivity figure, tagged), the office is an orphaned room (it counts)."""
+    floor = pipeline.process_floor(_closed_spaces_plan(tmp_path))
     areas = {a.id: a for a in floor.refined.areas}
     closed = floor.stats["closed_spaces"]
     kinds = sorted(("shaft" if a.polygon.area < 8 else "cavity") for i, a in areas.items() if i in closed)
@@ -118,3 +125,17 @@ def test_closed_cavities_and_named_shafts_count_out_but_orphaned_rooms_do_not(tm
     counted = sum(a.polygon.area for a in areas.values() if a.id not in closed)
     assert abs(floor.stats["largest_component_share"] - main / counted) < 1e-6
     assert floor.stats["largest_component_share"] < 1.0  # the office still counts against the figure
+
+
+@pytest.mark.qgis_process
+def test_dxftoosmag_headless_tags_closed_spaces_and_reports_components(tmp_path):
+    from algorithms import osmag
+    from tests.qgis_process import run_alg
+
+    out = tmp_path / "closed.osm"
+    _, res, log = run_alg("dxftoosmag", {"INPUT": _closed_spaces_plan(tmp_path), "OUTPUT": str(out)})
+    assert "closed space(s)" in log and "component" in log
+    areas, passages, _, _ = osmag.read_osmag(str(out))
+    closed = [a for a in areas if (a.tags or {}).get("cad2osmag:closed") == "yes"]
+    assert len(closed) == 2
+    assert any(a.name == "Office" for a in areas) and not any(a.name == "Office" for a in closed)
