@@ -36,10 +36,12 @@ KNOWN_BELOW = {
 }
 
 # DWG sheets below the connectivity target with the current segmentation (measured 2026-12-01: A-A3-10-04
-# 0.93, -05 0.90, -06 0.58, SIST-F1 0.80, F4 0.62, F5 0.70); each floor's other components are listed in the
+# 0.93, -05 0.90, -06 0.58, SIST-F1 0.80, F4 0.62, F5 0.70; with closed shafts and wall cavities counted out:
+# A-A3-10-04 0.9498, -05 0.916, -06 0.585); each floor's other components are listed in the
 # log and the 'component' field. Remove an entry when its sheet reaches the target.
 KNOWN_BELOW_DWG = {
-    "A-A3-10-04": "not yet diagnosed room by room",
+    "A-A3-10-04": "94.98 %: three rooms (143 m2) and a space titled by a window note (71 m2) are reached by no "
+                  "passage (the shaft 通风井 and an 11 m2 cavity now count out); not yet diagnosed by picture",
     "A-A3-10-05": "not yet diagnosed room by room",
     "A-A3-10-06": "not yet diagnosed room by room",
     "A-A3-10-08": "a roof plan (top view): one roof area, nothing to connect",
