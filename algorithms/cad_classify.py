@@ -12,6 +12,7 @@ from .model import CadGeometry, DoorHint
 
 DOOR_RADIUS = (0.5, 1.6)  # metres: leaf width of a swing door
 DOOR_SWEEP = (60.0, 100.0)  # degrees: a swing arc is (about) a quarter circle, often drawn a bit short
+WIDE_SWEEP = 185.0  # degrees: a door drawn opening flat against the wall (half circle), accepted with its leaf only
 
 
 def _circle_from_3(p0, p1, p2):
@@ -76,6 +77,7 @@ def merge_double_doors(hints: List[DoorHint], tol: float = 0.12) -> List[DoorHin
 def _swings(geoms: Sequence[CadGeometry], leaf_required: bool):
     """Core of find_door_swings: (indices to drop, [(cx, cy, closed-leaf end)] per arc with a leaf)."""
     arcs = []  # (index, cx, cy, r, end points)
+    wide = set()  # positions in ``arcs`` of arcs sweeping more than DOOR_SWEEP (up to WIDE_SWEEP)
     combined = {}  # index -> (cx, cy, closed-leaf end): leaf and arc drawn as one polyline
     for i, g in enumerate(geoms):
         if g.entity not in ("ARC", "LWPOLYLINE", "POLYLINE") or g.kind == "column" or g.closed or len(g.coords) < 5:
@@ -97,6 +99,9 @@ def _swings(geoms: Sequence[CadGeometry], leaf_required: bool):
         a = np.unwrap(np.arctan2(c[:, 1] - cy, c[:, 0] - cx))
         sweep = abs(math.degrees(a[-1] - a[0]))
         if DOOR_SWEEP[0] <= sweep <= DOOR_SWEEP[1]:
+            arcs.append((i, cx, cy, r, c[0], c[-1]))
+        elif DOOR_SWEEP[1] < sweep <= WIDE_SWEEP:
+            wide.add(len(arcs))  # a door opening up to 180 degrees (flat against the wall): only with its leaf
             arcs.append((i, cx, cy, r, c[0], c[-1]))
     if not arcs:
         return sorted(combined), list(combined.values())
@@ -137,7 +142,7 @@ def _swings(geoms: Sequence[CadGeometry], leaf_required: bool):
     hints = list(with_leaf.values())
     # swings drawn without a leaf: the hinge is at a wall end (a jamb) and so is the arc end where the
     # closed leaf lies; the open end stands in the room. Such arcs are doors with a hint.
-    lone = [a for a in arcs if a[0] not in with_leaf]
+    lone = [a for k, a in enumerate(arcs) if a[0] not in with_leaf and k not in wide]
     if lone:
         ends = [g.coords[[0, -1]] for i, g in enumerate(geoms) if i not in arc_set and len(g.coords) >= 2
                 and np.isfinite(g.coords[[0, -1]]).all()]
@@ -151,7 +156,9 @@ def _swings(geoms: Sequence[CadGeometry], leaf_required: bool):
                 if n0 != n1:
                     hints.append((cx, cy, e0 if n0 else e1))
                     with_leaf[ai] = hints[-1]
-    drop |= {i for i in arc_set if i in with_leaf or (geoms[i].kind != "wall" and not leaf_required)}
+    wide_idx = {arcs[k][0] for k in wide}
+    drop |= {i for i in arc_set if i in with_leaf
+             or (geoms[i].kind != "wall" and not leaf_required and i not in wide_idx)}
     drop |= set(combined)
     return sorted(drop), hints + list(combined.values())
 
@@ -195,8 +202,33 @@ def _thickness(coords: np.ndarray) -> float:
     return 2.0 * area / per if per > 0 else 0.0
 
 
+AUX_KIND = "swing?"  # CadGeometry.kind of an arc from a layer no rule names: looked at as a door swing only
+
+
+def swing_candidates(pieces, infos, scale: float) -> List[CadGeometry]:
+    """Arcs (ARC, or open polylines of 5+ vertices) on layers that no rule names ("no keyword": e.g. 'fine
+    projection lines'), as auxiliary geometries (kind ``AUX_KIND``, metres). Drawings put door swings on such
+    layers while the leaves sit on a door or window layer; ``classify_entities`` uses them to find swings and
+    never keeps them."""
+    out = []
+    for i, lay in enumerate(pieces.layer):
+        info = infos.get(lay)
+        if info is None or info.kind is not None or info.rule != "no keyword":
+            continue
+        if pieces.etype[i] not in ("ARC", "LWPOLYLINE", "POLYLINE") or pieces.closed[i] or pieces.filled[i]:
+            continue
+        c = pieces.coords[i]
+        if len(c) < 5 or not np.isfinite(c).all():
+            continue
+        span = (c.max(axis=0) - c.min(axis=0)) * scale
+        if span.max() > 2.0 * DOOR_RADIUS[1] or span.max() < 0.5 * DOOR_RADIUS[0]:
+            continue
+        out.append(CadGeometry(layer=lay, kind=AUX_KIND, coords=c * scale, entity=pieces.etype[i]))
+    return out
+
+
 def classify_entities(geoms: Sequence[CadGeometry], chains: Sequence[str], rules, include_doors: bool = False,
-                      weak_layers: Iterable[str] = (), drop_door_swings: bool = True):
+                      weak_layers: Iterable[str] = (), drop_door_swings: bool = True, aux_from: Optional[int] = None):
     """Classify the imported geometry by what the drawing says, for drawings whose layers do not.
 
     * block names (rules ``blocks``): door / window / furniture, the innermost matching block decides;
@@ -206,6 +238,9 @@ def classify_entities(geoms: Sequence[CadGeometry], chains: Sequence[str], rules
     * pattern (non-solid) hatches thicker than HATCH_THICK (tiles, flooring) are never walls;
     * on ``weak_layers`` (layer "0", fallback layers): closed compact outlines (0.35-2.5 m) that touch no
       other geometry, and what lies inside them, are furniture (unless filled or hatched: a column).
+
+    ``geoms[aux_from:]`` are auxiliary arcs (``swing_candidates``): door swings when they swing a leaf of the
+    kept geometry (or hinge at a wall end), never kept otherwise.
 
     Returns ``(keep mask, classes {class: count}, door hints)``."""
     from .cad_explode import BLOCK_SEP
@@ -238,13 +273,19 @@ def classify_entities(geoms: Sequence[CadGeometry], chains: Sequence[str], rules
         hints.extend(h)
     weak = set(weak_layers)
     if weak:
-        _free_furniture(geoms, cls, weak)
+        end = len(geoms) if aux_from is None else aux_from
+        main_cls = cls[:end]
+        _free_furniture(geoms[:end], main_cls, weak)
+        cls[:end] = main_cls
     keep = np.array([c in ("", "window") or (c == "door" and include_doors) for c in cls], dtype=bool)
+    if aux_from is not None:
+        keep[aux_from:] = False
     for i, g in enumerate(geoms):
         g.cls = cls[i] or ("wall" if g.kind in ("wall", "reference") else g.kind)
     classes: Dict[str, int] = {}
     for i, g in enumerate(geoms):
-        classes[g.cls] = classes.get(g.cls, 0) + 1
+        if g.kind != AUX_KIND or g.cls == "door":
+            classes[g.cls] = classes.get(g.cls, 0) + 1
     return keep, classes, hints
 
 

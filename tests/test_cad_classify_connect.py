@@ -139,3 +139,28 @@ def test_dxftoosmag_headless_tags_closed_spaces_and_reports_components(tmp_path)
     closed = [a for a in areas if (a.tags or {}).get("cad2osmag:closed") == "yes"]
     assert len(closed) == 2
     assert any(a.name == "Office" for a in areas) and not any(a.name == "Office" for a in closed)
+
+
+def test_half_circle_swing_on_an_unnamed_layer_with_its_leaf_on_a_window_layer(tmp_path):
+    """Doors drawn opening flat against the wall (a 180 degree arc) whose arc lies on a layer no rule names
+    ('fine projection lines') and whose leaf lies on a layer of doors *and* windows (kept as windows): the
+    swing is found across layers, the leaf is left out and the doorway joins the two rooms."""
+    doc = _doc()
+    msp = doc.modelspace()
+    _two_rooms(msp, layer="MURATURA sezioni - section wall")
+    win = {"layer": "PORTE finestre - doors windows"}
+    aux = {"layer": "PROIEZIONI finissime - fine lines"}
+    # the doorway 2.0-3.0 in the partition x = 6; the wall is drawn through it, the door closes it
+    msp.add_line((6.0, 3.0), (6.0, 4.0), dxfattribs=win)  # the open leaf, flat against the wall, hinge (6, 3)
+    msp.add_arc((6.0, 3.0), 1.0, 90, 270, dxfattribs=aux)  # 180 degrees: from the open leaf to the closed end
+    msp.add_arc((3.0, 5.0), 0.9, 0, 180, dxfattribs=aux)  # a half circle with no leaf: never a door
+    path = _save(doc, tmp_path)
+    d = import_dxf(path)
+    assert len(d.doors) == 1
+    h = d.doors[0]
+    ends = sorted([(round(h.x0, 2), round(h.y0, 2)), (round(h.x1, 2), round(h.y1, 2))])
+    assert ends == [(6.0, 2.0), (6.0, 3.0)]
+    assert not any(g.layer == aux["layer"] for g in d.geometries)  # the unnamed layer stays out
+    assert d.classes.get("door") == 2  # the arc and its open leaf
+    floor = pipeline.process_floor(path, names=False)
+    assert floor.stats["components"] == 1
