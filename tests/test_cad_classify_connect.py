@@ -164,3 +164,49 @@ def test_half_circle_swing_on_an_unnamed_layer_with_its_leaf_on_a_window_layer(t
     assert d.classes.get("door") == 2  # the arc and its open leaf
     floor = pipeline.process_floor(path, names=False)
     assert floor.stats["components"] == 1
+
+
+def _double_wall_rooms(cavity=0.2, wall=0.25, door=True):
+    """Two 5 x 4 m rooms separated by two walls side by side (a joint: ``wall`` thick each, ``cavity``
+    between), each drawn as a closed outline with a doorway gap at y 1.5-2.5 in the west wall only; the
+    door block's hint lies at the west wall's west face, as door blocks are inserted."""
+    from algorithms.model import CadGeometry, DoorHint
+
+    x0 = 5.0
+    x1 = x0 + wall + cavity + wall
+    outlines = [[(0, 0), (10.7, 0), (10.7, 4), (0, 4), (0, 0)],
+                [(x0, 0), (x0 + wall, 0), (x0 + wall, 1.5), (x0, 1.5), (x0, 0)],
+                [(x0, 2.5), (x0 + wall, 2.5), (x0 + wall, 4), (x0, 4), (x0, 2.5)],
+                [(x1 - wall, 0), (x1, 0), (x1, 4), (x1 - wall, 4), (x1 - wall, 0)]]  # no gap drawn in the east wall
+    geoms = [CadGeometry("A-WALL", "wall", np.array(c, float), closed=True) for c in outlines]
+    return geoms, ([DoorHint(x0, 1.5, x0, 2.5, "block")] if door else [])
+
+
+def test_door_hint_opens_a_double_wall_joint_through_to_the_room_beyond():
+    from algorithms import rasterize as ras
+    from algorithms import segmentation as seg
+
+    geoms, hints = _double_wall_rooms()
+    grid = ras.rasterize(geoms, resolution=0.05, extent=(-1, -1, 12, 5), door_hints=hints)
+    for x in (5.0, 5.2, 5.35, 5.55, 5.65):  # the whole joint is open across the doorway
+        c, r = grid.world_to_pixel(x, 2.0)
+        assert grid.data[int(r), int(c)] == 0, x
+    c, r = grid.world_to_pixel(5.5, 1.2)  # beside the doorway the walls stay
+    assert grid.data[int(r), int(c)] != 0
+    ag = seg.segment(grid, door_width=1.0, corridor_width=2.0, door_hints=hints)
+    big = [a for a in ag.areas if a.polygon.area > 10]
+    assert len(big) == 2 and ag.stats["components"] == 1
+
+
+def test_door_hint_never_opens_more_than_a_wall_thickness():
+    """A hint with no room within DOOR_MAX_WALL behind the wall (a solid 2 m block) clears no more than the
+    default opening depth."""
+    from algorithms import rasterize as ras
+    from algorithms.model import CadGeometry, DoorHint
+
+    block = CadGeometry("A-WALL", "wall", np.array([(5, 0), (7, 0), (7, 4), (5, 4), (5, 0)], float), closed=True,
+                        filled=True)
+    grid = ras.rasterize([block], resolution=0.05, extent=(-1, -1, 12, 5),
+                         door_hints=[DoorHint(5.0, 1.5, 5.0, 2.5, "block")])
+    c, r = grid.world_to_pixel(5.5, 2.0)
+    assert grid.data[int(r), int(c)] != 0
