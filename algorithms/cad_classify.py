@@ -280,6 +280,7 @@ def classify_entities(geoms: Sequence[CadGeometry], chains: Sequence[str], rules
     keep = np.array([c in ("", "window") or (c == "door" and include_doors) for c in cls], dtype=bool)
     if aux_from is not None:
         keep[aux_from:] = False
+    free_stair_treads(geoms, keep)
     for i, g in enumerate(geoms):
         g.cls = cls[i] or ("wall" if g.kind in ("wall", "reference") else g.kind)
     classes: Dict[str, int] = {}
@@ -287,6 +288,92 @@ def classify_entities(geoms: Sequence[CadGeometry], chains: Sequence[str], rules
         if g.kind != AUX_KIND or g.cls == "door":
             classes[g.cls] = classes.get(g.cls, 0) + 1
     return keep, classes, hints
+
+
+def free_stair_treads(geoms: Sequence[CadGeometry], keep: Optional[np.ndarray] = None) -> int:
+    """Stair treads drawn on a wall (or any kept) layer become kind "stair": the raster keeps them free (a
+    flight between two parts of a floor, half a level apart, is a way through, not a wall) and the stair
+    recognition still sees them. Treads: single straight lines in a run of parallel lines of similar length
+    at a regular tread spacing (``area_types.find_stair_runs``). Returns how many lines changed kind."""
+    from shapely import STRtree
+    from shapely.geometry import Point
+
+    from .area_types import TREAD_LENGTH, find_stair_runs
+
+    n = _curved_treads(geoms, keep)
+    skip = ("stair", "elevator", "column")
+    two = [i for i, g in enumerate(geoms) if len(g.coords) == 2 and g.kind not in skip and not g.filled
+           and (keep is None or keep[i])]
+    if len(two) < 6:
+        return n
+    C = np.stack([geoms[i].coords for i in two])
+    L = np.hypot(C[:, 1, 0] - C[:, 0, 0], C[:, 1, 1] - C[:, 0, 1])
+    ok = np.isfinite(L) & (L >= TREAD_LENGTH[0]) & (L <= TREAD_LENGTH[1])
+    cand = [two[k] for k in np.flatnonzero(ok)]
+    if len(cand) < 6:
+        return n
+    runs = find_stair_runs([geoms[i] for i in cand])
+    if not runs:
+        return n
+    zones = [r.buffer(0.05) for r in runs]
+    tree = STRtree(zones)
+    for i in cand:
+        a, b = Point(geoms[i].coords[0]), Point(geoms[i].coords[1])
+        hit = tree.query(a, predicate="intersects")
+        if any(zones[k].intersects(b) for k in hit):
+            geoms[i].kind = "stair"
+            n += 1
+    return n
+
+
+CURVED_TREADS = 4  # concentric arcs at a tread spacing that make a curved flight
+
+
+def _curved_treads(geoms: Sequence[CadGeometry], keep) -> int:
+    """Curved flights: >= CURVED_TREADS open arcs sharing a centre (within 0.1 m) whose radii step by a tread
+    spacing (``area_types.TREAD_SPACING``) become kind "stair"."""
+    from .area_types import TREAD_SPACING
+
+    arcs = []
+    for i, g in enumerate(geoms):
+        if (keep is not None and not keep[i]) or g.entity != "ARC" or g.kind in ("stair", "elevator", "column"):
+            continue
+        c = g.coords
+        if len(c) < 3 or g.closed or not np.isfinite(c).all():
+            continue
+        circ = _circle_from_3(c[0], c[len(c) // 2], c[-1])
+        if circ is not None and 0.5 <= circ[2] <= 30.0:
+            arcs.append((i, circ[0], circ[1], circ[2]))
+    if len(arcs) < CURVED_TREADS:
+        return 0
+    groups: Dict[Tuple[int, int], List[tuple]] = {}
+    for a in arcs:
+        groups.setdefault((int(round(a[1] / 0.1)), int(round(a[2] / 0.1))), []).append(a)
+    n = 0
+    seen = set()
+    for key, members in groups.items():
+        near = [a for dx in (-1, 0, 1) for dy in (-1, 0, 1) for a in groups.get((key[0] + dx, key[1] + dy), [])
+                if a[0] not in seen]
+        if len(near) < CURVED_TREADS:
+            continue
+        near.sort(key=lambda a: a[3])
+        radii = np.array([a[3] for a in near])
+        steps = np.diff(radii)
+        # the longest chain of consecutive radii stepping by a tread spacing
+        ok = (steps >= TREAD_SPACING[0]) & (steps <= TREAD_SPACING[1])
+        best, run, start, bstart = 0, 0, 0, 0
+        for k, v in enumerate(ok):
+            run = run + 1 if v else 0
+            if run == 1:
+                start = k
+            if run > best:
+                best, bstart = run, start
+        if best + 1 >= CURVED_TREADS and np.std(steps[bstart:bstart + best]) <= 0.25 * np.mean(steps[bstart:bstart + best]):
+            for a in near[bstart:bstart + best + 1]:
+                geoms[a[0]].kind = "stair"
+                seen.add(a[0])
+                n += 1
+    return n
 
 
 def _free_furniture(geoms: Sequence[CadGeometry], cls: List[str], weak: set) -> None:

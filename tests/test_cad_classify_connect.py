@@ -210,3 +210,44 @@ def test_door_hint_never_opens_more_than_a_wall_thickness():
                          door_hints=[DoorHint(5.0, 1.5, 5.0, 2.5, "block")])
     c, r = grid.world_to_pixel(5.5, 2.0)
     assert grid.data[int(r), int(c)] != 0
+
+
+def _flight_plan(tmp_path, treads=True):
+    """Two rooms (10 x 3 m) joined only by a 2 m wide flight of seven treads drawn on the wall layer (a stair
+    half a level between two parts of a floor)."""
+    doc = _doc()
+    msp = doc.modelspace()
+    w = {"layer": "A-WALL"}
+    msp.add_lwpolyline([(0, 0), (10, 0), (10, 8), (0, 8)], close=True, dxfattribs=w)
+    for y in (3.0, 5.0):
+        msp.add_line((0, y), (4, y), dxfattribs=w)
+        msp.add_line((6, y), (10, y), dxfattribs=w)
+    msp.add_line((4, 3), (4, 5), dxfattribs=w)  # the flight's sides
+    msp.add_line((6, 3), (6, 5), dxfattribs=w)
+    if treads:
+        for k in range(7):
+            msp.add_line((4, 3.1 + 0.3 * k), (6, 3.1 + 0.3 * k), dxfattribs=w)
+    return _save(doc, tmp_path)
+
+
+def test_stair_treads_on_a_wall_layer_are_a_way_through(tmp_path):
+    path = _flight_plan(tmp_path)
+    d = import_dxf(path)
+    assert sum(g.kind == "stair" for g in d.geometries) == 7
+    floor = pipeline.process_floor(path, names=False)
+    assert floor.stats["components"] == 1
+    rooms = [a for a in floor.refined.areas if a.polygon.area > 20]
+    assert len(rooms) == 2
+
+
+def test_curved_treads_are_stairs_and_lone_arcs_stay():
+    from algorithms.cad_classify import free_stair_treads
+    from algorithms.model import CadGeometry
+
+    def arc(cx, cy, r, a0=200, a1=250):
+        t = np.radians(np.linspace(a0, a1, 9))
+        return CadGeometry("0", "reference", np.c_[cx + r * np.cos(t), cy + r * np.sin(t)], entity="ARC")
+
+    geoms = [arc(0, 0, 1.0 + 0.3 * k) for k in range(5)] + [arc(20, 0, 1.0), arc(20, 0, 3.0), arc(40, 0, 2.0)]
+    assert free_stair_treads(geoms) == 5
+    assert [g.kind for g in geoms] == ["stair"] * 5 + ["reference"] * 3
