@@ -12,6 +12,7 @@ from .model import CadGeometry, DoorHint
 
 DOOR_RADIUS = (0.5, 1.6)  # metres: leaf width of a swing door
 DOOR_SWEEP = (60.0, 100.0)  # degrees: a swing arc is (about) a quarter circle, often drawn a bit short
+WIDE_SWEEP = 185.0  # degrees: a door drawn opening flat against the wall (half circle), accepted with its leaf only
 
 
 def _circle_from_3(p0, p1, p2):
@@ -76,10 +77,17 @@ def merge_double_doors(hints: List[DoorHint], tol: float = 0.12) -> List[DoorHin
 def _swings(geoms: Sequence[CadGeometry], leaf_required: bool):
     """Core of find_door_swings: (indices to drop, [(cx, cy, closed-leaf end)] per arc with a leaf)."""
     arcs = []  # (index, cx, cy, r, end points)
+    wide = set()  # positions in ``arcs`` of arcs sweeping more than DOOR_SWEEP (up to WIDE_SWEEP)
+    combined = {}  # index -> (cx, cy, closed-leaf end): leaf and arc drawn as one polyline
     for i, g in enumerate(geoms):
         if g.entity not in ("ARC", "LWPOLYLINE", "POLYLINE") or g.kind == "column" or g.closed or len(g.coords) < 5:
             continue
         c = g.coords
+        if g.entity != "ARC":
+            one = _leaf_and_arc(c)
+            if one is not None:
+                combined[i] = one
+                continue
         circ = _circle_from_3(c[0], c[len(c) // 2], c[-1])
         if circ is None:
             continue
@@ -92,8 +100,11 @@ def _swings(geoms: Sequence[CadGeometry], leaf_required: bool):
         sweep = abs(math.degrees(a[-1] - a[0]))
         if DOOR_SWEEP[0] <= sweep <= DOOR_SWEEP[1]:
             arcs.append((i, cx, cy, r, c[0], c[-1]))
+        elif DOOR_SWEEP[1] < sweep <= WIDE_SWEEP:
+            wide.add(len(arcs))  # a door opening up to 180 degrees (flat against the wall): only with its leaf
+            arcs.append((i, cx, cy, r, c[0], c[-1]))
     if not arcs:
-        return [], []
+        return sorted(combined), list(combined.values())
     from scipy.spatial import cKDTree
 
     centres = np.array([(a[1], a[2]) for a in arcs])
@@ -131,7 +142,7 @@ def _swings(geoms: Sequence[CadGeometry], leaf_required: bool):
     hints = list(with_leaf.values())
     # swings drawn without a leaf: the hinge is at a wall end (a jamb) and so is the arc end where the
     # closed leaf lies; the open end stands in the room. Such arcs are doors with a hint.
-    lone = [a for a in arcs if a[0] not in with_leaf]
+    lone = [a for k, a in enumerate(arcs) if a[0] not in with_leaf and k not in wide]
     if lone:
         ends = [g.coords[[0, -1]] for i, g in enumerate(geoms) if i not in arc_set and len(g.coords) >= 2
                 and np.isfinite(g.coords[[0, -1]]).all()]
@@ -145,8 +156,33 @@ def _swings(geoms: Sequence[CadGeometry], leaf_required: bool):
                 if n0 != n1:
                     hints.append((cx, cy, e0 if n0 else e1))
                     with_leaf[ai] = hints[-1]
-    drop |= {i for i in arc_set if i in with_leaf or (geoms[i].kind != "wall" and not leaf_required)}
-    return sorted(drop), hints
+    wide_idx = {arcs[k][0] for k in wide}
+    drop |= {i for i in arc_set if i in with_leaf
+             or (geoms[i].kind != "wall" and not leaf_required and i not in wide_idx)}
+    drop |= set(combined)
+    return sorted(drop), hints + list(combined.values())
+
+
+def _leaf_and_arc(c: np.ndarray):
+    """A door swing drawn as one open polyline (a common PLINE habit): the hinge, the open leaf's end, then
+    the arc around the hinge to the closed leaf's end (or the same backwards). Returns (cx, cy, closed
+    end) or None. The leaf is as long as the arc's radius (0.5-1.6 m) and the arc sweeps 60-100 degrees."""
+    if not np.isfinite(c).all():
+        return None
+    for hinge, rest in ((c[0], c[1:]), (c[-1], c[-2::-1])):
+        if len(rest) < 4:
+            continue
+        d = np.hypot(rest[:, 0] - hinge[0], rest[:, 1] - hinge[1])
+        r = float(d[0])
+        if not (DOOR_RADIUS[0] <= r <= DOOR_RADIUS[1]) or np.max(np.abs(d - r)) > 0.03 * r:
+            continue
+        a = np.unwrap(np.arctan2(rest[:, 1] - hinge[1], rest[:, 0] - hinge[0]))
+        step = np.diff(a)
+        if not (np.all(step > 0) or np.all(step < 0)):
+            continue
+        if DOOR_SWEEP[0] <= abs(math.degrees(a[-1] - a[0])) <= DOOR_SWEEP[1]:
+            return float(hinge[0]), float(hinge[1]), rest[-1].copy()
+    return None
 
 
 # ------------------------------------------------------------------------------------------ spaghetti
@@ -166,8 +202,33 @@ def _thickness(coords: np.ndarray) -> float:
     return 2.0 * area / per if per > 0 else 0.0
 
 
+AUX_KIND = "swing?"  # CadGeometry.kind of an arc from a layer no rule names: looked at as a door swing only
+
+
+def swing_candidates(pieces, infos, scale: float) -> List[CadGeometry]:
+    """Arcs (ARC, or open polylines of 5+ vertices) on layers that no rule names ("no keyword": e.g. 'fine
+    projection lines'), as auxiliary geometries (kind ``AUX_KIND``, metres). Drawings put door swings on such
+    layers while the leaves sit on a door or window layer; ``classify_entities`` uses them to find swings and
+    never keeps them."""
+    out = []
+    for i, lay in enumerate(pieces.layer):
+        info = infos.get(lay)
+        if info is None or info.kind is not None or info.rule != "no keyword":
+            continue
+        if pieces.etype[i] not in ("ARC", "LWPOLYLINE", "POLYLINE") or pieces.closed[i] or pieces.filled[i]:
+            continue
+        c = pieces.coords[i]
+        if len(c) < 5 or not np.isfinite(c).all():
+            continue
+        span = (c.max(axis=0) - c.min(axis=0)) * scale
+        if span.max() > 2.0 * DOOR_RADIUS[1] or span.max() < 0.5 * DOOR_RADIUS[0]:
+            continue
+        out.append(CadGeometry(layer=lay, kind=AUX_KIND, coords=c * scale, entity=pieces.etype[i]))
+    return out
+
+
 def classify_entities(geoms: Sequence[CadGeometry], chains: Sequence[str], rules, include_doors: bool = False,
-                      weak_layers: Iterable[str] = (), drop_door_swings: bool = True):
+                      weak_layers: Iterable[str] = (), drop_door_swings: bool = True, aux_from: Optional[int] = None):
     """Classify the imported geometry by what the drawing says, for drawings whose layers do not.
 
     * block names (rules ``blocks``): door / window / furniture, the innermost matching block decides;
@@ -177,6 +238,9 @@ def classify_entities(geoms: Sequence[CadGeometry], chains: Sequence[str], rules
     * pattern (non-solid) hatches thicker than HATCH_THICK (tiles, flooring) are never walls;
     * on ``weak_layers`` (layer "0", fallback layers): closed compact outlines (0.35-2.5 m) that touch no
       other geometry, and what lies inside them, are furniture (unless filled or hatched: a column).
+
+    ``geoms[aux_from:]`` are auxiliary arcs (``swing_candidates``): door swings when they swing a leaf of the
+    kept geometry (or hinge at a wall end), never kept otherwise.
 
     Returns ``(keep mask, classes {class: count}, door hints)``."""
     from .cad_explode import BLOCK_SEP
@@ -209,14 +273,107 @@ def classify_entities(geoms: Sequence[CadGeometry], chains: Sequence[str], rules
         hints.extend(h)
     weak = set(weak_layers)
     if weak:
-        _free_furniture(geoms, cls, weak)
+        end = len(geoms) if aux_from is None else aux_from
+        main_cls = cls[:end]
+        _free_furniture(geoms[:end], main_cls, weak)
+        cls[:end] = main_cls
     keep = np.array([c in ("", "window") or (c == "door" and include_doors) for c in cls], dtype=bool)
+    if aux_from is not None:
+        keep[aux_from:] = False
+    free_stair_treads(geoms, keep)
     for i, g in enumerate(geoms):
         g.cls = cls[i] or ("wall" if g.kind in ("wall", "reference") else g.kind)
     classes: Dict[str, int] = {}
     for i, g in enumerate(geoms):
-        classes[g.cls] = classes.get(g.cls, 0) + 1
+        if g.kind != AUX_KIND or g.cls == "door":
+            classes[g.cls] = classes.get(g.cls, 0) + 1
     return keep, classes, hints
+
+
+def free_stair_treads(geoms: Sequence[CadGeometry], keep: Optional[np.ndarray] = None) -> int:
+    """Stair treads drawn on a wall (or any kept) layer become kind "stair": the raster keeps them free (a
+    flight between two parts of a floor, half a level apart, is a way through, not a wall) and the stair
+    recognition still sees them. Treads: single straight lines in a run of parallel lines of similar length
+    at a regular tread spacing (``area_types.find_stair_runs``). Returns how many lines changed kind."""
+    from shapely import STRtree
+    from shapely.geometry import Point
+
+    from .area_types import TREAD_LENGTH, find_stair_runs
+
+    n = _curved_treads(geoms, keep)
+    skip = ("stair", "elevator", "column")
+    two = [i for i, g in enumerate(geoms) if len(g.coords) == 2 and g.kind not in skip and not g.filled
+           and (keep is None or keep[i])]
+    if len(two) < 6:
+        return n
+    C = np.stack([geoms[i].coords for i in two])
+    L = np.hypot(C[:, 1, 0] - C[:, 0, 0], C[:, 1, 1] - C[:, 0, 1])
+    ok = np.isfinite(L) & (L >= TREAD_LENGTH[0]) & (L <= TREAD_LENGTH[1])
+    cand = [two[k] for k in np.flatnonzero(ok)]
+    if len(cand) < 6:
+        return n
+    runs = find_stair_runs([geoms[i] for i in cand])
+    if not runs:
+        return n
+    zones = [r.buffer(0.05) for r in runs]
+    tree = STRtree(zones)
+    for i in cand:
+        a, b = Point(geoms[i].coords[0]), Point(geoms[i].coords[1])
+        hit = tree.query(a, predicate="intersects")
+        if any(zones[k].intersects(b) for k in hit):
+            geoms[i].kind = "stair"
+            n += 1
+    return n
+
+
+CURVED_TREADS = 4  # concentric arcs at a tread spacing that make a curved flight
+
+
+def _curved_treads(geoms: Sequence[CadGeometry], keep) -> int:
+    """Curved flights: >= CURVED_TREADS open arcs sharing a centre (within 0.1 m) whose radii step by a tread
+    spacing (``area_types.TREAD_SPACING``) become kind "stair"."""
+    from .area_types import TREAD_SPACING
+
+    arcs = []
+    for i, g in enumerate(geoms):
+        if (keep is not None and not keep[i]) or g.entity != "ARC" or g.kind in ("stair", "elevator", "column"):
+            continue
+        c = g.coords
+        if len(c) < 3 or g.closed or not np.isfinite(c).all():
+            continue
+        circ = _circle_from_3(c[0], c[len(c) // 2], c[-1])
+        if circ is not None and 0.5 <= circ[2] <= 30.0:
+            arcs.append((i, circ[0], circ[1], circ[2]))
+    if len(arcs) < CURVED_TREADS:
+        return 0
+    groups: Dict[Tuple[int, int], List[tuple]] = {}
+    for a in arcs:
+        groups.setdefault((int(round(a[1] / 0.1)), int(round(a[2] / 0.1))), []).append(a)
+    n = 0
+    seen = set()
+    for key, members in groups.items():
+        near = [a for dx in (-1, 0, 1) for dy in (-1, 0, 1) for a in groups.get((key[0] + dx, key[1] + dy), [])
+                if a[0] not in seen]
+        if len(near) < CURVED_TREADS:
+            continue
+        near.sort(key=lambda a: a[3])
+        radii = np.array([a[3] for a in near])
+        steps = np.diff(radii)
+        # the longest chain of consecutive radii stepping by a tread spacing
+        ok = (steps >= TREAD_SPACING[0]) & (steps <= TREAD_SPACING[1])
+        best, run, start, bstart = 0, 0, 0, 0
+        for k, v in enumerate(ok):
+            run = run + 1 if v else 0
+            if run == 1:
+                start = k
+            if run > best:
+                best, bstart = run, start
+        if best + 1 >= CURVED_TREADS and np.std(steps[bstart:bstart + best]) <= 0.25 * np.mean(steps[bstart:bstart + best]):
+            for a in near[bstart:bstart + best + 1]:
+                geoms[a[0]].kind = "stair"
+                seen.add(a[0])
+                n += 1
+    return n
 
 
 def _free_furniture(geoms: Sequence[CadGeometry], cls: List[str], weak: set) -> None:

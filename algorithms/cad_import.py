@@ -40,7 +40,8 @@ from typing import Dict, List, Optional, Sequence, Tuple
 
 import numpy as np
 
-from .cad_classify import DOOR_RADIUS, DOOR_SWEEP, _circle_from_3, classify_entities, find_door_swings  # noqa: F401
+from .cad_classify import (AUX_KIND, DOOR_RADIUS, DOOR_SWEEP, _circle_from_3, classify_entities,  # noqa: F401
+                           find_door_swings, swing_candidates)
 from .cad_sheet import describe_plans, find_plans
 from .cad_explode import (MAX_SEGMENTS_PER_TURN, SKIP_TYPES, TEXT_TYPES, _arc_points, _boundary_rings,  # noqa: F401
                           _bulge_polyline, _chain, _edge_points, _Exploder, _explode, _extrusion, _mtext_plain,
@@ -301,6 +302,9 @@ def import_dxf(path: str, rules=None, layers: Optional[Sequence[str]] = None, un
                "a damaged file or a broken block scale); check the drawing with AUDIT in CAD")
         warnings.append(msg)
         progress.warning(msg)
+    n_main = len(geoms)
+    if classify and not include_doors and drop_door_swings and selected is None:
+        geoms.extend(swing_candidates(p, infos, scale))  # arcs on layers no rule names: door swings only
     texts = [CadText(x=t[0] * scale, y=t[1] * scale, text=t[2], height=t[3] * scale, rotation=t[4],
                      layer=t[5], entity=t[6], block=innermost_block(t[7]), tag=t[8])
              for t in p.texts if math.isfinite(t[0] * scale) and math.isfinite(t[1] * scale)]
@@ -311,7 +315,8 @@ def import_dxf(path: str, rules=None, layers: Optional[Sequence[str]] = None, un
         progress.step(88, "classifying entities (door and furniture blocks, door swings, hatches)")
         weak = {name for name, info in infos.items()
                 if info.kind is not None and (info.rule.startswith("fallback") or info.rule.startswith("preserve"))}
-        keep, classes, doors = classify_entities(geoms, chains, rules, include_doors, weak, drop_door_swings)
+        keep, classes, doors = classify_entities(geoms, chains, rules, include_doors, weak, drop_door_swings,
+                                                 aux_from=n_main)
         gone = len(geoms) - int(keep.sum())
         geoms = [g for g, k in zip(geoms, keep) if k]
         if gone:
@@ -319,7 +324,8 @@ def import_dxf(path: str, rules=None, layers: Optional[Sequence[str]] = None, un
                                                   if k in ("door", "furniture", "hatch") and v)
                           + " entities found by block name or shape (doorways stay open; set include_doors "
                           f"to close them); {len(doors)} doorways found")
-    elif not include_doors and drop_door_swings:
+    geoms = [g for g in geoms if g.kind != AUX_KIND]
+    if not include_doors and drop_door_swings and not classify:
         swings = set(find_door_swings(geoms))
         geoms = [g for k, g in enumerate(geoms) if k not in swings]
     timings["classify"] = time.perf_counter() - t1

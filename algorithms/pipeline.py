@@ -113,6 +113,7 @@ def process_floor(dxf_path: str, *, rules=None, layers=None, units=None, include
         names_report = timed("names", 95, 98, semantics.assign_names, refined.areas, drawing.texts, level,
                              rules=name_rules, grid=grid, passages=refined.passages)
         progress.info(names_report.summary())
+    closed, share = _closed_spaces(refined, drawing, name_rules, rstats, progress)
     t0, c0 = time.perf_counter(), time.process_time()
     outline = floor_outline(refined.areas)
     timings["outline"], cpu["outline"] = time.perf_counter() - t0, time.process_time() - c0
@@ -122,12 +123,28 @@ def process_floor(dxf_path: str, *, rules=None, layers=None, units=None, include
     stats = {"timings": timings, "cpu": cpu, "refine": rstats, "segment": dict(seg.stats),
              "texts": len(drawing.texts), "geometries": len(drawing.geometries), "unit": drawing.unit_name,
              "raster_shape": grid.shape, "areas": len(refined.areas), "passages": len(refined.passages),
-             "components": rstats.get("components", 1), "largest_component_share": rstats.get("largest_component_share", 1.0)}
+             "components": rstats.get("components", 1), "largest_component_share": share, "closed_spaces": closed}
     if names_report is not None:
         stats["names"] = names_report.counts()
     progress.info(f"floor {level}: {len(refined.areas)} areas, {len(refined.passages)} passages "
                   f"({rstats.get('vertex_reduction', 0):.0%} fewer vertices after refinement)")
     return FloorResult(drawing, grid, seg, refined, floor_area, stats, names_report)
+
+
+def _closed_spaces(refined: AreaGraph, drawing: CadDrawing, name_rules, rstats, progress):
+    """Wall cavities, ducts and shafts the drawing closes on all sides (``segmentation.closed_spaces``):
+    tagged ``cad2osmag:closed=yes`` and counted out of the largest component's share (issue 8, item 6)."""
+    if rstats.get("components", 1) <= 1:
+        return [], rstats.get("largest_component_share", 1.0)
+    pts = semantics.room_name_points(drawing.texts, name_rules)
+    closed = segmentation.closed_spaces(refined.areas, refined.passages, pts)
+    for a in refined.areas:
+        if a.id in closed:
+            a.tags["cad2osmag:closed"] = "yes"
+    if closed:
+        progress.info(f"{len(closed)} closed space(s) no passage reaches and no room name labels (wall cavities, "
+                      f"ducts, shafts: areas {', '.join(map(str, closed[:20]))}) are counted out of the connectivity")
+    return closed, segmentation.connected_share(refined.areas, closed)
 
 
 def convert_dxf(dxf_path: str, out_osm: str, *, preview_png: Optional[str] = None,

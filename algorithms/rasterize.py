@@ -330,6 +330,62 @@ def door_opening_mask(door_hints, shape, origin_x: float, origin_y: float, resol
     return mask.view(bool)
 
 
+DOOR_MAX_WALL = 1.2  # metres: a door hint opens a wall up to this thick (thick masonry, two walls at a joint)
+DOOR_ROOM_RUN = 0.3  # metres of free space behind a wall that count as the room beyond it (a cavity is thinner)
+
+
+def deepen_openings(img: np.ndarray, door_hints, origin_x: float, origin_y: float, resolution: float,
+                    depth: float = DOOR_CLEAR_DEPTH, max_wall: float = DOOR_MAX_WALL,
+                    room_run: float = DOOR_ROOM_RUN) -> np.ndarray:
+    """Mask of what a door hint must also clear when its wall is thicker than ``depth``: door blocks are
+    inserted at one face of the wall, and thick masonry or two walls side by side (a joint, with a thin
+    cavity between) stay closed behind a ``depth``-deep opening. On each side of each hint, walk along the
+    normal from ``depth / 2``: while occupied pixels lie across the opening (or a free run thinner than
+    ``room_run``, a cavity), the wall goes on; the first free run of ``room_run`` is the room, and the
+    opening is cleared up to it. Nothing is added when no room is met within ``max_wall`` of the hint."""
+    import cv2
+
+    mask = np.zeros(img.shape, np.uint8)
+    rows, cols = img.shape
+    steps = np.arange(depth / 2.0, max_wall + room_run + resolution, resolution / 2.0)
+    need = max(1, int(round(room_run / (resolution / 2.0))))
+    for h in door_hints or ():
+        a = np.array((h.x0, h.y0), float)
+        b = np.array((h.x1, h.y1), float)
+        if not (np.isfinite(a).all() and np.isfinite(b).all()):
+            continue
+        L = float(np.hypot(*(b - a)))
+        if not 0.3 <= L <= 4.0:
+            continue
+        u = (b - a) / L
+        nrm = np.array((-u[1], u[0]))
+        a2, b2 = a + u * DOOR_JAMB_INSET, b - u * DOOR_JAMB_INSET
+        across = a2[None, :] + np.linspace(0.2, 0.8, 5)[:, None] * (b2 - a2)[None, :]  # inner 60 % of the width
+        for sgn in (1.0, -1.0):
+            pts = across[None, :, :] + sgn * steps[:, None, None] * nrm[None, None, :]
+            c = np.floor((pts[..., 0] - origin_x) / resolution).astype(np.int64)
+            r = np.floor((origin_y - pts[..., 1]) / resolution).astype(np.int64)
+            inside = (c >= 0) & (c < cols) & (r >= 0) & (r < rows)
+            occ = np.ones(c.shape, bool)
+            occ[inside] = img[r[inside], c[inside]] > 0
+            blocked = occ.any(axis=1)
+            if not blocked[0] and not blocked[: need].any():
+                continue  # the room starts at the default opening: nothing to deepen
+            free_run, end = 0, None
+            for k, bl in enumerate(blocked):
+                free_run = 0 if bl else free_run + 1
+                if free_run >= need:
+                    end = k - need + 1
+                    break
+            if end is None or steps[end] > max_wall:
+                continue  # no room within a wall's thickness: not a doorway through this wall
+            d = steps[end] + resolution
+            quad = np.array([a2, b2, b2 + sgn * d * nrm, a2 + sgn * d * nrm])
+            cv2.fillConvexPoly(mask, _to_px(quad, origin_x, origin_y, resolution), 1, lineType=cv2.LINE_8,
+                               shift=SHIFT)
+    return mask.view(bool)
+
+
 def rasterize(geometries: Sequence[CadGeometry], resolution: float = DEFAULT_RESOLUTION,
               padding: float = DEFAULT_PADDING, percentiles=DEFAULT_PERCENTILES, kernel: int = DEFAULT_KERNEL,
               extent: Optional[Sequence[float]] = None, max_pixels: float = DEFAULT_MAX_PIXELS,
@@ -375,6 +431,7 @@ def rasterize(geometries: Sequence[CadGeometry], resolution: float = DEFAULT_RES
     img = repair(img, int(kernel))
     if door_hints:
         opening = door_opening_mask(door_hints, img.shape, ox, oy, resolution)
+        opening |= deepen_openings(img, door_hints, ox, oy, resolution)
         progress.info(f"{len(door_hints)} door hints kept open ({int(np.count_nonzero(opening & (img > 0)))} "
                       "occupied pixels cleared)")
         img[opening] = FREE

@@ -995,6 +995,48 @@ def assign_components(areas: List[Area], passages: List[Passage]) -> List[dict]:
     return out
 
 
+# Spaces the drawing really closes (issue 8, item 6): not orphaned rooms but wall cavities, ducts and shafts.
+CAVITY_WIDTH = 1.0  # metres: mean width (2 * area / perimeter) under which a closed space is a cavity or duct
+SHAFT_WORDS = ("shaft", "duct", "riser", "chase", "cavedio", "cavedi", "ducto", "schacht", "gaine", "井", "烟道",
+               "风道", "管道间", "шахт")
+
+
+def closed_spaces(areas: List[Area], passages: List[Passage], name_points=()) -> List[int]:
+    """Ids of the areas the drawing closes on all sides that are no room: an area no passage touches (a
+    component of its own, not the largest) that holds no room-name text except a shaft word
+    (``SHAFT_WORDS``: 井, shaft, duct, cavedio...) and either is named a shaft or is too narrow for a room
+    or corridor (mean width 2 * area / perimeter under ``CAVITY_WIDTH``: the inside of a wall drawn as two
+    lines, a duct). ``name_points``: (x, y, text) of the drawing's room names and numbers. They stay areas
+    and components of their own; the connectivity figure counts them out."""
+    from shapely.geometry import Point
+
+    touched = {i for p in passages for i in (p.from_id, p.to_id)}
+    pts = [(Point(x, y), str(t).lower()) for x, y, t in name_points]
+    out = []
+    for a in areas:
+        if a.id in touched or a.component == 0 or a.polygon is None or a.polygon.is_empty or a.type == "structure":
+            continue
+        inside = [t for pt, t in pts if a.polygon.intersects(pt)]
+        shaft = [t for t in inside if any(w in t for w in SHAFT_WORDS)]
+        if len(shaft) != len(inside):
+            continue  # a room name: an orphaned room, never counted out
+        narrow = 2.0 * a.polygon.area / max(a.polygon.length, 1e-9) < CAVITY_WIDTH
+        if shaft or narrow:
+            out.append(a.id)
+    return sorted(out)
+
+
+def connected_share(areas: List[Area], closed_ids=()) -> float:
+    """The largest component's share of the floor area, counting out ``closed_ids`` (``closed_spaces``)."""
+    closed = set(closed_ids)
+    sizes: Dict[int, float] = {}
+    for a in areas:
+        if a.id not in closed and a.type != "structure":
+            sizes[a.component] = sizes.get(a.component, 0.0) + a.area
+    total = sum(sizes.values())
+    return max(sizes.values()) / total if total else 1.0
+
+
 def report_components(components: List[dict], progress, stage: str = "segmentation") -> None:
     """Log the components of the area graph: every one but the largest, with ids, names and size."""
     if len(components) <= 1:

@@ -55,6 +55,9 @@ def evaluate_plan(path, **kwargs):
                 "traceback": traceback.format_exc(limit=3), "seconds": time.perf_counter() - t0}
     fig = semantics.floor_figures(floor.refined.areas, floor.refined.passages, floor.names)
     fig.update({"plan": Path(path).name, "ok": True, "seconds": time.perf_counter() - t0})
+    if "largest_component_share" in floor.stats:  # wall cavities, ducts and shafts the drawing closes count out
+        fig["largest_component_pct"] = 100.0 * floor.stats["largest_component_share"]
+        fig["closed_spaces"] = len(floor.stats.get("closed_spaces", []))
     return fig
 
 

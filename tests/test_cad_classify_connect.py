@@ -1,0 +1,253 @@
+"""Connected floors: doorways drawn in ways that closed them (issue 8, item 6), one rule per kind of drawing.
+
+Each test builds the small drawing the rule is about with ezdxf and checks the door hint and, through the
+whole floor pipeline, that the floor's area graph is one connected component."""
+import math
+
+import ezdxf
+import numpy as np
+import pytest
+
+from algorithms import pipeline
+from algorithms.cad_classify import _leaf_and_arc
+from algorithms.cad_import import import_dxf
+
+
+def _doc():
+    doc = ezdxf.new("R2010", setup=False)
+    doc.header["$INSUNITS"] = 6  # metres
+    return doc
+
+
+def _two_rooms(msp, layer="A-WALL"):
+    """Two 6 x 6 m rooms; the partition between them (x = 6) is drawn straight through the doorway."""
+    msp.add_lwpolyline([(0, 0), (12, 0), (12, 6), (0, 6)], close=True, dxfattribs={"layer": layer})
+    msp.add_line((6, 0), (6, 6), dxfattribs={"layer": layer})
+
+
+def _pline_door(msp, layer="A-DOOR", hinge=(6.0, 2.0), r=0.9, reverse=False):
+    """A door swing drawn as ONE open polyline: hinge -> open leaf's end -> quarter arc (bulge) -> closed end."""
+    hx, hy = hinge
+    pts = [(hx, hy, 0.0), (hx - r, hy, -math.tan(math.radians(90) / 4)), (hx, hy + r, 0.0)]
+    if reverse:  # the same door drawn from the closed end back to the hinge
+        pts = [(hx, hy + r, math.tan(math.radians(90) / 4)), (hx - r, hy, 0.0), (hx, hy, 0.0)]
+    msp.add_lwpolyline(pts, format="xyb", dxfattribs={"layer": layer})
+
+
+def _save(doc, tmp_path, name="t.dxf"):
+    p = tmp_path / name
+    doc.saveas(p)
+    return str(p)
+
+
+def test_leaf_and_arc_polyline_shape():
+    hinge = np.array([6.0, 2.0])
+    ang = np.radians(np.linspace(180, 90, 12))
+    arc = np.c_[6.0 + 0.9 * np.cos(ang), 2.0 + 0.9 * np.sin(ang)]
+    c = np.vstack([hinge, arc])
+    cx, cy, end = _leaf_and_arc(c)
+    assert (cx, cy) == (6.0, 2.0) and np.allclose(end, (6.0, 2.9), atol=1e-6)
+    back = _leaf_and_arc(c[::-1])
+    assert back is not None and np.allclose(back[2], (6.0, 2.9), atol=1e-6)
+    # a wall polyline with a rounded corner: its first vertex is not the arc's centre
+    corner = np.vstack([[0.0, 0.0], [5.1, 2.0] + 0 * arc[0], arc])
+    assert _leaf_and_arc(corner) is None
+    # a half circle is no door swing (sweep 180 degrees), nor is a leaf longer than the radius
+    half = np.vstack([hinge, np.c_[6.0 + 0.9 * np.cos(np.radians(np.linspace(180, 0, 20))),
+                                   2.0 + 0.9 * np.sin(np.radians(np.linspace(180, 0, 20)))]])
+    assert _leaf_and_arc(half) is None
+    assert _leaf_and_arc(np.vstack([[6.0, 0.5], arc])) is None
+
+
+def test_pline_door_swing_becomes_a_hint_and_keeps_the_floor_connected(tmp_path):
+    doc = _doc()
+    msp = doc.modelspace()
+    _two_rooms(msp)
+    _pline_door(msp)
+    _pline_door(msp, hinge=(6.0, 4.0), reverse=True)  # a second door, drawn backwards
+    path = _save(doc, tmp_path)
+    d = import_dxf(path)
+    assert len(d.doors) == 2
+    ends = sorted(tuple(np.round(p, 2)) for h in d.doors for p in ((h.x0, h.y0), (h.x1, h.y1)))
+    assert ends == [(6.0, 2.0), (6.0, 2.9), (6.0, 4.0), (6.0, 4.9)]
+    assert not any(g.layer == "A-DOOR" for g in d.geometries)  # the swings are left out
+    floor = pipeline.process_floor(path, names=False)
+    rooms = [a for a in floor.refined.areas if a.polygon.area > 20]
+    assert len(rooms) == 2, [round(a.polygon.area, 1) for a in floor.refined.areas]
+    assert floor.stats["components"] == 1
+    assert floor.stats["largest_component_share"] == 1.0
+
+
+def test_without_the_door_the_partition_closes_the_rooms(tmp_path):
+    """The control: the same partition with no door keeps two components (the rule adds nothing else)."""
+    doc = _doc()
+    _two_rooms(doc.modelspace())
+    floor = pipeline.process_floor(_save(doc, tmp_path), names=False)
+    assert floor.stats["components"] == 2
+
+
+def _rect(msp, x0, y0, x1, y1, layer="A-WALL"):
+    """Four lines (a closed rectangle standing free around everything would be taken for a sheet frame)."""
+    for a, b in (((x0, y0), (x1, y0)), ((x1, y0), (x1, y1)), ((x1, y1), (x0, y1)), ((x0, y1), (x0, y0))):
+        msp.add_line(a, b, dxfattribs={"layer": layer})
+
+
+def _closed_spaces_plan(tmp_path):
+    """A thick outer wall drawn as two lines (its inside is a closed 0.9 m cavity), a hall and a room joined
+    by a doorway, a shaft labelled 管井 and an office whose door the drawing forgot."""
+    doc = _doc()
+    msp = doc.modelspace()
+    _rect(msp, 0, 0, 24, 12)
+    _rect(msp, 0.9, 0.9, 23.1, 11.1)  # the wall's inner face: the cavity between is 0.9 m wide
+    msp.add_line((12, 0.9), (12, 5.0), dxfattribs={"layer": "A-WALL"})  # partition, doorway 5.0-6.0
+    msp.add_line((12, 6.0), (12, 11.1), dxfattribs={"layer": "A-WALL"})
+    _rect(msp, 2, 8, 4.5, 10.5)  # the shaft, 2.5 x 2.5 m
+    msp.add_text("管井", dxfattribs={"layer": "A-TEXT", "height": 0.3, "insert": (2.8, 9.2)})
+    _rect(msp, 18, 7, 22, 10.5)  # the office with no door, 4 x 3.5 m
+    msp.add_text("Office", dxfattribs={"layer": "A-TEXT", "height": 0.3, "insert": (19.0, 8.5)})
+    msp.add_text("Hall", dxfattribs={"layer": "A-TEXT", "height": 0.3, "insert": (6.0, 4.0)})
+    return _save(doc, tmp_path)
+
+
+def test_closed_cavities_and_named_shafts_count_out_but_orphaned_rooms_do_not(tmp_path):
+    """A thick outer wall drawn as two lines (its inside is a closed 0.9 m cavity), a shaft labelled 管井 and
+    an office whose door the drawing forgot: the cavity and the shaft are spaces the drawing really closes
+    (counted out of the connectivity figure, tagged), the office is an orphaned room (it counts)."""
+    floor = pipeline.process_floor(_closed_spaces_plan(tmp_path))
+    areas = {a.id: a for a in floor.refined.areas}
+    closed = floor.stats["closed_spaces"]
+    kinds = sorted(("shaft" if a.polygon.area < 8 else "cavity") for i, a in areas.items() if i in closed)
+    assert kinds == ["cavity", "shaft"], [(i, round(a.polygon.area, 1)) for i, a in areas.items()]
+    assert all(areas[i].tags.get("cad2osmag:closed") == "yes" for i in closed)
+    office = [a for a in areas.values() if a.polygon.contains(__import__("shapely").Point(19.0, 8.5))]
+    assert office and office[0].id not in closed and office[0].component != 0
+    main = sum(a.polygon.area for a in areas.values() if a.component == 0)
+    counted = sum(a.polygon.area for a in areas.values() if a.id not in closed)
+    assert abs(floor.stats["largest_component_share"] - main / counted) < 1e-6
+    assert floor.stats["largest_component_share"] < 1.0  # the office still counts against the figure
+
+
+@pytest.mark.qgis_process
+def test_dxftoosmag_headless_tags_closed_spaces_and_reports_components(tmp_path):
+    from algorithms import osmag
+    from tests.qgis_process import run_alg
+
+    out = tmp_path / "closed.osm"
+    _, res, log = run_alg("dxftoosmag", {"INPUT": _closed_spaces_plan(tmp_path), "OUTPUT": str(out)})
+    assert "closed space(s)" in log and "component" in log
+    areas, passages, _, _ = osmag.read_osmag(str(out))
+    closed = [a for a in areas if (a.tags or {}).get("cad2osmag:closed") == "yes"]
+    assert len(closed) == 2
+    assert any(a.name == "Office" for a in areas) and not any(a.name == "Office" for a in closed)
+
+
+def test_half_circle_swing_on_an_unnamed_layer_with_its_leaf_on_a_window_layer(tmp_path):
+    """Doors drawn opening flat against the wall (a 180 degree arc) whose arc lies on a layer no rule names
+    ('fine projection lines') and whose leaf lies on a layer of doors *and* windows (kept as windows): the
+    swing is found across layers, the leaf is left out and the doorway joins the two rooms."""
+    doc = _doc()
+    msp = doc.modelspace()
+    _two_rooms(msp, layer="MURATURA sezioni - section wall")
+    win = {"layer": "PORTE finestre - doors windows"}
+    aux = {"layer": "PROIEZIONI finissime - fine lines"}
+    # the doorway 2.0-3.0 in the partition x = 6; the wall is drawn through it, the door closes it
+    msp.add_line((6.0, 3.0), (6.0, 4.0), dxfattribs=win)  # the open leaf, flat against the wall, hinge (6, 3)
+    msp.add_arc((6.0, 3.0), 1.0, 90, 270, dxfattribs=aux)  # 180 degrees: from the open leaf to the closed end
+    msp.add_arc((3.0, 5.0), 0.9, 0, 180, dxfattribs=aux)  # a half circle with no leaf: never a door
+    path = _save(doc, tmp_path)
+    d = import_dxf(path)
+    assert len(d.doors) == 1
+    h = d.doors[0]
+    ends = sorted([(round(h.x0, 2), round(h.y0, 2)), (round(h.x1, 2), round(h.y1, 2))])
+    assert ends == [(6.0, 2.0), (6.0, 3.0)]
+    assert not any(g.layer == aux["layer"] for g in d.geometries)  # the unnamed layer stays out
+    assert d.classes.get("door") == 2  # the arc and its open leaf
+    floor = pipeline.process_floor(path, names=False)
+    assert floor.stats["components"] == 1
+
+
+def _double_wall_rooms(cavity=0.2, wall=0.25, door=True):
+    """Two 5 x 4 m rooms separated by two walls side by side (a joint: ``wall`` thick each, ``cavity``
+    between), each drawn as a closed outline with a doorway gap at y 1.5-2.5 in the west wall only; the
+    door block's hint lies at the west wall's west face, as door blocks are inserted."""
+    from algorithms.model import CadGeometry, DoorHint
+
+    x0 = 5.0
+    x1 = x0 + wall + cavity + wall
+    outlines = [[(0, 0), (10.7, 0), (10.7, 4), (0, 4), (0, 0)],
+                [(x0, 0), (x0 + wall, 0), (x0 + wall, 1.5), (x0, 1.5), (x0, 0)],
+                [(x0, 2.5), (x0 + wall, 2.5), (x0 + wall, 4), (x0, 4), (x0, 2.5)],
+                [(x1 - wall, 0), (x1, 0), (x1, 4), (x1 - wall, 4), (x1 - wall, 0)]]  # no gap drawn in the east wall
+    geoms = [CadGeometry("A-WALL", "wall", np.array(c, float), closed=True) for c in outlines]
+    return geoms, ([DoorHint(x0, 1.5, x0, 2.5, "block")] if door else [])
+
+
+def test_door_hint_opens_a_double_wall_joint_through_to_the_room_beyond():
+    from algorithms import rasterize as ras
+    from algorithms import segmentation as seg
+
+    geoms, hints = _double_wall_rooms()
+    grid = ras.rasterize(geoms, resolution=0.05, extent=(-1, -1, 12, 5), door_hints=hints)
+    for x in (5.0, 5.2, 5.35, 5.55, 5.65):  # the whole joint is open across the doorway
+        c, r = grid.world_to_pixel(x, 2.0)
+        assert grid.data[int(r), int(c)] == 0, x
+    c, r = grid.world_to_pixel(5.5, 1.2)  # beside the doorway the walls stay
+    assert grid.data[int(r), int(c)] != 0
+    ag = seg.segment(grid, door_width=1.0, corridor_width=2.0, door_hints=hints)
+    big = [a for a in ag.areas if a.polygon.area > 10]
+    assert len(big) == 2 and ag.stats["components"] == 1
+
+
+def test_door_hint_never_opens_more_than_a_wall_thickness():
+    """A hint with no room within DOOR_MAX_WALL behind the wall (a solid 2 m block) clears no more than the
+    default opening depth."""
+    from algorithms import rasterize as ras
+    from algorithms.model import CadGeometry, DoorHint
+
+    block = CadGeometry("A-WALL", "wall", np.array([(5, 0), (7, 0), (7, 4), (5, 4), (5, 0)], float), closed=True,
+                        filled=True)
+    grid = ras.rasterize([block], resolution=0.05, extent=(-1, -1, 12, 5),
+                         door_hints=[DoorHint(5.0, 1.5, 5.0, 2.5, "block")])
+    c, r = grid.world_to_pixel(5.5, 2.0)
+    assert grid.data[int(r), int(c)] != 0
+
+
+def _flight_plan(tmp_path, treads=True):
+    """Two rooms (10 x 3 m) joined only by a 2 m wide flight of seven treads drawn on the wall layer (a stair
+    half a level between two parts of a floor)."""
+    doc = _doc()
+    msp = doc.modelspace()
+    w = {"layer": "A-WALL"}
+    msp.add_lwpolyline([(0, 0), (10, 0), (10, 8), (0, 8)], close=True, dxfattribs=w)
+    for y in (3.0, 5.0):
+        msp.add_line((0, y), (4, y), dxfattribs=w)
+        msp.add_line((6, y), (10, y), dxfattribs=w)
+    msp.add_line((4, 3), (4, 5), dxfattribs=w)  # the flight's sides
+    msp.add_line((6, 3), (6, 5), dxfattribs=w)
+    if treads:
+        for k in range(7):
+            msp.add_line((4, 3.1 + 0.3 * k), (6, 3.1 + 0.3 * k), dxfattribs=w)
+    return _save(doc, tmp_path)
+
+
+def test_stair_treads_on_a_wall_layer_are_a_way_through(tmp_path):
+    path = _flight_plan(tmp_path)
+    d = import_dxf(path)
+    assert sum(g.kind == "stair" for g in d.geometries) == 7
+    floor = pipeline.process_floor(path, names=False)
+    assert floor.stats["components"] == 1
+    rooms = [a for a in floor.refined.areas if a.polygon.area > 20]
+    assert len(rooms) == 2
+
+
+def test_curved_treads_are_stairs_and_lone_arcs_stay():
+    from algorithms.cad_classify import free_stair_treads
+    from algorithms.model import CadGeometry
+
+    def arc(cx, cy, r, a0=200, a1=250):
+        t = np.radians(np.linspace(a0, a1, 9))
+        return CadGeometry("0", "reference", np.c_[cx + r * np.cos(t), cy + r * np.sin(t)], entity="ARC")
+
+    geoms = [arc(0, 0, 1.0 + 0.3 * k) for k in range(5)] + [arc(20, 0, 1.0), arc(20, 0, 3.0), arc(40, 0, 2.0)]
+    assert free_stair_treads(geoms) == 5
+    assert [g.kind for g in geoms] == ["stair"] * 5 + ["reference"] * 3
