@@ -783,6 +783,221 @@ def _drop_outside_pockets(labels: np.ndarray, outside: np.ndarray, group_peak: n
     return lut[labels], np.r_[0.0, group_peak[keep_ids]], dropped_px
 
 
+# --------------------------------------------------------------------------- wall-line openings
+WALL_CUTS = True
+WALL_MIN_M = 1.0  # a wall face is a straight run of at least this length (not clutter, not scan noise)
+CUT_MIN_M = 0.5  # gaps in a wall line narrower than this are scan gaps, not openings
+CUT_RATIO = 0.8  # an opening in a wall line is a door when it is narrower than this x both spaces along the line
+CUT_DEPTH = 0.5  # ... and both spaces reach at least this x the opening's width behind it
+CUT_MIN_ROOM_M = 1.0  # ... and both are at least a (1 m)^2 space (and at least the opening squared)
+
+
+def _wall_faces(space: np.ndarray, resolution: float) -> np.ndarray:
+    """Straight wall faces (Hough segments of obstacle pixels next to free space), int32 (n, 4):
+    x1, y1, x2, y2 in px."""
+    import cv2
+
+    k = np.ones((3, 3), np.uint8)
+    face = ~space & cv2.dilate(space.view(np.uint8), k).view(bool)
+    min_len = max(4, int(round(WALL_MIN_M / resolution)))
+    segs = cv2.HoughLinesP(face.view(np.uint8) * np.uint8(255), 1, np.pi / 180, threshold=max(3, int(0.7 * min_len)),
+                           minLineLength=min_len, maxLineGap=2)
+    if segs is None:
+        return np.zeros((0, 4), np.int32)
+    return segs.reshape(-1, 4).astype(np.int32)
+
+
+def _wall_line_openings(space: np.ndarray, labels: np.ndarray, resolution: float, max_cut_m: float):
+    """Openings in wall lines: a wall face that ends in free space is continued along its own line
+    to the next obstacle; runs of free space between ``CUT_MIN_M`` and ``max_cut_m`` long are
+    candidate openings. Returns a list of (rows, cols, length px, unit direction (dy, dx))."""
+    segs = _wall_faces(space, resolution)
+    rows, cols = space.shape
+    max_px = max_cut_m / resolution
+    min_px = CUT_MIN_M / resolution
+    ts = np.arange(0, int(math.ceil(max_px)) + 6, dtype=np.float64)
+    out = []
+    seen = set()
+    def ray(x0, y0, ux, uy, t):
+        xs = np.rint(x0 + ux * t).astype(np.int64)
+        ys = np.rint(y0 + uy * t).astype(np.int64)
+        ok = (xs >= 0) & (xs < cols) & (ys >= 0) & (ys < rows)
+        if not ok.all():
+            n_ok = int(np.argmin(ok))
+            xs, ys = xs[:n_ok], ys[:n_ok]
+        return xs, ys
+
+    for x1, y1, x2, y2 in segs.tolist():
+        length = math.hypot(x2 - x1, y2 - y1)
+        if length <= 0:
+            continue
+        t_face = np.arange(0, int(length) + 3, dtype=np.float64)
+        for (ex, ey, ox, oy) in ((x2, y2, x1, y1), (x1, y1, x2, y2)):
+            ux, uy = (ex - ox) / length, (ey - oy) / length
+            # follow the wall face to its end (Hough segments stop short): obstacle pixels along the
+            # line with free space beside them; an obstacle pixel with none beside it is a corner
+            xs, ys = ray(ex, ey, ux, uy, t_face)
+            if len(xs) < 2:
+                continue
+            side = np.zeros(len(xs), bool)
+            for sgn in (-1.5, 1.5):
+                sx = np.clip(np.rint(xs - uy * sgn).astype(np.int64), 0, cols - 1)
+                sy = np.clip(np.rint(ys + ux * sgn).astype(np.int64), 0, rows - 1)
+                side |= space[sy, sx]
+            along_face = ~space[ys, xs] & side
+            if along_face.all():
+                continue
+            k = int(np.argmin(along_face))
+            if not space[ys[k], xs[k]]:
+                continue  # a corner: the wall turns
+            xs, ys = ray(ex + ux * k, ey + uy * k, ux, uy, ts)
+            if len(xs) < 3:
+                continue
+            fr = space[ys, xs] & (labels[ys, xs] > 0)
+            start = 0
+            if not fr[0]:
+                continue
+            stop = start + int(np.argmin(fr[start:])) if not fr[start:].all() else len(fr)
+            if stop >= len(fr):
+                continue  # no obstacle within reach: open space, not a gap in a wall line
+            run = math.hypot(xs[stop - 1] - xs[start], ys[stop - 1] - ys[start]) + 1.0
+            if run < min_px or run > max_px:
+                continue
+            key = (int(xs[start]), int(ys[start]), int(xs[stop - 1]), int(ys[stop - 1]))
+            rkey = (key[2], key[3], key[0], key[1])
+            if key in seen or rkey in seen:
+                continue
+            seen.add(key)
+            out.append((key, run, (uy, ux)))
+    return out
+
+
+def _robust_extent(v: np.ndarray) -> float:
+    if len(v) < 4:
+        return float(np.ptp(v)) if len(v) else 0.0
+    lo, hi = np.percentile(v, (2.0, 98.0))
+    return float(hi - lo)
+
+
+def _split_at_wall_openings(labels: np.ndarray, space: np.ndarray, resolution: float, max_cut_m: float):
+    """Rooms open to a corridor (or to each other) through an opening wider than a door but in a
+    wall line: the wall's own line continued across the opening cuts the area in two when the
+    opening is clearly narrower than the spaces on both sides measured along the line
+    (``CUT_RATIO``) and both reach behind it (``CUT_DEPTH``). A side corridor is as wide as its
+    mouth (no cut: corridors are not split at junctions); a wall line continued across a corridor
+    cuts a stretch no wider than the corridor (no cut). Returns (labels, number of cuts kept)."""
+    import cv2
+    from scipy import ndimage as ndi
+
+    openings = _wall_line_openings(space, labels, resolution, max_cut_m)
+    if not openings:
+        return labels, 0
+    cut = np.zeros(labels.shape, np.uint8)
+    cut_id = np.zeros(labels.shape, np.int32)
+    for i, (key, _, _) in enumerate(openings, start=1):
+        cv2.line(cut_id, key[:2], key[2:], i, 1, lineType=8)
+    cut = (cut_id > 0) & (labels > 0)
+    groups = np.unique(labels[cut])
+    next_id = int(labels.max()) + 1
+    kept_cuts = 0
+    min_area = (CUT_MIN_ROOM_M / resolution) ** 2
+    objs = ndi.find_objects(labels)
+    for g in groups.tolist():
+        sl = objs[g - 1]
+        if sl is None:
+            continue
+        r0, c0 = sl[0].start, sl[1].start
+        mine = labels[sl] == g
+        gcut = cut[sl] & mine
+        n, comp = cv2.connectedComponents((mine & ~gcut).view(np.uint8), connectivity=4, ltype=cv2.CV_32S)
+        if n <= 2:
+            continue
+        # which pieces each opening separates (4-neighbours of its pixels)
+        cid = cut_id[sl] * gcut
+        pad = np.pad(comp, 1)
+        rr, cc = np.nonzero(cid)
+        ids = cid[rr, cc]
+        pairs = {}
+        for dr, dc in ((-1, 0), (1, 0), (0, -1), (0, 1)):
+            nb = pad[rr + 1 + dr, cc + 1 + dc]
+            m = nb > 0
+            for o, p in zip(ids[m].tolist(), nb[m].tolist()):
+                pairs.setdefault(o, set()).add(p)
+        pys, pxs = np.nonzero(comp)
+        order = np.argsort(comp[pys, pxs], kind="stable")
+        pys, pxs = pys[order], pxs[order]
+        bounds = np.searchsorted(comp[pys, pxs], np.arange(1, n + 1))
+        pix = {k: (pys[bounds[k - 1]:bounds[k]], pxs[bounds[k - 1]:bounds[k]]) for k in range(1, n)}
+        uf = _UnionFind(n)
+        cands = [(o, sorted(p)) for o, p in pairs.items()]
+        accepted = set()
+        for _ in range(4):  # judge the openings, merge across the rejected ones, judge again
+            changed = False
+            members = {}
+            for k in range(1, n):
+                members.setdefault(uf.find(k), []).append(k)
+            for o, ps in cands:
+                roots = sorted({uf.find(p) for p in ps})
+                if len(roots) < 2:
+                    accepted.discard(o)
+                    continue
+                _, run, (uy, ux) = openings[o - 1]
+                good = len(roots) == 2  # an opening between three pieces is no door
+                for root in roots if good else ():
+                    ys = np.concatenate([pix[k][0] for k in members[root]]).astype(np.float64)
+                    xs = np.concatenate([pix[k][1] for k in members[root]]).astype(np.float64)
+                    along = _robust_extent(xs * ux + ys * uy)
+                    depth = _robust_extent(ys * ux - xs * uy)
+                    area = float(len(ys))
+                    if not (run <= CUT_RATIO * along and depth >= CUT_DEPTH * run
+                            and area >= max(run * run, min_area)):
+                        good = False
+                        break
+                if good:
+                    accepted.add(o)
+                else:
+                    accepted.discard(o)
+                    for r in roots[1:]:
+                        uf.parent[uf.find(r)] = uf.find(roots[0])
+                    changed = True
+            if not changed:
+                break
+        if not accepted:
+            continue
+        # the area is cut only along the openings kept; slivers stay with it (``_single_pieces``)
+        acc = np.isin(cid, np.fromiter(accepted, np.int64))
+        n2, comp2, st2, _ = cv2.connectedComponentsWithStats((mine & ~acc).view(np.uint8), connectivity=4,
+                                                             ltype=cv2.CV_32S)
+        if n2 <= 2:
+            continue
+        areas2 = st2[1:, cv2.CC_STAT_AREA]
+        keep = 1 + int(np.argmax(areas2))
+        sub = labels[sl]
+        for k in range(1, n2):
+            if k == keep or areas2[k - 1] < min_area:
+                continue
+            sub[comp2 == k] = next_id
+            next_id += 1
+            kept_cuts += 1
+    return labels, kept_cuts
+
+
+def _wall_line_doors(labels: np.ndarray, space: np.ndarray, dist: np.ndarray, resolution: float,
+                     max_cut_m: float, group_peak: np.ndarray, stats: dict):
+    """``_split_at_wall_openings`` on the merged labels; new areas get their clearance peak.
+    Returns (labels, group_peak)."""
+    from scipy import ndimage as ndi
+
+    t = time.perf_counter()
+    labels, n_cuts = _split_at_wall_openings(labels, space, resolution, max_cut_m)
+    stats["wall_line_doors"] = float(n_cuts)
+    if n_cuts:
+        labels = _single_pieces(labels)
+        n = int(labels.max())
+        group_peak = np.r_[0.0, np.asarray(ndi.maximum(dist, labels, np.arange(1, n + 1)), np.float64)]
+    stats["wall_line_s"] = time.perf_counter() - t
+    return labels, group_peak
+
 # --------------------------------------------------------------------------- vector output
 def label_polygons(labels: np.ndarray, grid: OccupancyGrid) -> Dict[int, object]:
     """Exact pixel-edge outline of every label (4-connected), as shapely Polygons in world metres."""
@@ -1111,6 +1326,9 @@ def segment(grid: OccupancyGrid, door_width: float = DEFAULT_DOOR_WIDTH,
     group_peak[0] = 0
     del cells
     labels = _single_pieces(labels)
+    if WALL_CUTS:
+        labels, group_peak = _wall_line_doors(labels, space, dist, res, max(door_width + delta, envelope_gap),
+                                              group_peak, stats)
     labels, group_peak, dropped_px = _drop_outside_pockets(labels, free & ~interior, group_peak,
                                                            info.get("claimed"), info.get("inside_pixels"))
     info.pop("claimed", None)
