@@ -789,7 +789,7 @@ WALL_MIN_M = 1.0  # a wall face is a straight run of at least this length (not c
 CUT_MIN_M = 0.5  # gaps in a wall line narrower than this are scan gaps, not openings
 CUT_RATIO = 0.8  # an opening in a wall line is a door when it is narrower than this x both spaces along the line
 CUT_DEPTH = 0.5  # ... and both spaces reach at least this x the opening's width behind it
-CUT_MIN_ROOM_M = 1.0  # ... and both are at least a (1 m)^2 space (and at least the opening squared)
+CUT_MIN_ROOM_M = 1.0  # ... and both are at least a (1 m)^2 space (and CUT_DEPTH x the opening squared)
 
 
 def _wall_faces(space: np.ndarray, resolution: float) -> np.ndarray:
@@ -853,7 +853,7 @@ def _wall_line_openings(space: np.ndarray, labels: np.ndarray, resolution: float
             xs, ys = ray(ex + ux * k, ey + uy * k, ux, uy, ts)
             if len(xs) < 3:
                 continue
-            fr = space[ys, xs] & (labels[ys, xs] > 0)
+            fr = space[ys, xs]  # sensor specks inside the space do not end a gap
             start = 0
             if not fr[0]:
                 continue
@@ -872,27 +872,54 @@ def _wall_line_openings(space: np.ndarray, labels: np.ndarray, resolution: float
     return out
 
 
-def _robust_extent(v: np.ndarray) -> float:
-    if len(v) < 4:
-        return float(np.ptp(v)) if len(v) else 0.0
-    lo, hi = np.percentile(v, (2.0, 98.0))
-    return float(hi - lo)
+def _judge_opening(comp: np.ndarray, find, key, run: float, ux: float, uy: float, roots, min_area: float) -> bool:
+    """Whether an opening (cut ``key`` = x0, y0, x1, y1 in ``comp``'s frame, ``run`` px long, along
+    (ux, uy)) is a door between the pieces ``roots``: measured in the band up to ``run`` behind the
+    opening on each side, the space is wider along the wall line than the opening / ``CUT_RATIO``,
+    reaches ``CUT_DEPTH`` x ``run`` behind it and covers ``CUT_DEPTH`` x ``run``^2 (and ``min_area``)."""
+    x0, y0, x1, y1 = key
+    m = int(math.ceil(run)) + 2
+    r0, r1 = max(min(y0, y1) - m, 0), min(max(y0, y1) + m + 1, comp.shape[0])
+    c0, c1 = max(min(x0, x1) - m, 0), min(max(x0, x1) + m + 1, comp.shape[1])
+    sub = comp[r0:r1, c0:c1]
+    ids = np.unique(sub)
+    root_of = np.zeros(int(ids.max()) + 1, np.int64)
+    root_of[ids] = [find(int(k)) if k else 0 for k in ids.tolist()]
+    rsub = root_of[sub]
+    mx, my = (x0 + x1) / 2.0 - c0, (y0 + y1) / 2.0 - r0
+    for root in roots:
+        yy, xx = np.nonzero(rsub == root)
+        if len(yy) < 4:
+            return False
+        dx, dy = xx - mx, yy - my
+        a = dx * ux + dy * uy
+        b = np.abs(dy * ux - dx * uy)
+        band = b <= run
+        if band.sum() < max(CUT_DEPTH * run * run, min_area, 4):
+            return False
+        lo, hi = np.percentile(a[band], (2.0, 98.0))
+        if run > CUT_RATIO * (hi - lo) or np.percentile(b[band], 98.0) < CUT_DEPTH * run:
+            return False
+    return True
 
 
-def _split_at_wall_openings(labels: np.ndarray, space: np.ndarray, resolution: float, max_cut_m: float):
+def _split_at_wall_openings(labels: np.ndarray, space: np.ndarray, resolution: float, max_cut_m: float,
+                            dist: np.ndarray, peaks: dict, grown: dict):
     """Rooms open to a corridor (or to each other) through an opening wider than a door but in a
     wall line: the wall's own line continued across the opening cuts the area in two when the
     opening is clearly narrower than the spaces on both sides measured along the line
-    (``CUT_RATIO``) and both reach behind it (``CUT_DEPTH``). A side corridor is as wide as its
-    mouth (no cut: corridors are not split at junctions); a wall line continued across a corridor
-    cuts a stretch no wider than the corridor (no cut). Returns (labels, number of cuts kept)."""
+    (``CUT_RATIO``) and both reach behind it (``CUT_DEPTH``). A side corridor is as wide as its mouth (no cut:
+    corridors are not split at junctions); a wall line continued across a corridor cuts a stretch
+    no longer than the corridor is wide (no cut). Openings are judged, the pieces on both sides of
+    a rejected one joined, and the rest judged again. Returns (labels, number of pieces cut off);
+    ``peaks`` gets the clearance peak (px, from ``dist``) of every area cut or new, ``grown`` the
+    largest clearance of the slivers other areas received."""
     import cv2
     from scipy import ndimage as ndi
 
     openings = _wall_line_openings(space, labels, resolution, max_cut_m)
     if not openings:
         return labels, 0
-    cut = np.zeros(labels.shape, np.uint8)
     cut_id = np.zeros(labels.shape, np.int32)
     for i, (key, _, _) in enumerate(openings, start=1):
         cv2.line(cut_id, key[:2], key[2:], i, 1, lineType=8)
@@ -906,7 +933,6 @@ def _split_at_wall_openings(labels: np.ndarray, space: np.ndarray, resolution: f
         sl = objs[g - 1]
         if sl is None:
             continue
-        r0, c0 = sl[0].start, sl[1].start
         mine = labels[sl] == g
         gcut = cut[sl] & mine
         n, comp = cv2.connectedComponents((mine & ~gcut).view(np.uint8), connectivity=4, ltype=cv2.CV_32S)
@@ -923,48 +949,36 @@ def _split_at_wall_openings(labels: np.ndarray, space: np.ndarray, resolution: f
             m = nb > 0
             for o, p in zip(ids[m].tolist(), nb[m].tolist()):
                 pairs.setdefault(o, set()).add(p)
-        pys, pxs = np.nonzero(comp)
-        order = np.argsort(comp[pys, pxs], kind="stable")
-        pys, pxs = pys[order], pxs[order]
-        bounds = np.searchsorted(comp[pys, pxs], np.arange(1, n + 1))
-        pix = {k: (pys[bounds[k - 1]:bounds[k]], pxs[bounds[k - 1]:bounds[k]]) for k in range(1, n)}
+        del pad
+        off = np.array([sl[1].start, sl[0].start, sl[1].start, sl[0].start])
         uf = _UnionFind(n)
         cands = [(o, sorted(p)) for o, p in pairs.items()]
         accepted = set()
-        for _ in range(4):  # judge the openings, merge across the rejected ones, judge again
+        for _ in range(6):  # judge the openings, join across the rejected ones, judge again
             changed = False
-            members = {}
-            for k in range(1, n):
-                members.setdefault(uf.find(k), []).append(k)
             for o, ps in cands:
                 roots = sorted({uf.find(p) for p in ps})
                 if len(roots) < 2:
                     accepted.discard(o)
                     continue
-                _, run, (uy, ux) = openings[o - 1]
-                good = len(roots) == 2  # an opening between three pieces is no door
-                for root in roots if good else ():
-                    ys = np.concatenate([pix[k][0] for k in members[root]]).astype(np.float64)
-                    xs = np.concatenate([pix[k][1] for k in members[root]]).astype(np.float64)
-                    along = _robust_extent(xs * ux + ys * uy)
-                    depth = _robust_extent(ys * ux - xs * uy)
-                    area = float(len(ys))
-                    if not (run <= CUT_RATIO * along and depth >= CUT_DEPTH * run
-                            and area >= max(run * run, min_area)):
-                        good = False
-                        break
+                key, run, (uy, ux) = openings[o - 1]
+                good = len(roots) == 2 and _judge_opening(comp, uf.find, tuple((np.array(key) - off).tolist()), run,
+                                                          ux, uy, roots, min_area)
                 if good:
                     accepted.add(o)
                 else:
                     accepted.discard(o)
                     for r in roots[1:]:
-                        uf.parent[uf.find(r)] = uf.find(roots[0])
+                        a, b = uf.find(r), uf.find(roots[0])
+                        if a != b:
+                            keep, gone = min(a, b), max(a, b)
+                            uf.parent[gone] = keep
                     changed = True
             if not changed:
                 break
         if not accepted:
             continue
-        # the area is cut only along the openings kept; slivers stay with it (``_single_pieces``)
+        # the area is cut only along the openings kept
         acc = np.isin(cid, np.fromiter(accepted, np.int64))
         n2, comp2, st2, _ = cv2.connectedComponentsWithStats((mine & ~acc).view(np.uint8), connectivity=4,
                                                              ltype=cv2.CV_32S)
@@ -973,12 +987,37 @@ def _split_at_wall_openings(labels: np.ndarray, space: np.ndarray, resolution: f
         areas2 = st2[1:, cv2.CC_STAT_AREA]
         keep = 1 + int(np.argmax(areas2))
         sub = labels[sl]
+        changed_ids = [g]
         for k in range(1, n2):
             if k == keep or areas2[k - 1] < min_area:
                 continue
             sub[comp2 == k] = next_id
+            changed_ids.append(next_id)
             next_id += 1
             kept_cuts += 1
+        # what is left of the area apart from its largest piece (slivers, the cut pixels) goes to
+        # the area it touches most (as ``_single_pieces``, only here)
+        gw = tuple(slice(max(x.start - 1, 0), x.stop + 1) for x in sl)
+        win = labels[gw]
+        nk, ck, sk, _ = cv2.connectedComponentsWithStats((win == g).view(np.uint8), connectivity=4,
+                                                         ltype=cv2.CV_32S)
+        if nk > 2:
+            big = 1 + int(np.argmax(sk[1:, cv2.CC_STAT_AREA]))
+            k3 = np.ones((3, 3), np.uint8)
+            for k in range(1, nk):
+                if k == big:
+                    continue
+                m = ck == k
+                ring = cv2.dilate(m.view(np.uint8), k3).view(bool) & ~m
+                neigh = win[ring]
+                neigh = neigh[(neigh > 0) & (neigh != g)]
+                if len(neigh):
+                    vals, cnt = np.unique(neigh, return_counts=True)
+                    h = int(vals[np.argmax(cnt)])
+                    win[m] = h
+                    grown[h] = max(grown.get(h, 0.0), float(dist[gw][m].max()))
+        for lid in changed_ids:
+            peaks[lid] = float(dist[sl][labels[sl] == lid].max())
     return labels, kept_cuts
 
 
@@ -986,15 +1025,19 @@ def _wall_line_doors(labels: np.ndarray, space: np.ndarray, dist: np.ndarray, re
                      max_cut_m: float, group_peak: np.ndarray, stats: dict):
     """``_split_at_wall_openings`` on the merged labels; new areas get their clearance peak.
     Returns (labels, group_peak)."""
-    from scipy import ndimage as ndi
-
     t = time.perf_counter()
-    labels, n_cuts = _split_at_wall_openings(labels, space, resolution, max_cut_m)
+    peaks: dict = {}
+    grown: dict = {}
+    labels, n_cuts = _split_at_wall_openings(labels, space, resolution, max_cut_m, dist, peaks, grown)
     stats["wall_line_doors"] = float(n_cuts)
-    if n_cuts:
-        labels = _single_pieces(labels)
-        n = int(labels.max())
-        group_peak = np.r_[0.0, np.asarray(ndi.maximum(dist, labels, np.arange(1, n + 1)), np.float64)]
+    if peaks or grown:
+        top = max(list(peaks) + list(grown))
+        if top >= len(group_peak):
+            group_peak = np.r_[group_peak, np.zeros(top + 1 - len(group_peak))]
+        for lid, v in grown.items():
+            group_peak[lid] = max(group_peak[lid], v)
+        for lid, v in peaks.items():
+            group_peak[lid] = max(v, grown.get(lid, 0.0))
     stats["wall_line_s"] = time.perf_counter() - t
     return labels, group_peak
 
