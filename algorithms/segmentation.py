@@ -815,60 +815,61 @@ def _wall_line_openings(space: np.ndarray, labels: np.ndarray, resolution: float
     rows, cols = space.shape
     max_px = max_cut_m / resolution
     min_px = CUT_MIN_M / resolution
-    ts = np.arange(0, int(math.ceil(max_px)) + 6, dtype=np.float64)
-    out = []
-    seen = set()
-    def ray(x0, y0, ux, uy, t):
+    if len(segs) == 0:
+        return []
+    # every segment end, pointing away from the segment (end 2 then end 1 of each segment)
+    p1 = segs[:, :2].astype(np.float64)
+    p2 = segs[:, 2:].astype(np.float64)
+    length = np.hypot(*(p2 - p1).T)
+    ok = length > 0
+    p1, p2, length = p1[ok], p2[ok], length[ok]
+    u = (p2 - p1) / length[:, None]
+    ends = np.stack([p2, p1], axis=1).reshape(-1, 2)
+    dirs = np.stack([u, -u], axis=1).reshape(-1, 2)
+    ux, uy = dirs[:, :1], dirs[:, 1:]
+
+    def sample(x0, y0, t):
         xs = np.rint(x0 + ux * t).astype(np.int64)
         ys = np.rint(y0 + uy * t).astype(np.int64)
-        ok = (xs >= 0) & (xs < cols) & (ys >= 0) & (ys < rows)
-        if not ok.all():
-            n_ok = int(np.argmin(ok))
-            xs, ys = xs[:n_ok], ys[:n_ok]
-        return xs, ys
+        inb = (xs >= 0) & (xs < cols) & (ys >= 0) & (ys < rows)
+        return np.clip(xs, 0, cols - 1), np.clip(ys, 0, rows - 1), inb
 
-    for x1, y1, x2, y2 in segs.tolist():
-        length = math.hypot(x2 - x1, y2 - y1)
-        if length <= 0:
+    # follow the wall face to its end (Hough segments stop short, by less than a wall length):
+    # obstacle pixels along the line with free space beside them; an obstacle pixel with none beside
+    # it is a corner (the wall turns)
+    t_face = np.arange(0, int(math.ceil(WALL_MIN_M / resolution)) + 1, dtype=np.float64)[None, :]
+    xs, ys, inb = sample(ends[:, :1], ends[:, 1:], t_face)
+    side = np.zeros(xs.shape, bool)
+    for sgn in (-1.5, 1.5):
+        sx = np.clip(np.rint(xs - uy * sgn).astype(np.int64), 0, cols - 1)
+        sy = np.clip(np.rint(ys + ux * sgn).astype(np.int64), 0, rows - 1)
+        side |= space[sy, sx]
+    along_face = ~space[ys, xs] & side & inb
+    k = np.argmin(along_face, axis=1)
+    rr = np.arange(len(k))
+    valid = ~along_face.all(axis=1) & inb[rr, k] & space[ys[rr, k], xs[rr, k]]
+    # then the gap: free pixels along the line up to the next obstacle
+    t = np.arange(0, int(math.ceil(max_px)) + 6, dtype=np.float64)[None, :]
+    x0 = ends[:, :1] + ux * k[:, None]
+    y0 = ends[:, 1:] + uy * k[:, None]
+    xs, ys, inb = sample(x0, y0, t)
+    fr = space[ys, xs] & inb  # sensor specks inside the space do not end a gap
+    stop = np.argmin(fr, axis=1)
+    # no obstacle within reach (open space, not a gap in a wall line) or the map ends first
+    valid &= ~fr.all(axis=1) & inb[rr, stop] & (stop > 0)
+    out = []
+    seen = set()
+    for i in np.flatnonzero(valid).tolist():
+        st = int(stop[i])
+        key = (int(xs[i, 0]), int(ys[i, 0]), int(xs[i, st - 1]), int(ys[i, st - 1]))
+        run = math.hypot(key[2] - key[0], key[3] - key[1]) + 1.0
+        if run < min_px or run > max_px:
             continue
-        t_face = np.arange(0, int(length) + 3, dtype=np.float64)
-        for (ex, ey, ox, oy) in ((x2, y2, x1, y1), (x1, y1, x2, y2)):
-            ux, uy = (ex - ox) / length, (ey - oy) / length
-            # follow the wall face to its end (Hough segments stop short): obstacle pixels along the
-            # line with free space beside them; an obstacle pixel with none beside it is a corner
-            xs, ys = ray(ex, ey, ux, uy, t_face)
-            if len(xs) < 2:
-                continue
-            side = np.zeros(len(xs), bool)
-            for sgn in (-1.5, 1.5):
-                sx = np.clip(np.rint(xs - uy * sgn).astype(np.int64), 0, cols - 1)
-                sy = np.clip(np.rint(ys + ux * sgn).astype(np.int64), 0, rows - 1)
-                side |= space[sy, sx]
-            along_face = ~space[ys, xs] & side
-            if along_face.all():
-                continue
-            k = int(np.argmin(along_face))
-            if not space[ys[k], xs[k]]:
-                continue  # a corner: the wall turns
-            xs, ys = ray(ex + ux * k, ey + uy * k, ux, uy, ts)
-            if len(xs) < 3:
-                continue
-            fr = space[ys, xs]  # sensor specks inside the space do not end a gap
-            start = 0
-            if not fr[0]:
-                continue
-            stop = start + int(np.argmin(fr[start:])) if not fr[start:].all() else len(fr)
-            if stop >= len(fr):
-                continue  # no obstacle within reach: open space, not a gap in a wall line
-            run = math.hypot(xs[stop - 1] - xs[start], ys[stop - 1] - ys[start]) + 1.0
-            if run < min_px or run > max_px:
-                continue
-            key = (int(xs[start]), int(ys[start]), int(xs[stop - 1]), int(ys[stop - 1]))
-            rkey = (key[2], key[3], key[0], key[1])
-            if key in seen or rkey in seen:
-                continue
-            seen.add(key)
-            out.append((key, run, (uy, ux)))
+        rkey = (key[2], key[3], key[0], key[1])
+        if key in seen or rkey in seen:
+            continue
+        seen.add(key)
+        out.append((key, run, (float(dirs[i, 1]), float(dirs[i, 0]))))
     return out
 
 
@@ -943,12 +944,13 @@ def _split_at_wall_openings(labels: np.ndarray, space: np.ndarray, resolution: f
         pad = np.pad(comp, 1)
         rr, cc = np.nonzero(cid)
         ids = cid[rr, cc]
+        nbs = np.concatenate([pad[rr + 1 + dr, cc + 1 + dc] for dr, dc in ((-1, 0), (1, 0), (0, -1), (0, 1))])
+        oid = np.tile(ids, 4)
+        m = nbs > 0
+        pair_keys = np.unique(oid[m].astype(np.int64) * (n + 1) + nbs[m])
         pairs = {}
-        for dr, dc in ((-1, 0), (1, 0), (0, -1), (0, 1)):
-            nb = pad[rr + 1 + dr, cc + 1 + dc]
-            m = nb > 0
-            for o, p in zip(ids[m].tolist(), nb[m].tolist()):
-                pairs.setdefault(o, set()).add(p)
+        for o, p in zip((pair_keys // (n + 1)).tolist(), (pair_keys % (n + 1)).tolist()):
+            pairs.setdefault(o, set()).add(p)
         del pad
         off = np.array([sl[1].start, sl[0].start, sl[1].start, sl[0].start])
         uf = _UnionFind(n)
