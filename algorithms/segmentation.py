@@ -873,11 +873,13 @@ def _wall_line_openings(space: np.ndarray, labels: np.ndarray, resolution: float
     return out
 
 
-def _judge_opening(comp: np.ndarray, find, key, run: float, ux: float, uy: float, roots, min_area: float) -> bool:
+def _judge_opening(comp: np.ndarray, find, key, run: float, ux: float, uy: float, roots, min_area: float):
     """Whether an opening (cut ``key`` = x0, y0, x1, y1 in ``comp``'s frame, ``run`` px long, along
     (ux, uy)) is a door between the pieces ``roots``: measured in the band up to ``run`` behind the
     opening on each side, the space is wider along the wall line than the opening / ``CUT_RATIO``,
-    reaches ``CUT_DEPTH`` x ``run`` behind it and covers ``CUT_DEPTH`` x ``run``^2 (and ``min_area``)."""
+    reaches ``CUT_DEPTH`` x ``run`` behind it and covers ``CUT_DEPTH`` x ``run``^2 (and ``min_area``),
+    and on at least one side it reaches beyond both ends of the opening. Returns None (no door) or,
+    per piece, whether it reaches beyond both ends (runs along the wall)."""
     x0, y0, x1, y1 = key
     m = int(math.ceil(run)) + 2
     r0, r1 = max(min(y0, y1) - m, 0), min(max(y0, y1) + m + 1, comp.shape[0])
@@ -888,20 +890,25 @@ def _judge_opening(comp: np.ndarray, find, key, run: float, ux: float, uy: float
     root_of[ids] = [find(int(k)) if k else 0 for k in ids.tolist()]
     rsub = root_of[sub]
     mx, my = (x0 + x1) / 2.0 - c0, (y0 + y1) / 2.0 - r0
+    half = run / 2.0 + (1.0 / CUT_RATIO - 1.0) / 2.0 * run
+    behind_both = []
     for root in roots:
         yy, xx = np.nonzero(rsub == root)
         if len(yy) < 4:
-            return False
+            return None
         dx, dy = xx - mx, yy - my
         a = dx * ux + dy * uy
         b = np.abs(dy * ux - dx * uy)
         band = b <= run
         if band.sum() < max(CUT_DEPTH * run * run, min_area, 4):
-            return False
+            return None
         lo, hi = np.percentile(a[band], (2.0, 98.0))
         if run > CUT_RATIO * (hi - lo) or np.percentile(b[band], 98.0) < CUT_DEPTH * run:
-            return False
-    return True
+            return None
+        behind_both.append(bool(lo <= -half and hi >= half))
+    # a wall runs on both sides of a door, behind it on at least one side (a corridor along the wall);
+    # a corridor cut across has space beyond only one end of the cut on either side (a recess)
+    return behind_both if any(behind_both) else None
 
 
 def _split_at_wall_openings(labels: np.ndarray, space: np.ndarray, resolution: float, max_cut_m: float,
@@ -952,6 +959,11 @@ def _split_at_wall_openings(labels: np.ndarray, space: np.ndarray, resolution: f
         for o, p in zip((pair_keys // (n + 1)).tolist(), (pair_keys % (n + 1)).tolist()):
             pairs.setdefault(o, set()).add(p)
         del pad
+        # size and clearance peak of every piece (both add up when pieces are joined): a piece is
+        # corridor-shaped when its area is >= CORRIDOR_ELONGATION x (2 x peak)^2, as for the area types
+        p_area = np.bincount(comp.ravel(), minlength=n).astype(np.float64)
+        p_peak = np.zeros(n)
+        np.maximum.at(p_peak, comp.ravel(), dist[sl].ravel().astype(np.float64))
         off = np.array([sl[1].start, sl[0].start, sl[1].start, sl[0].start])
         uf = _UnionFind(n)
         cands = [(o, sorted(p)) for o, p in pairs.items()]
@@ -964,8 +976,14 @@ def _split_at_wall_openings(labels: np.ndarray, space: np.ndarray, resolution: f
                     accepted.discard(o)
                     continue
                 key, run, (uy, ux) = openings[o - 1]
-                good = len(roots) == 2 and _judge_opening(comp, uf.find, tuple((np.array(key) - off).tolist()), run,
-                                                          ux, uy, roots, min_area)
+                flags = None
+                if len(roots) == 2:
+                    flags = _judge_opening(comp, uf.find, tuple((np.array(key) - off).tolist()), run, ux, uy, roots,
+                                           min_area)
+                # the space entered through the door (not running along the wall on both sides of
+                # it) is a room: corridors are not cut at their junctions
+                room = [p_area[r] < CORRIDOR_ELONGATION * (2.0 * p_peak[r]) ** 2 for r in roots]
+                good = flags is not None and any(room) and all(rm for rm, f in zip(room, flags) if not f)
                 if good:
                     accepted.add(o)
                 else:
@@ -975,6 +993,8 @@ def _split_at_wall_openings(labels: np.ndarray, space: np.ndarray, resolution: f
                         if a != b:
                             keep, gone = min(a, b), max(a, b)
                             uf.parent[gone] = keep
+                            p_area[keep] += p_area[gone]
+                            p_peak[keep] = max(p_peak[keep], p_peak[gone])
                     changed = True
             if not changed:
                 break
