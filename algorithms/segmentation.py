@@ -810,7 +810,8 @@ def _wall_faces(space: np.ndarray, resolution: float) -> np.ndarray:
 def _wall_line_openings(space: np.ndarray, labels: np.ndarray, resolution: float, max_cut_m: float):
     """Openings in wall lines: a wall face that ends in free space is continued along its own line
     to the next obstacle; runs of free space between ``CUT_MIN_M`` and ``max_cut_m`` long are
-    candidate openings. Returns a list of (rows, cols, length px, unit direction (dy, dx))."""
+    candidate openings. Returns a list of ((x0, y0, x1, y1) px ends of the free run, length px,
+    unit direction (dy, dx)). ``labels`` is unused (kept for the call signature)."""
     segs = _wall_faces(space, resolution)
     rows, cols = space.shape
     max_px = max_cut_m / resolution
