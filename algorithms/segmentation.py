@@ -809,6 +809,287 @@ def _drop_outside_pockets(labels: np.ndarray, outside: np.ndarray, group_peak: n
     return lut[labels], np.r_[0.0, group_peak[keep_ids]], dropped_px
 
 
+# --------------------------------------------------------------------------- wall-line openings
+WALL_CUTS = True
+WALL_MIN_M = 1.0  # a wall face is a straight run of at least this length (not clutter, not scan noise)
+CUT_MIN_M = 0.5  # gaps in a wall line narrower than this are scan gaps, not openings
+CUT_RATIO = 0.8  # an opening in a wall line is a door when it is narrower than this x both spaces along the line
+CUT_DEPTH = 0.5  # ... and both spaces reach at least this x the opening's width behind it
+CUT_MIN_ROOM_M = 1.0  # ... and both are at least a (1 m)^2 space (and CUT_DEPTH x the opening squared)
+
+
+def _wall_faces(space: np.ndarray, resolution: float) -> np.ndarray:
+    """Straight wall faces (Hough segments of obstacle pixels next to free space), int32 (n, 4):
+    x1, y1, x2, y2 in px."""
+    import cv2
+
+    k = np.ones((3, 3), np.uint8)
+    face = ~space & cv2.dilate(space.view(np.uint8), k).view(bool)
+    min_len = max(4, int(round(WALL_MIN_M / resolution)))
+    segs = cv2.HoughLinesP(face.view(np.uint8) * np.uint8(255), 1, np.pi / 180, threshold=max(3, int(0.7 * min_len)),
+                           minLineLength=min_len, maxLineGap=2)
+    if segs is None:
+        return np.zeros((0, 4), np.int32)
+    return segs.reshape(-1, 4).astype(np.int32)
+
+
+def _wall_line_openings(space: np.ndarray, labels: np.ndarray, resolution: float, max_cut_m: float):
+    """Openings in wall lines: a wall face that ends in free space is continued along its own line
+    to the next obstacle; runs of free space between ``CUT_MIN_M`` and ``max_cut_m`` long are
+    candidate openings. Returns a list of ((x0, y0, x1, y1) px ends of the free run, length px,
+    unit direction (dy, dx)). ``labels`` is unused (kept for the call signature)."""
+    segs = _wall_faces(space, resolution)
+    rows, cols = space.shape
+    max_px = max_cut_m / resolution
+    min_px = CUT_MIN_M / resolution
+    if len(segs) == 0:
+        return []
+    # every segment end, pointing away from the segment (end 2 then end 1 of each segment)
+    p1 = segs[:, :2].astype(np.float64)
+    p2 = segs[:, 2:].astype(np.float64)
+    length = np.hypot(*(p2 - p1).T)
+    ok = length > 0
+    p1, p2, length = p1[ok], p2[ok], length[ok]
+    u = (p2 - p1) / length[:, None]
+    ends = np.stack([p2, p1], axis=1).reshape(-1, 2)
+    dirs = np.stack([u, -u], axis=1).reshape(-1, 2)
+    ux, uy = dirs[:, :1], dirs[:, 1:]
+
+    def sample(x0, y0, t):
+        xs = np.rint(x0 + ux * t).astype(np.int64)
+        ys = np.rint(y0 + uy * t).astype(np.int64)
+        inb = (xs >= 0) & (xs < cols) & (ys >= 0) & (ys < rows)
+        return np.clip(xs, 0, cols - 1), np.clip(ys, 0, rows - 1), inb
+
+    # follow the wall face to its end (Hough segments stop short, by less than a wall length):
+    # obstacle pixels along the line with free space beside them; an obstacle pixel with none beside
+    # it is a corner (the wall turns)
+    t_face = np.arange(0, int(math.ceil(WALL_MIN_M / resolution)) + 1, dtype=np.float64)[None, :]
+    xs, ys, inb = sample(ends[:, :1], ends[:, 1:], t_face)
+    side = np.zeros(xs.shape, bool)
+    for sgn in (-1.5, 1.5):
+        sx = np.clip(np.rint(xs - uy * sgn).astype(np.int64), 0, cols - 1)
+        sy = np.clip(np.rint(ys + ux * sgn).astype(np.int64), 0, rows - 1)
+        side |= space[sy, sx]
+    along_face = ~space[ys, xs] & side & inb
+    k = np.argmin(along_face, axis=1)
+    rr = np.arange(len(k))
+    valid = ~along_face.all(axis=1) & inb[rr, k] & space[ys[rr, k], xs[rr, k]]
+    # then the gap: free pixels along the line up to the next obstacle
+    t = np.arange(0, int(math.ceil(max_px)) + 6, dtype=np.float64)[None, :]
+    x0 = ends[:, :1] + ux * k[:, None]
+    y0 = ends[:, 1:] + uy * k[:, None]
+    xs, ys, inb = sample(x0, y0, t)
+    fr = space[ys, xs] & inb  # sensor specks inside the space do not end a gap
+    stop = np.argmin(fr, axis=1)
+    # no obstacle within reach (open space, not a gap in a wall line) or the map ends first
+    valid &= ~fr.all(axis=1) & inb[rr, stop] & (stop > 0)
+    out = []
+    seen = set()
+    for i in np.flatnonzero(valid).tolist():
+        st = int(stop[i])
+        key = (int(xs[i, 0]), int(ys[i, 0]), int(xs[i, st - 1]), int(ys[i, st - 1]))
+        run = math.hypot(key[2] - key[0], key[3] - key[1]) + 1.0
+        if run < min_px or run > max_px:
+            continue
+        rkey = (key[2], key[3], key[0], key[1])
+        if key in seen or rkey in seen:
+            continue
+        seen.add(key)
+        out.append((key, run, (float(dirs[i, 1]), float(dirs[i, 0]))))
+    return out
+
+
+def _judge_opening(comp: np.ndarray, find, key, run: float, ux: float, uy: float, roots, min_area: float):
+    """Whether an opening (cut ``key`` = x0, y0, x1, y1 in ``comp``'s frame, ``run`` px long, along
+    (ux, uy)) is a door between the pieces ``roots``: measured in the band up to ``run`` behind the
+    opening on each side, the space is wider along the wall line than the opening / ``CUT_RATIO``,
+    reaches ``CUT_DEPTH`` x ``run`` behind it and covers ``CUT_DEPTH`` x ``run``^2 (and ``min_area``),
+    and on at least one side it reaches beyond both ends of the opening. Returns None (no door) or,
+    per piece, whether it reaches beyond both ends (runs along the wall)."""
+    x0, y0, x1, y1 = key
+    m = int(math.ceil(run)) + 2
+    r0, r1 = max(min(y0, y1) - m, 0), min(max(y0, y1) + m + 1, comp.shape[0])
+    c0, c1 = max(min(x0, x1) - m, 0), min(max(x0, x1) + m + 1, comp.shape[1])
+    sub = comp[r0:r1, c0:c1]
+    ids = np.unique(sub)
+    root_of = np.zeros(int(ids.max()) + 1, np.int64)
+    root_of[ids] = [find(int(k)) if k else 0 for k in ids.tolist()]
+    rsub = root_of[sub]
+    mx, my = (x0 + x1) / 2.0 - c0, (y0 + y1) / 2.0 - r0
+    half = run / 2.0 + (1.0 / CUT_RATIO - 1.0) / 2.0 * run
+    behind_both = []
+    for root in roots:
+        yy, xx = np.nonzero(rsub == root)
+        if len(yy) < 4:
+            return None
+        dx, dy = xx - mx, yy - my
+        a = dx * ux + dy * uy
+        b = np.abs(dy * ux - dx * uy)
+        band = b <= run
+        if band.sum() < max(CUT_DEPTH * run * run, min_area, 4):
+            return None
+        lo, hi = np.percentile(a[band], (2.0, 98.0))
+        if run > CUT_RATIO * (hi - lo) or np.percentile(b[band], 98.0) < CUT_DEPTH * run:
+            return None
+        behind_both.append(bool(lo <= -half and hi >= half))
+    # a wall runs on both sides of a door, behind it on at least one side (a corridor along the wall);
+    # a corridor cut across has space beyond only one end of the cut on either side (a recess)
+    return behind_both if any(behind_both) else None
+
+
+def _split_at_wall_openings(labels: np.ndarray, space: np.ndarray, resolution: float, max_cut_m: float,
+                            dist: np.ndarray, peaks: dict, grown: dict):
+    """Rooms open to a corridor (or to each other) through an opening wider than a door but in a
+    wall line: the wall's own line continued across the opening cuts the area in two when the
+    opening is clearly narrower than the spaces on both sides measured along the line
+    (``CUT_RATIO``) and both reach behind it (``CUT_DEPTH``). A side corridor is as wide as its mouth (no cut:
+    corridors are not split at junctions); a wall line continued across a corridor cuts a stretch
+    no longer than the corridor is wide (no cut). Openings are judged, the pieces on both sides of
+    a rejected one joined, and the rest judged again. Returns (labels, number of pieces cut off);
+    ``peaks`` gets the clearance peak (px, from ``dist``) of every area cut or new, ``grown`` the
+    largest clearance of the slivers other areas received."""
+    import cv2
+    from scipy import ndimage as ndi
+
+    openings = _wall_line_openings(space, labels, resolution, max_cut_m)
+    if not openings:
+        return labels, 0
+    cut_id = np.zeros(labels.shape, np.int32)
+    for i, (key, _, _) in enumerate(openings, start=1):
+        cv2.line(cut_id, key[:2], key[2:], i, 1, lineType=8)
+    cut = (cut_id > 0) & (labels > 0)
+    groups = np.unique(labels[cut])
+    next_id = int(labels.max()) + 1
+    kept_cuts = 0
+    min_area = (CUT_MIN_ROOM_M / resolution) ** 2
+    objs = ndi.find_objects(labels)
+    for g in groups.tolist():
+        sl = objs[g - 1]
+        if sl is None:
+            continue
+        mine = labels[sl] == g
+        gcut = cut[sl] & mine
+        n, comp = cv2.connectedComponents((mine & ~gcut).view(np.uint8), connectivity=4, ltype=cv2.CV_32S)
+        if n <= 2:
+            continue
+        # which pieces each opening separates (4-neighbours of its pixels)
+        cid = cut_id[sl] * gcut
+        pad = np.pad(comp, 1)
+        rr, cc = np.nonzero(cid)
+        ids = cid[rr, cc]
+        nbs = np.concatenate([pad[rr + 1 + dr, cc + 1 + dc] for dr, dc in ((-1, 0), (1, 0), (0, -1), (0, 1))])
+        oid = np.tile(ids, 4)
+        m = nbs > 0
+        pair_keys = np.unique(oid[m].astype(np.int64) * (n + 1) + nbs[m])
+        pairs = {}
+        for o, p in zip((pair_keys // (n + 1)).tolist(), (pair_keys % (n + 1)).tolist()):
+            pairs.setdefault(o, set()).add(p)
+        del pad
+        # size and clearance peak of every piece (both add up when pieces are joined): a piece is
+        # corridor-shaped when its area is >= CORRIDOR_ELONGATION x (2 x peak)^2, as for the area types
+        p_area = np.bincount(comp.ravel(), minlength=n).astype(np.float64)
+        p_peak = np.zeros(n)
+        np.maximum.at(p_peak, comp.ravel(), dist[sl].ravel().astype(np.float64))
+        off = np.array([sl[1].start, sl[0].start, sl[1].start, sl[0].start])
+        uf = _UnionFind(n)
+        cands = [(o, sorted(p)) for o, p in pairs.items()]
+        accepted = set()
+        for _ in range(6):  # judge the openings, join across the rejected ones, judge again
+            changed = False
+            for o, ps in cands:
+                roots = sorted({uf.find(p) for p in ps})
+                if len(roots) < 2:
+                    accepted.discard(o)
+                    continue
+                key, run, (uy, ux) = openings[o - 1]
+                flags = None
+                if len(roots) == 2:
+                    flags = _judge_opening(comp, uf.find, tuple((np.array(key) - off).tolist()), run, ux, uy, roots,
+                                           min_area)
+                # the space entered through the door (not running along the wall on both sides of
+                # it) is a room: corridors are not cut at their junctions
+                room = [p_area[r] < CORRIDOR_ELONGATION * (2.0 * p_peak[r]) ** 2 for r in roots]
+                good = flags is not None and any(room) and all(rm for rm, f in zip(room, flags) if not f)
+                if good:
+                    accepted.add(o)
+                else:
+                    accepted.discard(o)
+                    for r in roots[1:]:
+                        a, b = uf.find(r), uf.find(roots[0])
+                        if a != b:
+                            keep, gone = min(a, b), max(a, b)
+                            uf.parent[gone] = keep
+                            p_area[keep] += p_area[gone]
+                            p_peak[keep] = max(p_peak[keep], p_peak[gone])
+                    changed = True
+            if not changed:
+                break
+        if not accepted:
+            continue
+        # the area is cut only along the openings kept
+        acc = np.isin(cid, np.fromiter(accepted, np.int64))
+        n2, comp2, st2, _ = cv2.connectedComponentsWithStats((mine & ~acc).view(np.uint8), connectivity=4,
+                                                             ltype=cv2.CV_32S)
+        if n2 <= 2:
+            continue
+        areas2 = st2[1:, cv2.CC_STAT_AREA]
+        keep = 1 + int(np.argmax(areas2))
+        sub = labels[sl]
+        changed_ids = [g]
+        for k in range(1, n2):
+            if k == keep or areas2[k - 1] < min_area:
+                continue
+            sub[comp2 == k] = next_id
+            changed_ids.append(next_id)
+            next_id += 1
+            kept_cuts += 1
+        # what is left of the area apart from its largest piece (slivers, the cut pixels) goes to
+        # the area it touches most (as ``_single_pieces``, only here)
+        gw = tuple(slice(max(x.start - 1, 0), x.stop + 1) for x in sl)
+        win = labels[gw]
+        nk, ck, sk, _ = cv2.connectedComponentsWithStats((win == g).view(np.uint8), connectivity=4,
+                                                         ltype=cv2.CV_32S)
+        if nk > 2:
+            big = 1 + int(np.argmax(sk[1:, cv2.CC_STAT_AREA]))
+            k3 = np.ones((3, 3), np.uint8)
+            for k in range(1, nk):
+                if k == big:
+                    continue
+                m = ck == k
+                ring = cv2.dilate(m.view(np.uint8), k3).view(bool) & ~m
+                neigh = win[ring]
+                neigh = neigh[(neigh > 0) & (neigh != g)]
+                if len(neigh):
+                    vals, cnt = np.unique(neigh, return_counts=True)
+                    h = int(vals[np.argmax(cnt)])
+                    win[m] = h
+                    grown[h] = max(grown.get(h, 0.0), float(dist[gw][m].max()))
+        for lid in changed_ids:
+            peaks[lid] = float(dist[sl][labels[sl] == lid].max())
+    return labels, kept_cuts
+
+
+def _wall_line_doors(labels: np.ndarray, space: np.ndarray, dist: np.ndarray, resolution: float,
+                     max_cut_m: float, group_peak: np.ndarray, stats: dict):
+    """``_split_at_wall_openings`` on the merged labels; new areas get their clearance peak.
+    Returns (labels, group_peak)."""
+    t = time.perf_counter()
+    peaks: dict = {}
+    grown: dict = {}
+    labels, n_cuts = _split_at_wall_openings(labels, space, resolution, max_cut_m, dist, peaks, grown)
+    stats["wall_line_doors"] = float(n_cuts)
+    if peaks or grown:
+        top = max(list(peaks) + list(grown))
+        if top >= len(group_peak):
+            group_peak = np.r_[group_peak, np.zeros(top + 1 - len(group_peak))]
+        for lid, v in grown.items():
+            group_peak[lid] = max(group_peak[lid], v)
+        for lid, v in peaks.items():
+            group_peak[lid] = max(v, grown.get(lid, 0.0))
+    stats["wall_line_s"] = time.perf_counter() - t
+    return labels, group_peak
+
 # --------------------------------------------------------------------------- vector output
 def label_polygons(labels: np.ndarray, grid: OccupancyGrid) -> Dict[int, object]:
     """Exact pixel-edge outline of every label (4-connected), as shapely Polygons in world metres."""
@@ -1180,6 +1461,9 @@ def segment(grid: OccupancyGrid, door_width: float = DEFAULT_DOOR_WIDTH,
     group_peak[0] = 0
     del cells
     labels = _single_pieces(labels)
+    if WALL_CUTS:
+        labels, group_peak = _wall_line_doors(labels, space, dist, res, max(door_width + delta, envelope_gap),
+                                              group_peak, stats)
     labels, group_peak, dropped_px = _drop_outside_pockets(labels, free & ~interior, group_peak,
                                                            info.get("claimed"), info.get("inside_pixels"))
     info.pop("claimed", None)

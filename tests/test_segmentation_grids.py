@@ -1,0 +1,137 @@
+"""Issue 14: rooms open to a corridor through an opening wider than a door but in a wall line
+(``segmentation._split_at_wall_openings``) are areas of their own; corridors are not cut at their
+junctions by the same rule.
+
+Small synthetic robot-map-like grids (0.05 m/px, walls 0.15 m, y down, metres)."""
+import numpy as np
+import pytest
+
+from algorithms import segmentation as seg
+from algorithms.model import FREE, OCCUPIED, OccupancyGrid
+
+RES = 0.05
+
+
+def _px(v):
+    return int(round(v / RES))
+
+
+def _free(img, x0, y0, x1, y1):
+    img[_px(y0):_px(y1), _px(x0):_px(x1)] = FREE
+
+
+def _labels_in(ag, x0, y0, x1, y1):
+    sub = ag.labels[_px(y0):_px(y1), _px(x0):_px(x1)]
+    vals, counts = np.unique(sub[sub > 0], return_counts=True)
+    return dict(zip(vals.tolist(), counts.tolist()))
+
+
+def _main(ag, *box):
+    d = _labels_in(ag, *box)
+    return max(d, key=d.get)
+
+
+def _offices_on_corridor(opening=2.2, office_w=3.5, scale=1.0):
+    """A corridor 2.4 m wide (y 5.15..7.55) with four offices 4 m deep on its north side (x from
+    1, ``office_w`` wide, walls 0.15 m): offices 1 and 3 open onto it through ``opening`` m (wider than
+    a door, narrower than the office), office 2 through a 0.9 m door, office 4 through ``opening``
+    too. A side corridor 2.4 m wide leaves it southwards (a T junction). ``scale`` scales every length."""
+    s = scale
+    n = 4
+    width = 1 + n * (office_w + 0.15) + 1.5
+    img = np.full((_px((7.55 + 6.5) * s), _px(width * s)), OCCUPIED, np.uint8)
+    _free(img, 1 * s, 5.15 * s, (width - 1) * s, 7.55 * s)  # corridor
+    _free(img, 6.0 * s, 7.55 * s, 8.4 * s, 13.5 * s)  # side corridor (T junction)
+    rooms = []
+    for i in range(n):
+        x0 = 1 + i * (office_w + 0.15)
+        _free(img, x0 * s, 1 * s, (x0 + office_w) * s, 5 * s)
+        w = 0.9 if i == 1 else opening
+        xm = x0 + office_w / 2
+        _free(img, (xm - w / 2) * s, 5 * s, (xm + w / 2) * s, 5.15 * s)
+        rooms.append(tuple(v * s for v in (x0 + 0.2, 1.2, x0 + office_w - 0.2, 4.8)))
+    corridor = tuple(v * s for v in (1.2, 5.5, width - 1.2, 7.2))
+    side = tuple(v * s for v in (6.2, 9.0, 8.2, 13.3))
+    return OccupancyGrid(img, 0.0, img.shape[0] * RES, RES), rooms, corridor, side
+
+
+@pytest.mark.parametrize("scale", [1.0, 1.5])
+def test_offices_behind_wide_openings_are_rooms(scale):
+    grid, rooms, corridor, side = _offices_on_corridor(scale=scale)
+    ag = seg.segment(grid)
+    c = _main(ag, *corridor)
+    ids = [_main(ag, *r) for r in rooms]
+    assert c not in ids, (c, ids)
+    assert len(set(ids)) == len(ids)  # every office its own area
+    for r, i in zip(rooms, ids):
+        d = _labels_in(ag, *r)
+        assert d[i] >= 0.97 * sum(d.values())  # ... and whole
+    assert _main(ag, *side) == c  # the side corridor is not cut off at the junction
+    assert ag.stats["wall_line_doors"] >= 3
+
+
+def test_rule_off_offices_are_swallowed(monkeypatch):
+    """The failure the rule fixes, so the test above cannot pass by accident."""
+    monkeypatch.setattr(seg, "WALL_CUTS", False)
+    grid, rooms, corridor, _ = _offices_on_corridor()
+    ag = seg.segment(grid)
+    c = _main(ag, *corridor)
+    assert sum(_main(ag, *r) == c for r in rooms) >= 2
+
+
+def test_opening_as_wide_as_the_office_is_no_door():
+    """An office open over (almost) its whole width onto the corridor is a bay of the corridor:
+    the opening is not clearly narrower than the space behind it."""
+    grid, rooms, corridor, _ = _offices_on_corridor(opening=3.3)
+    ag = seg.segment(grid)
+    c = _main(ag, *corridor)
+    assert _main(ag, *rooms[0]) == c
+
+
+def test_corridor_leaving_a_hall_is_not_cut_off():
+    """A 1.6 m corridor leaves an 8 x 6 m hall through the hall's wall line; beside its mouth a 0.6 m
+    door recess makes the corridor wider than the mouth on one side. The corridor runs along no
+    wall at its mouth (space beyond one end only) and is corridor-shaped: no door, one area."""
+    img = np.full((_px(16), _px(11)), OCCUPIED, np.uint8)
+    _free(img, 1, 1, 9, 7)  # hall
+    _free(img, 4, 7.15, 5.6, 15)  # corridor south, through the hall's south wall (y 7 .. 7.15)
+    _free(img, 4, 7, 5.6, 7.15)
+    _free(img, 3.4, 7.15, 4, 8.2)  # door recess beside the mouth
+    ag = seg.segment(OccupancyGrid(img, 0.0, img.shape[0] * RES, RES))
+    assert _main(ag, 2, 2, 8, 6) == _main(ag, 4.2, 9, 5.4, 14.8)
+
+
+@pytest.mark.slow
+def test_wall_line_rule_on_the_shared_robot_maps(shared_data):
+    """The five grid_gt maps with the default widths, rule on and off (measured 2026-12-01, before ->
+    after: Freiburg101 0.906 -> 0.906, freiburg_building52 0.970 -> 0.970, intel_map 0.621 -> 0.671,
+    lab_a 0.918 -> 0.928, lab_d 0.955 -> 0.955; mean 0.874 -> 0.886). No map gets worse, the mean
+    rises; on intel_map offices open to the corridor through 1.8-3.9 m openings become areas."""
+    import sys
+    from pathlib import Path
+
+    sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "scripts"))
+    from evaluate_grids import _read_map, load_maps
+
+    from algorithms.evaluate import evaluate, read_gt_image
+
+    folder = shared_data / "grid_gt"
+    scores = {}
+    for m in load_maps(folder):
+        grid = _read_map(folder / "input" / f"{m['name']}.png", m["resolution"])
+        gt = read_gt_image(str(folder / "gt" / f"{m['name']}.png"))
+        for on in (False, True):
+            seg.WALL_CUTS = on
+            try:
+                ag = seg.segment(grid)
+            finally:
+                seg.WALL_CUTS = True
+            scores[(m["name"], on)] = evaluate(ag.labels, gt)["mcc"]
+    names = sorted({n for n, _ in scores})
+    for n in names:
+        assert scores[(n, True)] >= scores[(n, False)] - 0.002, (n, scores)
+    mean_on = np.mean([scores[(n, True)] for n in names])
+    mean_off = np.mean([scores[(n, False)] for n in names])
+    assert mean_on >= mean_off + 0.01, (mean_on, mean_off)
+    assert mean_on >= 0.88, scores
+    assert scores[("intel_map", True)] >= 0.66, scores
