@@ -641,7 +641,8 @@ def floor_figures(areas: Sequence[Area], passages: Sequence[Passage], report: Op
                 "named_areas": len(named), "conflicts": len(conflict & set(named)),
                 "conflict_pct": 100.0 * len(conflict & set(named)) / len(named) if named else None,
                 "semantic_accuracy_pct": 100.0 * correct / len(named) if named else None,
-                "splits": len(report.splits), "outside": c["outside"], "own_texts": own})
+                "splits": len(report.splits), "outside": c["outside"], "own_texts": own,
+                "hidden_texts": c["hidden"], "hidden_used": c["hidden_used"]})
     return out
 
 

@@ -44,7 +44,7 @@ def test_figures_per_plan_on_a_folder(folder, tmp_path, capsys):
     assert s["ok"] and s["room_texts"] == 18 and s["inside_pct"] == 100.0 and s["own_area_pct"] == 100.0
     assert s["named_areas"] == 18 and s["conflicts"] == 0 and s["semantic_accuracy_pct"] == 100.0
     assert s["stairs"] == 1 and s["elevators"] == 1 and s["largest_component_pct"] >= 95.0
-    assert s["areas"] >= 18 and s["passages"] >= 17
+    assert s["areas"] >= 18 and s["passages"] >= 17 and s["hidden_texts"] == 0 == s["hidden_used"]
     tot = data["totals"]
     assert tot["plans"] == 2 and tot["converted"] == 1 and tot["own_area_pct"] == 100.0
 
