@@ -853,6 +853,7 @@ def _place_records(room: Sequence["TextRecord"], index, best_by_area: Dict[int, 
         if best[0] > 1000.0:
             best = (best[0] - 1000.0, best[1], best[2])
         if vtype and (best[1] is None or polys[best[1]].area > _max_area(rules, vtype)
+                      or areas_ok[best[1]].type == "corridor"
                       or (only is not None and not only(areas_ok[best[1]].id))):
             deferred.append((r, vtype))
             continue

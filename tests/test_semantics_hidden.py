@@ -159,3 +159,10 @@ def test_a_name_outside_the_room_never_beats_the_label_inside_it():
     assert room.name == "PEDANA" and room.type == "room" and not room.tags.get("label_conflict")
     fig = S.floor_figures([room], [], rep)
     assert fig["room_texts"] == 2 and fig["own_texts"] == 1 and fig["conflicts"] == 0
+
+
+def test_plain_code_in_a_corridor_names_the_stair_beside_it():
+    corridor = Area(id=1, polygon=box(0, 0, 20, 2.5), type="corridor")
+    stair = Area(id=2, polygon=box(8, 2.5, 12, 8), type="stairs")
+    S.assign_names([corridor, stair], [T("E2-ST-02", 10, 1.2, entity="ATTRIB"), T("走道", 3, 1.2)])
+    assert stair.ref == "E2-ST-02" and corridor.type == "corridor" and corridor.name == "走道"
