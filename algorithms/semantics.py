@@ -247,6 +247,15 @@ def classify_text(text, rules=None, layer: str = "", block: str = "", tag: str =
         (w in tag_tokens) if len(w) <= 3 else (w in tg) for w in rules.name_tags)
     name_layer = _layer_match(rules.name_layers, lay)
     name_block = _layer_match(rules.name_blocks, blk)
+    if name_block:
+        # a generic tag block ('ECADI-TAG-DOOR', 'TAG-GRID') says what it tags: a door, an axis... the
+        # word 'tag' alone is no room evidence then; nor is it when the ATTRIB tag names doors ('门窗主编号')
+        for reason, words in rules.ignore_layers:
+            if _layer_match(words, blk) or (tg and _layer_match(words, tg)):
+                if not name_tag and not number_tag:
+                    return "ignored", f"{reason} (block)"
+                name_block = None
+                break
     evidence = "room tag" if (name_tag or number_tag) else ("name layer" if name_layer else
                                                             ("room block" if name_block else ""))
     weak = not evidence and bool(_layer_match(rules.weak_name_layers, lay))
@@ -647,8 +656,13 @@ def floor_figures(areas: Sequence[Area], passages: Sequence[Passage], report: Op
 
 
 # ------------------------------------------------------------------------------------------ assign
+_LEVEL_PREFIX = re.compile(r"^(\d{1,2}f|b\d)\s*(?=[\u3400-\u9fff])")
+
+
 def _key(name: str) -> str:
-    return " ".join(normalize_text(name).casefold().split())
+    """Comparable name: normalised, casefolded; a floor prefix before a CJK name is dropped ('2F中庭回廊'
+    and '中庭回廊' are one name)."""
+    return _LEVEL_PREFIX.sub("", " ".join(normalize_text(name).casefold().split()))
 
 
 def auto_id(level: str, area_id: int) -> str:
