@@ -486,8 +486,11 @@ def classify_labels(texts: Sequence[CadText], rules=None) -> List[Label]:
 
 def room_name_points(texts: Sequence[CadText], rules=None) -> List[Tuple[float, float, str]]:
     """(x, y, text) of every room name and room number of a drawing (CAD frame, metres). Segmentation
-    uses them as evidence that the space around them is inside the building."""
-    return [(lab.x, lab.y, lab.text) for lab in classify_labels(texts, rules) if lab.role in ("name", "number")]
+    uses them as evidence that the space around them is inside the building. Door and window tags of
+    tag blocks ('1522' in ECADI-TAG-DOOR) are no names but mark the building's doorways: they count as
+    evidence too (without them SIST-F3's largest component fell from 98 % to 80 % of the floor)."""
+    return [(lab.x, lab.y, lab.text) for lab in classify_labels(texts, rules)
+            if lab.role in ("name", "number") or lab.reason == "door/window code (block)"]
 
 
 PROTECTED_TYPE = "room:labelled"  # temporary type that keeps refinement from merging a labelled small room

@@ -35,3 +35,10 @@ def test_door_size_codes_never_become_room_refs_and_level_prefixes_are_one_name(
     assert gallery.name in ("2F中庭回廊", "中庭回廊") and not gallery.tags.get("label_conflict")
     fig = S.floor_figures([room, gallery], [], rep)
     assert fig["room_texts"] == 4 and fig["own_texts"] == 4
+
+
+def test_door_tags_are_no_names_but_still_evidence_of_the_inside():
+    texts = [A("1522", "A-SYMB-DOOR", "ECADI-TAG-DOOR", "门窗主编号2", x=1, y=1), A("A3-4", "A-SYMB", "TAG-GRID", "GRID"),
+             A("媒体实验室", x=3, y=3)]
+    pts = S.room_name_points(texts)
+    assert sorted(t for _, _, t in pts) == ["1522", "媒体实验室"]  # the axis bubble is not
