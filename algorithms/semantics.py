@@ -226,7 +226,8 @@ def _text_fields(text, layer, block, tag):
     return text, layer, block, tag
 
 
-def classify_text(text, rules=None, layer: str = "", block: str = "", tag: str = "") -> Tuple[str, str]:
+def classify_text(text, rules=None, layer: str = "", block: str = "", tag: str = "",
+                  _plain_block: bool = False) -> Tuple[str, str]:
     """``(role, reason)`` of one text. role: ``name`` (a room name), ``number`` (a room number, kept
     as ref), ``ignored``. The reason names the rule: 'name layer', 'keyword', 'room tag' ... for names
     and numbers; 'dimension', 'area', 'elevation', 'door/window code', 'axis', 'stair arrow', 'note',
@@ -247,15 +248,18 @@ def classify_text(text, rules=None, layer: str = "", block: str = "", tag: str =
         (w in tag_tokens) if len(w) <= 3 else (w in tg) for w in rules.name_tags)
     name_layer = _layer_match(rules.name_layers, lay)
     name_block = _layer_match(rules.name_blocks, blk)
-    if name_block:
+    if name_block and not _plain_block:
         # a generic tag block ('ECADI-TAG-DOOR', 'TAG-GRID') says what it tags: a door, an axis... the
-        # word 'tag' alone is no room evidence then; nor is it when the ATTRIB tag names doors ('门窗主编号')
+        # word 'tag' alone is no room evidence then; nor is it when the ATTRIB tag names doors ('门窗主编号').
+        # What the text would be as a room tag decides: a would-be name or number is that block's thing
+        # ('door/window code (block)'); a text ignored anyway keeps its own reason ('FM乙1522').
         for reason, words in rules.ignore_layers:
             if _layer_match(words, blk) or (tg and _layer_match(words, tg)):
-                if not name_tag and not number_tag:
-                    return "ignored", f"{reason} (block)"
-                name_block = None
-                break
+                if name_tag or number_tag:
+                    name_block = None
+                    break
+                role, why = classify_text(raw, rules, layer=layer, block=block, tag=tag, _plain_block=True)
+                return ("ignored", f"{reason} (block)") if role != "ignored" else (role, why)
     evidence = "room tag" if (name_tag or number_tag) else ("name layer" if name_layer else
                                                             ("room block" if name_block else ""))
     weak = not evidence and bool(_layer_match(rules.weak_name_layers, lay))
