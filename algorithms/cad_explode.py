@@ -192,6 +192,8 @@ class _Pieces:
     block: List[str] = field(default_factory=list)
     counts: List[tuple] = field(default_factory=list)  # (layer, etype, n) for entities without geometry
     xrefs: List[str] = field(default_factory=list)
+    # texts on frozen / off layers (same tuples as ``texts``): kept apart, room names may still use them
+    hidden_texts: List[tuple] = field(default_factory=list)
 
     def add(self, coords, layer, etype, closed=False, filled=False, width=0.0, block=""):
         self.block.append(block)
@@ -240,16 +242,18 @@ def _transform_pieces(src: _Pieces, A: np.ndarray, t: np.ndarray, layer: str, ds
             w = src.width[i]
             dst.add(splits[i], lay, src.etype[i], src.closed[i], src.filled[i], w * s if w else 0.0,
                     _chain_name(name, src.block[i]))
-    if src.texts:
+    for src_texts, dst_texts in ((src.texts, dst.texts), (src.hidden_texts, dst.hidden_texts)):
+        if not src_texts:
+            continue
         s = math.sqrt(abs(float(np.linalg.det(A))))
         rot = math.degrees(math.atan2(A[1, 0], A[0, 0]))
-        for (x, y, text, h, r, lay, et, blocks, tag) in src.texts:
+        for (x, y, text, h, r, lay, et, blocks, tag) in src_texts:
             if lay == "0":
                 lay = layer
             if not layer_ok(lay, et):
                 continue
             p = A @ np.array((x, y)) + t
-            dst.texts.append((float(p[0]), float(p[1]), text, h * s, (r + rot) % 360.0, lay, et,
+            dst_texts.append((float(p[0]), float(p[1]), text, h * s, (r + rot) % 360.0, lay, et,
                               _chain_name(name, blocks), tag))
     for (lay, et, k) in src.counts:
         dst.counts.append((layer if lay == "0" else lay, et, k))
@@ -403,7 +407,9 @@ class _Exploder:
     def entity(self, e, out: _Pieces) -> None:
         et = e.dxftype()
         layer = e.dxf.get("layer", "0") or "0"
-        if not self._keep_layer(layer):
+        if not self._keep_layer(layer) and et not in HIDDEN_TEXT_TYPES:
+            if et == "INSERT":
+                self._hidden_insert_texts(e, layer, out)
             return
         tol = self.tol
         if et == "LINE":
@@ -570,9 +576,23 @@ class _Exploder:
                 "too deeply, repeats one entity massively or holds a huge MINSERT array; purge or explode those "
                 "blocks in CAD (OVERKILL removes duplicates) and export again")
 
-    def _insert(self, e, layer, out):
+    def _hidden_insert_texts(self, e, layer, out) -> None:
+        """The texts of a small block inserted on a frozen / off layer (an annotation group: a callout
+        with its leader), kept as hidden texts; larger hidden blocks are not exploded at all."""
+        blk = self.doc.blocks.get(e.dxf.get("name", ""))
+        try:
+            small = blk is not None and len(blk) <= HIDDEN_BLOCK_MAX
+        except TypeError:
+            small = False
+        if not small:
+            return
+        tmp = _Pieces()
+        self._insert(e, layer, tmp, hidden=True)
+        out.hidden_texts.extend(tmp.texts + tmp.hidden_texts)
+
+    def _insert(self, e, layer, out, hidden: bool = False):
         name = e.dxf.name
-        if layer != "0" and not self.visible(layer, frozen_only=True):
+        if layer != "0" and not hidden and not self.visible(layer, frozen_only=True):
             return
         rows = int(e.dxf.get("row_count", 1) or 1)
         cols = int(e.dxf.get("column_count", 1) or 1)
@@ -595,8 +615,6 @@ class _Exploder:
                 alay = a.dxf.get("layer", "0") or "0"
                 if alay == "0":
                     alay = layer
-                if not self._keep_layer(alay):
-                    continue
                 txt = _text_plain(a)
                 if txt:
                     p = a.dxf.insert
@@ -607,8 +625,12 @@ class _Exploder:
                                       str(a.dxf.get("tag", "") or "")))
 
     def _inherited_ok(self, layer, etype) -> bool:
-        return self._keep_layer(layer)
+        return etype in HIDDEN_TEXT_TYPES or self._keep_layer(layer)
 
+
+
+HIDDEN_TEXT_TYPES = ("TEXT", "MTEXT", "ATTRIB")  # texts are read on every layer, then split by visibility
+HIDDEN_BLOCK_MAX = 50  # a block inserted on a frozen / off layer gives its texts when it is this small
 
 
 @dataclass
@@ -652,8 +674,10 @@ def _explode(path: str, tol_du: float, progress, doc=None, repairs=None) -> _Raw
                       etype=[out.etype[i] for i in keep], closed=[out.closed[i] for i in keep],
                       filled=[out.filled[i] for i in keep], width=[out.width[i] for i in keep],
                       block=[out.block[i] for i in keep],
-                      texts=[t for t in out.texts if visible(t[5])], counts=out.counts, xrefs=out.xrefs)
-    else:
-        out.texts = [t for t in out.texts if visible(t[5])]
+                      texts=out.texts, counts=out.counts, xrefs=out.xrefs, hidden_texts=out.hidden_texts)
+    # texts on frozen / off layers are not drawn: kept apart (a sheet often freezes the annotation layer of
+    # one wing, e.g. the stair callouts or room names of a bound xref; stage 5 may still name rooms by them)
+    out.hidden_texts = out.hidden_texts + [t for t in out.texts if not visible(t[5])]
+    out.texts = [t for t in out.texts if visible(t[5])]
     return _Raw(doc, path, out, states, _header_unit(doc), list(repairs or []), ex.warnings, tol_du, n)
 

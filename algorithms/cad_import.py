@@ -42,7 +42,7 @@ import numpy as np
 
 from .cad_classify import (AUX_KIND, DOOR_RADIUS, DOOR_SWEEP, _circle_from_3, classify_entities,  # noqa: F401
                            find_door_swings, swing_candidates)
-from .cad_sheet import describe_plans, find_plans
+from .cad_sheet import describe_plans, find_plans, parse_plan
 from .cad_explode import (MAX_SEGMENTS_PER_TURN, SKIP_TYPES, TEXT_TYPES, _arc_points, _boundary_rings,  # noqa: F401
                           _bulge_polyline, _chain, _edge_points, _Exploder, _explode, _extrusion, _mtext_plain,
                           _n_segments, _ocs_to_wcs, _Pieces, _Raw, _text_plain, _transform_pieces,
@@ -188,6 +188,21 @@ def inspect_dxf(path: str, rules=None, progress=None) -> CadDrawing:
 def _xref_message(xrefs: List[str]) -> str:
     return (f"the drawing references external files {', '.join(xrefs)}; bind them in CAD first (XREF > Bind) "
             "and export the DXF again: their content is not in this DXF")
+
+
+def _hidden_texts(raw_texts, scale: float, extent, first_id: int) -> List[CadText]:
+    """Texts on frozen / off layers as CadTexts (metres), within the kept plan's extent (+ 1 m) when a
+    plan was picked on the sheet; ids continue after the visible texts."""
+    out: List[CadText] = []
+    for t in raw_texts or []:
+        x, y = t[0] * scale, t[1] * scale
+        if not (math.isfinite(x) and math.isfinite(y)):
+            continue
+        if extent is not None and not (extent[0] - 1 <= x <= extent[2] + 1 and extent[1] - 1 <= y <= extent[3] + 1):
+            continue
+        out.append(CadText(x=x, y=y, text=t[2], height=t[3] * scale, rotation=t[4], layer=t[5], entity=t[6],
+                           block=innermost_block(t[7]), tag=t[8], id=first_id + len(out)))
+    return out
 
 
 def import_dxf(path: str, rules=None, layers: Optional[Sequence[str]] = None, units: Optional[str] = None,
@@ -346,6 +361,8 @@ def import_dxf(path: str, rules=None, layers: Optional[Sequence[str]] = None, un
     texts = [t for t, k in zip(texts, tkeep) if k]
     for k, t in enumerate(texts):
         t.id = k
+    box = sel.extent if sel is not None else parse_plan(plan)
+    hidden = _hidden_texts(p.hidden_texts, scale, box if isinstance(box, tuple) else None, len(texts))
     if sel is not None:
         x0, y0, x1, y1 = sel.extent
         doors = [d for d in doors if x0 - 1 <= (d.x0 + d.x1) / 2 <= x1 + 1 and y0 - 1 <= (d.y0 + d.y1) / 2 <= y1 + 1]
@@ -355,5 +372,5 @@ def import_dxf(path: str, rules=None, layers: Optional[Sequence[str]] = None, un
                   + (f", {len(doors)} doorways" if doors else ""))
     return CadDrawing(path=path, geometries=geoms, texts=texts, layers=infos, unit_name=unit, unit_scale=scale,
                       header_unit=header, warnings=warnings, repairs=list(repairs), doors=doors, plans=plans,
-                      classes=classes, timings=timings,
+                      classes=classes, timings=timings, hidden_texts=hidden,
                       undecoded=dict(getattr(doc, "undecoded", {})))  # DWG: types the reader cannot decode

@@ -110,6 +110,9 @@ class CadDrawing:
     classes: Dict[str, int] = field(default_factory=dict)  # entity class counts (wall, door, furniture..)
     undecoded: Dict[str, int] = field(default_factory=dict)  # entity types the reader could not decode
     timings: Dict[str, float] = field(default_factory=dict)  # import stages (read, explode, classify, plans), s
+    # texts on frozen / off layers, within the kept plan (ids continue after ``texts``); not drawn, but
+    # stage 5 may name an area by them when no visible text names it
+    hidden_texts: List[CadText] = field(default_factory=list)
 
 
 # --------------------------------------------------------------------------- stage 2: raster

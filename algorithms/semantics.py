@@ -84,6 +84,9 @@ class NameRules:
     callout: Optional["re.Pattern"] = None  # "E1-ST-01详见建施(...)": the code a detail reference names
     callout_tail: Optional["re.Pattern"] = None  # "卫生间详见建施(...)": the reference after a name
     weak_name_layers: List[str] = field(default_factory=list)  # generic text layers: names likely, not sure
+    # the largest area (m²) a stair / lift code or keyword may type as stairs / elevator (a stair core, a
+    # lift shaft or group; an atrium holding an open stair stays what it is)
+    vertical_max_area: Dict[str, float] = field(default_factory=lambda: {"stairs": 80.0, "elevator": 40.0})
 
     def __post_init__(self):
         # keyword -> (type entry) sorted longest first: the longest keyword found in a name wins
@@ -146,6 +149,7 @@ def load_name_rules(path: Optional[str] = None) -> NameRules:
         nums = [re.compile(p, re.IGNORECASE) for p in data.get("number_patterns", [])]
         codes = [dict(e, _re=re.compile(e["pattern"], re.IGNORECASE)) for e in data.get("code_types", [])]
         types = [dict(e) for e in data.get("types", [])]
+        vmax = {str(k): float(v) for k, v in (data.get("vertical_max_area") or {"stairs": 80.0, "elevator": 40.0}).items()}
         for e in types + codes:
             if e.get("type") not in ("room", "corridor", "stairs", "elevator"):
                 raise ValueError(f"unknown area type {e.get('type')!r} (room, corridor, stairs, elevator)")
@@ -159,7 +163,8 @@ def load_name_rules(path: Optional[str] = None) -> NameRules:
                      corridor_geometry=dict(data.get("corridor_geometry") or {}), source=src,
                      callout=re.compile(data["callout"], re.IGNORECASE) if data.get("callout") else None,
                      callout_tail=re.compile(data["callout_tail"], re.IGNORECASE) if data.get("callout_tail") else None,
-                     weak_name_layers=words("weak_name_layers"))
+                     weak_name_layers=words("weak_name_layers"),
+                     vertical_max_area=vmax)
 
 
 _DEFAULT: Optional[NameRules] = None
@@ -221,7 +226,8 @@ def _text_fields(text, layer, block, tag):
     return text, layer, block, tag
 
 
-def classify_text(text, rules=None, layer: str = "", block: str = "", tag: str = "") -> Tuple[str, str]:
+def classify_text(text, rules=None, layer: str = "", block: str = "", tag: str = "",
+                  _plain_block: bool = False) -> Tuple[str, str]:
     """``(role, reason)`` of one text. role: ``name`` (a room name), ``number`` (a room number, kept
     as ref), ``ignored``. The reason names the rule: 'name layer', 'keyword', 'room tag' ... for names
     and numbers; 'dimension', 'area', 'elevation', 'door/window code', 'axis', 'stair arrow', 'note',
@@ -242,6 +248,18 @@ def classify_text(text, rules=None, layer: str = "", block: str = "", tag: str =
         (w in tag_tokens) if len(w) <= 3 else (w in tg) for w in rules.name_tags)
     name_layer = _layer_match(rules.name_layers, lay)
     name_block = _layer_match(rules.name_blocks, blk)
+    if name_block and not _plain_block:
+        # a generic tag block ('ECADI-TAG-DOOR', 'TAG-GRID') says what it tags: a door, an axis... the
+        # word 'tag' alone is no room evidence then; nor is it when the ATTRIB tag names doors ('门窗主编号').
+        # What the text would be as a room tag decides: a would-be name or number is that block's thing
+        # ('door/window code (block)'); a text ignored anyway keeps its own reason ('FM乙1522').
+        for reason, words in rules.ignore_layers:
+            if _layer_match(words, blk) or (tg and _layer_match(words, tg)):
+                if name_tag or number_tag:
+                    name_block = None
+                    break
+                role, why = classify_text(raw, rules, layer=layer, block=block, tag=tag, _plain_block=True)
+                return ("ignored", f"{reason} (block)") if role != "ignored" else (role, why)
     evidence = "room tag" if (name_tag or number_tag) else ("name layer" if name_layer else
                                                             ("room block" if name_block else ""))
     weak = not evidence and bool(_layer_match(rules.weak_name_layers, lay))
@@ -378,8 +396,11 @@ def group_lines(texts: Sequence[CadText], rules=None) -> List[Label]:
         if t.entity == "TEXT" and s and t.height and t.height > 0 and abs(((t.rotation or 0) + 1) % 180 - 1) < 1 \
                 and math.isfinite(lab.x) and math.isfinite(lab.y):
             role, reason = classify_text(s, rules, layer=lab.layer, block=lab.block, tag=lab.tag)
-            # numbers, elevations, areas... are lines of their own: "Office" over "101" is name + number
-            if role != "number" and reason.split(" (")[0] not in _NO_JOIN:
+            rules_ = _resolve(rules)
+            callout = rules_.callout is not None and rules_.callout.match(s.casefold()) is not None
+            # numbers, elevations, areas... are lines of their own: "Office" over "101" is name + number;
+            # so is a detail callout ("E1-ST-01详见…" stacked over "E1-ST-02详见…" are two callouts)
+            if role != "number" and not callout and reason.split(" (")[0] not in _NO_JOIN:
                 cand.append(len(labels) - 1)
     if len(cand) < 2:
         return labels
@@ -469,8 +490,11 @@ def classify_labels(texts: Sequence[CadText], rules=None) -> List[Label]:
 
 def room_name_points(texts: Sequence[CadText], rules=None) -> List[Tuple[float, float, str]]:
     """(x, y, text) of every room name and room number of a drawing (CAD frame, metres). Segmentation
-    uses them as evidence that the space around them is inside the building."""
-    return [(lab.x, lab.y, lab.text) for lab in classify_labels(texts, rules) if lab.role in ("name", "number")]
+    uses them as evidence that the space around them is inside the building. Door and window tags of
+    tag blocks ('1522' in ECADI-TAG-DOOR) are no names but mark the building's doorways: they count as
+    evidence too (without them SIST-F3's largest component fell from 98 % to 80 % of the floor)."""
+    return [(lab.x, lab.y, lab.text) for lab in classify_labels(texts, rules)
+            if lab.role in ("name", "number") or lab.reason == "door/window code (block)"]
 
 
 PROTECTED_TYPE = "room:labelled"  # temporary type that keeps refinement from merging a labelled small room
@@ -542,6 +566,7 @@ class TextRecord:
     area_id: Optional[int] = None
     score: float = 0.0
     match: str = ""  # inside | nearby | "" (outside every area)
+    hidden: bool = False  # on a frozen / off layer (CadDrawing.hidden_texts)
 
 
 @dataclass
@@ -557,6 +582,7 @@ class NamesReport:
     new_passages: List[int] = field(default_factory=list)
     base_names: Dict[int, str] = field(default_factory=dict)  # area id -> name from the drawing, before suffixes
     name_record: Dict[int, "TextRecord"] = field(default_factory=dict)  # area id -> the text it is named after
+    hidden: List[TextRecord] = field(default_factory=list)  # room texts of frozen / off layers (fallback names)
 
     def counts(self) -> Dict[str, object]:
         ignored: Dict[str, int] = {}
@@ -571,7 +597,8 @@ class NamesReport:
                 "inside": sum(r.match == "inside" for r in room), "nearby": sum(r.match == "nearby" for r in room),
                 "outside": sum(r.area_id is None for r in room), "named_areas": self.named,
                 "numbered_areas": self.numbered, "auto_ids": self.auto, "conflicts": len(self.conflicts),
-                "splits": len(self.splits), "duplicate_names": len(self.duplicates), "typed": dict(self.typed)}
+                "splits": len(self.splits), "duplicate_names": len(self.duplicates), "typed": dict(self.typed),
+                "hidden": len(self.hidden), "hidden_used": sum(r.area_id is not None for r in self.hidden)}
 
     def summary(self) -> str:
         c = self.counts()
@@ -580,7 +607,9 @@ class NamesReport:
                 f"ignored ({ign or 'none'}); {c['assigned']} assigned ({c['inside']} inside, {c['nearby']} "
                 f"nearby), {c['outside']} outside every area; {c['named_areas']} areas named, "
                 f"{c['numbered_areas']} numbered, {c['auto_ids']} with a generated id, {c['splits']} split, "
-                f"{c['conflicts']} with conflicting names, {c['duplicate_names']} duplicate names suffixed")
+                f"{c['conflicts']} with conflicting names, {c['duplicate_names']} duplicate names suffixed"
+                + (f"; {c['hidden_used']} of {c['hidden']} room texts on frozen/off layers name an area no "
+                   "visible text names" if c["hidden"] else ""))
 
 
 def floor_figures(areas: Sequence[Area], passages: Sequence[Passage], report: Optional[NamesReport]) -> Dict[str, object]:
@@ -628,13 +657,19 @@ def floor_figures(areas: Sequence[Area], passages: Sequence[Passage], report: Op
                 "named_areas": len(named), "conflicts": len(conflict & set(named)),
                 "conflict_pct": 100.0 * len(conflict & set(named)) / len(named) if named else None,
                 "semantic_accuracy_pct": 100.0 * correct / len(named) if named else None,
-                "splits": len(report.splits), "outside": c["outside"], "own_texts": own})
+                "splits": len(report.splits), "outside": c["outside"], "own_texts": own,
+                "hidden_texts": c["hidden"], "hidden_used": c["hidden_used"]})
     return out
 
 
 # ------------------------------------------------------------------------------------------ assign
+_LEVEL_PREFIX = re.compile(r"^(\d{1,2}f|b\d)\s*(?=[\u3400-\u9fff])")
+
+
 def _key(name: str) -> str:
-    return " ".join(normalize_text(name).casefold().split())
+    """Comparable name: normalised, casefolded; a floor prefix before a CJK name is dropped ('2F中庭回廊'
+    and '中庭回廊' are one name)."""
+    return _LEVEL_PREFIX.sub("", " ".join(normalize_text(name).casefold().split()))
 
 
 def auto_id(level: str, area_id: int) -> str:
@@ -644,10 +679,14 @@ def auto_id(level: str, area_id: int) -> str:
 
 def assign_names(areas: List[Area], texts: Sequence[CadText], level="1", rules=None, progress=None,
                  grid=None, labels=None, passages: Optional[List[Passage]] = None, split: bool = True,
-                 rho_max: float = RHO_MAX, d_max: float = D_MAX, inside_first: bool = True) -> NamesReport:
+                 rho_max: float = RHO_MAX, d_max: float = D_MAX, inside_first: bool = True,
+                 hidden_texts: Optional[Sequence[CadText]] = None) -> NamesReport:
     """Name, number and type ``areas`` (in place) from ``texts``; see the module doc. ``grid`` gives
     the resolution of the split raster, ``labels`` (the label raster on ``grid``) is updated for split
-    areas, ``passages`` get the split cuts and follow the pieces. Never raises on odd texts."""
+    areas, ``passages`` get the split cuts and follow the pieces. ``hidden_texts``: texts on frozen / off
+    layers (``CadDrawing.hidden_texts``): their room names and codes name only areas that no visible text
+    names (a sheet often freezes one wing's annotation layer; the names are still the building's), they
+    never split an area nor compete with a visible name. Never raises on odd texts."""
     progress = ensure(progress)
     rules = _resolve(rules)
     report = NamesReport()
@@ -661,44 +700,10 @@ def assign_names(areas: List[Area], texts: Sequence[CadText], level="1", rules=N
     progress.step(15, "scoring texts against areas")
     best_by_area: Dict[int, List[TextRecord]] = {}
     if areas_ok:
-        polys = [a.polygon for a in areas_ok]
-        tree = STRtree(polys)
-        cents = [p.centroid for p in polys]
+        index = (areas_ok, [a.polygon for a in areas_ok])
+        index = index + (STRtree(index[1]), [p.centroid for p in index[1]])
         room = [r for r in records if r.role in ("name", "number")]
-        for n, r in enumerate(room):
-            if n % 200 == 0:
-                progress.step(15 + 35 * n / max(1, len(room)))
-            if not (math.isfinite(r.x) and math.isfinite(r.y)):
-                continue
-            p = Point(r.x, r.y)
-            if r.reason == "callout" and (type_of_name("", r.text, rules) or {}).get("type") in ("stairs", "elevator"):
-                # a detail callout ("E1-ST-01详见…") sits beside its stair or lift, on a leader: it names the
-                # nearest stair/lift area, and never types the corridor it happens to lie in
-                want = type_of_name("", r.text, rules)["type"]
-                near = [i for i in tree.query(p, predicate="dwithin", distance=CALLOUT_REACH).tolist()
-                        if areas_ok[i].type in ("stairs", "elevator")]
-                if near:
-                    i = min(near, key=lambda i: (areas_ok[i].type != want, polys[i].distance(p), i))
-                    r.area_id, r.match = areas_ok[i].id, "callout"
-                    r.score = round(score(r.x, r.y, polys[i], cents[i], rho_max=rho_max, d_max=d_max)[0], 2)
-                    best_by_area.setdefault(areas_ok[i].id, []).append(r)
-                continue
-            best = (0.0, None, "")
-            for i in sorted(tree.query(p, predicate="dwithin", distance=d_max).tolist()):
-                try:
-                    s, how = score(r.x, r.y, polys[i], cents[i], rho_max=rho_max, d_max=d_max)
-                except Exception:  # GEOS on an invalid polygon: this area is no candidate
-                    continue
-                if inside_first and how == "inside":
-                    s += 1000.0  # a text inside an area is that area's (nearby scores only for texts outside)
-                if s > best[0]:
-                    best = (s, i, how)
-            if best[0] > 1000.0:
-                best = (best[0] - 1000.0, best[1], best[2])
-            if best[1] is not None:
-                a = areas_ok[best[1]]
-                r.area_id, r.score, r.match = a.id, round(best[0], 2), best[2]
-                best_by_area.setdefault(a.id, []).append(r)
+        _place_records(room, index, best_by_area, rules, rho_max, d_max, inside_first, progress)
     progress.step(50, "naming areas")
     by_id = {a.id: a for a in areas}
     # ---- split areas holding several different names
@@ -727,6 +732,22 @@ def assign_names(areas: List[Area], texts: Sequence[CadText], level="1", rules=N
                 report.new_passages.extend(pieces[0].tags.pop("_new_passages", []))
                 progress.info(f"area {aid} held {len(names)} room names ({', '.join(r.text for r in names.values())}); "
                               f"split along the narrowing between them into areas {[p.id for p in pieces]}")
+    # ---- texts of frozen / off layers: names for areas that no visible text names
+    if hidden_texts:
+        hl = [l for l in classify_labels(list(hidden_texts), rules) if l.role in ("name", "number")]
+        report.hidden = [TextRecord(l.ids, l.text, l.x, l.y, l.layer, l.role, l.reason, hidden=True) for l in hl]
+        # scored against every area (a hidden text inside a named room must not drift to its neighbour),
+        # kept only where the best area has no visible name or number
+        cand = [a for a in areas if a.polygon is not None and not a.polygon.is_empty and a.polygon.area > 0
+                and a.type != "structure"]
+        taken_before = {aid for aid, recs in best_by_area.items() if recs}
+        if report.hidden:
+            polys = [a.polygon for a in cand]
+            no_code = {aid for aid, recs in best_by_area.items() if not any(_vertical_code(r, rules) for r in recs)}
+            _place_records(report.hidden, (cand, polys, STRtree(polys), [p.centroid for p in polys]), best_by_area,
+                           rules, rho_max, d_max, inside_first, None, only=lambda aid: aid not in taken_before,
+                           only_vertical=lambda aid: aid not in taken_before or aid in no_code)
+    _demote_thing_labels(best_by_area)
     # ---- names, refs, label fields
     for a in areas:
         if a.type == "structure":
@@ -735,7 +756,9 @@ def assign_names(areas: List[Area], texts: Sequence[CadText], level="1", rules=N
         for k in LABEL_FIELDS:
             a.tags.pop(k, None)
         names = sorted([r for r in recs if r.role == "name"], key=lambda r: (not _strong(r), -r.score, r.ids[0]))
-        nums = sorted([r for r in recs if r.role == "number"], key=lambda r: (-r.score, r.ids[0]))
+        vertical = a.type in ("stairs", "elevator")
+        nums = sorted([r for r in recs if r.role == "number"],
+                      key=lambda r: (not (vertical and _vertical_code(r, rules)), r.hidden, -r.score, r.ids[0]))
         distinct = _competing(recs)
         a.name = a.name if (a.name and not recs and not _looks_auto(a.name)) else ""
         a.ref = ""
@@ -805,6 +828,145 @@ def assign_names(areas: List[Area], texts: Sequence[CadText], level="1", rules=N
     return report
 
 
+def _vertical_code(r: "TextRecord", rules) -> Optional[str]:
+    """'stairs' / 'elevator' when the text is a stair or lift code (E1-ST-03, E2-P1/P2, a detail callout
+    naming one), else None. Keyword names ('Stair A', '楼梯间') are not codes: they label the space they
+    are written in."""
+    if r.role != "number":
+        return None
+    t = (type_of_name("", r.text, rules) or {}).get("type")
+    return t if t in ("stairs", "elevator") else None
+
+
+def _max_area(rules, vtype: str) -> float:
+    return float((rules.vertical_max_area or {}).get(vtype, 80.0))
+
+
+def _place_records(room: Sequence["TextRecord"], index, best_by_area: Dict[int, List["TextRecord"]], rules,
+                   rho_max: float, d_max: float, inside_first: bool, progress=None, only=None,
+                   only_vertical=None) -> None:
+    """Give each room text to its best-scoring area (paper score; inside first). ``only``: a predicate on
+    area ids an area must pass to take a text. Stair and lift codes (``_vertical_code``) that are detail
+    callouts, or whose best area is larger than a stair core / lift shaft can be (an atrium with an open
+    stair), go to ``_place_vertical`` instead (``only_vertical``: its extra eligibility predicate)."""
+    areas_ok, polys, tree, cents = index
+    deferred = []
+    for n, r in enumerate(room):
+        if progress is not None and n % 200 == 0:
+            progress.step(15 + 35 * n / max(1, len(room)))
+        if not (math.isfinite(r.x) and math.isfinite(r.y)):
+            continue
+        vtype = _vertical_code(r, rules)
+        if vtype and r.reason == "callout":
+            deferred.append((r, vtype))
+            continue
+        p = Point(r.x, r.y)
+        best = (0.0, None, "")
+        for i in sorted(tree.query(p, predicate="dwithin", distance=d_max).tolist()):
+            try:
+                s, how = score(r.x, r.y, polys[i], cents[i], rho_max=rho_max, d_max=d_max)
+            except Exception:  # GEOS on an invalid polygon: this area is no candidate
+                continue
+            if inside_first and how == "inside":
+                s += 1000.0  # a text inside an area is that area's (nearby scores only for texts outside)
+            if s > best[0]:
+                best = (s, i, how)
+        if best[0] > 1000.0:
+            best = (best[0] - 1000.0, best[1], best[2])
+        if vtype and (best[1] is None or polys[best[1]].area > _max_area(rules, vtype)
+                      or areas_ok[best[1]].type == "corridor"
+                      or (only is not None and not only(areas_ok[best[1]].id))):
+            deferred.append((r, vtype))
+            continue
+        if best[1] is not None and (only is None or only(areas_ok[best[1]].id)):
+            a = areas_ok[best[1]]
+            r.area_id, r.score, r.match = a.id, round(best[0], 2), best[2]
+            best_by_area.setdefault(a.id, []).append(r)
+    if deferred:
+        _place_vertical(deferred, index, best_by_area, rules, rho_max, d_max, only_vertical or only)
+
+
+def _place_vertical(deferred, index, best_by_area, rules, rho_max, d_max, allow=None) -> None:
+    """Stair and lift codes written beside their stair or lift (a callout on a leader, a code next to an
+    open stair): each names the nearest small closed area within CALLOUT_REACH that is a stair (lift)
+    area (typed from its symbols, or named so by a visible keyword), else an unnamed room of at most half
+    that size within D_MAX; never a corridor nor an area of the other kind, never an area larger than
+    ``vertical_max_area``. Greedy by distance, one code per area (the same code twice is one).
+    The corridor or atrium the code lies in is never typed by it."""
+    areas_ok, polys, tree, cents = index
+    eff: Dict[int, str] = {}
+
+    def effective_type(a: Area) -> str:
+        """The area's type as its visible name says it ('客梯' is a lift even before typing; '中庭' is
+        no lift, whatever lift lines cross it), else its type from symbols."""
+        if a.id not in eff:
+            names = [r for r in best_by_area.get(a.id, []) if r.role == "name"]
+            t = a.type
+            if names:
+                e = type_of_name(max(names, key=lambda r: r.score).text, "", rules)
+                if e is not None:
+                    t = e["type"] if e["type"] in ("stairs", "elevator") else "room:named"
+            eff[a.id] = t
+        return eff[a.id]
+
+    pairs = []
+    for k, (r, vtype) in enumerate(deferred):
+        p = Point(r.x, r.y)
+        for i in tree.query(p, predicate="dwithin", distance=CALLOUT_REACH).tolist():
+            a = areas_ok[i]
+            if polys[i].area > _max_area(rules, vtype):
+                continue
+            d = float(polys[i].distance(p))
+            if effective_type(a) == vtype:
+                rank = 0
+            elif a.type == "room" and not best_by_area.get(a.id) and d <= d_max and \
+                    polys[i].area <= 0.5 * _max_area(rules, vtype):
+                rank = 1  # an unnamed small room right beside the code (nearby, as the paper's D_max)
+            else:
+                continue
+            if allow is not None and not allow(a.id):
+                continue
+            pairs.append((rank, d, k, i))
+    pairs.sort()
+    done = set()
+    code_of: Dict[int, str] = {}
+    for aid, recs in best_by_area.items():
+        for r in recs:
+            if _vertical_code(r, rules):
+                code_of.setdefault(aid, _key(r.text))
+    for rank, dist, k, i in pairs:
+        r, vtype = deferred[k]
+        a = areas_ok[i]
+        if k in done or code_of.get(a.id, _key(r.text)) != _key(r.text):
+            continue
+        done.add(k)
+        code_of[a.id] = _key(r.text)
+        r.area_id, r.match = a.id, "callout"
+        r.score = round(score(r.x, r.y, polys[i], cents[i], rho_max=rho_max, d_max=d_max)[0], 2)
+        best_by_area.setdefault(a.id, []).append(r)
+
+
+def _demote_thing_labels(best_by_area: Dict[int, List[TextRecord]]) -> None:
+    """A short keyword-less text ('copy', 'coffee', 'cassa') in an area named by a real room name (a
+    keyword, a room-name layer or tag) labels a thing in that room, unless the same text is the name of an
+    area of its own somewhere on the floor ('exposition' naming three halls is a room name, and one
+    inside the hall means hall and exposition space were not separated). Things are reported as ignored
+    ('label in a named room'), not as room names that lost their area."""
+    top: Dict[int, TextRecord] = {}
+    for aid, recs in best_by_area.items():
+        comp = _competing(recs)
+        if comp:
+            top[aid] = comp[0]
+    naming = {_key(r.text) for r in top.values()}
+    for aid, recs in best_by_area.items():
+        t = top.get(aid)
+        if t is None or not _strong(t):
+            continue
+        for r in recs:
+            if r.role == "name" and not r.hidden and not _strong(r) and _key(r.text) not in naming:
+                r.role, r.reason = "ignored", "label in a named room"
+
+
 def _strong(r: TextRecord) -> bool:
     """A name backed by more than its shortness: a room-name layer, block or tag, or a room keyword."""
     return r.reason not in ("short text", "text layer")
@@ -813,8 +975,12 @@ def _strong(r: TextRecord) -> bool:
 def _competing(recs: Sequence[TextRecord]) -> List[TextRecord]:
     """The distinct room names of an area that compete for it, best first: the strong names when there
     is one (a keyword-less short text beside 'Office' labels a thing in it, e.g. 'copy', 'coffee'),
-    else the short texts."""
-    names = sorted([r for r in recs if r.role == "name"], key=lambda r: (not _strong(r), -r.score, r.ids[0]))
+    else the short texts. A name written inside the area beats every name written outside it (nearby):
+    a label just outside a room belongs to a space segmentation did not make (a corridor eaten by the
+    envelope), it neither renames the room nor conflicts with the room's own label."""
+    names = [r for r in recs if r.role == "name"]
+    names = [r for r in names if r.match != "nearby"] or names
+    names.sort(key=lambda r: (not _strong(r), -r.score, r.ids[0]))
     strong = [r for r in names if _strong(r)]
     pool = strong or names
     out: List[TextRecord] = []
@@ -841,6 +1007,12 @@ def _type_areas(areas, best_by_area, passages, rules: NameRules, report: NamesRe
             a.tags.pop(k, None)
         named = bool(best_by_area.get(a.id))
         entry = type_of_name(a.name, a.ref, rules) if named else None
+        if entry is not None and entry["type"] in ("stairs", "elevator") and \
+                a.polygon.area > _max_area(rules, entry["type"]) and a.type not in ("stairs", "elevator"):
+            # far larger than a stair core or lift shaft (an atrium with an open stair, a hall with lifts):
+            # the name does not make it a stair or a lift
+            entry = _type_entry(normalize_text(a.name).casefold(), rules)
+            entry = entry[1] if entry and entry[1]["type"] not in ("stairs", "elevator") else None
         rec = report.name_record.get(a.id)
         # the text beats the symbol density of area_types when it says stairs/lift, or when it is the
         # area's own label (inside, near the centre): a lobby is not a lift because lift lines cross it

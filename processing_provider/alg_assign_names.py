@@ -34,8 +34,11 @@ def _val(feat, names, field_names, default=None):
     return default
 
 
-def read_texts(source):
-    """TEXTS points (extractstructure's text output, or any point layer with a 'text' field) -> CadText."""
+def read_texts(source, with_hidden: bool = False):
+    """TEXTS points (extractstructure's text output, or any point layer with a 'text' field) -> CadText.
+    ``with_hidden``: return (visible, hidden): texts whose 'hidden' field is true come from frozen / off
+    layers (semantics.assign_names' ``hidden_texts``)."""
+    hid = []
     names = source.fields().names()
     if "text" not in names:
         raise QgsProcessingException(
@@ -57,12 +60,14 @@ def read_texts(source):
             rot = float(_val(f, ("rotation",), names, 0.0) or 0.0)
         except (TypeError, ValueError):
             h, rot = 0.0, 0.0
-        out.append(CadText(x=float(g.x), y=float(g.y), text=str(_val(f, ("text",), names, "") or ""), height=h,
+        t = (CadText(x=float(g.x), y=float(g.y), text=str(_val(f, ("text",), names, "") or ""), height=h,
                            rotation=rot, layer=str(_val(f, ("layer",), names, "") or ""),
                            entity=str(_val(f, ("entity",), names, "TEXT") or "TEXT"),
                            block=str(_val(f, ("block",), names, "") or ""), tag=str(_val(f, ("tag",), names, "") or ""),
                            id=tid))
-    return out
+        hidden = str(_val(f, ("hidden",), names, False)).strip().lower() in ("true", "1", "yes", "t")
+        (hid if hidden else out).append(t)
+    return (out, hid) if with_hidden else out
 
 
 def named_area_fields(areas):
@@ -181,7 +186,7 @@ class AssignNamesAlgorithm(Cad2OsmagAlgorithm):
                 "(before georeferencing) or reproject to a projected CRS"))
         areas = read_areas(src)
         passages = read_passages(psrc, areas) if psrc is not None else None
-        texts = read_texts(tsrc)
+        texts, hidden = read_texts(tsrc, with_hidden=True)
         level = (self.parameterAsString(parameters, self.LEVEL, context) or "").strip()
         if not level:
             levels = sorted({str(a.tags.get("level", "")).strip() for a in areas} - {""})
@@ -189,7 +194,8 @@ class AssignNamesAlgorithm(Cad2OsmagAlgorithm):
         rules_path = self.parameterAsFile(parameters, self.NAME_RULES, context) or None
         rules = self.call(feedback, _load, rules_path)
         report = self.call(feedback, semantics.assign_names, areas, texts, level, rules=rules,
-                           passages=passages, split=self.parameterAsBool(parameters, self.SPLIT, context))
+                           passages=passages, split=self.parameterAsBool(parameters, self.SPLIT, context),
+                           hidden_texts=hidden)
         feedback.pushInfo(report.summary())
         # write
         af = named_area_fields(areas)

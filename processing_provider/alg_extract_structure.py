@@ -44,7 +44,7 @@ def wall_fields():
 def text_fields():
     return make_fields(("text", FIELD_STRING), ("height", FIELD_DOUBLE), ("rotation", FIELD_DOUBLE),
                        ("layer", FIELD_STRING), ("entity", FIELD_STRING), ("block", FIELD_STRING),
-                       ("tag", FIELD_STRING), ("id", FIELD_LONG))
+                       ("tag", FIELD_STRING), ("id", FIELD_LONG), ("hidden", FIELD_BOOL))
 
 
 def door_fields():
@@ -119,7 +119,8 @@ class ExtractStructureAlgorithm(Cad2OsmagAlgorithm):
             "Outputs, in metres in the drawing's own frame (a local engineering CRS, not georeferenced): "
             "WALLS (lines with fields layer, kind, entity, closed, filled, width; 'Rasterize structure' "
             "rebuilds the geometry from them; block, class), TEXTS (points with text, height, rotation, layer, "
-            "entity, block, tag = ATTRIB tag, id; 'Assign room names and types from texts' reads them) and DOORS (doorway lines with source and width). "
+            "entity, block, tag = ATTRIB tag, id, hidden = on a frozen or off layer; 'Assign room names and types "
+            "from texts' reads them) and DOORS (doorway lines with source and width). "
             "Figures: PLANS (the plans found on the sheet) and PLAN_COUNT (their number), DOOR_COUNT (doorways "
             "found), CLASSES (entities counted per class), UNIT and UNIT_SCALE (the unit used and metres per "
             "drawing unit), GEOMETRY_COUNT (structure features written) and TEXT_COUNT (texts written).")
@@ -195,7 +196,15 @@ class ExtractStructureAlgorithm(Cad2OsmagAlgorithm):
             f.setGeometry(QgsGeometry.fromPointXY(QgsPointXY(t.x, t.y)))
             # block, tag and id feed cad2osmag:assignnames (room tags, the ids listed in label_texts)
             f.setAttributes([t.text, float(t.height), float(t.rotation), t.layer, t.entity, t.block or "",
-                             t.tag or "", int(t.id) if t.id is not None and t.id >= 0 else k])
+                             t.tag or "", int(t.id) if t.id is not None and t.id >= 0 else k, False])
+            texts.append(f)
+        n_visible = len(texts)
+        # texts of frozen / off layers (hidden = true): assignnames names only areas no visible text names
+        for k, t in enumerate(getattr(drawing, "hidden_texts", []) or []):
+            f = QgsFeature(tf)
+            f.setGeometry(QgsGeometry.fromPointXY(QgsPointXY(t.x, t.y)))
+            f.setAttributes([t.text, float(t.height), float(t.rotation), t.layer, t.entity, t.block or "",
+                             t.tag or "", int(t.id) if t.id is not None and t.id >= 0 else n_visible + k, True])
             texts.append(f)
         df = door_fields()
         doors = []
@@ -224,9 +233,9 @@ class ExtractStructureAlgorithm(Cad2OsmagAlgorithm):
         feedback.pushInfo(self.tr("Sheet: {}").format(plans))
         kept = sorted({g.layer for g in drawing.geometries})
         feedback.pushInfo(self.tr("Kept {} features on layers: {}; {} texts; unit {} (header: {})").format(
-            len(walls), ", ".join(kept), len(texts), drawing.unit_name, drawing.header_unit))
+            len(walls), ", ".join(kept), n_visible, drawing.unit_name, drawing.header_unit))
         out = {self.WALLS: wdest, self.TEXTS: tdest, "UNIT": drawing.unit_name,
-               "UNIT_SCALE": drawing.unit_scale, "GEOMETRY_COUNT": len(walls), "TEXT_COUNT": len(texts),
+               "UNIT_SCALE": drawing.unit_scale, "GEOMETRY_COUNT": len(walls), "TEXT_COUNT": n_visible,
                "PLANS": plans, "PLAN_COUNT": len(drawing.plans), "DOOR_COUNT": len(doors), "CLASSES": classes}
         if ddest is not None:
             out[self.DOORS] = ddest

@@ -82,7 +82,9 @@ def print_table(results, out=sys.stdout):
         if r["ok"] and r.get("ignored_by_reason"):
             ign = ", ".join(f"{k} {v}" for k, v in sorted(r["ignored_by_reason"].items(), key=lambda kv: -kv[1]))
             print(f"  {r['plan']}: ignored {r['ignored']} ({ign}); {r.get('outside', 0)} room texts outside "
-                  f"every area; {r.get('splits', 0)} areas split", file=out)
+                  f"every area; {r.get('splits', 0)} areas split"
+                  + (f"; {r['hidden_used']} of {r['hidden_texts']} room texts of frozen/off layers named an area"
+                     if r.get("hidden_texts") else ""), file=out)
     tot = totals(results)
     print(f"\nplans {tot['plans']}, converted {tot['converted']}; over the {tot['plans_with_text']} plans with room "
           f"text: {tot['room_texts']} room-name texts, {_pct(tot['inside_pct'])} % inside an area, "

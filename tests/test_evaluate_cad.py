@@ -44,7 +44,7 @@ def test_figures_per_plan_on_a_folder(folder, tmp_path, capsys):
     assert s["ok"] and s["room_texts"] == 18 and s["inside_pct"] == 100.0 and s["own_area_pct"] == 100.0
     assert s["named_areas"] == 18 and s["conflicts"] == 0 and s["semantic_accuracy_pct"] == 100.0
     assert s["stairs"] == 1 and s["elevators"] == 1 and s["largest_component_pct"] >= 95.0
-    assert s["areas"] >= 18 and s["passages"] >= 17
+    assert s["areas"] >= 18 and s["passages"] >= 17 and s["hidden_texts"] == 0 == s["hidden_used"]
     tot = data["totals"]
     assert tot["plans"] == 2 and tot["converted"] == 1 and tot["own_area_pct"] == 100.0
 
@@ -63,3 +63,18 @@ def test_command_line_and_empty_folder(tmp_path):
 def test_makefile_target(repo_root):
     mk = (repo_root / "Makefile").read_text()
     assert "evaluate-cad:" in mk and "scripts/evaluate_cad.py $(if $(DATA),--data $(DATA),)" in mk
+
+
+@pytest.mark.slow
+def test_archweb_room_names_reach_the_issue_targets(shared_data):
+    """Issue 9 over the shared ArchWeb plans with room text: >= 90 % of room-name texts name an area of
+    their own, <= 5 % of named areas hold two names, semantic accuracy above the paper's 91.2 %
+    (measured 2026-12-01: 90.0 %, 4.1 %, 95.9 % over 80 texts and 74 named areas)."""
+    ev = _module()
+    plans = ["Aule-scolastiche-pianta-1.dxf", "CASONA_DE_YANAHUARA.dxf", "historical_museum.dxf", "schema-ufficio-1.dxf"]
+    results = [ev.evaluate_plan(shared_data / "dxf" / "archweb" / p) for p in plans]
+    assert all(r["ok"] for r in results), [r.get("error") for r in results]
+    tot = ev.totals(results)
+    assert tot["plans_with_text"] == 4 and tot["room_texts"] >= 75
+    assert tot["own_area_pct"] >= 90.0 and tot["conflict_pct"] <= 5.0, tot
+    assert tot["semantic_accuracy_pct"] > 91.2, tot

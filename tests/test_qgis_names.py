@@ -98,3 +98,26 @@ def test_dxftoosmag_names_switch_and_renames_survive_export(sample, tmp_path):
     ends = [(p.tags["osmAG:from"], p.tags["osmAG:to"]) for p in passages2]
     assert any("Director" in e for e in ends) and not any(old in e for e in ends)
     assert len(passages2) == len(passages) and not report["dangling_refs"]
+
+
+@pytest.mark.qgis_process
+def test_texts_of_frozen_layers_name_rooms_headless(tmp_path):
+    from .test_semantics_hidden import _plan_with_frozen_annotations
+
+    d = tmp_path
+    dxf = str(d / "frozen.dxf")
+    _plan_with_frozen_annotations(dxf)
+    _, res, _ = run_alg("extractstructure", {"INPUT": dxf, "WALLS": str(d / "walls.gpkg"), "TEXTS": str(d / "texts.gpkg")})
+    assert res["TEXT_COUNT"] == 1  # the visible texts
+    fields, texts = _features(d / "texts.gpkg")
+    assert "hidden" in fields
+    assert sorted(t["text"] for t in texts if t["hidden"]) == ["Archive", "Laboratory", "Store"]
+    assert sorted(t["id"] for t in texts) == [0, 1, 2, 3]
+    run_alg("rasterize", {"WALLS": str(d / "walls.gpkg"), "OCCUPANCY": str(d / "occ.tif")})
+    run_alg("segment", {"INPUT": str(d / "occ.tif"), "STRUCTURE": str(d / "walls.gpkg"), "AREAS": str(d / "areas.gpkg"),
+                        "PASSAGES": str(d / "passages.gpkg"), "LABELS": str(d / "labels.tif")})
+    _, res, log = run_alg("assignnames", {"AREAS": str(d / "areas.gpkg"), "TEXTS": str(d / "texts.gpkg"),
+                                          "OUTPUT_AREAS": str(d / "named.gpkg")})
+    assert "frozen/off layers" in log
+    _, areas = _features(d / "named.gpkg")
+    assert sorted(a["name"] for a in areas) == ["Laboratory", "Office", "Store"]

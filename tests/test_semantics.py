@@ -373,9 +373,10 @@ def test_archweb_texts_classified_as_read_by_hand(shared_data, plan):
 @pytest.mark.slow
 @pytest.mark.parametrize("plan,floors", [
     # measured figures (make evaluate-cad), kept as floors against regressions; see README for the targets
-    ("schema-ufficio-1.dxf", {"inside_pct": 95, "own_area_pct": 55, "semantic_accuracy_pct": 90, "max_conflicts": 2}),
-    ("historical_museum.dxf", {"inside_pct": 85, "own_area_pct": 30, "semantic_accuracy_pct": 80, "max_conflicts": 4}),
-    ("Aule-scolastiche-pianta-1.dxf", {"inside_pct": 80, "own_area_pct": 60, "semantic_accuracy_pct": 70, "max_conflicts": 1}),
+    # (2026-12-01: ufficio 100 / 78.9 / 100 / 2, museum 97.0 / 90.9 / 96.7 / 1, Aule 80 / 80 / 100 / 0)
+    ("schema-ufficio-1.dxf", {"inside_pct": 95, "own_area_pct": 75, "semantic_accuracy_pct": 95, "max_conflicts": 2}),
+    ("historical_museum.dxf", {"inside_pct": 95, "own_area_pct": 85, "semantic_accuracy_pct": 90, "max_conflicts": 2}),
+    ("Aule-scolastiche-pianta-1.dxf", {"inside_pct": 80, "own_area_pct": 75, "semantic_accuracy_pct": 95, "max_conflicts": 0}),
 ])
 def test_archweb_names_figures(shared_data, plan, floors):
     from algorithms import pipeline
@@ -425,6 +426,9 @@ DWG_VERTICAL = {
 }
 
 
+TYPED_AT_LEAST = {"sist-original/SIST-F4.dwg": 9}  # codes that name a stair/lift area (measured 2026-12-01)
+
+
 def _dwg_reader():
     try:
         from algorithms import cad_dwg  # noqa: F401  (task A: DWG reading)
@@ -440,17 +444,13 @@ def _dwg_reader():
 def test_dwg_stair_and_lift_names_found(shared_data, sheet):
     read = _dwg_reader()
     drawing = read(str(shared_data / "dwg" / sheet), plan="-1e9,-1e9,1e9,1e9")  # every code on the sheet
-    labs = S.classify_labels(drawing.texts)
+    # texts of frozen / off layers count: SIST-F4 freezes the A-TEXT layer holding 15 of its 18 callouts
+    labs = S.classify_labels(list(drawing.texts) + list(getattr(drawing, "hidden_texts", [])))
     stairs = {lab.text for lab in labs if lab.role in ("name", "number")
               and (S.type_of_name(lab.text, lab.text) or {}).get("type") == "stairs"}
     lifts = {lab.text for lab in labs if lab.role in ("name", "number")
              and (S.type_of_name(lab.text, lab.text) or {}).get("type") == "elevator" and "-" in lab.text}
     want_st, want_el = DWG_VERTICAL[sheet]
-    if sheet.endswith("SIST-F4.dwg") and (stairs, lifts) != (want_st, want_el):
-        # known open defect since the fusion work's name rules (2026-12-01): on F4 most stair codes sit in
-        # callouts that are no longer read as codes ("E1-ST-01详见建施…"); the hand count stays the target
-        pytest.xfail(f"SIST-F4 stair/lift codes found {sorted(stairs | lifts)}, hand count "
-                     f"{sorted(want_st | want_el)}")
     assert stairs == want_st and lifts == want_el
     chinese = [lab for lab in labs if lab.role == "name" and any("\u4e00" <= ch <= "\u9fff" for ch in lab.text)]
     if sheet.startswith("sist"):
@@ -474,6 +474,12 @@ def test_dwg_stairs_and_lifts_become_typed_areas(shared_data, sheet):
     assert plan or not (want_st | want_el), "no stair or lift of the sheet named an area"
     for code in plan:
         assert typed[code] <= ({"stairs"} if code in want_st else {"elevator"}), (code, typed[code])
+    # measured: on SIST-F4 9 of the 18 codes name a stair/lift area (6 of 14 stairs, 3 of 4 lift groups);
+    # the rest are open stairs in atria or outdoors and shafts merged into a corridor (segmentation)
+    assert len(plan) >= TYPED_AT_LEAST.get(sheet, 0), sorted(plan)
+    for a in floor.refined.areas:  # a code never makes an atrium a stair
+        if a.type in ("stairs", "elevator") and any(c in (a.ref or "") for c in want_st | want_el):
+            assert a.polygon.area <= 80.0, (a.name, a.polygon.area)
     if sheet.startswith("sist"):
         assert sum(1 for a in floor.refined.areas if any("\u4e00" <= ch <= "\u9fff" for ch in a.name)) >= 10
 
