@@ -243,8 +243,8 @@ Ausgaben: OUTPUT_AREAS, die benannten Flächen (Felder name, ref, type, indoor, 
     </message>
     <message>
       <location filename="../models/cad_to_osmag.model3" />
-      <source>The floor plan (DXF).</source>
-      <translation>Der Grundriss (DXF).</translation>
+      <source>The floor plan (DXF, or DWG as delivered: the main plan of a sheet is converted).</source>
+      <translation>Der Grundriss (DXF, oder DWG wie geliefert: der Hauptplan eines Blatts wird umgewandelt).</translation>
     </message>
     <message>
       <location filename="../models/cad_to_osmag.model3" />
@@ -293,8 +293,8 @@ Ausgaben: OUTPUT_AREAS, die benannten Flächen (Felder name, ref, type, indoor, 
     </message>
     <message>
       <location filename="../models/cad_to_osmag.model3" />
-      <source>DXF floor plan</source>
-      <translation>DXF-Grundriss</translation>
+      <source>DXF or DWG floor plan</source>
+      <translation>DXF- oder DWG-Grundriss</translation>
     </message>
     <message>
       <location filename="../models/cad_to_osmag.model3" />

@@ -243,8 +243,8 @@ PASSAGES（可选）：区域的通道；被拆分的区域获得各自的通道
     </message>
     <message>
       <location filename="../models/cad_to_osmag.model3" />
-      <source>The floor plan (DXF).</source>
-      <translation>平面图（DXF）。</translation>
+      <source>The floor plan (DXF, or DWG as delivered: the main plan of a sheet is converted).</source>
+      <translation>平面图（DXF，或原样交付的 DWG：转换图幅上的主平面图）。</translation>
     </message>
     <message>
       <location filename="../models/cad_to_osmag.model3" />
@@ -293,8 +293,8 @@ PASSAGES（可选）：区域的通道；被拆分的区域获得各自的通道
     </message>
     <message>
       <location filename="../models/cad_to_osmag.model3" />
-      <source>DXF floor plan</source>
-      <translation>DXF 平面图</translation>
+      <source>DXF or DWG floor plan</source>
+      <translation>DXF 或 DWG 平面图</translation>
     </message>
     <message>
       <location filename="../models/cad_to_osmag.model3" />

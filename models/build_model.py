@@ -40,7 +40,7 @@ def build():
                     "Graph (stairs and lifts typed from the drawing), refine the areas, georeference them "
                     "(the drawing origin at ANCHOR, ROTATION clockwise from north, SCALE) and export osmAG. "
                     "Open it in the graphical modeler to add or change steps.",
-        "DXF": "The floor plan (DXF).",
+        "DXF": "The floor plan (DXF, or DWG as delivered: the main plan of a sheet is converted).",
         "ANCHOR": "Where the drawing origin (0, 0) lies on the map: pick it on a basemap, or use the "
                   "placement of Vector ▸ CAD to osmAG ▸ Place a floor plan on the map.",
         "ROTATION": "Direction of the drawing's +y axis, in degrees clockwise from north.",
@@ -53,7 +53,8 @@ def build():
         "OSM": "The osmAG file written (.osm).",
     })
     inputs = [
-        (QgsProcessingParameterFile("DXF", "DXF floor plan", extension="dxf"), QPointF(120, 60)),
+        (QgsProcessingParameterFile("DXF", "DXF or DWG floor plan",
+                                    fileFilter="CAD drawings (*.dxf *.DXF *.dwg *.DWG)"), QPointF(120, 60)),
         (QgsProcessingParameterPoint("ANCHOR", "Position of the drawing origin"), QPointF(120, 420)),
         (QgsProcessingParameterNumber("ROTATION", "Rotation (degrees clockwise from north)",
                                       QgsProcessingParameterNumber.Type.Double, 0.0, False, -360.0, 360.0),

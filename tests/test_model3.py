@@ -102,3 +102,26 @@ def test_model_runs_headless_on_the_sample_building(sample, tmp_path):
     assert math.degrees(math.atan2(x1 - x0, y1 - y0)) % 180.0 == pytest.approx(120.0, abs=1.0)
     assert 500 < floor.area < 1100  # m², the sample floor (not squared degrees)
     assert (tmp_path / "areas.gpkg").is_file() and (tmp_path / "passages.gpkg").is_file()
+
+
+@pytest.mark.slow
+def test_model_runs_headless_on_a_dwg_sheet(shared_data, tmp_path):
+    """The model takes a DWG sheet as delivered (title frame, legends, details): the main plan is converted."""
+    sheet = shared_data / "dwg" / "sist-original" / "SIST-F3.dwg"
+    if not sheet.is_file():
+        pytest.skip("SIST-F3.dwg not in ../shared")
+    out = tmp_path / "SIST-F3.osm"
+    args = [str(REPO / "scripts" / "qgis-process"), "--json", "run", str(MODEL), "--",
+            f"DXF={sheet}", f"ANCHOR={ANCHOR[0]},{ANCHOR[1]} [EPSG:4326]", "ROTATION=0", "SCALE=1",
+            "LEVEL=3", "RESOLUTION=0.044", "DOOR_WIDTH=2.8", "CORRIDOR_WIDTH=8", "MIN_AREA=10",
+            f"export:OSM={out}", f"georef:Areas={tmp_path / 'areas.gpkg'}",
+            f"georef:Passages={tmp_path / 'passages.gpkg'}"]
+    proc = subprocess.run(args, capture_output=True, text=True, timeout=1200, stdin=subprocess.DEVNULL)
+    assert proc.returncode == 0, (proc.stdout + proc.stderr)[-4000:]
+    areas, passages, root, _ = osmag.read_osmag(str(out))
+    assert root == pytest.approx(ANCHOR, abs=1e-8)
+    assert len(areas) >= 40 and len(passages) >= 40
+    kinds = {a.type for a in areas}
+    assert {"room", "corridor", "stairs"} <= kinds, kinds
+    # Chinese room names from the sheet's texts and block attributes
+    assert sum(1 for a in areas if a.name and any("\u4e00" <= c <= "\u9fff" for c in a.name)) >= 10
