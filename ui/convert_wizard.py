@@ -36,6 +36,7 @@ from qgis.PyQt.QtWidgets import (
     QDoubleSpinBox,
     QFileDialog,
     QFormLayout,
+    QHeaderView,
     QHBoxLayout,
     QLabel,
     QLineEdit,
@@ -168,6 +169,7 @@ class FilesPage(QWizardPage):
         self.layers = QTableWidget(0, 4)
         self.layers.setHorizontalHeaderLabels([tr("Layer"), tr("Kind"), tr("Kept"), tr("Entities")])
         self.layers.setEditTriggers(QAbstractItemView.EditTrigger.NoEditTriggers)
+        self.layers.horizontalHeader().setSectionResizeMode(0, QHeaderView.ResizeMode.Stretch)  # full xref names
         lay.addWidget(self.layers, 2)
         self.summary = QLabel("")
         lay.addWidget(self.summary)
@@ -181,6 +183,7 @@ class FilesPage(QWizardPage):
         self.plans = QTableWidget(0, 4)
         self.plans.setHorizontalHeaderLabels([tr("Plan"), tr("Kind"), tr("Size"), tr("Title")])
         self.plans.setEditTriggers(QAbstractItemView.EditTrigger.NoEditTriggers)
+        self.plans.horizontalHeader().setStretchLastSection(True)  # the title
         self.plans.setSelectionBehavior(QAbstractItemView.SelectionBehavior.SelectRows)
         self.plans.setSelectionMode(QAbstractItemView.SelectionMode.SingleSelection)
         self.plans.itemSelectionChanged.connect(self._plan_row_picked)
@@ -787,7 +790,6 @@ class NamesPage(QWizardPage):
         lay = QVBoxLayout(self)
         self.table = QTableWidget(0, 4)
         self.table.setHorizontalHeaderLabels([tr("Level"), tr("Area"), tr("Name"), tr("Type")])
-        from qgis.PyQt.QtWidgets import QHeaderView
 
         self.table.horizontalHeader().setSectionResizeMode(2, QHeaderView.ResizeMode.Stretch)
         lay.addWidget(self.table, 1)
