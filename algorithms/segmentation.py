@@ -815,16 +815,18 @@ WALL_MIN_M = 1.0  # a wall face is a straight run of at least this length (not c
 CUT_MIN_M = 0.5  # gaps in a wall line narrower than this are scan gaps, not openings
 CUT_RATIO = 0.8  # an opening in a wall line is a door when it is narrower than this x both spaces along the line
 CUT_DEPTH = 0.5  # ... and both spaces reach at least this x the opening's width behind it
+WALLS_OBSERVED = True  # wall lines run along occupied cells only (not along unknown space) ...
+OBSERVED_SHARE = 0.1  # ... unless less than this share of the space's border is occupied (walls drawn grey)
 CUT_MIN_ROOM_M = 1.0  # ... and both are at least a (1 m)^2 space (and CUT_DEPTH x the opening squared)
 
 
-def _wall_faces(space: np.ndarray, resolution: float) -> np.ndarray:
+def _wall_faces(space: np.ndarray, resolution: float, occupied: Optional[np.ndarray] = None) -> np.ndarray:
     """Straight wall faces (Hough segments of obstacle pixels next to free space), int32 (n, 4):
-    x1, y1, x2, y2 in px."""
+    x1, y1, x2, y2 in px. With ``occupied``, only observed obstacles make faces (``_observed_walls``)."""
     import cv2
 
     k = np.ones((3, 3), np.uint8)
-    face = ~space & cv2.dilate(space.view(np.uint8), k).view(bool)
+    face = (~space if occupied is None else occupied) & cv2.dilate(space.view(np.uint8), k).view(bool)
     min_len = max(4, int(round(WALL_MIN_M / resolution)))
     segs = cv2.HoughLinesP(face.view(np.uint8) * np.uint8(255), 1, np.pi / 180, threshold=max(3, int(0.7 * min_len)),
                            minLineLength=min_len, maxLineGap=2)
@@ -833,12 +835,35 @@ def _wall_faces(space: np.ndarray, resolution: float) -> np.ndarray:
     return segs.reshape(-1, 4).astype(np.int32)
 
 
-def _wall_line_openings(space: np.ndarray, labels: np.ndarray, resolution: float, max_cut_m: float):
+def _observed_walls(data: np.ndarray, space: np.ndarray) -> Optional[np.ndarray]:
+    """Obstacles a wall line can run along: the occupied cells (not the space). Unknown cells are not
+    walls: on a recorded map the unknown wedge behind an open door leaf or a desk is where the laser
+    did not see, and its straight edges continued across a room cut it diagonally. None when the
+    grid has no unknown cells, and when hardly any of the space's border is occupied (a map that
+    draws its walls in grey: there the unknown cells are the walls)."""
+    import cv2
+
+    if not WALLS_OBSERVED:
+        return None
+    unknown = data == UNKNOWN
+    if not unknown.any():
+        return None
+    border = ~space & cv2.dilate(space.view(np.uint8), np.ones((3, 3), np.uint8)).view(bool)
+    n_border = int(np.count_nonzero(border))
+    if n_border == 0 or np.count_nonzero(border & ~unknown) < OBSERVED_SHARE * n_border:
+        return None
+    return ~space & ~unknown
+
+
+def _wall_line_openings(space: np.ndarray, labels: np.ndarray, resolution: float, max_cut_m: float,
+                        occupied: Optional[np.ndarray] = None):
     """Openings in wall lines: a wall face that ends in free space is continued along its own line
     to the next obstacle; runs of free space between ``CUT_MIN_M`` and ``max_cut_m`` long are
     candidate openings. Returns a list of ((x0, y0, x1, y1) px ends of the free run, length px,
-    unit direction (dy, dx)). ``labels`` is unused (kept for the call signature)."""
-    segs = _wall_faces(space, resolution)
+    unit direction (dy, dx)). ``labels`` is unused (kept for the call signature). ``occupied``: the
+    observed obstacles (``_observed_walls``); without it every non-space pixel can be a wall."""
+    segs = _wall_faces(space, resolution, occupied)
+    wall = ~space if occupied is None else occupied
     rows, cols = space.shape
     max_px = max_cut_m / resolution
     min_px = CUT_MIN_M / resolution
@@ -871,7 +896,7 @@ def _wall_line_openings(space: np.ndarray, labels: np.ndarray, resolution: float
         sx = np.clip(np.rint(xs - uy * sgn).astype(np.int64), 0, cols - 1)
         sy = np.clip(np.rint(ys + ux * sgn).astype(np.int64), 0, rows - 1)
         side |= space[sy, sx]
-    along_face = ~space[ys, xs] & side & inb
+    along_face = wall[ys, xs] & side & inb
     k = np.argmin(along_face, axis=1)
     rr = np.arange(len(k))
     valid = ~along_face.all(axis=1) & inb[rr, k] & space[ys[rr, k], xs[rr, k]]
@@ -939,7 +964,7 @@ def _judge_opening(comp: np.ndarray, find, key, run: float, ux: float, uy: float
 
 
 def _split_at_wall_openings(labels: np.ndarray, space: np.ndarray, resolution: float, max_cut_m: float,
-                            dist: np.ndarray, peaks: dict, grown: dict):
+                            dist: np.ndarray, peaks: dict, grown: dict, occupied: Optional[np.ndarray] = None):
     """Rooms open to a corridor (or to each other) through an opening wider than a door but in a
     wall line: the wall's own line continued across the opening cuts the area in two when the
     opening is clearly narrower than the spaces on both sides measured along the line
@@ -952,7 +977,7 @@ def _split_at_wall_openings(labels: np.ndarray, space: np.ndarray, resolution: f
     import cv2
     from scipy import ndimage as ndi
 
-    openings = _wall_line_openings(space, labels, resolution, max_cut_m)
+    openings = _wall_line_openings(space, labels, resolution, max_cut_m, occupied)
     if not openings:
         return labels, 0
     cut_id = np.zeros(labels.shape, np.int32)
@@ -1071,13 +1096,13 @@ def _split_at_wall_openings(labels: np.ndarray, space: np.ndarray, resolution: f
 
 
 def _wall_line_doors(labels: np.ndarray, space: np.ndarray, dist: np.ndarray, resolution: float,
-                     max_cut_m: float, group_peak: np.ndarray, stats: dict):
+                     max_cut_m: float, group_peak: np.ndarray, stats: dict, occupied: Optional[np.ndarray] = None):
     """``_split_at_wall_openings`` on the merged labels; new areas get their clearance peak.
     Returns (labels, group_peak)."""
     t = time.perf_counter()
     peaks: dict = {}
     grown: dict = {}
-    labels, n_cuts = _split_at_wall_openings(labels, space, resolution, max_cut_m, dist, peaks, grown)
+    labels, n_cuts = _split_at_wall_openings(labels, space, resolution, max_cut_m, dist, peaks, grown, occupied)
     stats["wall_line_doors"] = float(n_cuts)
     if peaks or grown:
         top = max(list(peaks) + list(grown))
@@ -1463,7 +1488,7 @@ def segment(grid: OccupancyGrid, door_width: float = DEFAULT_DOOR_WIDTH,
     labels = _single_pieces(labels)
     if WALL_CUTS:
         labels, group_peak = _wall_line_doors(labels, space, dist, res, max(door_width + delta, envelope_gap),
-                                              group_peak, stats)
+                                              group_peak, stats, _observed_walls(data, space))
     labels, group_peak, dropped_px = _drop_outside_pockets(labels, free & ~interior, group_peak,
                                                            info.get("claimed"), info.get("inside_pixels"))
     info.pop("claimed", None)
