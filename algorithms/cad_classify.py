@@ -227,6 +227,56 @@ def swing_candidates(pieces, infos, scale: float) -> List[CadGeometry]:
     return out
 
 
+# ------------------------------------------------------------------------------------------ boundary evidence
+# layer names of projection / overhead / hidden lines (what lies above or beyond the cut: canopies, the edge of
+# a corridor open on one side, a portico)
+PROJECTION_LAYER_WORDS = ("proiez", "projection", "projektion", "proyecc", "overhead", "ovhd", "hidden", "隐藏",
+                          "虚线", "投影", "uberkopf", "überkopf", "au-dessus", "sopra")
+BOUNDARY_TYPES = ("LINE", "LWPOLYLINE", "POLYLINE", "ARC", "SPLINE", "ELLIPSE")
+BOUNDARY_MIN_LEN = 1.0  # metres: shorter pieces (hatch dashes, symbols) say nothing about a boundary
+
+
+def _boundary_layer(info) -> bool:
+    """A layer whose lines may be boundary evidence: dropped by the rules for no keyword, or for a hidden /
+    projection keyword; never a text, dimension, furniture, axis or frame layer."""
+    if info is None or info.kind is not None:
+        return False
+    if info.rule == "no keyword":
+        return True
+    return info.rule.startswith("exclude") and any(w in info.rule.lower() for w in PROJECTION_LAYER_WORDS)
+
+
+def boundary_evidence(pieces, infos, scale: float) -> List[CadGeometry]:
+    """Projection lines no rule keeps, as boundary evidence for the building interior (kind "boundary",
+    metres): lines drawn with a dashed / dash-dot / hidden linetype (by entity or by layer,
+    ``cad_explode.is_dashed_linetype``) or on a layer named for projections (``PROJECTION_LAYER_WORDS``:
+    'PROIEZIONI', 'overhead', '虚线'...), on a layer that the rules drop for no keyword or as hidden.
+    A corridor closed only by such a line (open on one side, or at its ends) is inside; the lines are never
+    walls (the segmentation gets them as a separate mask, ``rasterize.boundary_mask``)."""
+    out = []
+    named = {}
+    for i, lay in enumerate(pieces.layer):
+        info = infos.get(lay)
+        if not _boundary_layer(info):
+            continue
+        if pieces.etype[i] not in BOUNDARY_TYPES or pieces.filled[i]:
+            continue
+        if lay not in named:
+            low = lay.lower()
+            named[lay] = any(w in low for w in PROJECTION_LAYER_WORDS)
+        dashed = pieces.dashed[i] if i < len(pieces.dashed) else False
+        if not (dashed or named[lay]):
+            continue
+        c = pieces.coords[i]
+        if len(c) < 2 or not np.isfinite(c).all():
+            continue
+        if float(np.hypot(*np.diff(c, axis=0).T).sum()) * scale < BOUNDARY_MIN_LEN:
+            continue
+        out.append(CadGeometry(layer=lay, kind="boundary", coords=c * scale, closed=pieces.closed[i],
+                               entity=pieces.etype[i], cls="boundary"))
+    return out
+
+
 def classify_entities(geoms: Sequence[CadGeometry], chains: Sequence[str], rules, include_doors: bool = False,
                       weak_layers: Iterable[str] = (), drop_door_swings: bool = True, aux_from: Optional[int] = None):
     """Classify the imported geometry by what the drawing says, for drawings whose layers do not.

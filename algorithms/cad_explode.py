@@ -193,7 +193,11 @@ class _Pieces:
     counts: List[tuple] = field(default_factory=list)  # (layer, etype, n) for entities without geometry
     xrefs: List[str] = field(default_factory=list)
 
-    def add(self, coords, layer, etype, closed=False, filled=False, width=0.0, block=""):
+    # drawn with a dashed/dash-dot linetype (by entity or by layer): projection lines, see ``is_dashed_linetype``
+    dashed: List[bool] = field(default_factory=list)
+
+    def add(self, coords, layer, etype, closed=False, filled=False, width=0.0, block="", dashed=False):
+        self.dashed.append(dashed)
         self.block.append(block)
         self.coords.append(coords)
         self.layer.append(layer)
@@ -207,6 +211,19 @@ class _Pieces:
 
 
 BLOCK_SEP = "\x1f"
+
+# linetype names of projection / overhead / hidden lines (ACAD, ISO, Italian 'tratto', Chinese '虚线', ...)
+DASHED_LINETYPE_WORDS = ("dash", "hidden", "center", "centre", "phantom", "acad_iso", "iso0", "iso1", "tratt",
+                         "divide", "dot", "punt", "strich", "trazo", "虚", "点划", "点画", "pointill", "tiret")
+DASHABLE_TYPES = ("LINE", "LWPOLYLINE", "POLYLINE", "ARC", "SPLINE", "ELLIPSE")
+
+
+def is_dashed_linetype(name: str) -> bool:
+    """A linetype drawn broken (dashed, dash-dot, hidden, centre, phantom, ISO patterns): projection lines."""
+    low = (name or "").strip().lower()
+    if not low or low in ("continuous", "bylayer", "byblock", "solid"):
+        return False
+    return any(w in low for w in DASHED_LINETYPE_WORDS)
 
 
 def _chain_name(name: str, inner: str) -> str:
@@ -239,7 +256,7 @@ def _transform_pieces(src: _Pieces, A: np.ndarray, t: np.ndarray, layer: str, ds
                 continue
             w = src.width[i]
             dst.add(splits[i], lay, src.etype[i], src.closed[i], src.filled[i], w * s if w else 0.0,
-                    _chain_name(name, src.block[i]))
+                    _chain_name(name, src.block[i]), src.dashed[i])
     if src.texts:
         s = math.sqrt(abs(float(np.linalg.det(A))))
         rot = math.degrees(math.atan2(A[1, 0], A[0, 0]))
@@ -405,6 +422,31 @@ class _Exploder:
         layer = e.dxf.get("layer", "0") or "0"
         if not self._keep_layer(layer):
             return
+        if et in DASHABLE_TYPES:
+            n0 = len(out.coords)
+            self._entity(e, et, layer, out)
+            if len(out.coords) > n0 and self._dashed(e, layer):
+                out.dashed[n0:] = [True] * (len(out.coords) - n0)
+            return
+        self._entity(e, et, layer, out)
+
+    def _dashed(self, e, layer: str) -> bool:
+        """The entity's linetype (its layer's for BYLAYER) is a dashed / dash-dot / hidden one."""
+        try:
+            lt = str(e.dxf.get("linetype", "BYLAYER") or "BYLAYER")
+            if lt.upper() == "BYLAYER":
+                cache = self.__dict__.setdefault("_layer_lt", {})
+                if layer not in cache:
+                    try:
+                        cache[layer] = str(self.doc.layers.get(layer).dxf.get("linetype", "") or "")
+                    except Exception:
+                        cache[layer] = ""
+                lt = cache[layer]
+            return is_dashed_linetype(lt)
+        except Exception:
+            return False
+
+    def _entity(self, e, et: str, layer: str, out: _Pieces) -> None:
         tol = self.tol
         if et == "LINE":
             s, t = e.dxf.start, e.dxf.end
@@ -651,7 +693,7 @@ def _explode(path: str, tol_du: float, progress, doc=None, repairs=None) -> _Raw
         out = _Pieces(coords=[out.coords[i] for i in keep], layer=[out.layer[i] for i in keep],
                       etype=[out.etype[i] for i in keep], closed=[out.closed[i] for i in keep],
                       filled=[out.filled[i] for i in keep], width=[out.width[i] for i in keep],
-                      block=[out.block[i] for i in keep],
+                      block=[out.block[i] for i in keep], dashed=[out.dashed[i] for i in keep],
                       texts=[t for t in out.texts if visible(t[5])], counts=out.counts, xrefs=out.xrefs)
     else:
         out.texts = [t for t in out.texts if visible(t[5])]

@@ -110,6 +110,9 @@ class CadDrawing:
     classes: Dict[str, int] = field(default_factory=dict)  # entity class counts (wall, door, furniture..)
     undecoded: Dict[str, int] = field(default_factory=dict)  # entity types the reader could not decode
     timings: Dict[str, float] = field(default_factory=dict)  # import stages (read, explode, classify, plans), s
+    # projection / dash-dot lines no rule keeps (cad_classify.boundary_evidence): never walls, only a boundary
+    # the envelope may not cross (rasterize.boundary_mask -> segmentation.segment(boundary=...))
+    boundary: List[CadGeometry] = field(default_factory=list)
 
 
 # --------------------------------------------------------------------------- stage 2: raster
