@@ -7,6 +7,7 @@ from typing import Dict, Iterable, List, Optional, Sequence, Tuple
 
 import numpy as np
 
+from .layer_rules import meaningful_part
 from .model import CadGeometry, DoorHint
 
 
@@ -232,6 +233,8 @@ def swing_candidates(pieces, infos, scale: float) -> List[CadGeometry]:
 # a corridor open on one side, a portico)
 PROJECTION_LAYER_WORDS = ("proiez", "projection", "projektion", "proyecc", "overhead", "ovhd", "hidden", "隐藏",
                           "虚线", "投影", "uberkopf", "überkopf", "au-dessus", "sopra")
+# grid axes are drawn dash-dot (CENTER) through the whole building: never boundary evidence
+AXIS_LAYER_WORDS = ("grid", "axis", "axes", "achs", "asse", "eje", "轴", "оси", "raster")
 BOUNDARY_TYPES = ("LINE", "LWPOLYLINE", "POLYLINE", "ARC", "SPLINE", "ELLIPSE")
 BOUNDARY_MIN_LEN = 1.0  # metres: shorter pieces (hatch dashes, symbols) say nothing about a boundary
 
@@ -240,6 +243,9 @@ def _boundary_layer(info) -> bool:
     """A layer whose lines may be boundary evidence: dropped by the rules for no keyword, or for a hidden /
     projection keyword; never a text, dimension, furniture, axis or frame layer."""
     if info is None or info.kind is not None:
+        return False
+    low = meaningful_part(info.name).lower()
+    if any(w in low for w in AXIS_LAYER_WORDS):
         return False
     if info.rule == "no keyword":
         return True
