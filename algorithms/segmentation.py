@@ -453,7 +453,8 @@ BOUNDARY_MIN_WIDTH_M = 1.0  # space closed by projection lines must be this wide
 
 
 def supported_boundary(free: np.ndarray, boundary: np.ndarray, resolution: float,
-                       envelope_gap: float = DEFAULT_ENVELOPE_GAP, inside_points=None) -> Optional[np.ndarray]:
+                       envelope_gap: float = DEFAULT_ENVELOPE_GAP, inside_points=None, info: Optional[dict] = None
+                       ) -> Optional[np.ndarray]:
     """The part of the boundary evidence (projection / dash-dot lines, ``rasterize.boundary_mask``) that
     closes a space of the building: a corridor open on one side or at its ends, closed only by such a line.
 
@@ -462,7 +463,8 @@ def supported_boundary(free: np.ndarray, boundary: np.ndarray, resolution: float
     enclosed interior through a doorway (``MIN_CONTACT_M``) and is a space someone walks in (at least
     ``BOUNDARY_MIN_WIDTH_M`` wide somewhere, at most (CLAIM_FACTOR x FOOTPRINT_FACTOR x envelope_gap)^2):
     an eave line 0.5 m outside a facade, or lines in the landscape, close nothing. Returns the boundary
-    pixels along the kept spaces (for ``building_interior(boundary=...)``), or None."""
+    pixels along the kept spaces (for ``building_interior(boundary=...)``), or None; ``info["space"]`` gets
+    the kept spaces (claimed space: not dropped as an exterior pocket)."""
     import cv2
 
     if boundary is None or not boundary.any():
@@ -498,7 +500,10 @@ def supported_boundary(free: np.ndarray, boundary: np.ndarray, resolution: float
     keep[0] = False
     if not keep.any():
         return None
-    near = cv2.dilate(keep[lab].view(np.uint8), np.ones((5, 5), np.uint8)) > 0
+    space = keep[lab]
+    if info is not None:
+        info["space"] = space
+    near = cv2.dilate(space.view(np.uint8), np.ones((5, 5), np.uint8)) > 0
     out = boundary & near
     return out if out.any() else None
 
@@ -1448,10 +1453,13 @@ def segment(grid: OccupancyGrid, door_width: float = DEFAULT_DOOR_WIDTH,
     # unknown cells are not passable for the envelope disk either: some maps draw walls in grey
     info: dict = {}
     if boundary is not None:
-        boundary = supported_boundary(free, boundary, res, envelope_gap, pix_pts)
+        binfo: dict = {}
+        boundary = supported_boundary(free, boundary, res, envelope_gap, pix_pts, binfo)
         stats["boundary_px"] = float(boundary.sum()) if boundary is not None else 0.0
     interior, envelope = building_interior(free, res, envelope_gap, inside_points=pix_pts, info=info,
                                            footprint=footprint, progress=progress, boundary=boundary)
+    if boundary is not None:  # space closed by projection lines is claimed: never an exterior pocket
+        info["claimed"] = binfo["space"] | boundary | info.get("claimed", np.zeros_like(free))
     del envelope
     stats["claimed_open_m2"] = info.get("claimed_px", 0) * res * res
     stats["inside_points"] = float(info.get("inside_points", 0))

@@ -251,3 +251,94 @@ def test_curved_treads_are_stairs_and_lone_arcs_stay():
     geoms = [arc(0, 0, 1.0 + 0.3 * k) for k in range(5)] + [arc(20, 0, 1.0), arc(20, 0, 3.0), arc(40, 0, 2.0)]
     assert free_stair_treads(geoms) == 5
     assert [g.kind for g in geoms] == ["stair"] * 5 + ["reference"] * 3
+
+
+# ------------------------------------------------------------------ corridors closed only by projection lines
+def _corridor_plan(tmp_path, line="layer", depth=2.5, name="Corridoio distribuzione", name_file="c.dxf"):
+    """Three 8 x 7 m classrooms in a row, each with a 1 m doorway in its north wall; north of them a corridor
+    bounded by no wall: only a line ``depth`` m beyond the facade, drawn as ``line``: "layer" (a layer named
+    for projections, continuous linetype), "entity" (dash-dot linetype on an unnamed layer), "continuous"
+    (a plain line on an unnamed layer: no evidence), "axis" (a dash-dot line on a grid-axis layer) or None."""
+    doc = ezdxf.new("R2010", setup=["linetypes"])
+    doc.header["$INSUNITS"] = 6
+    doc.layers.add("PROIEZIONI - projections")
+    doc.layers.add("misc")
+    doc.layers.add("S-GRID", linetype="CENTER")
+    msp = doc.modelspace()
+    wall = {"layer": "MURATURA"}
+    msp.add_line((0, 0), (24, 0), dxfattribs=wall)
+    msp.add_line((0, 0), (0, 7), dxfattribs=wall)
+    msp.add_line((24, 0), (24, 7), dxfattribs=wall)
+    for x in (8, 16):
+        msp.add_line((x, 0), (x, 7), dxfattribs=wall)
+    xs = [0, 3, 4, 11, 12, 19, 20, 24]  # north wall with doorways 3-4, 11-12, 19-20
+    for a, b in zip(xs[0::2], xs[1::2]):
+        msp.add_line((a, 7), (b, 7), dxfattribs=wall)
+    for k, x in enumerate((4, 12, 20)):
+        msp.add_text(f"Aula {k + 1}", dxfattribs={"layer": "SCRITTE", "height": 0.3, "insert": (x, 3.5)})
+    if name:
+        msp.add_text(name, dxfattribs={"layer": "SCRITTE", "height": 0.3, "insert": (10.0, 7 + depth / 2)})
+    y = 7 + depth
+    if line == "layer":
+        msp.add_line((0, y), (24, y), dxfattribs={"layer": "PROIEZIONI - projections"})
+    elif line == "entity":
+        msp.add_line((0, y), (24, y), dxfattribs={"layer": "misc", "linetype": "DASHDOT"})
+    elif line == "continuous":
+        msp.add_line((0, y), (24, y), dxfattribs={"layer": "misc"})
+    elif line == "axis":
+        msp.add_line((0, y), (24, y), dxfattribs={"layer": "S-GRID"})
+    return _save(doc, tmp_path, name_file)
+
+
+def _corridor_area(floor, y):
+    from shapely.geometry import Point
+
+    return [a for a in floor.refined.areas if a.polygon.buffer(0.05).contains(Point(10.0, y))]
+
+
+@pytest.mark.parametrize("line", ["layer", "entity"])
+def test_corridor_closed_only_by_a_projection_line_is_inside(tmp_path, line):
+    """A corridor bounded by walls on one side and by a projection line (a layer named for projections, or a
+    dash-dot linetype) on the other is an area, and the classrooms open onto it: one component."""
+    path = _corridor_plan(tmp_path, line)
+    drawing = import_dxf(path)
+    assert len(drawing.boundary) == 1 and drawing.boundary[0].kind == "boundary"
+    assert not any(abs(g.coords[:, 1] - 9.5).max() < 1e-6 for g in drawing.geometries)  # never a wall
+    floor = pipeline.process_floor(path)
+    corridor = _corridor_area(floor, 8.25)
+    assert corridor, [a.polygon.bounds for a in floor.refined.areas]
+    minx, miny, maxx, maxy = corridor[0].polygon.bounds
+    assert maxy <= 9.6 and maxx - minx > 20 and corridor[0].polygon.area > 0.8 * 24 * 2.5
+    assert floor.stats["components"] == 1 and floor.stats["largest_component_share"] == 1.0
+    assert floor.stats["passages"] >= 3
+    # the line is not drawn into the raster: the row of the line is free between the rooms' ends
+    from algorithms.segmentation import FREE
+
+    c, r = floor.grid.world_to_pixel(np.array([6.0, 14.0]), np.array([9.5, 9.5]))
+    assert (floor.grid.data[np.floor(r).astype(int), np.floor(c).astype(int)] == FREE).all()
+
+
+def test_corridor_without_a_name_is_inside_through_its_doorways(tmp_path):
+    floor = pipeline.process_floor(_corridor_plan(tmp_path, "entity", name=None))
+    assert _corridor_area(floor, 8.25)
+    assert floor.stats["components"] == 1
+
+
+@pytest.mark.parametrize("line", [None, "continuous", "axis"])
+def test_without_projection_evidence_the_corridor_stays_outside(tmp_path, line):
+    """No line, a plain line on an unnamed layer, or a dash-dot grid axis: no boundary evidence, the strip
+    is open to the outside and the three classrooms stay apart (the rule is what connects them)."""
+    path = _corridor_plan(tmp_path, line)
+    assert import_dxf(path).boundary == []
+    floor = pipeline.process_floor(path)
+    assert not _corridor_area(floor, 8.25)
+    assert floor.stats["components"] == 3
+
+
+def test_an_eave_line_close_to_the_facade_closes_nothing(tmp_path):
+    """A dash-dot eave line 0.4 m beyond the facade, no name in the strip: too narrow to be a space, so it is
+    no boundary (no strip area, the rooms stay as without it)."""
+    floor = pipeline.process_floor(_corridor_plan(tmp_path, "entity", depth=0.4, name=None))
+    assert floor.stats["segment"].get("boundary_px", 0) == 0
+    assert not _corridor_area(floor, 7.2)
+    assert floor.stats["components"] == 3
