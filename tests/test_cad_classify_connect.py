@@ -342,3 +342,49 @@ def test_an_eave_line_close_to_the_facade_closes_nothing(tmp_path):
     assert floor.stats["segment"].get("boundary_px", 0) == 0
     assert not _corridor_area(floor, 7.2)
     assert floor.stats["components"] == 3
+
+
+# ------------------------------------------------------------------ an elevation drawn close to the plan
+def _plan_with_elevation(tmp_path, title="ELEVACION PRINCIPAL", gap=2.0):
+    """A 30 x 16 m plan of six rooms (titled 'PLANTA DE DISTRIBUCION') and, ``gap`` m below it (closer than
+    the sheet gap), its main elevation: a facade outline with doors and windows, titled ``title`` under it."""
+    doc = _doc()
+    msp = doc.modelspace()
+    for i in range(3):
+        for j in range(2):
+            x0, y0 = 10.0 * i, 8.0 * j
+            msp.add_line((x0, y0), (x0 + 4, y0), dxfattribs={"layer": "A-WALL"})
+            msp.add_line((x0 + 5, y0), (x0 + 10, y0), dxfattribs={"layer": "A-WALL"})
+            msp.add_line((x0 + 10, y0), (x0 + 10, y0 + 8), dxfattribs={"layer": "A-WALL"})
+            msp.add_line((x0 + 10, y0 + 8), (x0, y0 + 8), dxfattribs={"layer": "A-WALL"})
+            msp.add_line((x0, y0 + 8), (x0, y0), dxfattribs={"layer": "A-WALL"})
+    msp.add_text("PLANTA DE DISTRIBUCION", dxfattribs={"layer": "TXT", "height": 0.5, "insert": (32.0, 0.5)})
+    top = -gap
+    base = top - 6.0
+    _rect(msp, 4, base, 26, top)  # the facade
+    for x in (6, 12, 18, 22):
+        _rect(msp, x, base, x + 1.2, base + 2.4)  # doors
+        _rect(msp, x, base + 3.5, x + 1.2, base + 5.0)  # windows
+    msp.add_line((3, base), (27, base), dxfattribs={"layer": "A-WALL"})  # ground line
+    if title:
+        msp.add_text(title, dxfattribs={"layer": "TXT", "height": 0.6, "insert": (10.0, base - 1.2)})
+    return _save(doc, tmp_path, "elev.dxf")
+
+
+@pytest.mark.parametrize("title", ["ELEVACION PRINCIPAL", "SECTION A-A", "PROSPETTO SUD", "南立面图"])
+def test_an_elevation_drawn_close_below_the_plan_is_a_group_of_its_own(tmp_path, title):
+    drawing = import_dxf(_plan_with_elevation(tmp_path, title))
+    sel = [p for p in drawing.plans if p.selected]
+    assert len(sel) == 1 and sel[0].kind == "plan" and sel[0].title == "PLANTA DE DISTRIBUCION"
+    assert sel[0].extent[1] >= -0.5  # the plan alone, not the elevation below it
+    other = [p for p in drawing.plans if not p.selected]
+    assert len(other) == 1 and other[0].kind == "detail" and other[0].title == title
+    assert all(g.coords[:, 1].min() >= -0.5 for g in drawing.geometries)
+
+
+def test_an_untitled_view_close_to_the_plan_stays_with_it(tmp_path):
+    """Without a title saying elevation/section, a drawing 2 m off the plan stays with it (a wing, a porch):
+    the band alone proves nothing."""
+    drawing = import_dxf(_plan_with_elevation(tmp_path, None))
+    assert len([p for p in drawing.plans if p.kind != "other"]) == 1
+    assert any(g.coords[:, 1].min() < -2.5 for g in drawing.geometries)
