@@ -388,3 +388,18 @@ def test_an_untitled_view_close_to_the_plan_stays_with_it(tmp_path):
     drawing = import_dxf(_plan_with_elevation(tmp_path, None))
     assert len([p for p in drawing.plans if p.kind != "other"]) == 1
     assert any(g.coords[:, 1].min() < -2.5 for g in drawing.geometries)
+
+
+@pytest.mark.qgis_process
+def test_dxftoosmag_headless_corridor_closed_by_a_projection_line(tmp_path):
+    """Headless: the corridor closed only by a projection line is an area of the osmAG file, named by its
+    text, and each classroom has a passage to it."""
+    from algorithms import osmag
+    from tests.qgis_process import run_alg
+
+    out = tmp_path / "corridor.osm"
+    _, res, log = run_alg("dxftoosmag", {"INPUT": _corridor_plan(tmp_path, "layer"), "OUTPUT": str(out)})
+    areas, passages, _, _ = osmag.read_osmag(str(out))
+    corridor = [a for a in areas if a.name == "Corridoio distribuzione"]
+    assert len(corridor) == 1
+    assert len([p for p in passages if corridor[0].id in (p.from_id, p.to_id)]) >= 3
