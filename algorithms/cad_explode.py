@@ -361,6 +361,7 @@ class _Exploder:
         self.warnings: List[str] = []
         self._warned = set()
         self.produced = 0  # entities added by exploding INSERTs (see MAX_EXPLODED)
+        self._layer_lt: Dict[str, str] = {}  # layer -> its linetype name (``_dashed``)
 
     def _warn_once(self, key, msg):
         if key not in self._warned:
@@ -435,7 +436,7 @@ class _Exploder:
         try:
             lt = str(e.dxf.get("linetype", "BYLAYER") or "BYLAYER")
             if lt.upper() == "BYLAYER":
-                cache = self.__dict__.setdefault("_layer_lt", {})
+                cache = self._layer_lt
                 if layer not in cache:
                     try:
                         cache[layer] = str(self.doc.layers.get(layer).dxf.get("linetype", "") or "")
