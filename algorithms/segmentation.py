@@ -1454,6 +1454,7 @@ def segment(grid: OccupancyGrid, door_width: float = DEFAULT_DOOR_WIDTH,
     info: dict = {}
     if boundary is not None:
         binfo: dict = {}
+        progress.check()
         boundary = supported_boundary(free, boundary, res, envelope_gap, pix_pts, binfo)
         stats["boundary_px"] = float(boundary.sum()) if boundary is not None else 0.0
     interior, envelope = building_interior(free, res, envelope_gap, inside_points=pix_pts, info=info,
