@@ -7,6 +7,7 @@ from typing import Dict, Iterable, List, Optional, Sequence, Tuple
 
 import numpy as np
 
+from .layer_rules import meaningful_part
 from .model import CadGeometry, DoorHint
 
 
@@ -224,6 +225,61 @@ def swing_candidates(pieces, infos, scale: float) -> List[CadGeometry]:
         if span.max() > 2.0 * DOOR_RADIUS[1] or span.max() < 0.5 * DOOR_RADIUS[0]:
             continue
         out.append(CadGeometry(layer=lay, kind=AUX_KIND, coords=c * scale, entity=pieces.etype[i]))
+    return out
+
+
+# ------------------------------------------------------------------------------------------ boundary evidence
+# layer names of projection / overhead / hidden lines (what lies above or beyond the cut: canopies, the edge of
+# a corridor open on one side, a portico)
+PROJECTION_LAYER_WORDS = ("proiez", "projection", "projektion", "proyecc", "overhead", "ovhd", "hidden", "隐藏",
+                          "虚线", "投影", "uberkopf", "überkopf", "au-dessus", "sopra")
+# grid axes are drawn dash-dot (CENTER) through the whole building: never boundary evidence
+AXIS_LAYER_WORDS = ("grid", "axis", "axes", "achs", "asse", "eje", "轴", "оси", "raster")
+BOUNDARY_TYPES = ("LINE", "LWPOLYLINE", "POLYLINE", "ARC", "SPLINE", "ELLIPSE")
+BOUNDARY_MIN_LEN = 1.0  # metres: shorter pieces (hatch dashes, symbols) say nothing about a boundary
+
+
+def _boundary_layer(info) -> bool:
+    """A layer whose lines may be boundary evidence: dropped by the rules for no keyword, or for a hidden /
+    projection keyword; never a text, dimension, furniture, axis or frame layer."""
+    if info is None or info.kind is not None:
+        return False
+    low = meaningful_part(info.name).lower()
+    if any(w in low for w in AXIS_LAYER_WORDS):
+        return False
+    if info.rule == "no keyword":
+        return True
+    return info.rule.startswith("exclude") and any(w in info.rule.lower() for w in PROJECTION_LAYER_WORDS)
+
+
+def boundary_evidence(pieces, infos, scale: float) -> List[CadGeometry]:
+    """Projection lines no rule keeps, as boundary evidence for the building interior (kind "boundary",
+    metres): lines drawn with a dashed / dash-dot / hidden linetype (by entity or by layer,
+    ``cad_explode.is_dashed_linetype``) or on a layer named for projections (``PROJECTION_LAYER_WORDS``:
+    'PROIEZIONI', 'overhead', '虚线'...), on a layer that the rules drop for no keyword or as hidden.
+    A corridor closed only by such a line (open on one side, or at its ends) is inside; the lines are never
+    walls (the segmentation gets them as a separate mask, ``rasterize.boundary_mask``)."""
+    out = []
+    named = {}
+    for i, lay in enumerate(pieces.layer):
+        info = infos.get(lay)
+        if not _boundary_layer(info):
+            continue
+        if pieces.etype[i] not in BOUNDARY_TYPES or pieces.filled[i]:
+            continue
+        if lay not in named:
+            low = lay.lower()
+            named[lay] = any(w in low for w in PROJECTION_LAYER_WORDS)
+        dashed = pieces.dashed[i] if i < len(pieces.dashed) else False
+        if not (dashed or named[lay]):
+            continue
+        c = pieces.coords[i]
+        if len(c) < 2 or not np.isfinite(c).all():
+            continue
+        if float(np.hypot(*np.diff(c, axis=0).T).sum()) * scale < BOUNDARY_MIN_LEN:
+            continue
+        out.append(CadGeometry(layer=lay, kind="boundary", coords=c * scale, closed=pieces.closed[i],
+                               entity=pieces.etype[i], cls="boundary"))
     return out
 
 

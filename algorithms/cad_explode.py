@@ -195,7 +195,11 @@ class _Pieces:
     # texts on frozen / off layers (same tuples as ``texts``): kept apart, room names may still use them
     hidden_texts: List[tuple] = field(default_factory=list)
 
-    def add(self, coords, layer, etype, closed=False, filled=False, width=0.0, block=""):
+    # drawn with a dashed/dash-dot linetype (by entity or by layer): projection lines, see ``is_dashed_linetype``
+    dashed: List[bool] = field(default_factory=list)
+
+    def add(self, coords, layer, etype, closed=False, filled=False, width=0.0, block="", dashed=False):
+        self.dashed.append(dashed)
         self.block.append(block)
         self.coords.append(coords)
         self.layer.append(layer)
@@ -209,6 +213,19 @@ class _Pieces:
 
 
 BLOCK_SEP = "\x1f"
+
+# linetype names of projection / overhead / hidden lines (ACAD, ISO, Italian 'tratto', Chinese '虚线', ...)
+DASHED_LINETYPE_WORDS = ("dash", "hidden", "center", "centre", "phantom", "acad_iso", "iso0", "iso1", "tratt",
+                         "divide", "dot", "punt", "strich", "trazo", "虚", "点划", "点画", "pointill", "tiret")
+DASHABLE_TYPES = ("LINE", "LWPOLYLINE", "POLYLINE", "ARC", "SPLINE", "ELLIPSE")
+
+
+def is_dashed_linetype(name: str) -> bool:
+    """A linetype drawn broken (dashed, dash-dot, hidden, centre, phantom, ISO patterns): projection lines."""
+    low = (name or "").strip().lower()
+    if not low or low in ("continuous", "bylayer", "byblock", "solid"):
+        return False
+    return any(w in low for w in DASHED_LINETYPE_WORDS)
 
 
 def _chain_name(name: str, inner: str) -> str:
@@ -241,7 +258,7 @@ def _transform_pieces(src: _Pieces, A: np.ndarray, t: np.ndarray, layer: str, ds
                 continue
             w = src.width[i]
             dst.add(splits[i], lay, src.etype[i], src.closed[i], src.filled[i], w * s if w else 0.0,
-                    _chain_name(name, src.block[i]))
+                    _chain_name(name, src.block[i]), src.dashed[i])
     for src_texts, dst_texts in ((src.texts, dst.texts), (src.hidden_texts, dst.hidden_texts)):
         if not src_texts:
             continue
@@ -348,6 +365,7 @@ class _Exploder:
         self.warnings: List[str] = []
         self._warned = set()
         self.produced = 0  # entities added by exploding INSERTs (see MAX_EXPLODED)
+        self._layer_lt: Dict[str, str] = {}  # layer -> its linetype name (``_dashed``)
 
     def _warn_once(self, key, msg):
         if key not in self._warned:
@@ -411,6 +429,31 @@ class _Exploder:
             if et == "INSERT":
                 self._hidden_insert_texts(e, layer, out)
             return
+        if et in DASHABLE_TYPES:
+            n0 = len(out.coords)
+            self._entity(e, et, layer, out)
+            if len(out.coords) > n0 and self._dashed(e, layer):
+                out.dashed[n0:] = [True] * (len(out.coords) - n0)
+            return
+        self._entity(e, et, layer, out)
+
+    def _dashed(self, e, layer: str) -> bool:
+        """The entity's linetype (its layer's for BYLAYER) is a dashed / dash-dot / hidden one."""
+        try:
+            lt = str(e.dxf.get("linetype", "BYLAYER") or "BYLAYER")
+            if lt.upper() == "BYLAYER":
+                cache = self._layer_lt
+                if layer not in cache:
+                    try:
+                        cache[layer] = str(self.doc.layers.get(layer).dxf.get("linetype", "") or "")
+                    except Exception:
+                        cache[layer] = ""
+                lt = cache[layer]
+            return is_dashed_linetype(lt)
+        except Exception:
+            return False
+
+    def _entity(self, e, et: str, layer: str, out: _Pieces) -> None:
         tol = self.tol
         if et == "LINE":
             s, t = e.dxf.start, e.dxf.end
@@ -673,7 +716,7 @@ def _explode(path: str, tol_du: float, progress, doc=None, repairs=None) -> _Raw
         out = _Pieces(coords=[out.coords[i] for i in keep], layer=[out.layer[i] for i in keep],
                       etype=[out.etype[i] for i in keep], closed=[out.closed[i] for i in keep],
                       filled=[out.filled[i] for i in keep], width=[out.width[i] for i in keep],
-                      block=[out.block[i] for i in keep],
+                      block=[out.block[i] for i in keep], dashed=[out.dashed[i] for i in keep],
                       texts=out.texts, counts=out.counts, xrefs=out.xrefs, hidden_texts=out.hidden_texts)
     # texts on frozen / off layers are not drawn: kept apart (a sheet often freezes the annotation layer of
     # one wing, e.g. the stair callouts or room names of a bound xref; stage 5 may still name rooms by them)

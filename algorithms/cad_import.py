@@ -40,7 +40,8 @@ from typing import Dict, List, Optional, Sequence, Tuple
 
 import numpy as np
 
-from .cad_classify import (AUX_KIND, DOOR_RADIUS, DOOR_SWEEP, _circle_from_3, classify_entities,  # noqa: F401
+from .cad_classify import (AUX_KIND, DOOR_RADIUS, DOOR_SWEEP, _circle_from_3, boundary_evidence,  # noqa: F401
+                           classify_entities,
                            find_door_swings, swing_candidates)
 from .cad_sheet import describe_plans, find_plans, parse_plan
 from .cad_explode import (MAX_SEGMENTS_PER_TURN, SKIP_TYPES, TEXT_TYPES, _arc_points, _boundary_rings,  # noqa: F401
@@ -366,11 +367,17 @@ def import_dxf(path: str, rules=None, layers: Optional[Sequence[str]] = None, un
     if sel is not None:
         x0, y0, x1, y1 = sel.extent
         doors = [d for d in doors if x0 - 1 <= (d.x0 + d.x1) / 2 <= x1 + 1 and y0 - 1 <= (d.y0 + d.y1) / 2 <= y1 + 1]
+    boundary = boundary_evidence(p, infos, scale) if selected is None else []
+    if sel is not None and boundary:
+        m = 4.0  # metres (rasterize.BOUNDARY_REACH): a corridor closed by a projection line lies beyond the walls
+        x0, y0, x1, y1 = sel.extent
+        boundary = [g for g in boundary if g.coords[:, 0].max() >= x0 - m and g.coords[:, 0].min() <= x1 + m
+                    and g.coords[:, 1].max() >= y0 - m and g.coords[:, 1].min() <= y1 + m]
     kept_layers = sorted({g.layer for g in geoms})
     progress.info("CAD import stages: " + ", ".join(f"{k} {v:.1f} s" for k, v in timings.items()))
     progress.step(100, f"{len(geoms)} geometries on {len(kept_layers)} layers, {len(texts)} texts, unit {unit}"
                   + (f", {len(doors)} doorways" if doors else ""))
     return CadDrawing(path=path, geometries=geoms, texts=texts, layers=infos, unit_name=unit, unit_scale=scale,
                       header_unit=header, warnings=warnings, repairs=list(repairs), doors=doors, plans=plans,
-                      classes=classes, timings=timings, hidden_texts=hidden,
+                      classes=classes, timings=timings, hidden_texts=hidden, boundary=boundary,
                       undecoded=dict(getattr(doc, "undecoded", {})))  # DWG: types the reader cannot decode

@@ -254,6 +254,87 @@ def _title_of(ext, texts, rules: LayerRules) -> Tuple[str, str]:
     return best[1], best[2]
 
 
+# titles of elevations and sections (views drawn beside the plan on the same sheet, often only 1-2 m away)
+ELEVATION_TITLE_WORDS = ("prospetto", "elevation", "elevacion", "elevación", "alzado", "fachada", "section",
+                         "sezione", "seccion", "sección", "corte", "schnitt", "ansicht", "coupe", "façade",
+                         "facade", "立面", "剖面", "разрез", "фасад")
+ELEVATION_BAND = 1.5  # metres: an empty band this wide across a group separates an elevation from the plan
+ELEVATION_TITLE_DIST = 3.0  # metres: the elevation's title lies this close to its drawing
+
+
+def _elevation_titles(texts: Sequence[CadText], rules: LayerRules) -> np.ndarray:
+    """(x, y) of the texts that title an elevation or a section (``ELEVATION_TITLE_WORDS``, and the rules'
+    ``sheet.elevation_titles`` when given)."""
+    words = list(ELEVATION_TITLE_WORDS) + [w.lower() for w in rules.sheet_words("elevation_titles")]
+    pts = [(t.x, t.y) for t in texts if any(keyword_in(w, t.text.lower()) for w in words)]
+    return np.array(pts, dtype=np.float64).reshape(-1, 2)
+
+
+def _box_dist(pts: np.ndarray, box) -> np.ndarray:
+    dx = np.maximum(np.maximum(box[0] - pts[:, 0], pts[:, 0] - box[2]), 0.0)
+    dy = np.maximum(np.maximum(box[1] - pts[:, 1], pts[:, 1] - box[3]), 0.0)
+    return np.hypot(dx, dy)
+
+
+def _own_titles(tk, ext: np.ndarray) -> List[list]:
+    """The title texts (``_title_kinds`` output) of each group (``ext`` rows): each text titles only the group
+    whose extent lies nearest to it (an elevation's title below it is not the plan's, a few metres above)."""
+    if not tk or len(ext) <= 1:
+        return [list(tk) for _ in range(len(ext))]
+    pts = np.array([(t.x, t.y) for t, _ in tk], dtype=np.float64)
+    d = np.stack([_box_dist(pts, e) for e in ext], axis=1)
+    d = np.where(np.isfinite(d), d, np.inf)
+    near = np.argmin(d, axis=1)
+    out: List[list] = [[] for _ in range(len(ext))]
+    for i, j in enumerate(near):
+        out[int(j)].append(tk[i])
+    return out
+
+
+def split_elevations(allp: np.ndarray, plab: np.ndarray, ncomp: int, texts: Sequence[CadText], rules: LayerRules,
+                     band: float = ELEVATION_BAND) -> Tuple[np.ndarray, int, int]:
+    """An elevation or section drawn close to the plan (closer than the sheet gap) joins it as one group: a
+    group whose samples (``allp``, group ``plab``) fall apart across an empty band at least ``band`` wide
+    (horizontal or vertical, across the whole group) into parts, one of which is titled as an elevation or
+    section (the title text within ``ELEVATION_TITLE_DIST`` of that part and nearer to it than to the other
+    parts), gets that part split off as a group of its own. Geometry samples are at most ``SAMPLE`` apart,
+    so no geometry straddles such a band. Returns ``(plab, ncomp, number of parts split off)``."""
+    tp = _elevation_titles(texts, rules)
+    if not len(tp) or ncomp == 0:
+        return plab, ncomp, 0
+    plab = plab.copy()
+    split = 0
+    for k in range(ncomp):
+        sel = np.flatnonzero(plab == k)
+        if len(sel) < 4:
+            continue
+        pts = allp[sel]
+        for axis in (1, 0):
+            v = pts[:, axis]
+            order = np.sort(np.unique(v))
+            gaps = np.flatnonzero(np.diff(order) >= band)
+            if not len(gaps):
+                continue
+            cuts = (order[gaps] + order[gaps + 1]) / 2.0
+            part = np.searchsorted(cuts, v)
+            boxes = [(pts[part == j, 0].min(), pts[part == j, 1].min(), pts[part == j, 0].max(),
+                      pts[part == j, 1].max()) for j in range(len(cuts) + 1)]
+            d = np.stack([_box_dist(tp, b) for b in boxes], axis=1)  # titles x parts
+            near = np.argmin(d, axis=1)
+            titled = {int(near[i]) for i in range(len(tp)) if d[i, near[i]] <= ELEVATION_TITLE_DIST}
+            # the part with the most samples is the plan: never split off
+            main = int(np.argmax(np.bincount(part, minlength=len(boxes))))
+            titled.discard(main)
+            if not titled:
+                continue
+            for j in sorted(titled):
+                plab[sel[part == j]] = ncomp
+                ncomp += 1
+                split += 1
+            break
+    return plab, ncomp, split
+
+
 def find_plans(geoms: Sequence[CadGeometry], texts: Sequence[CadText], rules: LayerRules,
                plan: PlanArg = None, gap: float = GAP, progress=None):
     """Group the sheet's structural geometry into plans and select one.
@@ -294,6 +375,8 @@ def find_plans(geoms: Sequence[CadGeometry], texts: Sequence[CadText], rules: La
         coo_matrix((m, m))
     ncomp, clab = connected_components(graph, directed=False)
     plab = clab[inv]
+    n_joined = ncomp
+    plab, ncomp, _ = split_elevations(allp, plab, ncomp, texts, rules)
     # a geometry's samples are at most SAMPLE apart, so all of them fall in one group
     geom_group = np.full(n, -1, dtype=np.int64)
     geom_group[own] = plab
@@ -312,7 +395,10 @@ def find_plans(geoms: Sequence[CadGeometry], texts: Sequence[CadText], rules: La
     # islands inside a larger group's box (free-standing columns in a hall, a kiosk in an atrium) belong
     # to it, unless a title says they are a detail view
     tk = _title_kinds(texts, rules)
-    titles = [_title_of(tuple(ext[k]), tk, rules) for k in range(ncomp)]
+    own = _own_titles(tk, ext)
+    titles = [_title_of(tuple(ext[k]), own[k], rules) for k in range(ncomp)]
+    for k in range(n_joined, ncomp):  # elevations split off: never merged back as a wing
+        titles[k] = (titles[k][0], "detail")
     parent = np.arange(ncomp)
     biggest0 = float(mass.max())
     trees = {}
@@ -353,13 +439,14 @@ def find_plans(geoms: Sequence[CadGeometry], texts: Sequence[CadText], rules: La
         wall, total, mass = (np.bincount(new, weights=v, minlength=len(uniq_roots)) for v in (wall, total, mass))
         ext, ncomp = ext2, len(uniq_roots)
     infos = []
+    own = _own_titles(tk, ext)
     biggest = float(mass.max())
     big = int(np.argmax(mass))
     big_diag = math.hypot(ext[big, 2] - ext[big, 0], ext[big, 3] - ext[big, 1])
     for k in range(ncomp):
         e = tuple(float(v) for v in ext[k])
         diag = math.hypot(e[2] - e[0], e[3] - e[1])
-        title, tkind = _title_of(e, tk, rules)
+        title, tkind = _title_of(e, own[k], rules)
         if total[k] < MIN_WALL or diag < MIN_SIZE:
             kind = "other"
         elif tkind == "plan" and mass[k] < DETAIL_WALL_SHARE * biggest and diag < DETAIL_SIZE_SHARE * big_diag:

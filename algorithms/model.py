@@ -113,6 +113,9 @@ class CadDrawing:
     # texts on frozen / off layers, within the kept plan (ids continue after ``texts``); not drawn, but
     # stage 5 may name an area by them when no visible text names it
     hidden_texts: List[CadText] = field(default_factory=list)
+    # projection / dash-dot lines no rule keeps (cad_classify.boundary_evidence): never walls, only a boundary
+    # the envelope may not cross (rasterize.boundary_mask -> segmentation.segment(boundary=...))
+    boundary: List[CadGeometry] = field(default_factory=list)
 
 
 # --------------------------------------------------------------------------- stage 2: raster

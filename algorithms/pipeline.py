@@ -94,11 +94,13 @@ def process_floor(dxf_path: str, *, rules=None, layers=None, units=None, include
 
     drawing = timed("cad_import", 0, 25, cad_import.import_dxf, dxf_path, rules=rules, layers=layers,
                     units=units, include_doors=include_doors, plan=plan)
-    grid = timed("rasterize", 25, 35, rasterize.rasterize, drawing.geometries, resolution=resolution,
-                 extent=extent, door_hints=drawing.doors)
+    # projection lines no rule keeps count for the extent (a corridor closed by one lies beyond the walls)
+    grid = timed("rasterize", 25, 35, rasterize.rasterize, drawing.geometries + drawing.boundary,
+                 resolution=resolution, extent=extent, door_hints=drawing.doors)
     seg = timed("segment", 35, 80, segmentation.segment, grid, door_width=door_width,
                 corridor_width=corridor_width, delta=delta, prune=prune,
-                inside_points=segmentation.room_name_points(drawing.texts, name_rules), door_hints=drawing.doors, footprint=True)
+                inside_points=segmentation.room_name_points(drawing.texts, name_rules), door_hints=drawing.doors, footprint=True,
+                boundary=rasterize.boundary_mask(drawing.boundary, grid))
     t0, c0 = time.perf_counter(), time.process_time()
     vertical = classify_vertical_areas(seg.areas, drawing.geometries)
     if vertical:

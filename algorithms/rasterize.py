@@ -97,6 +97,26 @@ def geometry_bounds(geometries: Sequence[CadGeometry], percentiles=DEFAULT_PERCE
     return _grow_to_touching(geometries, box) if grow else box
 
 
+BOUNDARY_REACH = 4.0  # metres: projection lines this close to the drawing's bounds widen the raster to hold them
+
+
+def _grow_to_boundary(boundary: Sequence[CadGeometry], box, reach: float = BOUNDARY_REACH):
+    """Grow ``box`` to hold the boundary evidence lines (kind "boundary") lying within ``reach`` of it: a
+    corridor closed only by a projection line lies beyond the walls' bounds."""
+    x0, y0, x1, y1 = box
+    for g in boundary:
+        c = g.coords[np.isfinite(g.coords).all(axis=1)]
+        if not len(c):
+            continue
+        mn, mx = c.min(axis=0), c.max(axis=0)
+        if mx[0] < box[0] - reach or mn[0] > box[2] + reach or mx[1] < box[1] - reach or mn[1] > box[3] + reach:
+            continue
+        if mn[0] < box[0] - reach or mx[0] > box[2] + reach or mn[1] < box[1] - reach or mx[1] > box[3] + reach:
+            continue  # reaching far beyond the plan: an axis, a site line
+        x0, y0, x1, y1 = min(x0, mn[0]), min(y0, mn[1]), max(x1, mx[0]), max(y1, mx[1])
+    return (float(x0), float(y0), float(x1), float(y1))
+
+
 def _grow_to_touching(geometries: Sequence[CadGeometry], box, max_growth: float = 0.5):
     """Extend a percentile box to the full bounds of every geometry that reaches into it.
 
@@ -413,7 +433,11 @@ def rasterize(geometries: Sequence[CadGeometry], resolution: float = DEFAULT_RES
         raise InputError(f"padding must be >= 0 (a fraction of the building size), got {padding}")
     geometries = [g for g in geometries if len(g.coords)]
     if extent is None:
-        extent = pad_extent(geometry_bounds(geometries, percentiles), padding)
+        walls = [g for g in geometries if g.kind != "boundary"]
+        box = geometry_bounds(walls or geometries, percentiles)
+        if len(walls) < len(geometries) and walls:
+            box = _grow_to_boundary([g for g in geometries if g.kind == "boundary"], box)
+        extent = pad_extent(box, padding)
         # at least one stroke of margin so walls at the border are not cut
         m = 2 * max(stroke, resolution * max(int(kernel), 1))
         extent = (extent[0] - m, extent[1] - m, extent[2] + m, extent[3] + m)
@@ -425,7 +449,9 @@ def rasterize(geometries: Sequence[CadGeometry], resolution: float = DEFAULT_RES
     img = np.zeros((rows, cols), dtype=np.uint8)
     hair = cv_thickness(stroke / resolution)
     free_kinds = set(free_kinds or ())
-    draw_geometries(img, [g for g in geometries if g.kind not in free_kinds], ox, oy, resolution, hair,
+    # boundary evidence (kind "boundary", ``boundary_mask``) counts for the extent, never drawn: no walls
+    draw_geometries(img, [g for g in geometries if g.kind not in free_kinds and g.kind != "boundary"], ox, oy,
+                    resolution, hair,
                     progress.sub(5, 70))
     progress.step(70, "closing gaps and removing specks")
     img = repair(img, int(kernel))
@@ -598,3 +624,22 @@ def floor_grids(geometry_sets, resolution: float = DEFAULT_RESOLUTION, padding: 
         grids.append(grid)
     progress.step(100)
     return grids, offs
+
+
+def boundary_mask(geometries: Sequence[CadGeometry], grid: "OccupancyGrid") -> Optional[np.ndarray]:
+    """Boundary evidence (``CadDrawing.boundary``: projection / dash-dot lines) as a 1-pixel boolean mask on
+    ``grid`` (None when there is none). Never drawn into the occupancy raster: the lines are no walls, only
+    a boundary the envelope disk may not cross (``segmentation.segment(boundary=...)``)."""
+    import cv2
+
+    if not geometries:
+        return None
+    img = np.zeros(grid.shape, np.uint8)
+    rings = [r if len(r) > 1 else np.vstack((r, r)) for g in geometries for r in _split_rings(g.coords) if len(r)]
+    if not rings:
+        return None
+    px = np.split(_to_px(np.concatenate(rings), grid.origin_x, grid.origin_y, grid.resolution),
+                  np.cumsum([len(r) for r in rings])[:-1])
+    cv2.polylines(img, px, False, 1, thickness=1, lineType=cv2.LINE_8, shift=SHIFT)
+    mask = img > 0
+    return mask if mask.any() else None

@@ -321,7 +321,8 @@ def _chord_pockets(claimed: np.ndarray, free_out: np.ndarray, max_chord: float =
 def building_interior(free: np.ndarray, resolution: float, envelope_gap: float = DEFAULT_ENVELOPE_GAP,
                       unknown: Optional[np.ndarray] = None, inside_points=None,
                       footprint_gap: Optional[float] = None, info: Optional[dict] = None,
-                      footprint: bool = False, progress=None) -> Tuple[np.ndarray, np.ndarray]:
+                      footprint: bool = False, progress=None, boundary: Optional[np.ndarray] = None
+                      ) -> Tuple[np.ndarray, np.ndarray]:
     """Free space inside the building envelope.
 
     Returns ``(interior_free, envelope)``: ``envelope`` is everything that is not outside, walls
@@ -355,6 +356,8 @@ def building_interior(free: np.ndarray, resolution: float, envelope_gap: float =
     check = progress.check if progress is not None else (lambda: None)
     info = {} if info is None else info
     passable = free if unknown is None else (free | unknown)
+    if boundary is not None:  # boundary evidence (``supported_boundary``): the disk does not cross it
+        passable = passable & ~boundary
     rc0 = max(1.0, envelope_gap / 2.0 / resolution)
     fgap = FOOTPRINT_FACTOR * envelope_gap if footprint_gap is None else float(footprint_gap)
     scales = [rc0]
@@ -444,6 +447,65 @@ def building_interior(free: np.ndarray, resolution: float, envelope_gap: float =
         small[1 + int(np.argmax(st[1:, cv2.CC_STAT_AREA]))] = False
     interior &= ~small[lab]
     return interior, envelope
+
+
+BOUNDARY_MIN_WIDTH_M = 1.0  # space closed by projection lines must be this wide somewhere to be a space
+
+
+def supported_boundary(free: np.ndarray, boundary: np.ndarray, resolution: float,
+                       envelope_gap: float = DEFAULT_ENVELOPE_GAP, inside_points=None, info: Optional[dict] = None
+                       ) -> Optional[np.ndarray]:
+    """The part of the boundary evidence (projection / dash-dot lines, ``rasterize.boundary_mask``) that
+    closes a space of the building: a corridor open on one side or at its ends, closed only by such a line.
+
+    Space that the envelope disk (diameter ``envelope_gap``) reaches without the lines and cannot reach with
+    them is kept inside when it holds a room name (``inside_points``, pixel col/row) or opens onto the
+    enclosed interior through a doorway (``MIN_CONTACT_M``) and is a space someone walks in (at least
+    ``BOUNDARY_MIN_WIDTH_M`` wide somewhere, at most (CLAIM_FACTOR x FOOTPRINT_FACTOR x envelope_gap)^2):
+    an eave line 0.5 m outside a facade, or lines in the landscape, close nothing. Returns the boundary
+    pixels along the kept spaces (for ``building_interior(boundary=...)``), or None; ``info["space"]`` gets
+    the kept spaces (claimed space: not dropped as an exterior pocket)."""
+    import cv2
+
+    if boundary is None or not boundary.any():
+        return None
+    rc0 = max(1.0, envelope_gap / 2.0 / resolution)
+    pad = int(math.ceil(rc0)) + 2
+    reach_a = _reach(_outside_centres(_edt(np.pad(free, pad, mode="constant", constant_values=True)), rc0), rc0,
+                     pad)
+    walk = free & ~boundary
+    reach_b = _reach(_outside_centres(_edt(np.pad(walk, pad, mode="constant", constant_values=True)), rc0), rc0,
+                     pad)
+    cand = walk & reach_a & ~reach_b
+    if not cand.any():
+        return None
+    n, lab = cv2.connectedComponents(cand.view(np.uint8), connectivity=4, ltype=cv2.CV_32S)
+    interior0 = free & ~reach_a
+    n0, lab0, st0, _ = cv2.connectedComponentsWithStats(interior0.view(np.uint8), connectivity=4, ltype=cv2.CV_32S)
+    big0 = st0[:, cv2.CC_STAT_AREA] >= rc0 * rc0
+    big0[0] = False
+    keep = np.zeros(n, bool)
+    if n0 > 1 and big0.any():
+        keep = _opens_onto(lab, n, lab0, n0, big0, max(1, int(round(MIN_CONTACT_M / resolution))))
+    clearance = _edt(cand)
+    widest = np.zeros(n)
+    np.maximum.at(widest, lab.ravel(), clearance.ravel())
+    keep &= widest >= 0.5 * BOUNDARY_MIN_WIDTH_M / resolution
+    if inside_points is not None and len(inside_points):
+        pts = np.rint(np.asarray(inside_points, dtype=np.float64).reshape(-1, 2) - 0.5).astype(np.int64)
+        ok = (pts[:, 0] >= 0) & (pts[:, 0] < free.shape[1]) & (pts[:, 1] >= 0) & (pts[:, 1] < free.shape[0])
+        keep[lab[pts[ok, 1], pts[ok, 0]]] = True
+    size = np.bincount(lab.ravel(), minlength=n)
+    keep &= size * resolution ** 2 <= (CLAIM_FACTOR * FOOTPRINT_FACTOR * envelope_gap) ** 2
+    keep[0] = False
+    if not keep.any():
+        return None
+    space = keep[lab]
+    if info is not None:
+        info["space"] = space
+    near = cv2.dilate(space.view(np.uint8), np.ones((5, 5), np.uint8)) > 0
+    out = boundary & near
+    return out if out.any() else None
 
 
 def _narrow_pockets(space: np.ndarray, dist: np.ndarray, resolution: float) -> Optional[np.ndarray]:
@@ -1371,7 +1433,7 @@ def segment(grid: OccupancyGrid, door_width: float = DEFAULT_DOOR_WIDTH,
             corridor_width: float = DEFAULT_CORRIDOR_WIDTH, delta: float = DEFAULT_DELTA,
             prune: float = DEFAULT_PRUNE, progress: Optional[Progress] = None,
             envelope_gap: float = DEFAULT_ENVELOPE_GAP, inside_points=None, door_hints=None,
-            footprint: bool = False) -> AreaGraph:
+            footprint: bool = False, boundary: Optional[np.ndarray] = None) -> AreaGraph:
     """Segment the free space of ``grid`` into an Area Graph.
 
     Returns an ``AreaGraph`` whose areas carry exact pixel-edge polygons (world metres), whose
@@ -1389,6 +1451,8 @@ def segment(grid: OccupancyGrid, door_width: float = DEFAULT_DOOR_WIDTH,
     become passages where the areas on both sides are not joined otherwise (``hint_passages``).
     Every area gets its ``component`` in the area graph (0 = the largest); ``stats`` has
     ``components`` and ``largest_component_share``, and the other components are logged.
+    ``boundary`` (bool mask on the grid, ``rasterize.boundary_mask``): projection / dash-dot lines, boundary
+    evidence where they close a space (``supported_boundary``), never walls.
     """
     progress = ensure(progress)
     t_all = time.perf_counter()
@@ -1413,8 +1477,15 @@ def segment(grid: OccupancyGrid, door_width: float = DEFAULT_DOOR_WIDTH,
         pix_pts = np.stack(grid.world_to_pixel(xy[:, 0], xy[:, 1]), axis=1)
     # unknown cells are not passable for the envelope disk either: some maps draw walls in grey
     info: dict = {}
+    if boundary is not None:
+        binfo: dict = {}
+        progress.check()
+        boundary = supported_boundary(free, boundary, res, envelope_gap, pix_pts, binfo)
+        stats["boundary_px"] = float(boundary.sum()) if boundary is not None else 0.0
     interior, envelope = building_interior(free, res, envelope_gap, inside_points=pix_pts, info=info,
-                                           footprint=footprint, progress=progress)
+                                           footprint=footprint, progress=progress, boundary=boundary)
+    if boundary is not None:  # space closed by projection lines is claimed: never an exterior pocket
+        info["claimed"] = binfo["space"] | boundary | info.get("claimed", np.zeros_like(free))
     del envelope
     stats["claimed_open_m2"] = info.get("claimed_px", 0) * res * res
     stats["inside_points"] = float(info.get("inside_points", 0))

@@ -251,3 +251,155 @@ def test_curved_treads_are_stairs_and_lone_arcs_stay():
     geoms = [arc(0, 0, 1.0 + 0.3 * k) for k in range(5)] + [arc(20, 0, 1.0), arc(20, 0, 3.0), arc(40, 0, 2.0)]
     assert free_stair_treads(geoms) == 5
     assert [g.kind for g in geoms] == ["stair"] * 5 + ["reference"] * 3
+
+
+# ------------------------------------------------------------------ corridors closed only by projection lines
+def _corridor_plan(tmp_path, line="layer", depth=2.5, name="Corridoio distribuzione", name_file="c.dxf"):
+    """Three 8 x 7 m classrooms in a row, each with a 1 m doorway in its north wall; north of them a corridor
+    bounded by no wall: only a line ``depth`` m beyond the facade, drawn as ``line``: "layer" (a layer named
+    for projections, continuous linetype), "entity" (dash-dot linetype on an unnamed layer), "continuous"
+    (a plain line on an unnamed layer: no evidence), "axis" (a dash-dot line on a grid-axis layer) or None."""
+    doc = ezdxf.new("R2010", setup=["linetypes"])
+    doc.header["$INSUNITS"] = 6
+    doc.layers.add("PROIEZIONI - projections")
+    doc.layers.add("misc")
+    doc.layers.add("S-GRID", linetype="CENTER")
+    msp = doc.modelspace()
+    wall = {"layer": "MURATURA"}
+    msp.add_line((0, 0), (24, 0), dxfattribs=wall)
+    msp.add_line((0, 0), (0, 7), dxfattribs=wall)
+    msp.add_line((24, 0), (24, 7), dxfattribs=wall)
+    for x in (8, 16):
+        msp.add_line((x, 0), (x, 7), dxfattribs=wall)
+    xs = [0, 3, 4, 11, 12, 19, 20, 24]  # north wall with doorways 3-4, 11-12, 19-20
+    for a, b in zip(xs[0::2], xs[1::2]):
+        msp.add_line((a, 7), (b, 7), dxfattribs=wall)
+    for k, x in enumerate((4, 12, 20)):
+        msp.add_text(f"Aula {k + 1}", dxfattribs={"layer": "SCRITTE", "height": 0.3, "insert": (x, 3.5)})
+    if name:
+        msp.add_text(name, dxfattribs={"layer": "SCRITTE", "height": 0.3, "insert": (10.0, 7 + depth / 2)})
+    y = 7 + depth
+    if line == "layer":
+        msp.add_line((0, y), (24, y), dxfattribs={"layer": "PROIEZIONI - projections"})
+    elif line == "entity":
+        msp.add_line((0, y), (24, y), dxfattribs={"layer": "misc", "linetype": "DASHDOT"})
+    elif line == "continuous":
+        msp.add_line((0, y), (24, y), dxfattribs={"layer": "misc"})
+    elif line == "axis":
+        msp.add_line((0, y), (24, y), dxfattribs={"layer": "S-GRID"})
+    return _save(doc, tmp_path, name_file)
+
+
+def _corridor_area(floor, y):
+    from shapely.geometry import Point
+
+    return [a for a in floor.refined.areas if a.polygon.buffer(0.05).contains(Point(10.0, y))]
+
+
+@pytest.mark.parametrize("line", ["layer", "entity"])
+def test_corridor_closed_only_by_a_projection_line_is_inside(tmp_path, line):
+    """A corridor bounded by walls on one side and by a projection line (a layer named for projections, or a
+    dash-dot linetype) on the other is an area, and the classrooms open onto it: one component."""
+    path = _corridor_plan(tmp_path, line)
+    drawing = import_dxf(path)
+    assert len(drawing.boundary) == 1 and drawing.boundary[0].kind == "boundary"
+    assert not any(abs(g.coords[:, 1] - 9.5).max() < 1e-6 for g in drawing.geometries)  # never a wall
+    floor = pipeline.process_floor(path)
+    corridor = _corridor_area(floor, 8.25)
+    assert corridor, [a.polygon.bounds for a in floor.refined.areas]
+    minx, miny, maxx, maxy = corridor[0].polygon.bounds
+    assert maxy <= 9.6 and maxx - minx > 20 and corridor[0].polygon.area > 0.8 * 24 * 2.5
+    assert floor.stats["components"] == 1 and floor.stats["largest_component_share"] == 1.0
+    assert floor.stats["passages"] >= 3
+    # the line is not drawn into the raster: the row of the line is free between the rooms' ends
+    from algorithms.segmentation import FREE
+
+    c, r = floor.grid.world_to_pixel(np.array([6.0, 14.0]), np.array([9.5, 9.5]))
+    assert (floor.grid.data[np.floor(r).astype(int), np.floor(c).astype(int)] == FREE).all()
+
+
+def test_corridor_without_a_name_is_inside_through_its_doorways(tmp_path):
+    floor = pipeline.process_floor(_corridor_plan(tmp_path, "entity", name=None))
+    assert _corridor_area(floor, 8.25)
+    assert floor.stats["components"] == 1
+
+
+@pytest.mark.parametrize("line", [None, "continuous", "axis"])
+def test_without_projection_evidence_the_corridor_stays_outside(tmp_path, line):
+    """No line, a plain line on an unnamed layer, or a dash-dot grid axis: no boundary evidence, the strip
+    is open to the outside and the three classrooms stay apart (the rule is what connects them)."""
+    path = _corridor_plan(tmp_path, line)
+    assert import_dxf(path).boundary == []
+    floor = pipeline.process_floor(path)
+    assert not _corridor_area(floor, 8.25)
+    assert floor.stats["components"] == 3
+
+
+def test_an_eave_line_close_to_the_facade_closes_nothing(tmp_path):
+    """A dash-dot eave line 0.4 m beyond the facade, no name in the strip: too narrow to be a space, so it is
+    no boundary (no strip area, the rooms stay as without it)."""
+    floor = pipeline.process_floor(_corridor_plan(tmp_path, "entity", depth=0.4, name=None))
+    assert floor.stats["segment"].get("boundary_px", 0) == 0
+    assert not _corridor_area(floor, 7.2)
+    assert floor.stats["components"] == 3
+
+
+# ------------------------------------------------------------------ an elevation drawn close to the plan
+def _plan_with_elevation(tmp_path, title="ELEVACION PRINCIPAL", gap=2.0):
+    """A 30 x 16 m plan of six rooms (titled 'PLANTA DE DISTRIBUCION') and, ``gap`` m below it (closer than
+    the sheet gap), its main elevation: a facade outline with doors and windows, titled ``title`` under it."""
+    doc = _doc()
+    msp = doc.modelspace()
+    for i in range(3):
+        for j in range(2):
+            x0, y0 = 10.0 * i, 8.0 * j
+            msp.add_line((x0, y0), (x0 + 4, y0), dxfattribs={"layer": "A-WALL"})
+            msp.add_line((x0 + 5, y0), (x0 + 10, y0), dxfattribs={"layer": "A-WALL"})
+            msp.add_line((x0 + 10, y0), (x0 + 10, y0 + 8), dxfattribs={"layer": "A-WALL"})
+            msp.add_line((x0 + 10, y0 + 8), (x0, y0 + 8), dxfattribs={"layer": "A-WALL"})
+            msp.add_line((x0, y0 + 8), (x0, y0), dxfattribs={"layer": "A-WALL"})
+    msp.add_text("PLANTA DE DISTRIBUCION", dxfattribs={"layer": "TXT", "height": 0.5, "insert": (32.0, 0.5)})
+    top = -gap
+    base = top - 6.0
+    _rect(msp, 4, base, 26, top)  # the facade
+    for x in (6, 12, 18, 22):
+        _rect(msp, x, base, x + 1.2, base + 2.4)  # doors
+        _rect(msp, x, base + 3.5, x + 1.2, base + 5.0)  # windows
+    msp.add_line((3, base), (27, base), dxfattribs={"layer": "A-WALL"})  # ground line
+    if title:
+        msp.add_text(title, dxfattribs={"layer": "TXT", "height": 0.6, "insert": (10.0, base - 1.2)})
+    return _save(doc, tmp_path, "elev.dxf")
+
+
+@pytest.mark.parametrize("title", ["ELEVACION PRINCIPAL", "SECTION A-A", "PROSPETTO SUD", "南立面图"])
+def test_an_elevation_drawn_close_below_the_plan_is_a_group_of_its_own(tmp_path, title):
+    drawing = import_dxf(_plan_with_elevation(tmp_path, title))
+    sel = [p for p in drawing.plans if p.selected]
+    assert len(sel) == 1 and sel[0].kind == "plan" and sel[0].title == "PLANTA DE DISTRIBUCION"
+    assert sel[0].extent[1] >= -0.5  # the plan alone, not the elevation below it
+    other = [p for p in drawing.plans if not p.selected]
+    assert len(other) == 1 and other[0].kind == "detail" and other[0].title == title
+    assert all(g.coords[:, 1].min() >= -0.5 for g in drawing.geometries)
+
+
+def test_an_untitled_view_close_to_the_plan_stays_with_it(tmp_path):
+    """Without a title saying elevation/section, a drawing 2 m off the plan stays with it (a wing, a porch):
+    the band alone proves nothing."""
+    drawing = import_dxf(_plan_with_elevation(tmp_path, None))
+    assert len([p for p in drawing.plans if p.kind != "other"]) == 1
+    assert any(g.coords[:, 1].min() < -2.5 for g in drawing.geometries)
+
+
+@pytest.mark.qgis_process
+def test_dxftoosmag_headless_corridor_closed_by_a_projection_line(tmp_path):
+    """Headless: the corridor closed only by a projection line is an area of the osmAG file, named by its
+    text, and each classroom has a passage to it."""
+    from algorithms import osmag
+    from tests.qgis_process import run_alg
+
+    out = tmp_path / "corridor.osm"
+    _, res, log = run_alg("dxftoosmag", {"INPUT": _corridor_plan(tmp_path, "layer"), "OUTPUT": str(out)})
+    areas, passages, _, _ = osmag.read_osmag(str(out))
+    corridor = [a for a in areas if a.name == "Corridoio distribuzione"]
+    assert len(corridor) == 1
+    assert len([p for p in passages if corridor[0].id in (p.from_id, p.to_id)]) >= 3
