@@ -35,6 +35,18 @@ def plugin_package():
     return sys.modules["cad2osmag"]
 
 
+def headless_qgis():
+    """Start a QGIS application without a window for the repository's build scripts (models/build_model.py,
+    styles/build_styles.py) and import the repository as the package 'cad2osmag'. Returns (app, package):
+    keep ``app`` referenced while QGIS is used."""
+    os.environ.setdefault("QT_QPA_PLATFORM", "offscreen")
+    from qgis.core import QgsApplication
+
+    app = QgsApplication([], False)
+    app.initQgis()
+    return app, plugin_package()
+
+
 @pytest.fixture(scope="session")
 def shared_data() -> Path:
     if not SHARED_DATA.is_dir():
@@ -63,3 +75,43 @@ def provider(qgis_app, qgis_processing):
         registry.removeProvider(prov)
     else:
         yield registry.providerById("cad2osmag")
+
+
+# --- per-test CPU, wall and memory record (tests/artifacts/test-times-<worker>.json) -------------------
+# The CI machine is shared and loaded, so wall times mislead: CPU seconds of the test process and of the
+# subprocesses it waited for (qgis_process, fuzz children) say what a test costs. Setup and teardown
+# (the first user of a session fixture pays for it) are counted with the test.
+_TIMES = []
+
+
+@pytest.hookimpl(hookwrapper=True)
+def pytest_runtest_protocol(item, nextitem):
+    import resource
+    import time
+
+    own0, wall0 = time.process_time(), time.perf_counter()
+    kids0 = resource.getrusage(resource.RUSAGE_CHILDREN)
+    yield
+    kids1 = resource.getrusage(resource.RUSAGE_CHILDREN)
+    _TIMES.append({
+        "test": item.nodeid,
+        "cpu": round(time.process_time() - own0, 3),
+        "child_cpu": round(kids1.ru_utime + kids1.ru_stime - kids0.ru_utime - kids0.ru_stime, 3),
+        "wall": round(time.perf_counter() - wall0, 3),
+        "maxrss_mb": round(resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024, 1),
+        "child_maxrss_mb": round(kids1.ru_maxrss / 1024, 1),
+    })
+
+
+def pytest_sessionfinish(session, exitstatus):
+    if not _TIMES:
+        return
+    import json
+
+    worker = os.environ.get("PYTEST_XDIST_WORKER", "main")
+    folder = REPO / "tests" / "artifacts"
+    folder.mkdir(parents=True, exist_ok=True)
+    path = folder / f"test-times-{worker}.json"
+    tmp = path.with_suffix(".json.tmp")
+    tmp.write_text(json.dumps(_TIMES, indent=1))
+    os.replace(tmp, path)
