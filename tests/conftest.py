@@ -59,6 +59,104 @@ def repo_root() -> Path:
     return REPO
 
 
+# --- one conversion of each shared drawing per test session ------------------------------------------
+# Several test files run stages 1-5 (pipeline.process_floor) on the same shared drawing with the same
+# arguments (test_real_plans, test_semantics). The first caller converts and pickles the result into a
+# folder of this session's temporary directory (shared by the pytest-xdist workers), keyed by the file,
+# the arguments and a digest of algorithms/; a lock per key makes a second worker wait for that conversion
+# instead of repeating it. Every caller gets its own copy (loaded from disk), so tests cannot alter each
+# other's results, and a worker holds no more than the floor it is looking at.
+def code_digest() -> str:
+    """Digest of the code that a cached result depends on (algorithms/, with its rule and data files)."""
+    import hashlib
+
+    h = hashlib.sha256()
+    for p in sorted((REPO / "algorithms").rglob("*")):
+        if p.is_file() and "__pycache__" not in p.parts:
+            h.update(str(p.relative_to(REPO)).encode())
+            h.update(p.read_bytes())
+    return h.hexdigest()[:16]
+
+
+class FloorCache:
+    def __init__(self, folder: Path):
+        self.folder = folder
+        self.folder.mkdir(parents=True, exist_ok=True)
+        self.digest = code_digest()
+        self.hits = self.misses = 0
+        from algorithms import pipeline
+
+        self._process_floor = pipeline.process_floor  # the real one (convert_dxf below patches the module's)
+
+    def key(self, path, kwargs) -> str:
+        """The file (path, size, time), every argument (defaults filled in: ``level="1"`` given or not is
+        one key) and the code digest."""
+        import hashlib
+        import inspect
+
+        args = inspect.signature(self._process_floor).bind(path, **kwargs)
+        args.apply_defaults()
+        given = {k: v for k, v in args.arguments.items() if k not in ("dxf_path", "progress")}
+        st = os.stat(path)
+        text = repr((os.path.abspath(path), st.st_size, st.st_mtime_ns, sorted(given.items()), self.digest))
+        return f"{Path(path).stem}-{hashlib.sha256(text.encode()).hexdigest()[:16]}"
+
+    def process_floor(self, path, progress=None, **kwargs):
+        """``pipeline.process_floor(path, **kwargs)``, computed once per session (``progress`` is not
+        reported on a hit). An InputError is cached and raised again like the real conversion's."""
+        import fcntl
+        import pickle
+
+        key = self.key(str(path), kwargs)
+        data = self.folder / f"{key}.pickle"
+        with open(self.folder / f"{key}.lock", "w") as lock:
+            fcntl.flock(lock, fcntl.LOCK_EX)
+            try:
+                if data.exists():
+                    self.hits += 1
+                    with open(data, "rb") as fh:
+                        ok, value = pickle.load(fh)
+                else:
+                    self.misses += 1
+                    from algorithms.errors import InputError
+
+                    try:
+                        ok, value = True, self._process_floor(str(path), progress=progress, **kwargs)
+                    except InputError as exc:
+                        ok, value = False, exc
+                    tmp = data.with_suffix(f".{os.getpid()}.tmp")
+                    with open(tmp, "wb") as fh:
+                        pickle.dump((ok, value), fh, protocol=pickle.HIGHEST_PROTOCOL)
+                    os.replace(tmp, data)
+                    if ok:  # the caller's copy must be as independent as a loaded one
+                        with open(data, "rb") as fh:
+                            ok, value = pickle.load(fh)
+            finally:
+                fcntl.flock(lock, fcntl.LOCK_UN)
+        if not ok:
+            raise value
+        return value
+
+    def convert_dxf(self, path, out_osm, **kwargs):
+        """``pipeline.convert_dxf`` (the osmAG file is written) on the cached stages 1-5."""
+        from unittest import mock
+
+        from algorithms import pipeline
+
+        with mock.patch.object(pipeline, "process_floor", self.process_floor):
+            return pipeline.convert_dxf(str(path), str(out_osm), **kwargs)
+
+
+@pytest.fixture(scope="session")
+def floor_cache(tmp_path_factory) -> FloorCache:
+    """Stages 1-5 of a drawing computed once per session: ``floor_cache.process_floor(path, **kwargs)``,
+    ``floor_cache.convert_dxf(path, out_osm, **kwargs)``. The folder is the session's, shared by the xdist
+    workers (their own temporary directories sit side by side in it)."""
+    base = tmp_path_factory.getbasetemp()
+    root = base.parent if os.environ.get("PYTEST_XDIST_WORKER") else base
+    return FloorCache(root / "floor-cache")
+
+
 @pytest.fixture()
 def provider(qgis_app, qgis_processing):
     """The cad2osmag Processing provider registered in the test QGIS (registered here if the plugin is not)."""
