@@ -199,6 +199,8 @@ def pytest_runtest_protocol(item, nextitem):
         "maxrss_mb": round(resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024, 1),
         "child_maxrss_mb": round(kids1.ru_maxrss / 1024, 1),
     })
+    if len(_TIMES) % 10 == 0:  # a run stopped half-way still leaves its figures
+        pytest_sessionfinish(None, None)
 
 
 def pytest_sessionfinish(session, exitstatus):
@@ -213,3 +215,28 @@ def pytest_sessionfinish(session, exitstatus):
     tmp = path.with_suffix(".json.tmp")
     tmp.write_text(json.dumps(_TIMES, indent=1))
     os.replace(tmp, path)
+
+
+# --- heaviest files first on the xdist workers ---------------------------------------------------------
+# With `-n 2 --dist loadfile` a test file runs on one worker, and the files are handed out in collection
+# order: starting the long real-data files first keeps one of them from running alone at the end while the
+# other core idles. CPU seconds per file, measured with the record above (tests/artifacts/test-times-*.json,
+# whole suite on the 2-core machine); a file not listed counts as light.
+FILE_CPU_SECONDS = {
+    # first estimate from what each file converts (real DWG sheets > real DXF plans > fuzzing > QGIS runs);
+    # refresh from tests/artifacts/test-times-*.json after a whole run
+    "test_building_dwg.py": 900, "test_real_plans.py": 800, "test_semantics.py": 500, "test_determinism.py": 300,
+    "test_fuzz_dwg.py": 300, "test_fuzz_dxf.py": 300, "test_building.py": 250, "test_segmentation_real.py": 250,
+    "test_dwg.py": 200, "test_sheet_real.py": 150, "test_real_dxf.py": 120, "test_cancel.py": 100,
+    "test_osmag_client.py": 100, "test_fuzz_qgis.py": 80,
+}
+
+
+def pytest_collection_modifyitems(session, config, items):
+    if not os.environ.get("PYTEST_XDIST_WORKER"):
+        return
+    order = {}
+    for item in items:  # sort whole files, keeping the order of tests inside a file
+        order.setdefault(item.nodeid.split("::")[0], len(order))
+    items.sort(key=lambda it: (-FILE_CPU_SECONDS.get(Path(it.nodeid.split("::")[0]).name, 0),
+                               order[it.nodeid.split("::")[0]]))
