@@ -1,4 +1,5 @@
 """Shared fixtures. Real data lives in ../shared/data beside the repository (never copied in)."""
+import collections
 import os
 import sys
 from pathlib import Path
@@ -218,10 +219,10 @@ def pytest_sessionfinish(session, exitstatus):
 
 
 # --- heaviest files first on the xdist workers ---------------------------------------------------------
-# With `-n 2 --dist loadfile` a test file runs on one worker, and the files are handed out in collection
-# order: starting the long real-data files first keeps one of them from running alone at the end while the
-# other core idles. CPU seconds per file, measured with the record above (tests/artifacts/test-times-*.json,
-# whole suite on the 2-core machine); a file not listed counts as light.
+# With `-n 2 --dist loadfile` a test file runs on one worker. pytest-xdist hands the files out by their
+# number of tests; handing out the most expensive first instead keeps a long real-data file from running
+# alone at the end while the other core idles (longest-processing-time-first). CPU seconds per file from
+# the record above (tests/artifacts/test-times-*.json); a file not listed counts as light.
 FILE_CPU_SECONDS = {
     # first estimate from what each file converts (real DWG sheets > real DXF plans > fuzzing > QGIS runs);
     # refresh from tests/artifacts/test-times-*.json after a whole run
@@ -232,11 +233,26 @@ FILE_CPU_SECONDS = {
 }
 
 
-def pytest_collection_modifyitems(session, config, items):
-    if not os.environ.get("PYTEST_XDIST_WORKER"):
-        return
-    order = {}
-    for item in items:  # sort whole files, keeping the order of tests inside a file
-        order.setdefault(item.nodeid.split("::")[0], len(order))
-    items.sort(key=lambda it: (-FILE_CPU_SECONDS.get(Path(it.nodeid.split("::")[0]).name, 0),
-                               order[it.nodeid.split("::")[0]]))
+class _HeaviestFirst(collections.OrderedDict):
+    """xdist's queue of test files: the next file handed out is the most expensive one left."""
+
+    def popitem(self, last=True):
+        if last or not self:
+            return super().popitem(last)
+        scope = max(self, key=lambda s: FILE_CPU_SECONDS.get(Path(s.split("::")[0]).name, 0))
+        return scope, self.pop(scope)
+
+
+try:
+    import xdist  # noqa: F401
+except ImportError:  # one process: nothing to schedule
+    pass
+else:
+    def pytest_xdist_make_scheduler(config, log):
+        if config.getoption("dist") != "loadfile":
+            return None
+        from xdist.scheduler import LoadFileScheduling
+
+        scheduler = LoadFileScheduling(config, log)
+        scheduler.workqueue = _HeaviestFirst()
+        return scheduler
