@@ -181,6 +181,13 @@ def provider(qgis_app, qgis_processing):
 # subprocesses it waited for (qgis_process, fuzz children) say what a test costs. Setup and teardown
 # (the first user of a session fixture pays for it) are counted with the test.
 _TIMES = []
+_OUTCOMES = {}
+
+
+def pytest_runtest_logreport(report):
+    if report.failed or report.skipped or hasattr(report, "wasxfail"):
+        outcome = "xfail" if hasattr(report, "wasxfail") else report.outcome
+        _OUTCOMES.setdefault(report.nodeid, outcome)
 
 
 @pytest.hookimpl(hookwrapper=True)
@@ -199,6 +206,7 @@ def pytest_runtest_protocol(item, nextitem):
         "wall": round(time.perf_counter() - wall0, 3),
         "maxrss_mb": round(resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024, 1),
         "child_maxrss_mb": round(kids1.ru_maxrss / 1024, 1),
+        "outcome": _OUTCOMES.pop(item.nodeid, "passed"),
     })
     if len(_TIMES) % 10 == 0:  # a run stopped half-way still leaves its figures
         pytest_sessionfinish(None, None)
