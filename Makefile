@@ -36,11 +36,15 @@ $(STAMP): requirements.txt requirements-dev.txt constraints-build.txt scripts/in
 demo: install
 	bash scripts/demo.sh
 
+# Both cores (pytest-xdist, requirements-dev.txt): a test file stays on one worker (module fixtures are
+# computed once), the heaviest files start first (tests/conftest.py). TEST_JOBS=0 runs in one process.
+TEST_JOBS ?= 2
+PYTEST_PAR := $(if $(filter 0,$(TEST_JOBS)),,-n $(TEST_JOBS) --dist loadfile)
 test: install
-	QT_QPA_PLATFORM=offscreen $(PY) -m pytest tests -ra
+	QT_QPA_PLATFORM=offscreen $(PY) -m pytest tests -ra $(PYTEST_PAR)
 
 test-quick: install
-	QT_QPA_PLATFORM=offscreen $(PY) -m pytest tests -ra -m "not slow"
+	QT_QPA_PLATFORM=offscreen $(PY) -m pytest tests -ra -m "not slow" $(PYTEST_PAR)
 
 bench: install
 	$(PY) scripts/bench.py --write docs/benchmarks.md $(BENCH_ARGS)

@@ -43,6 +43,7 @@ from typing import Dict, Iterator, List, Optional, Tuple
 
 import numpy as np
 
+from .cad_read import check_drawing_file
 from .errors import InputError
 from .progress import ensure
 
@@ -97,17 +98,7 @@ def is_dwg(path: str) -> bool:
 
 def check_dwg(path: str) -> str:
     """Header checks before any decoding; returns the version code."""
-    base = os.path.basename(path)
-    if not os.path.exists(path):
-        raise InputError(f"DWG file '{path}' does not exist")
-    if os.path.isdir(path):
-        raise InputError(f"'{path}' is a folder, not a DWG file")
-    size = os.path.getsize(path)
-    with open(path, "rb") as fh:
-        head = fh.read(0x80)
-    if size == 0 or not head.strip(b"\x00 \t\r\n"):
-        raise InputError(f"'{base}' is empty ({size} bytes, no drawing data); save the drawing again from your CAD "
-                         "program")
+    base, _, head = check_drawing_file(path, "DWG", 0x80, "save the drawing again from your CAD program")
     code = head[:6].rstrip(b"\x00").decode("latin-1", "replace")
     if not (head[:2] == b"AC" and (code in DWG_VERSIONS or (len(code) == 6 and code[2:].isdigit()))):
         raise InputError(f"'{base}' is not a DWG file (it does not start with a DWG version code such as "

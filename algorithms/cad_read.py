@@ -8,6 +8,23 @@ from typing import List
 from .errors import InputError
 
 
+def check_drawing_file(path: str, kind: str, head_size: int, empty_advice: str):
+    """The checks every drawing file gets before it is decoded: it exists, is a file and holds data (not only
+    NUL bytes or white space). ``kind`` ("DXF", "DWG") names the file in the errors, ``empty_advice`` says
+    what to do with an empty one. Returns (file name, size in bytes, its first ``head_size`` bytes)."""
+    if not os.path.exists(path):
+        raise InputError(f"{kind} file '{path}' does not exist")
+    if os.path.isdir(path):
+        raise InputError(f"'{path}' is a folder, not a {kind} file")
+    base = os.path.basename(path)
+    size = os.path.getsize(path)
+    with open(path, "rb") as fh:
+        head = fh.read(head_size)
+    if size == 0 or not head.strip(b"\x00 \t\r\n"):
+        raise InputError(f"'{base}' is empty ({size} bytes, no drawing data); {empty_advice}")
+    return base, size, head
+
+
 def _read_doc(path: str, progress):
     """Read a DXF; fall back to ezdxf's recover mode and report what it repaired."""
     import ezdxf
@@ -17,15 +34,7 @@ def _read_doc(path: str, progress):
 
     if cad_dwg.is_dwg(path):
         return cad_dwg.read_dwg(path, progress)
-    if not os.path.exists(path):
-        raise InputError(f"DXF file '{path}' does not exist")
-    if os.path.isdir(path):
-        raise InputError(f"'{path}' is a folder, not a DXF file")
-    base = os.path.basename(path)
-    with open(path, "rb") as fh:
-        head = fh.read(4096)
-    if not head.strip():
-        raise InputError(f"'{base}' is empty (0 bytes of drawing data); export the plan again as DXF")
+    base, _, head = check_drawing_file(path, "DXF", 4096, "export the plan again as DXF")
     if head[:4] == b"AC10" or head[:6] == b"AC1.40":
         raise InputError(f"'{base}' is a DWG file, not a DXF; convert it to DXF first (e.g. with the ODA File "
                          "Converter, LibreCAD or 'Save As DXF' in your CAD program)")

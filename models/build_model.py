@@ -138,14 +138,10 @@ def build():
 def main():
     sys.path.insert(0, os.path.join(REPO, "tests"))
     sys.path.insert(0, REPO)
-    os.environ.setdefault("QT_QPA_PLATFORM", "offscreen")
+    from conftest import headless_qgis  # noqa: E402 - QGIS, and the repository as the package 'cad2osmag'
+
+    app, _ = headless_qgis()  # noqa: F841 - QGIS lives as long as app
     from qgis.core import QgsApplication
-
-    app = QgsApplication([], False)
-    app.initQgis()
-    from conftest import plugin_package  # noqa: E402 - the repository as the package 'cad2osmag'
-
-    plugin_package()
     from cad2osmag.processing_provider.provider import Cad2OsmagProvider
 
     provider = Cad2OsmagProvider(include_models=False)

@@ -297,6 +297,19 @@ def _growth(xs, ys):
     return sum((p[0] - mx) * (p[1] - my) for p in pts) / den if den else float("nan")
 
 
+def _series_table(title, header, align, runs, key, cells):
+    """Markdown lines of one scaling series: a title, then a row per run (``cells(run)``); a failed run is its
+    ``key`` value and the error."""
+    L = ["", title, "", f"| {header} |", f"| {align} |"]
+    width = header.count("|") + 1
+    for r in runs:
+        if r.get("ok"):
+            L.append("| " + " | ".join(str(c) for c in cells(r)) + " |")
+        else:
+            L.append(f"| {r[key]} | failed: {r.get('error', '')[:200]} |" + " |" * (width - 2))
+    return L
+
+
 def write_markdown(path: Path, rows, scaling, total, args, pending=0):
     rel_gallery = "gallery"
     L = ["# Benchmarks", "",
@@ -369,18 +382,15 @@ def write_markdown(path: Path, rows, scaling, total, args, pending=0):
         steps = ", ".join(f"{k} {v:.2f}" for k, v in r.get("segment_steps", {}).items() if v == v and v >= 0.05)
         L.append(f"| {r['label']} ({r['group'].split()[0]}) | " + " | ".join(cells) + f" | {steps} |")
     if scaling:
-        L += ["", "## Scaling", "", f"### Raster size ({SCALING_FLOOR} filtered DXF, one run each)", "",
-              "| m/px | raster px | Mpx | wall s | CPU s | peak RSS MB | segment CPU s | areas | passages |",
-              "| ---: | --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: |"]
+        L += ["", "## Scaling"]
+        L += _series_table(f"### Raster size ({SCALING_FLOOR} filtered DXF, one run each)",
+                           "m/px | raster px | Mpx | wall s | CPU s | peak RSS MB | segment CPU s | areas | passages",
+                           "---: | --- | ---: | ---: | ---: | ---: | ---: | ---: | ---:", scaling["resolution"], "res",
+                           lambda r: [r["res"], f"{r['raster'][0]}×{r['raster'][1]}",
+                                      f"{r['raster'][0] * r['raster'][1] / 1e6:.1f}", _f(r["wall_s"]), _f(r["cpu_s"]),
+                                      _f(r["peak_mb"], 0), _f(r["stages_cpu"].get("segment")), r["areas"],
+                                      r["passages"]])
         ok = [r for r in scaling["resolution"] if r.get("ok")]
-        for r in scaling["resolution"]:
-            if not r.get("ok"):
-                L.append(f"| {r['res']} | failed: {r.get('error', '')[:200]} | | | | | | | |")
-                continue
-            mpx = r["raster"][0] * r["raster"][1] / 1e6
-            L.append(f"| {r['res']} | {r['raster'][0]}×{r['raster'][1]} | {mpx:.1f} | {_f(r['wall_s'])} | "
-                     f"{_f(r['cpu_s'])} | {_f(r['peak_mb'], 0)} | {_f(r['stages_cpu'].get('segment'))} | "
-                     f"{r['areas']} | {r['passages']} |")
         if len(ok) >= 2:
             mp = [r["raster"][0] * r["raster"][1] for r in ok]
             L += ["", f"Growth with pixels (exponent b of cost ∝ pixels^b, log-log fit): CPU b = "
@@ -388,16 +398,13 @@ def write_markdown(path: Path, rows, scaling, total, args, pending=0):
                   f"{_growth(mp, [r['stages_cpu'].get('segment') for r in ok]):.2f}, peak RSS above the baseline b = "
                   f"{_growth(mp, [r['peak_mb'] - r['baseline_mb'] for r in ok]):.2f} (1 = linear in pixels)."]
         if scaling["floors"]:
-            L += ["", "### Floors fused (SIST filtered floors F1..Fk, from this bench's osmAG files, one run each)", "",
-                  "| floors | wall s | CPU s | peak RSS MB | areas | vertical passages | registration RMS m |",
-                  "| ---: | ---: | ---: | ---: | ---: | ---: | ---: |"]
+            L += _series_table("### Floors fused (SIST filtered floors F1..Fk, from this bench's osmAG files, one run "
+                               "each)", "floors | wall s | CPU s | peak RSS MB | areas | vertical passages | "
+                               "registration RMS m", "---: | ---: | ---: | ---: | ---: | ---: | ---:",
+                               scaling["floors"], "k",
+                               lambda r: [r["k"], _f(r["wall_s"]), _f(r["cpu_s"]), _f(r["peak_mb"], 0), r["areas"],
+                                          r["vertical"], _f(r.get("overall_rms"), 3)])
             ok = [r for r in scaling["floors"] if r.get("ok")]
-            for r in scaling["floors"]:
-                if not r.get("ok"):
-                    L.append(f"| {r['k']} | failed: {r.get('error', '')[:200]} | | | | | |")
-                    continue
-                L.append(f"| {r['k']} | {_f(r['wall_s'])} | {_f(r['cpu_s'])} | {_f(r['peak_mb'], 0)} | {r['areas']} | "
-                         f"{r['vertical']} | {_f(r.get('overall_rms'), 3)} |")
             if len(ok) >= 2:
                 L += ["", f"Growth with floors: CPU b = {_growth([r['k'] for r in ok], [r['cpu_s'] for r in ok]):.2f} "
                       "(cost ∝ floors^b)."]

@@ -20,14 +20,10 @@ REPO = os.path.dirname(HERE)
 def main():
     sys.path.insert(0, os.path.join(REPO, "tests"))
     sys.path.insert(0, REPO)
-    os.environ.setdefault("QT_QPA_PLATFORM", "offscreen")
-    from qgis.core import QgsApplication, QgsVectorLayer
+    from conftest import headless_qgis  # noqa: E402 - QGIS, and the repository as the package 'cad2osmag'
 
-    app = QgsApplication([], False)
-    app.initQgis()
-    from conftest import plugin_package  # noqa: E402
-
-    plugin_package()
+    app, _ = headless_qgis()  # noqa: F841 - QGIS lives as long as app
+    from qgis.core import QgsVectorLayer
     from cad2osmag.processing_provider.alg_load_osmag import build_osmag_style
 
     layers = {

@@ -1,4 +1,5 @@
 """Shared fixtures. Real data lives in ../shared/data beside the repository (never copied in)."""
+import collections
 import os
 import sys
 from pathlib import Path
@@ -35,6 +36,18 @@ def plugin_package():
     return sys.modules["cad2osmag"]
 
 
+def headless_qgis():
+    """Start a QGIS application without a window for the repository's build scripts (models/build_model.py,
+    styles/build_styles.py) and import the repository as the package 'cad2osmag'. Returns (app, package):
+    keep ``app`` referenced while QGIS is used."""
+    os.environ.setdefault("QT_QPA_PLATFORM", "offscreen")
+    from qgis.core import QgsApplication
+
+    app = QgsApplication([], False)
+    app.initQgis()
+    return app, plugin_package()
+
+
 @pytest.fixture(scope="session")
 def shared_data() -> Path:
     if not SHARED_DATA.is_dir():
@@ -45,6 +58,104 @@ def shared_data() -> Path:
 @pytest.fixture(scope="session")
 def repo_root() -> Path:
     return REPO
+
+
+# --- one conversion of each shared drawing per test session ------------------------------------------
+# Several test files run stages 1-5 (pipeline.process_floor) on the same shared drawing with the same
+# arguments (test_real_plans, test_semantics). The first caller converts and pickles the result into a
+# folder of this session's temporary directory (shared by the pytest-xdist workers), keyed by the file,
+# the arguments and a digest of algorithms/; a lock per key makes a second worker wait for that conversion
+# instead of repeating it. Every caller gets its own copy (loaded from disk), so tests cannot alter each
+# other's results, and a worker holds no more than the floor it is looking at.
+def code_digest() -> str:
+    """Digest of the code that a cached result depends on (algorithms/, with its rule and data files)."""
+    import hashlib
+
+    h = hashlib.sha256()
+    for p in sorted((REPO / "algorithms").rglob("*")):
+        if p.is_file() and "__pycache__" not in p.parts:
+            h.update(str(p.relative_to(REPO)).encode())
+            h.update(p.read_bytes())
+    return h.hexdigest()[:16]
+
+
+class FloorCache:
+    def __init__(self, folder: Path):
+        self.folder = folder
+        self.folder.mkdir(parents=True, exist_ok=True)
+        self.digest = code_digest()
+        self.hits = self.misses = 0
+        from algorithms import pipeline
+
+        self._process_floor = pipeline.process_floor  # the real one (convert_dxf below patches the module's)
+
+    def key(self, path, kwargs) -> str:
+        """The file (path, size, time), every argument (defaults filled in: ``level="1"`` given or not is
+        one key) and the code digest."""
+        import hashlib
+        import inspect
+
+        args = inspect.signature(self._process_floor).bind(path, **kwargs)
+        args.apply_defaults()
+        given = {k: v for k, v in args.arguments.items() if k not in ("dxf_path", "progress")}
+        st = os.stat(path)
+        text = repr((os.path.abspath(path), st.st_size, st.st_mtime_ns, sorted(given.items()), self.digest))
+        return f"{Path(path).stem}-{hashlib.sha256(text.encode()).hexdigest()[:16]}"
+
+    def process_floor(self, path, progress=None, **kwargs):
+        """``pipeline.process_floor(path, **kwargs)``, computed once per session (``progress`` is not
+        reported on a hit). An InputError is cached and raised again like the real conversion's."""
+        import fcntl
+        import pickle
+
+        key = self.key(str(path), kwargs)
+        data = self.folder / f"{key}.pickle"
+        with open(self.folder / f"{key}.lock", "w") as lock:
+            fcntl.flock(lock, fcntl.LOCK_EX)
+            try:
+                if data.exists():
+                    self.hits += 1
+                    with open(data, "rb") as fh:
+                        ok, value = pickle.load(fh)
+                else:
+                    self.misses += 1
+                    from algorithms.errors import InputError
+
+                    try:
+                        ok, value = True, self._process_floor(str(path), progress=progress, **kwargs)
+                    except InputError as exc:
+                        ok, value = False, exc
+                    tmp = data.with_suffix(f".{os.getpid()}.tmp")
+                    with open(tmp, "wb") as fh:
+                        pickle.dump((ok, value), fh, protocol=pickle.HIGHEST_PROTOCOL)
+                    os.replace(tmp, data)
+                    if ok:  # the caller's copy must be as independent as a loaded one
+                        with open(data, "rb") as fh:
+                            ok, value = pickle.load(fh)
+            finally:
+                fcntl.flock(lock, fcntl.LOCK_UN)
+        if not ok:
+            raise value
+        return value
+
+    def convert_dxf(self, path, out_osm, **kwargs):
+        """``pipeline.convert_dxf`` (the osmAG file is written) on the cached stages 1-5."""
+        from unittest import mock
+
+        from algorithms import pipeline
+
+        with mock.patch.object(pipeline, "process_floor", self.process_floor):
+            return pipeline.convert_dxf(str(path), str(out_osm), **kwargs)
+
+
+@pytest.fixture(scope="session")
+def floor_cache(tmp_path_factory) -> FloorCache:
+    """Stages 1-5 of a drawing computed once per session: ``floor_cache.process_floor(path, **kwargs)``,
+    ``floor_cache.convert_dxf(path, out_osm, **kwargs)``. The folder is the session's, shared by the xdist
+    workers (their own temporary directories sit side by side in it)."""
+    base = tmp_path_factory.getbasetemp()
+    root = base.parent if os.environ.get("PYTEST_XDIST_WORKER") else base
+    return FloorCache(root / "floor-cache")
 
 
 @pytest.fixture()
@@ -63,3 +174,96 @@ def provider(qgis_app, qgis_processing):
         registry.removeProvider(prov)
     else:
         yield registry.providerById("cad2osmag")
+
+
+# --- per-test CPU, wall and memory record (tests/artifacts/test-times-<worker>.json) -------------------
+# The CI machine is shared and loaded, so wall times mislead: CPU seconds of the test process and of the
+# subprocesses it waited for (qgis_process, fuzz children) say what a test costs. Setup and teardown
+# (the first user of a session fixture pays for it) are counted with the test.
+_TIMES = []
+_OUTCOMES = {}
+
+
+def pytest_runtest_logreport(report):
+    if report.failed or report.skipped or hasattr(report, "wasxfail"):
+        outcome = "xfail" if hasattr(report, "wasxfail") else report.outcome
+        _OUTCOMES.setdefault(report.nodeid, outcome)
+
+
+@pytest.hookimpl(hookwrapper=True)
+def pytest_runtest_protocol(item, nextitem):
+    import resource
+    import time
+
+    own0, wall0 = time.process_time(), time.perf_counter()
+    kids0 = resource.getrusage(resource.RUSAGE_CHILDREN)
+    yield
+    kids1 = resource.getrusage(resource.RUSAGE_CHILDREN)
+    _TIMES.append({
+        "test": item.nodeid,
+        "cpu": round(time.process_time() - own0, 3),
+        "child_cpu": round(kids1.ru_utime + kids1.ru_stime - kids0.ru_utime - kids0.ru_stime, 3),
+        "wall": round(time.perf_counter() - wall0, 3),
+        "maxrss_mb": round(resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024, 1),
+        "child_maxrss_mb": round(kids1.ru_maxrss / 1024, 1),
+        "outcome": _OUTCOMES.pop(item.nodeid, "passed"),
+    })
+    if len(_TIMES) % 10 == 0:  # a run stopped half-way still leaves its figures
+        pytest_sessionfinish(None, None)
+
+
+def pytest_sessionfinish(session, exitstatus):
+    if not _TIMES:
+        return
+    import json
+
+    worker = os.environ.get("PYTEST_XDIST_WORKER", "main")
+    folder = REPO / "tests" / "artifacts"
+    folder.mkdir(parents=True, exist_ok=True)
+    path = folder / f"test-times-{worker}.json"
+    tmp = path.with_suffix(".json.tmp")
+    tmp.write_text(json.dumps(_TIMES, indent=1))
+    os.replace(tmp, path)
+
+
+# --- heaviest files first on the xdist workers ---------------------------------------------------------
+# With `-n 2 --dist loadfile` a test file runs on one worker. pytest-xdist hands the files out by their
+# number of tests; handing out the most expensive first instead keeps a long real-data file from running
+# alone at the end while the other core idles (longest-processing-time-first). CPU seconds per file from
+# the record above (tests/artifacts/test-times-*.json); a file not listed counts as light.
+FILE_CPU_SECONDS = {
+    # measured (own + child CPU s, -n 2 on the loaded 2-core machine, 2026-12-01; 700 of 745 tests, 1600 CPU s)
+    "test_fuzz_dxf.py": 122, "test_semantics.py": 102, "test_segmentation_real.py": 90, "test_building.py": 83,
+    "test_determinism.py": 72, "test_cancel.py": 66, "test_qgis_osmag.py": 56, "test_sheet_real.py": 55,
+    "test_dwg.py": 43, "test_real_dxf.py": 36, "test_package.py": 34, "test_routing.py": 28, "test_batch.py": 24,
+    "test_limits.py": 21, "test_bench.py": 19, "test_pipeline.py": 17,
+    "test_qgis_cad.py": 295, "test_qgis_pipeline.py": 141, "test_qgis_dwg.py": 44, "test_qgis_sheet.py": 25,
+    "test_real_plans.py": 142,  # with the shared conversions of test_semantics (else about 250)
+    # not reached by that run: estimated from what they convert (7 DWG sheets; 500 DWG mutants)
+    "test_building_dwg.py": 250, "test_fuzz_dwg.py": 150, "test_osmag_client.py": 60,
+}
+
+
+class _HeaviestFirst(collections.OrderedDict):
+    """xdist's queue of test files: the next file handed out is the most expensive one left."""
+
+    def popitem(self, last=True):
+        if last or not self:
+            return super().popitem(last)
+        scope = max(self, key=lambda s: FILE_CPU_SECONDS.get(Path(s.split("::")[0]).name, 0))
+        return scope, self.pop(scope)
+
+
+try:
+    import xdist  # noqa: F401
+except ImportError:  # one process: nothing to schedule
+    pass
+else:
+    def pytest_xdist_make_scheduler(config, log):
+        if config.getoption("dist") != "loadfile":
+            return None
+        from xdist.scheduler import LoadFileScheduling
+
+        scheduler = LoadFileScheduling(config, log)
+        scheduler.workqueue = _HeaviestFirst()
+        return scheduler

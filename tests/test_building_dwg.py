@@ -5,6 +5,7 @@ tmp dir; the tests then read the cached floors and merged buildings. Slow: ~2-3 
 machine (the conversion dominates)."""
 from __future__ import annotations
 
+import os
 import time
 
 import numpy as np
@@ -54,7 +55,9 @@ def dwg_buildings(shared_data, tmp_path_factory):
     out = tmp_path_factory.mktemp("dwg-floors")
     rec = RecordingProgress()
     t0 = time.perf_counter()
-    conv = building.convert_floors([str(p) for p in paths], str(out), workers=2, variant="fix-id", progress=rec)
+    # one sheet at a time under pytest-xdist (both cores are busy already; a SIST sheet takes ~1 GB per process)
+    pool = 1 if os.environ.get("PYTEST_XDIST_WORKER") else 2
+    conv = building.convert_floors([str(p) for p in paths], str(out), workers=pool, variant="fix-id", progress=rec)
     t_conv = time.perf_counter() - t0
     result = {"convert_seconds": t_conv, "infos": [m for k, m in rec.messages if k == "info"]}
     for key, k0, k1 in (("sist", 0, len(SIST)), ("library", len(SIST), len(paths))):
@@ -71,7 +74,7 @@ def dwg_buildings(shared_data, tmp_path_factory):
             links.setdefault((lo, hi), []).append((code, kind))
         result[key] = dict(conv=c, st=st, areas=areas, passages=passages, report=rep, links=links, by_name=by_name,
                            merge_seconds=time.perf_counter() - t1, path=out / f"{key}.osm")
-    print(f"DWG sheets: convert {t_conv:.0f} s (pool of 2), merge SIST {result['sist']['merge_seconds']:.1f} s, "
+    print(f"DWG sheets: convert {t_conv:.0f} s (pool of {pool}), merge SIST {result['sist']['merge_seconds']:.1f} s, "
           f"library {result['library']['merge_seconds']:.1f} s")
     for key in ("sist", "library"):
         print(_figures(key, result[key]))

@@ -641,3 +641,18 @@ def test_unicode_escapes_of_old_dxf_versions_are_decoded(tmp_path):
     assert b"\\U+" in path.read_bytes()
     texts = sorted(t.text for t in cad_import.import_dxf(str(path)).texts)
     assert texts == ["E1-ST-03 楼梯", "房间 101"]
+
+
+def test_dxf_and_dwg_get_the_same_file_checks(tmp_path):
+    """One check (cad_read.check_drawing_file) for both formats: a missing path, a folder and a file of only
+    NUL bytes (a save cut off by a crash) are named as such, with the format in the message."""
+    blank = tmp_path / "blank.dxf"
+    blank.write_bytes(b"\0" * 5000)
+    with pytest.raises(InputError, match=r"'blank.dxf' is empty \(5000 bytes, no drawing data\); export"):
+        import_dxf(str(blank))
+    for suffix, kind in ((".dxf", "DXF"), (".dwg", "DWG")):
+        with pytest.raises(InputError, match=f"{kind} file .* does not exist"):
+            import_dxf(str(tmp_path / f"nope{suffix}"))
+    (tmp_path / "dir.dxf").mkdir()
+    with pytest.raises(InputError, match="is a folder, not a DXF file"):
+        import_dxf(str(tmp_path / "dir.dxf"))

@@ -9,7 +9,6 @@ import time
 
 import pytest
 
-from algorithms import pipeline
 from algorithms.errors import InputError
 
 pytestmark = pytest.mark.slow
@@ -57,21 +56,21 @@ def _plans(shared, sub, pattern):
     return sorted(folder.rglob(pattern)) if folder.is_dir() else []
 
 
-def _convert(path, tmp):
+def _convert(path, tmp, floor_cache):
     t = time.perf_counter()
-    out = pipeline.convert_dxf(str(path), str(tmp / f"{path.stem}.osm"))
+    out = floor_cache.convert_dxf(path, tmp / f"{path.stem}.osm")  # pipeline.convert_dxf, stages 1-5 shared
     return out, time.perf_counter() - t
 
 
 @pytest.fixture(scope="module")
-def dxf_results(shared_data, tmp_path_factory):
+def dxf_results(shared_data, tmp_path_factory, floor_cache):
     tmp = tmp_path_factory.mktemp("plans")
     files = _plans(shared_data, "dxf", "*.dxf")
     assert len(files) >= 13
     results = {}
     for f in files:
         try:
-            results[f.stem] = _convert(f, tmp)
+            results[f.stem] = _convert(f, tmp, floor_cache)
         except InputError as exc:  # a clear message is acceptable input handling, but reported
             results[f.stem] = (exc, 0.0)
     print("\nplan                          areas passages comps largest    s")
@@ -118,7 +117,7 @@ def test_known_below_target_are_still_reported(dxf_results):
             assert out["components"] > 1
 
 
-def test_every_dwg_sheet_converts(shared_data, tmp_path):
+def test_every_dwg_sheet_converts(shared_data, tmp_path, floor_cache):
     try:
         import algorithms.cad_dwg  # noqa: F401
     except ImportError:
@@ -128,7 +127,7 @@ def test_every_dwg_sheet_converts(shared_data, tmp_path):
         pytest.skip("no DWG sheets in the shared data")
     below = {}
     for f in files:
-        out, sec = _convert(f, tmp_path)
+        out, sec = _convert(f, tmp_path, floor_cache)
         print(f"{f.stem:28s} {out['areas']:6d} {out['passages']:8d} {out['components']:5d} "
               f"{out['largest_component_share']:7.1%} {sec:5.1f}")
         assert out["areas"] > 0, f.stem

@@ -378,10 +378,8 @@ def test_archweb_texts_classified_as_read_by_hand(shared_data, plan):
     ("historical_museum.dxf", {"inside_pct": 95, "own_area_pct": 85, "semantic_accuracy_pct": 90, "max_conflicts": 2}),
     ("Aule-scolastiche-pianta-1.dxf", {"inside_pct": 80, "own_area_pct": 75, "semantic_accuracy_pct": 95, "max_conflicts": 0}),
 ])
-def test_archweb_names_figures(shared_data, plan, floors):
-    from algorithms import pipeline
-
-    floor = pipeline.process_floor(str(shared_data / "dxf" / "archweb" / plan))
+def test_archweb_names_figures(shared_data, plan, floors, floor_cache):
+    floor = floor_cache.process_floor(shared_data / "dxf" / "archweb" / plan)  # pipeline.process_floor, shared
     fig = S.floor_figures(floor.refined.areas, floor.refined.passages, floor.names)
     assert fig["inside_pct"] >= floors["inside_pct"] and fig["own_area_pct"] >= floors["own_area_pct"], fig
     assert fig["semantic_accuracy_pct"] >= floors["semantic_accuracy_pct"] and fig["conflicts"] <= floors["max_conflicts"]
@@ -459,11 +457,9 @@ def test_dwg_stair_and_lift_names_found(shared_data, sheet):
 
 @pytest.mark.slow
 @pytest.mark.parametrize("sheet", sorted(DWG_VERTICAL))
-def test_dwg_stairs_and_lifts_become_typed_areas(shared_data, sheet):
+def test_dwg_stairs_and_lifts_become_typed_areas(shared_data, sheet, floor_cache):
     _dwg_reader()
-    from algorithms import pipeline
-
-    floor = pipeline.process_floor(str(shared_data / "dwg" / sheet))
+    floor = floor_cache.process_floor(shared_data / "dwg" / sheet)  # pipeline.process_floor, shared
     want_st, want_el = DWG_VERTICAL[sheet]
     typed = {}
     for a in floor.refined.areas:
