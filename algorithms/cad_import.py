@@ -209,6 +209,24 @@ def _hidden_texts(raw_texts, scale: float, extent, first_id: int) -> List[CadTex
 def import_dxf(path: str, rules=None, layers: Optional[Sequence[str]] = None, units: Optional[str] = None,
                include_doors: bool = False, fallback_walls: bool = True, drop_door_swings: bool = True,
                plan=None, classify: bool = True, progress=None) -> CadDrawing:
+    """Read a DXF or DWG (see ``_import``). A DWG whose decoded entities hold malformed data (a damaged
+    file the reader decodes without complaint: wrong vertex arrays, impossible values) is reported as
+    damaged with an InputError naming it, never as a raw numpy/Python error."""
+    args = (path, rules, layers, units, include_doors, fallback_walls, drop_door_swings, plan, classify, progress)
+    if not str(path).lower().endswith(".dwg"):
+        return _import(*args)
+    try:
+        return _import(*args)
+    except InputError:  # (an InputError is a ValueError) already says what is wrong
+        raise
+    except (ValueError, IndexError, OverflowError, ZeroDivisionError) as exc:
+        raise InputError(f"'{os.path.basename(path)}' is a damaged DWG: its entities hold malformed data "
+                         f"({type(exc).__name__}: {exc}). Open it in a CAD program (AUDIT / RECOVER) and save "
+                         "it again, or export it as DXF") from None
+
+
+def _import(path, rules, layers, units, include_doors, fallback_walls, drop_door_swings, plan, classify,
+            progress) -> CadDrawing:
     """Read a DXF and return the structural geometry (metres, CAD frame) and every visible text.
 
     ``rules``: LayerRules, a JSON path, or None for the defaults. ``layers``: explicit layer names

@@ -485,3 +485,23 @@ def test_insert_matrix_equals_ezdxf(extrusion):
 
     ours = cad_dwg._Insert(1, {"name": "B", "insert": (500, 700, 0), "zscale": 1, **attribs}, _Doc()).matrix44()
     assert np.allclose(ours[[0, 1, 3], :2], ref[[0, 1, 3], :2], atol=1e-9)
+
+
+def test_malformed_dwg_entity_data_is_an_input_error(monkeypatch, tmp_path):
+    """A damaged DWG the reader decodes without complaint but whose entities hold malformed data (e.g. vertex
+    arrays of mixed dimensions) is reported as a damaged DWG naming the file, not as a raw numpy error."""
+    from algorithms import cad_import
+    from algorithms.errors import InputError
+
+    def broken(*args, **kwargs):
+        raise ValueError("all the input arrays must have same number of dimensions")
+
+    monkeypatch.setattr(cad_import, "_read_doc", broken)
+    path = tmp_path / "broken.dwg"
+    path.write_bytes(b"AC1015" + bytes(100))
+    with pytest.raises(InputError, match="broken.dwg.*damaged DWG"):
+        cad_import.import_dxf(str(path))
+    # an InputError from the reader passes through unchanged
+    monkeypatch.setattr(cad_import, "_read_doc", lambda *a, **k: (_ for _ in ()).throw(InputError("named")))
+    with pytest.raises(InputError, match="^named$"):
+        cad_import.import_dxf(str(path))
