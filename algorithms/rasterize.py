@@ -325,6 +325,20 @@ DOOR_CLEAR_DEPTH = 0.6  # metres across a door hint that are kept free (walls up
 DOOR_JAMB_INSET = 0.05  # metres kept occupied at each jamb, so the jambs stay walls
 
 
+def _door_segments(door_hints):
+    """(a, b, length, unit direction) of every usable door hint: finite, 0.3-4 m jamb to jamb (shorter or
+    longer is no doorway: a misread block)."""
+    for h in door_hints or ():
+        a = np.array((h.x0, h.y0), float)
+        b = np.array((h.x1, h.y1), float)
+        if not (np.isfinite(a).all() and np.isfinite(b).all()):
+            continue
+        L = float(np.hypot(*(b - a)))
+        if not 0.3 <= L <= 4.0:
+            continue
+        yield a, b, L, (b - a) / L
+
+
 def door_opening_mask(door_hints, shape, origin_x: float, origin_y: float, resolution: float,
                       depth: float = DOOR_CLEAR_DEPTH) -> np.ndarray:
     """Boolean mask of the door openings of ``door_hints`` (``model.DoorHint``, jamb-to-jamb
@@ -334,15 +348,7 @@ def door_opening_mask(door_hints, shape, origin_x: float, origin_y: float, resol
     import cv2
 
     mask = np.zeros(shape, np.uint8)
-    for h in door_hints or ():
-        a = np.array((h.x0, h.y0), float)
-        b = np.array((h.x1, h.y1), float)
-        if not (np.isfinite(a).all() and np.isfinite(b).all()):
-            continue
-        L = float(np.hypot(*(b - a)))
-        if not 0.3 <= L <= 4.0:
-            continue
-        u = (b - a) / L
+    for a, b, L, u in _door_segments(door_hints):
         nrm = np.array((-u[1], u[0])) * depth / 2.0
         a2, b2 = a + u * DOOR_JAMB_INSET, b - u * DOOR_JAMB_INSET
         quad = np.array([a2 + nrm, b2 + nrm, b2 - nrm, a2 - nrm])
@@ -369,15 +375,7 @@ def deepen_openings(img: np.ndarray, door_hints, origin_x: float, origin_y: floa
     rows, cols = img.shape
     steps = np.arange(depth / 2.0, max_wall + room_run + resolution, resolution / 2.0)
     need = max(1, int(round(room_run / (resolution / 2.0))))
-    for h in door_hints or ():
-        a = np.array((h.x0, h.y0), float)
-        b = np.array((h.x1, h.y1), float)
-        if not (np.isfinite(a).all() and np.isfinite(b).all()):
-            continue
-        L = float(np.hypot(*(b - a)))
-        if not 0.3 <= L <= 4.0:
-            continue
-        u = (b - a) / L
+    for a, b, L, u in _door_segments(door_hints):
         nrm = np.array((-u[1], u[0]))
         a2, b2 = a + u * DOOR_JAMB_INSET, b - u * DOOR_JAMB_INSET
         across = a2[None, :] + np.linspace(0.2, 0.8, 5)[:, None] * (b2 - a2)[None, :]  # inner 60 % of the width
