@@ -18,14 +18,13 @@ from qgis.core import (
 from ..algorithms import pipeline
 from .alg_extract_structure import add_plan_parameters, plan_argument
 from .alg_load_osmag import osmag_to_sinks
-from .base import Cad2OsmagAlgorithm
+from .base import CAD_FILTER, Cad2OsmagAlgorithm
 
 UNITS = ["auto", "mm", "cm", "m", "inch", "feet"]
 VARIANTS = ["semantic", "fix-id"]
 
 
 # DWG: AutoCAD R13-2018, read directly by algorithms/cad_dwg.py (ezdwg)
-CAD_FILTER = "CAD drawings (*.dxf *.DXF *.dwg *.DWG);;DXF (*.dxf *.DXF);;DWG (*.dwg *.DWG)"
 
 
 class DxfToOsmagAlgorithm(Cad2OsmagAlgorithm):

@@ -24,7 +24,7 @@ from ..algorithms import cad_import
 from ..algorithms.cad_sheet import describe_plans
 from ..algorithms.layer_rules import load_rules
 from ..algorithms.rasterize import LOCAL_FRAME_WKT
-from .base import Cad2OsmagAlgorithm, FIELD_BOOL, FIELD_DOUBLE, FIELD_INT, FIELD_LONG, FIELD_STRING, make_fields
+from .base import CAD_FILTER, Cad2OsmagAlgorithm, FIELD_BOOL, FIELD_DOUBLE, FIELD_INT, FIELD_LONG, FIELD_STRING, make_fields
 
 UNIT_OPTIONS = ["", "mm", "cm", "m", "inch", "feet"]
 
@@ -92,7 +92,6 @@ def geometry_to_qgs(coords, closed):
 
 
 # DWG: AutoCAD R13-2018, read directly by algorithms/cad_dwg.py (ezdwg)
-CAD_FILTER = "CAD drawings (*.dxf *.DXF *.dwg *.DWG);;DXF (*.dxf *.DXF);;DWG (*.dwg *.DWG)"
 
 
 class ExtractStructureAlgorithm(Cad2OsmagAlgorithm):

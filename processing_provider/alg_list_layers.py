@@ -14,7 +14,7 @@ from qgis.core import (
 
 from ..algorithms import cad_import
 from ..algorithms.layer_rules import load_rules
-from .base import Cad2OsmagAlgorithm, FIELD_BOOL, FIELD_INT, FIELD_STRING, make_fields
+from .base import CAD_FILTER, Cad2OsmagAlgorithm, FIELD_BOOL, FIELD_INT, FIELD_STRING, make_fields
 
 # DXF types that get their own count column; everything else is summed in n_other
 COUNT_COLUMNS = ("LINE", "LWPOLYLINE", "POLYLINE", "ARC", "CIRCLE", "ELLIPSE", "SPLINE", "HATCH", "SOLID",
@@ -22,7 +22,6 @@ COUNT_COLUMNS = ("LINE", "LWPOLYLINE", "POLYLINE", "ARC", "CIRCLE", "ELLIPSE", "
 
 
 # DWG: AutoCAD R13-2018, read directly by algorithms/cad_dwg.py (ezdwg)
-CAD_FILTER = "CAD drawings (*.dxf *.DXF *.dwg *.DWG);;DXF (*.dxf *.DXF);;DWG (*.dwg *.DWG)"
 
 
 class ListLayersAlgorithm(Cad2OsmagAlgorithm):

@@ -20,8 +20,8 @@ from qgis.core import (
 from ..algorithms import cad_import
 from ..algorithms.cad_sheet import describe_plans
 from ..algorithms.layer_rules import load_rules
-from .alg_extract_structure import CAD_FILTER, geometry_to_qgs, local_frame_crs, wall_fields
-from .base import Cad2OsmagAlgorithm, FIELD_BOOL, FIELD_DOUBLE, FIELD_INT, FIELD_STRING, make_fields
+from .alg_extract_structure import geometry_to_qgs, local_frame_crs, wall_fields
+from .base import CAD_FILTER, Cad2OsmagAlgorithm, FIELD_BOOL, FIELD_DOUBLE, FIELD_INT, FIELD_STRING, make_fields
 
 # an extent that holds any drawing: import_dxf then keeps the structure of every group on the sheet
 # (frames, title blocks and legends still left out) and still lists the groups it found

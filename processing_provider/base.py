@@ -141,3 +141,7 @@ def from_qgs(qgs_geometry):
     if qgs_geometry is None or qgs_geometry.isNull() or qgs_geometry.isEmpty():
         return None
     return shapely.wkb.loads(bytes(qgs_geometry.asWkb()))
+
+
+# file filter of every parameter that takes a drawing (the readers accept both)
+CAD_FILTER = "CAD drawings (*.dxf *.DXF *.dwg *.DWG);;DXF (*.dxf *.DXF);;DWG (*.dwg *.DWG)"
