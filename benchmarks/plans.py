@@ -26,6 +26,15 @@ OTHER_COLOUR = "#90be6d"
 
 
 def peak_rss_mb() -> float:
+    """This process's peak RSS. Linux's VmHWM first: ``ru_maxrss`` survives exec, so a process started
+    from a large parent (a test worker) would report the parent's peak."""
+    try:
+        with open("/proc/self/status") as fh:
+            for line in fh:
+                if line.startswith("VmHWM:"):
+                    return int(line.split()[1]) / 1024.0
+    except OSError:
+        pass
     return resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024.0
 
 
