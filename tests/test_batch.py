@@ -9,6 +9,7 @@ from algorithms import osmag
 from algorithms.sample_building import generate_building
 
 from .conftest import plugin_package
+from .qgis_inprocess import run_alg_inprocess
 from .qgis_process import run_alg
 
 ANCHOR = (121.5906, 31.1790)
@@ -36,28 +37,7 @@ def test_floor_files_are_matched_case_insensitively_in_natural_order(tmp_path):
 
 
 def _run(alg_id, params):
-    from qgis.core import QgsApplication, QgsProcessingContext, QgsProcessingFeedback, QgsProject
-
-    class Log(QgsProcessingFeedback):
-        def __init__(self):
-            super().__init__()
-            self.lines = []
-
-        def pushInfo(self, info):  # noqa: N802
-            self.lines.append(info)
-
-        def pushWarning(self, warning):  # noqa: N802
-            self.lines.append("WARNING " + warning)
-
-        def reportError(self, error, fatalError=False):  # noqa: N802, N803
-            self.lines.append("ERROR " + error)
-
-    alg = QgsApplication.processingRegistry().createAlgorithmById(alg_id)
-    context = QgsProcessingContext()
-    context.setProject(QgsProject.instance())
-    feedback = Log()
-    results, ok = alg.run(params, context, feedback)
-    return results, ok, feedback
+    return run_alg_inprocess(alg_id, params)
 
 
 @pytest.mark.slow  # three floors through the whole pipeline (about 40 s on 2 cores)

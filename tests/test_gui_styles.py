@@ -4,6 +4,7 @@ import pytest
 from shapely.geometry import LineString, box
 
 from .conftest import REPO, plugin_package
+from .qgis_inprocess import run_alg_inprocess
 
 
 @pytest.fixture()
@@ -25,14 +26,7 @@ def osm_file(tmp_path):
 
 
 def _run(alg_id, params):
-    from qgis.core import QgsApplication, QgsProcessingContext, QgsProcessingFeedback, QgsProject
-
-    alg = QgsApplication.processingRegistry().createAlgorithmById(alg_id)
-    context = QgsProcessingContext()
-    context.setProject(QgsProject.instance())
-    results, ok = alg.run(params, context, QgsProcessingFeedback())
-    assert ok, alg_id
-    return results
+    return run_alg_inprocess(alg_id, params, check=True)[0]
 
 
 def test_shipped_qml_files_exist_and_describe_the_osmag_style():

@@ -10,6 +10,7 @@ from algorithms.cad_import import import_dxf
 from algorithms.raster_io import read_grid
 from algorithms.rasterize import rasterize
 
+from .qgis_inprocess import run_alg_inprocess
 from .qgis_process import run_alg
 
 pytestmark = pytest.mark.qgis_process
@@ -149,19 +150,33 @@ def test_bad_inputs_fail_clearly_without_output(tmp_path):
 
 
 @pytest.mark.slow
-def test_all_three_on_every_real_plan(tmp_path, shared_data):
+def test_all_three_on_every_real_plan(tmp_path, shared_data, provider):
+    """listlayers, extractstructure and rasterize on every shared DXF plan.
+
+    The Processing classes run inside the test's QGIS (39 qgis_process starts cost ~100 CPU s of QGIS start
+    alone); the first plan also goes through qgis_process, the command line users run.
+    """
     files = sorted((shared_data / "dxf").glob("*/*.dxf"))
     assert len(files) >= 13
-    for f in files:
+
+    def run(alg, params, headless):
+        if headless:
+            return run_alg(alg, params)[1]
+        res, ok, fb = run_alg_inprocess(alg, params)
+        assert ok, f"{alg} on {params.get('INPUT') or params.get('WALLS')}:\n" + "\n".join(fb.lines)
+        return res
+
+    for i, f in enumerate(files):
         out = tmp_path / f.stem
         out.mkdir()
-        _, res, _ = run_alg("listlayers", {"INPUT": str(f), "OUTPUT": str(out / "layers.csv")})
+        headless = i == 0
+        res = run("listlayers", {"INPUT": str(f), "OUTPUT": str(out / "layers.csv")}, headless)
         rows = list(csv.DictReader(open(out / "layers.csv", encoding="utf-8")))
         assert len(rows) == res["LAYER_COUNT"] >= 2 and res["KEPT_LAYERS"], f.name
-        _, res, _ = run_alg("extractstructure", {"INPUT": str(f), "WALLS": str(out / "walls.gpkg"),
-                                                 "TEXTS": str(out / "texts.gpkg")})
+        res = run("extractstructure", {"INPUT": str(f), "WALLS": str(out / "walls.gpkg"),
+                                        "TEXTS": str(out / "texts.gpkg")}, headless)
         assert res["GEOMETRY_COUNT"] > 50, f.name
-        _, res, _ = run_alg("rasterize", {"WALLS": str(out / "walls.gpkg"), "OCCUPANCY": str(out / "occ.tif")})
+        res = run("rasterize", {"WALLS": str(out / "walls.gpkg"), "OCCUPANCY": str(out / "occ.tif")}, headless)
         grid = read_grid(str(out / "occ.tif"))
         assert 0.02 <= res["OCCUPIED_SHARE"] <= 0.40, f.name
         assert grid.shape == (res["HEIGHT"], res["WIDTH"]) and grid.data.size <= 60e6
@@ -170,7 +185,7 @@ def test_all_three_on_every_real_plan(tmp_path, shared_data):
     grids = []
     for k in (2, 4):
         tif = tmp_path / f"common-F{k}.tif"
-        run_alg("rasterize", {"WALLS": sist[k - 1], "FLOOR_LAYERS": sist, "OCCUPANCY": str(tif)})
+        run("rasterize", {"WALLS": sist[k - 1], "FLOOR_LAYERS": sist, "OCCUPANCY": str(tif)}, k == 2)
         grids.append(read_grid(str(tif)))
     assert grids[0].shape == grids[1].shape
     assert grids[0].geotransform == pytest.approx(grids[1].geotransform, abs=1e-6)
