@@ -1,0 +1,89 @@
+"""Connected floors on campus drawings like the SIST sheets (issue 8, item 6): each rule is about a kind of
+drawing, tested on a small synthetic input (the figures on the SIST sheets are in tests/test_real_plans.py)."""
+import math
+
+import ezdxf
+import numpy as np
+import pytest
+from shapely.geometry import Point, box
+
+from algorithms import pipeline, segmentation
+from algorithms.model import Area, CadText, Passage
+
+
+def _doc():
+    doc = ezdxf.new("R2010", setup=False)
+    doc.header["$INSUNITS"] = 6  # metres
+    return doc
+
+
+def _rect(msp, x0, y0, x1, y1, layer="A-WALL"):
+    for a, b in (((x0, y0), (x1, y0)), ((x1, y0), (x1, y1)), ((x1, y1), (x0, y1)), ((x0, y1), (x0, y0))):
+        msp.add_line(a, b, dxfattribs={"layer": layer})
+
+
+def _text(msp, s, x, y):
+    msp.add_text(s, dxfattribs={"layer": "A-TEXT", "height": 0.3, "insert": (x, y)})
+
+
+# ------------------------------------------------------------------------------------------ roofs below the floor
+def _area(i, x0, y0, x1, y1, comp):
+    return Area(id=i, polygon=box(x0, y0, x1, y1), component=comp)
+
+
+def test_roof_spaces_by_word_or_drainage_falls_never_an_orphaned_room():
+    areas = [_area(1, 0, 0, 20, 10, 0),  # the floor
+             _area(2, 30, 0, 50, 10, 1),  # roof named 屋面
+             _area(3, 60, 0, 70, 10, 2), _area(4, 70, 0, 72, 3, 2),  # roof by 3 falls + a lift machine room on it
+             _area(5, 80, 0, 90, 10, 3),  # a ramp: two falls only
+             _area(6, 100, 0, 104, 4, 4), _area(7, 104, 0, 120, 10, 4),  # small roof beside a large orphaned room
+             _area(8, 130, 0, 140, 10, 5)]  # an orphaned room with no roof evidence
+    texts = [CadText(40, 5, "屋面", 0.3, 0, "T"), CadText(35, 3, "2%", 0.3, 0, "T"),
+             CadText(62, 2, "2%", 0.3, 0, "T"), CadText(64, 5, "i=1%", 0.3, 0, "T"), CadText(66, 8, "1.5%", 0.3, 0, "T"),
+             CadText(71, 1, "电梯机房", 0.3, 0, "T"),
+             CadText(85, 5, "5%", 0.3, 0, "T"), CadText(86, 6, "5%", 0.3, 0, "T"),
+             CadText(102, 2, "Roof", 0.3, 0, "T"), CadText(110, 5, "Aula", 0.3, 0, "T"),
+             CadText(135, 5, "Office 12%", 0.3, 0, "T")]
+    roofs = segmentation.roof_spaces(areas, [], texts)
+    assert roofs == [2, 3, 4]
+    # the figure counts them out: floor 200 m2 of 200 + 100 (ramp) + 16 + 160 (small roof, room) + 100 (office)
+    share = segmentation.connected_share(areas, roofs)
+    assert abs(share - 200 / (200 + 100 + 16 + 160 + 100)) < 1e-9
+    # (x, y, text) triples work too; a closed space is never listed again
+    assert segmentation.roof_spaces(areas, [], [(40, 5, "copertura")], closed_ids=[2]) == []
+    assert segmentation.roof_spaces(areas, [], [(40, 5, "TETTO piano")]) == [2]
+
+
+def _roof_plan(tmp_path):
+    """A 5th-floor plan: the floor (hall + room joined by a doorway), the roof of the lower block beside it
+    (its parapet drawn on the wall layer, labelled 屋面 with drainage falls) and an office whose door the
+    drawing forgot."""
+    doc = _doc()
+    msp = doc.modelspace()
+    _rect(msp, 0, 0, 24, 12)
+    msp.add_line((12, 0), (12, 5.0), dxfattribs={"layer": "A-WALL"})
+    msp.add_line((12, 6.0), (12, 12), dxfattribs={"layer": "A-WALL"})
+    _rect(msp, 24, 0, 40, 12)  # the roof of the lower block, against the facade
+    _text(msp, "屋面", 32, 6)
+    for x, y in ((27, 3), (30, 9), (36, 3), (37, 9)):
+        _text(msp, "2%", x, y)
+    _rect(msp, 18, 7, 22, 11)  # the office with no door
+    _text(msp, "Office", 19.0, 8.5)
+    _text(msp, "Hall", 6.0, 4.0)
+    p = tmp_path / "roof.dxf"
+    doc.saveas(p)
+    return str(p)
+
+
+def test_roof_of_the_lower_block_counts_out_but_the_orphaned_office_does_not(tmp_path):
+    floor = pipeline.process_floor(_roof_plan(tmp_path))
+    areas = {a.id: a for a in floor.refined.areas}
+    roofs = floor.stats["roof_spaces"]
+    assert len(roofs) == 1 and areas[roofs[0]].polygon.contains(Point(32, 6))
+    assert areas[roofs[0]].tags.get("cad2osmag:roof") == "yes"
+    office = [a for a in areas.values() if a.polygon.contains(Point(19.0, 8.5))][0]
+    assert office.id not in roofs and office.component != 0
+    main = sum(a.polygon.area for a in areas.values() if a.component == 0)
+    counted = sum(a.polygon.area for i, a in areas.items() if i not in roofs and i not in floor.stats["closed_spaces"])
+    assert abs(floor.stats["largest_component_share"] - main / counted) < 1e-6
+    assert 0.8 < floor.stats["largest_component_share"] < 1.0  # the office (16 m2 of ~280) still counts
