@@ -87,3 +87,77 @@ def test_roof_of_the_lower_block_counts_out_but_the_orphaned_office_does_not(tmp
     counted = sum(a.polygon.area for i, a in areas.items() if i not in roofs and i not in floor.stats["closed_spaces"])
     assert abs(floor.stats["largest_component_share"] - main / counted) < 1e-6
     assert 0.8 < floor.stats["largest_component_share"] < 1.0  # the office (16 m2 of ~280) still counts
+
+
+# ------------------------------------------------------------------------------------------ curtain-wall doors
+def _curtain_wall_plan(tmp_path, door=True, pier=False, name="cw.dxf"):
+    """A hall (16 x 8 m) whose south facade is a curtain wall -- two frame lines 0.15 m apart on the glazing
+    layer with 1.4 m panels between them -- and a vestibule south of it (the covered end of a walkway). The
+    door into the hall is no panel: the frame lines run on across it (x 7.45-9.05)."""
+    from algorithms.cad_classify import CW_GAP  # noqa: F401  (the rule under test)
+
+    doc = _doc()
+    msp = doc.modelspace()
+    glaz = {"layer": "A-GLAZ"}
+    for x0, y0, x1, y1 in ((0, 0, 0, 8), (0, 8, 16, 8), (16, 8, 16, 0)):
+        msp.add_line((x0, y0), (x1, y1), dxfattribs={"layer": "A-WALL"})
+    msp.add_line((0, 0), (16, 0), dxfattribs=glaz)  # the frame lines, straight through the door
+    msp.add_line((0, 0.15), (16, 0.15), dxfattribs=glaz)
+    x = 0.0
+    while x < 16 - 1e-6:
+        w = min(1.5, 16 - x)
+        gap = 7.5 <= x + 0.05 < 8.9
+        if not (door and gap):
+            msp.add_lwpolyline([(x + 0.05, 0.05), (x + w - 0.05, 0.05), (x + w - 0.05, 0.10), (x + 0.05, 0.10)],
+                               close=True, dxfattribs=glaz)
+        x += w
+    if pier:  # a wall pier where the door would be: a strip window ends there, no doorway
+        msp.add_lwpolyline([(7.6, -0.1), (8.8, -0.1), (8.8, 0.25), (7.6, 0.25)], close=True,
+                           dxfattribs={"layer": "A-WALL"})
+    for a, b in (((5, 0), (5, -5)), ((5, -5), (11, -5)), ((11, -5), (11, 0))):  # the vestibule
+        msp.add_line(a, b, dxfattribs={"layer": "A-WALL"})
+    _text(msp, "Hall", 3, 5)
+    _text(msp, "Vestibule", 7, -3)
+    p = tmp_path / name
+    doc.saveas(p)
+    return str(p)
+
+
+def test_curtain_wall_gap_is_a_doorway(tmp_path):
+    from algorithms.cad_import import import_dxf
+
+    d = import_dxf(_curtain_wall_plan(tmp_path))
+    cw = [h for h in d.doors if h.source == "curtain_wall"]
+    assert len(cw) == 1, [(h.x0, h.y0, h.x1, h.y1, h.source) for h in d.doors]
+    h = cw[0]
+    xs = sorted((h.x0, h.x1))
+    assert abs(xs[0] - 7.45) < 0.03 and abs(xs[1] - 9.05) < 0.03 and abs(h.y0) < 0.2
+    floor = pipeline.process_floor(_curtain_wall_plan(tmp_path, name="cw2.dxf"))
+    assert floor.stats["components"] == 1, floor.stats
+    names = sorted(a.name for a in floor.refined.areas)
+    assert "Hall" in names and "Vestibule" in names
+
+
+def test_no_doorway_where_the_panels_go_on_or_a_wall_pier_stands(tmp_path):
+    from algorithms.cad_import import import_dxf
+
+    full = import_dxf(_curtain_wall_plan(tmp_path, door=False, name="full.dxf"))
+    assert not [h for h in full.doors if h.source == "curtain_wall"]
+    floor = pipeline.process_floor(_curtain_wall_plan(tmp_path, door=False, name="full2.dxf"))
+    assert floor.stats["components"] == 2  # the control: without the gap the hall and the vestibule stay apart
+    pier = import_dxf(_curtain_wall_plan(tmp_path, pier=True, name="pier.dxf"))
+    assert not [h for h in pier.doors if h.source == "curtain_wall"]
+
+
+def test_glass_wall_of_mullions_alone_has_no_doorways():
+    """Frame lines with 0.1 m mullions every 1.5 m (no panel runs): the rhythm of a glass wall, not doors."""
+    from algorithms.cad_classify import curtain_wall_doors
+    from algorithms.model import CadGeometry
+
+    g = [CadGeometry("A-GLAZ", "window", np.array([[0.0, 0.0], [15.0, 0.0]])),
+         CadGeometry("A-GLAZ", "window", np.array([[0.0, 0.15], [15.0, 0.15]]))]
+    for k in range(11):
+        x = 1.5 * k
+        g.append(CadGeometry("A-GLAZ", "window", np.array([[x, 0.0], [x + 0.1, 0.0], [x + 0.1, 0.15], [x, 0.15]]),
+                             closed=True))
+    assert curtain_wall_doors(g) == []
