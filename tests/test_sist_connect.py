@@ -161,3 +161,22 @@ def test_glass_wall_of_mullions_alone_has_no_doorways():
         g.append(CadGeometry("A-GLAZ", "window", np.array([[x, 0.0], [x + 0.1, 0.0], [x + 0.1, 0.15], [x, 0.15]]),
                              closed=True))
     assert curtain_wall_doors(g) == []
+
+
+@pytest.mark.qgis_process
+def test_dxftoosmag_headless_tags_roofs_and_opens_the_curtain_wall_door(tmp_path):
+    from algorithms import osmag
+    from tests.qgis_process import run_alg
+
+    out = tmp_path / "roof.osm"
+    _, res, log = run_alg("dxftoosmag", {"INPUT": _roof_plan(tmp_path), "OUTPUT": str(out)})
+    assert "roofs below this floor" in log
+    areas, _, _, _ = osmag.read_osmag(str(out))
+    roofs = [a for a in areas if (a.tags or {}).get("cad2osmag:roof") == "yes"]
+    assert len(roofs) == 1 and roofs[0].polygon.area == max(a.polygon.area for a in areas if a.name != "Level 1")
+    assert any(a.name == "Office" for a in areas) and not any(a.name == "Office" for a in roofs)
+    out2 = tmp_path / "cw.osm"
+    run_alg("dxftoosmag", {"INPUT": _curtain_wall_plan(tmp_path), "OUTPUT": str(out2)})
+    areas, passages, _, _ = osmag.read_osmag(str(out2))
+    named = {a.id: a.name for a in areas}
+    assert any({named.get(p.from_id), named.get(p.to_id)} == {"Hall", "Vestibule"} for p in passages)
