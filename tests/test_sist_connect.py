@@ -180,3 +180,28 @@ def test_dxftoosmag_headless_tags_roofs_and_opens_the_curtain_wall_door(tmp_path
     areas, passages, _, _ = osmag.read_osmag(str(out2))
     named = {a.id: a.name for a in areas}
     assert any({named.get(p.from_id), named.get(p.to_id)} == {"Hall", "Vestibule"} for p in passages)
+
+
+# ------------------------------------------------------------------------------------------ the SIST sheets
+@pytest.mark.slow
+def test_sist_f4_and_f5_dwg_connect(shared_data, floor_cache):
+    """SIST-F4.dwg: the north wing meets the covered walkway 室外连廊 through the one gap in its curtain wall;
+    SIST-F5.dwg: the roofs of the lecture block and the atrium (屋面) count out. Both reach the 95 % target."""
+    pytest.importorskip("algorithms.cad_dwg")
+    folder = shared_data / "dwg" / "sist-original"
+    if not (folder / "SIST-F4.dwg").is_file():
+        pytest.skip("the SIST DWG sheets are not in the shared data")
+    f4 = floor_cache.process_floor(folder / "SIST-F4.dwg")
+    cw = [h for h in f4.drawing.doors if h.source == "curtain_wall"]
+    assert len(cw) == 1 and abs((cw[0].x0 + cw[0].x1) / 2 - 11701.0) < 0.5, cw
+    assert f4.stats["largest_component_share"] >= 0.95
+    walkway = [a for a in f4.refined.areas if a.name.startswith("室外连廊")]
+    assert walkway and walkway[0].component == 0
+    assert any(a.component == 0 and a.name.startswith("办公室 E2-F4") for a in f4.refined.areas)  # the north wing
+    f5 = floor_cache.process_floor(folder / "SIST-F5.dwg")
+    roofs = set(f5.stats["roof_spaces"])
+    for x, y in ((104.7, 5.4), (108.6, 18.8), (44.1, 44.7)):  # the 屋面 labels of the sheet
+        hit = [a.id for a in f5.refined.areas if a.polygon.contains(Point(x, y))]
+        assert hit and hit[0] in roofs, (x, y, hit)
+    assert not any(a.id in roofs for a in f5.refined.areas if a.component == 0)
+    assert f5.stats["largest_component_share"] >= 0.95
