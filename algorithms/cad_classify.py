@@ -546,17 +546,23 @@ def curtain_wall_doors(geoms: Sequence[CadGeometry], keep: Optional[np.ndarray] 
                 gaps.append((a + u * h0, a + u * l1))
     if not gaps:
         return []
-    return _unblocked_gaps(geoms, gaps)
+    rails = np.flatnonzero(L >= CW_GAP[0])
+    return _unblocked_gaps(geoms, gaps, np.stack([P[rails], Q[rails]], axis=1))
 
 
-def _unblocked_gaps(geoms, gaps) -> List[DoorHint]:
-    """The gaps (pairs of points) no wall or column crosses (within CW_DEPTH of the gap, its inner 80 %),
-    one hint per doorway (the inner and outer frame lines find it twice)."""
+def _unblocked_gaps(geoms, gaps, rails) -> List[DoorHint]:
+    """The gaps (pairs of points) no wall or column crosses (within CW_DEPTH of the gap, its inner 80 %) and
+    only one frame line runs across (the threshold; the other frame line stops at the jambs: where both run
+    on, only a panel is missing from a fixed bay), one hint per doorway. ``rails``: (n, 2, 2) window segments."""
     from shapely import STRtree
     from shapely.geometry import LineString, Polygon
 
     lo = np.min([np.minimum(p, q) for p, q in gaps], axis=0) - 1.0
     hi = np.max([np.maximum(p, q) for p, q in gaps], axis=0) + 1.0
+    inb = ((np.maximum(rails[:, 0, 0], rails[:, 1, 0]) >= lo[0]) & (np.minimum(rails[:, 0, 0], rails[:, 1, 0]) <= hi[0])
+           & (np.maximum(rails[:, 0, 1], rails[:, 1, 1]) >= lo[1]) & (np.minimum(rails[:, 0, 1], rails[:, 1, 1]) <= hi[1]))
+    rails = rails[inb]
+    rail_tree = STRtree([LineString(r) for r in rails])
     solid = []
     for g in geoms:
         if g.kind not in ("wall", "column") or len(g.coords) < 2:
@@ -575,6 +581,14 @@ def _unblocked_gaps(geoms, gaps) -> List[DoorHint]:
         a2, b2 = p + u * 0.1 * w, q - u * 0.1 * w
         rect = Polygon([a2 + nrm, b2 + nrm, b2 - nrm, a2 - nrm])
         if tree is not None and len(tree.query(rect, predicate="intersects")):
+            continue
+        across = 0
+        for j in rail_tree.query(rect, predicate="intersects"):
+            d = rails[j, 1] - rails[j, 0]
+            n = float(np.hypot(*d))
+            if n >= 0.8 * w and abs(float(np.dot(d, u))) >= 0.98 * n:
+                across += 1
+        if across != 1:
             continue
         m = (p + q) / 2.0
         if any(math.hypot(m[0] - (h.x0 + h.x1) / 2.0, m[1] - (h.y0 + h.y1) / 2.0) < 0.5 for h in out):

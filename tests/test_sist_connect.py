@@ -90,10 +90,12 @@ def test_roof_of_the_lower_block_counts_out_but_the_orphaned_office_does_not(tmp
 
 
 # ------------------------------------------------------------------------------------------ curtain-wall doors
-def _curtain_wall_plan(tmp_path, door=True, pier=False, name="cw.dxf"):
+def _curtain_wall_plan(tmp_path, door=True, pier=False, name="cw.dxf", fixed_bay=False):
     """A hall (16 x 8 m) whose south facade is a curtain wall -- two frame lines 0.15 m apart on the glazing
     layer with 1.4 m panels between them -- and a vestibule south of it (the covered end of a walkway). The
-    door into the hall is no panel: the frame lines run on across it (x 7.45-9.05)."""
+    door into the hall is no panel: the outer frame line runs on across it (x 7.45-9.05), the inner one stops
+    at its jambs. ``fixed_bay``: the panel is missing but both frame lines run on (a bay drawn without its
+    panel, no door)."""
     from algorithms.cad_classify import CW_GAP  # noqa: F401  (the rule under test)
 
     doc = _doc()
@@ -101,8 +103,12 @@ def _curtain_wall_plan(tmp_path, door=True, pier=False, name="cw.dxf"):
     glaz = {"layer": "A-GLAZ"}
     for x0, y0, x1, y1 in ((0, 0, 0, 8), (0, 8, 16, 8), (16, 8, 16, 0)):
         msp.add_line((x0, y0), (x1, y1), dxfattribs={"layer": "A-WALL"})
-    msp.add_line((0, 0), (16, 0), dxfattribs=glaz)  # the frame lines, straight through the door
-    msp.add_line((0, 0.15), (16, 0.15), dxfattribs=glaz)
+    msp.add_line((0, 0), (16, 0), dxfattribs=glaz)  # the outer frame line runs on across the door (a threshold)
+    if door and not fixed_bay:  # the inner frame line stops at the jambs
+        msp.add_line((0, 0.15), (7.45, 0.15), dxfattribs=glaz)
+        msp.add_line((9.05, 0.15), (16, 0.15), dxfattribs=glaz)
+    else:
+        msp.add_line((0, 0.15), (16, 0.15), dxfattribs=glaz)
     x = 0.0
     while x < 16 - 1e-6:
         w = min(1.5, 16 - x)
@@ -138,7 +144,7 @@ def test_curtain_wall_gap_is_a_doorway(tmp_path):
     assert "Hall" in names and "Vestibule" in names
 
 
-def test_no_doorway_where_the_panels_go_on_or_a_wall_pier_stands(tmp_path):
+def test_no_doorway_where_the_panels_go_on_a_wall_pier_stands_or_both_frames_run_on(tmp_path):
     from algorithms.cad_import import import_dxf
 
     full = import_dxf(_curtain_wall_plan(tmp_path, door=False, name="full.dxf"))
@@ -147,6 +153,8 @@ def test_no_doorway_where_the_panels_go_on_or_a_wall_pier_stands(tmp_path):
     assert floor.stats["components"] == 2  # the control: without the gap the hall and the vestibule stay apart
     pier = import_dxf(_curtain_wall_plan(tmp_path, pier=True, name="pier.dxf"))
     assert not [h for h in pier.doors if h.source == "curtain_wall"]
+    bay = import_dxf(_curtain_wall_plan(tmp_path, fixed_bay=True, name="bay.dxf"))
+    assert not [h for h in bay.doors if h.source == "curtain_wall"]
 
 
 def test_glass_wall_of_mullions_alone_has_no_doorways():
