@@ -559,8 +559,8 @@ def _unblocked_gaps(geoms, gaps, rails) -> List[DoorHint]:
 
     lo = np.min([np.minimum(p, q) for p, q in gaps], axis=0) - 1.0
     hi = np.max([np.maximum(p, q) for p, q in gaps], axis=0) + 1.0
-    inb = ((np.maximum(rails[:, 0, 0], rails[:, 1, 0]) >= lo[0]) & (np.minimum(rails[:, 0, 0], rails[:, 1, 0]) <= hi[0])
-           & (np.maximum(rails[:, 0, 1], rails[:, 1, 1]) >= lo[1]) & (np.minimum(rails[:, 0, 1], rails[:, 1, 1]) <= hi[1]))
+    rmin, rmax = np.minimum(rails[:, 0], rails[:, 1]), np.maximum(rails[:, 0], rails[:, 1])
+    inb = (rmax >= lo).all(axis=1) & (rmin <= hi).all(axis=1)
     rails = rails[inb]
     rail_tree = STRtree([LineString(r) for r in rails])
     solid = []

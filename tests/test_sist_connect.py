@@ -39,7 +39,8 @@ def test_roof_spaces_by_word_or_drainage_falls_never_an_orphaned_room():
              _area(6, 100, 0, 104, 4, 4), _area(7, 104, 0, 120, 10, 4),  # small roof beside a large orphaned room
              _area(8, 130, 0, 140, 10, 5)]  # an orphaned room with no roof evidence
     texts = [CadText(40, 5, "屋面", 0.3, 0, "T"), CadText(35, 3, "2%", 0.3, 0, "T"),
-             CadText(62, 2, "2%", 0.3, 0, "T"), CadText(64, 5, "i=1%", 0.3, 0, "T"), CadText(66, 8, "1.5%", 0.3, 0, "T"),
+             CadText(62, 2, "2%", 0.3, 0, "T"), CadText(64, 5, "i=1%", 0.3, 0, "T"),
+             CadText(66, 8, "1.5%", 0.3, 0, "T"),
              CadText(71, 1, "电梯机房", 0.3, 0, "T"),
              CadText(85, 5, "5%", 0.3, 0, "T"), CadText(86, 6, "5%", 0.3, 0, "T"),
              CadText(102, 2, "Roof", 0.3, 0, "T"), CadText(110, 5, "Aula", 0.3, 0, "T"),
