@@ -1396,11 +1396,12 @@ def closed_spaces(areas: List[Area], passages: List[Passage], name_points=()) ->
 
 # Roofs of lower parts drawn on an upper floor's plan (issue 8, item 6): the plan of a 5th floor shows the roof of
 # the 4-storey block beside it, labelled as a roof and with its drainage falls; no door of the floor leads there.
-ROOF_WORDS = ("屋面", "屋顶", "roof", "tetto", "copertura", "cubierta", "azotea", "toiture", "flachdach",
-              "dachfläche", "кровл")
+ROOF_WORDS = ("屋面", "屋顶", "roof", "tetto", "tetti", "copertura", "cubierta", "azotea", "toiture", "flachdach",
+              "dachfläche", "кровл")  # Latin and Cyrillic words match at a word start ('architetto' is no roof)
 ROOF_SLOPES = 3  # drainage falls ('2%', 'i=1%') marked in one area that make it a roof (a ramp carries one or two)
 ROOF_SHARE = 0.5  # a component whose roof areas hold this share of its area is a roof with its rooftop structures
 _SLOPE_RE = None
+_ROOF_RE = None
 
 
 def _is_slope(text: str) -> bool:
@@ -1410,6 +1411,18 @@ def _is_slope(text: str) -> bool:
 
         _SLOPE_RE = re.compile(r"^\s*(i\s*=\s*)?\d{1,2}(\.\d+)?\s*[%‰]\s*$", re.IGNORECASE)
     return bool(_SLOPE_RE.match(text))
+
+
+def _is_roof_word(text: str) -> bool:
+    """A roof word in ``text`` (lower case): CJK words anywhere, the others at the start of a word."""
+    global _ROOF_RE
+    if _ROOF_RE is None:
+        import re
+
+        cjk = [w for w in ROOF_WORDS if not w.isascii() and not any("а" <= ch <= "я" for ch in w)]
+        other = [w for w in ROOF_WORDS if w not in cjk]
+        _ROOF_RE = re.compile("|".join([re.escape(w) for w in cjk] + [r"(?<!\w)" + re.escape(w) for w in other]))
+    return bool(_ROOF_RE.search(text))
 
 
 def roof_spaces(areas: List[Area], passages: List[Passage], texts=(), closed_ids=()) -> List[int]:
@@ -1433,7 +1446,7 @@ def roof_spaces(areas: List[Area], passages: List[Passage], texts=(), closed_ids
     for t in texts or ():
         x, y, s = (t.x, t.y, t.text) if hasattr(t, "text") else t
         low = str(s).strip().lower()
-        roof, slope = any(w in low for w in ROOF_WORDS), _is_slope(low)
+        roof, slope = _is_roof_word(low), _is_slope(low)
         if (roof or slope) and np.isfinite(x) and np.isfinite(y):
             pts.append(Point(float(x), float(y)))
             words.append(roof)

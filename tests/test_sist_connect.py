@@ -53,6 +53,7 @@ def test_roof_spaces_by_word_or_drainage_falls_never_an_orphaned_room():
     # (x, y, text) triples work too; a closed space is never listed again
     assert segmentation.roof_spaces(areas, [], [(40, 5, "copertura")], closed_ids=[2]) == []
     assert segmentation.roof_spaces(areas, [], [(40, 5, "TETTO piano")]) == [2]
+    assert segmentation.roof_spaces(areas, [], [(40, 5, "studio architetto")]) == []  # a word start only
 
 
 def _roof_plan(tmp_path):
