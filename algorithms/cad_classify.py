@@ -337,6 +337,8 @@ def classify_entities(geoms: Sequence[CadGeometry], chains: Sequence[str], rules
     if aux_from is not None:
         keep[aux_from:] = False
     free_stair_treads(geoms, keep)
+    if drop_door_swings and not include_doors:
+        hints.extend(curtain_wall_doors(geoms, keep))
     for i, g in enumerate(geoms):
         g.cls = cls[i] or ("wall" if g.kind in ("wall", "reference") else g.kind)
     classes: Dict[str, int] = {}
@@ -477,3 +479,119 @@ def _line(g: CadGeometry):
 
     c = g.coords[np.isfinite(g.coords).all(axis=1)]
     return LineString(c) if len(c) >= 2 else Point(c[0])
+
+
+# ------------------------------------------------------------------------------------------ curtain-wall doors
+CW_FRAME_MIN = 4.0  # metres: a frame line of a curtain wall runs along several panels
+CW_DEPTH = 0.4  # metres: panels lie within this distance of the frame line (the curtain wall's thickness)
+CW_GAP = (0.8, 2.5)  # metres: a door in the row of panels (narrower: a joint; wider: a wall or an open bay)
+CW_PANEL_RUN = 0.5  # metres of panels on each side of the gap (mullions alone, 0.1 m, are a glass wall's rhythm)
+
+
+def curtain_wall_doors(geoms: Sequence[CadGeometry], keep: Optional[np.ndarray] = None) -> List[DoorHint]:
+    """Doors in curtain walls drawn as a gap in the row of glazing panels: curtain walls are drawn as long
+    frame lines (>= ``CW_FRAME_MIN``) with the panels between them, and a door is often drawn as no panel,
+    the frame line running on across the opening (a threshold). Along every long straight window-kind
+    segment, the window pieces within ``CW_DEPTH`` of it cover runs; a gap of ``CW_GAP`` between two runs of at
+    least ``CW_PANEL_RUN`` of panels, with no wall or column across it, is a doorway (a pier between two
+    strip windows is a wall; a glass wall of mullions only has no panel runs). Returns one DoorHint
+    (source "curtain_wall") per gap, jamb to jamb along the frame line."""
+    from scipy.spatial import cKDTree
+
+    idx = [i for i, g in enumerate(geoms) if g.kind == "window" and not g.filled and len(g.coords) >= 2
+           and (keep is None or keep[i])]
+    if len(idx) < 4:
+        return []
+    P, Q, own = [], [], []
+    for i in idx:
+        c = geoms[i].coords
+        if geoms[i].closed:
+            c = np.vstack([c, c[:1]])
+        P.append(c[:-1])
+        Q.append(c[1:])
+        own.append(np.full(len(c) - 1, i))
+    P, Q, own = np.concatenate(P), np.concatenate(Q), np.concatenate(own)
+    L = np.hypot(*(Q - P).T)
+    ok = np.isfinite(L) & (L > 0.01)
+    P, Q, own, L = P[ok], Q[ok], own[ok], L[ok]
+    frames = np.flatnonzero(L >= CW_FRAME_MIN)
+    if not len(frames):
+        return []
+    mid = (P + Q) / 2.0
+    tree = cKDTree(mid)
+    gaps = []
+    for k in frames:
+        a, Lk = P[k], L[k]
+        u = (Q[k] - a) / Lk
+        nrm = np.array((-u[1], u[0]))
+        near = np.asarray(tree.query_ball_point(mid[k], Lk / 2.0 + CW_DEPTH), dtype=np.int64)
+        near = near[(own[near] != own[k]) & (L[near] <= 0.9 * Lk)]
+        if len(near) < 3:
+            continue
+        dp, dq = (P[near] - a) @ nrm, (Q[near] - a) @ nrm
+        near = near[(np.abs(dp) <= CW_DEPTH) & (np.abs(dq) <= CW_DEPTH)]
+        if len(near) < 3:
+            continue
+        tp, tq = (P[near] - a) @ u, (Q[near] - a) @ u
+        lo, hi = np.clip(np.minimum(tp, tq), 0, Lk), np.clip(np.maximum(tp, tq), 0, Lk)
+        order = np.argsort(lo)
+        runs = []
+        for l0, h0 in zip(lo[order], hi[order]):
+            if runs and l0 <= runs[-1][1] + 0.02:
+                runs[-1][1] = max(runs[-1][1], h0)
+            else:
+                runs.append([l0, h0])
+        for (l0, h0), (l1, h1) in zip(runs[:-1], runs[1:]):
+            if CW_GAP[0] <= l1 - h0 <= CW_GAP[1] and h0 - l0 >= CW_PANEL_RUN and h1 - l1 >= CW_PANEL_RUN:
+                gaps.append((a + u * h0, a + u * l1))
+    if not gaps:
+        return []
+    rails = np.flatnonzero(L >= CW_GAP[0])
+    return _unblocked_gaps(geoms, gaps, np.stack([P[rails], Q[rails]], axis=1))
+
+
+def _unblocked_gaps(geoms, gaps, rails) -> List[DoorHint]:
+    """The gaps (pairs of points) no wall or column crosses (within CW_DEPTH of the gap, its inner 80 %) and
+    only one frame line runs across (the threshold; the other frame line stops at the jambs: where both run
+    on, only a panel is missing from a fixed bay), one hint per doorway. ``rails``: (n, 2, 2) window segments."""
+    from shapely import STRtree
+    from shapely.geometry import LineString, Polygon
+
+    lo = np.min([np.minimum(p, q) for p, q in gaps], axis=0) - 1.0
+    hi = np.max([np.maximum(p, q) for p, q in gaps], axis=0) + 1.0
+    rmin, rmax = np.minimum(rails[:, 0], rails[:, 1]), np.maximum(rails[:, 0], rails[:, 1])
+    inb = (rmax >= lo).all(axis=1) & (rmin <= hi).all(axis=1)
+    rails = rails[inb]
+    rail_tree = STRtree([LineString(r) for r in rails])
+    solid = []
+    for g in geoms:
+        if g.kind not in ("wall", "column") or len(g.coords) < 2:
+            continue
+        c = g.coords
+        if (c[:, 0].max() < lo[0] or c[:, 0].min() > hi[0] or c[:, 1].max() < lo[1] or c[:, 1].min() > hi[1]
+                or not np.isfinite(c).all()):
+            continue
+        solid.append(Polygon(c) if g.filled and len(c) >= 3 else LineString(np.vstack([c, c[:1]]) if g.closed else c))
+    tree = STRtree(solid) if solid else None
+    out: List[DoorHint] = []
+    for p, q in gaps:
+        w = float(np.hypot(*(q - p)))
+        u = (q - p) / w
+        nrm = np.array((-u[1], u[0])) * CW_DEPTH
+        a2, b2 = p + u * 0.1 * w, q - u * 0.1 * w
+        rect = Polygon([a2 + nrm, b2 + nrm, b2 - nrm, a2 - nrm])
+        if tree is not None and len(tree.query(rect, predicate="intersects")):
+            continue
+        across = 0
+        for j in rail_tree.query(rect, predicate="intersects"):
+            d = rails[j, 1] - rails[j, 0]
+            n = float(np.hypot(*d))
+            if n >= 0.8 * w and abs(float(np.dot(d, u))) >= 0.98 * n:
+                across += 1
+        if across != 1:
+            continue
+        m = (p + q) / 2.0
+        if any(math.hypot(m[0] - (h.x0 + h.x1) / 2.0, m[1] - (h.y0 + h.y1) / 2.0) < 0.5 for h in out):
+            continue
+        out.append(DoorHint(float(p[0]), float(p[1]), float(q[0]), float(q[1]), "curtain_wall"))
+    return out

@@ -126,7 +126,8 @@ def process_floor(dxf_path: str, *, rules=None, layers=None, units=None, include
     stats = {"timings": timings, "cpu": cpu, "refine": rstats, "segment": dict(seg.stats),
              "texts": len(drawing.texts), "geometries": len(drawing.geometries), "unit": drawing.unit_name,
              "raster_shape": grid.shape, "areas": len(refined.areas), "passages": len(refined.passages),
-             "components": rstats.get("components", 1), "largest_component_share": share, "closed_spaces": closed}
+             "components": rstats.get("components", 1), "largest_component_share": share, "closed_spaces": closed,
+             "roof_spaces": rstats.get("roof_spaces", [])}
     if names_report is not None:
         stats["names"] = names_report.counts()
     progress.info(f"floor {level}: {len(refined.areas)} areas, {len(refined.passages)} passages "
@@ -147,7 +148,22 @@ def _closed_spaces(refined: AreaGraph, drawing: CadDrawing, name_rules, rstats, 
     if closed:
         progress.info(f"{len(closed)} closed space(s) no passage reaches and no room name labels (wall cavities, "
                       f"ducts, shafts: areas {', '.join(map(str, closed[:20]))}) are counted out of the connectivity")
-    return closed, segmentation.connected_share(refined.areas, closed)
+    roofs = _roof_spaces(refined, drawing, closed, rstats, progress)
+    return closed, segmentation.connected_share(refined.areas, list(closed) + roofs)
+
+
+def _roof_spaces(refined: AreaGraph, drawing: CadDrawing, closed, rstats, progress):
+    """Roofs of lower parts drawn on this floor's plan, no passage reaches (``segmentation.roof_spaces``):
+    tagged ``cad2osmag:roof=yes``, listed in ``rstats['roof_spaces']`` and counted out of the share."""
+    roofs = segmentation.roof_spaces(refined.areas, refined.passages, drawing.texts, closed)
+    rstats["roof_spaces"] = roofs
+    for a in refined.areas:
+        if a.id in roofs:
+            a.tags["cad2osmag:roof"] = "yes"
+    if roofs:
+        progress.info(f"{len(roofs)} area(s) of roofs below this floor that no passage reaches (areas "
+                      f"{', '.join(map(str, roofs[:20]))}) are counted out of the connectivity")
+    return roofs
 
 
 def convert_dxf(dxf_path: str, out_osm: str, *, preview_png: Optional[str] = None,

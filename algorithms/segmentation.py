@@ -1394,6 +1394,82 @@ def closed_spaces(areas: List[Area], passages: List[Passage], name_points=()) ->
     return sorted(out)
 
 
+# Roofs of lower parts drawn on an upper floor's plan (issue 8, item 6): the plan of a 5th floor shows the roof of
+# the 4-storey block beside it, labelled as a roof and with its drainage falls; no door of the floor leads there.
+ROOF_WORDS = ("屋面", "屋顶", "roof", "tetto", "tetti", "copertura", "cubierta", "azotea", "toiture", "flachdach",
+              "dachfläche", "кровл")  # Latin and Cyrillic words match at a word start ('architetto' is no roof)
+ROOF_SLOPES = 3  # drainage falls ('2%', 'i=1%') marked in one area that make it a roof (a ramp carries one or two)
+ROOF_SHARE = 0.5  # a component whose roof areas hold this share of its area is a roof with its rooftop structures
+_SLOPE_RE = None
+_ROOF_RE = None
+
+
+def _is_slope(text: str) -> bool:
+    global _SLOPE_RE
+    if _SLOPE_RE is None:
+        import re
+
+        _SLOPE_RE = re.compile(r"^\s*(i\s*=\s*)?\d{1,2}(\.\d+)?\s*[%‰]\s*$", re.IGNORECASE)
+    return bool(_SLOPE_RE.match(text))
+
+
+def _is_roof_word(text: str) -> bool:
+    """A roof word in ``text`` (lower case): CJK words anywhere, the others at the start of a word."""
+    global _ROOF_RE
+    if _ROOF_RE is None:
+        import re
+
+        cjk = [w for w in ROOF_WORDS if not w.isascii() and not any("а" <= ch <= "я" for ch in w)]
+        other = [w for w in ROOF_WORDS if w not in cjk]
+        _ROOF_RE = re.compile("|".join([re.escape(w) for w in cjk] + [r"(?<!\w)" + re.escape(w) for w in other]))
+    return bool(_ROOF_RE.search(text))
+
+
+def roof_spaces(areas: List[Area], passages: List[Passage], texts=(), closed_ids=()) -> List[int]:
+    """Ids of the areas of orphaned components that are roofs of lower parts of the building, drawn on this
+    floor's plan: outside the largest component, no passage from it reaches the largest component, and
+    roof areas -- holding a roof word (``ROOF_WORDS``: 屋面, roof, tetto, cubierta, toiture...) or at least
+    ``ROOF_SLOPES`` drainage falls ('2%', 'i=1%') -- hold at least ``ROOF_SHARE`` of the component's area
+    (the rest are rooftop structures reached across the roof: stair heads, lift machine rooms). ``texts``:
+    the drawing's texts (``CadText`` or (x, y, text)). They stay areas; the connectivity figure counts
+    them out like closed spaces, since a roof is no floor space. An orphaned room, even next to a roof,
+    is never counted out: its component must be mostly roof."""
+    from shapely import STRtree
+    from shapely.geometry import Point
+
+    closed = set(closed_ids)
+    cand = [a for a in areas if a.component != 0 and a.id not in closed and a.polygon is not None
+            and not a.polygon.is_empty and a.type != "structure"]
+    if not cand:
+        return []
+    pts, words = [], []
+    for t in texts or ():
+        x, y, s = (t.x, t.y, t.text) if hasattr(t, "text") else t
+        low = str(s).strip().lower()
+        roof, slope = _is_roof_word(low), _is_slope(low)
+        if (roof or slope) and np.isfinite(x) and np.isfinite(y):
+            pts.append(Point(float(x), float(y)))
+            words.append(roof)
+    if not pts:
+        return []
+    tree = STRtree(pts)
+    roof_area: Dict[int, float] = {}
+    total: Dict[int, float] = {}
+    members: Dict[int, List[int]] = {}
+    for a in cand:
+        hits = tree.query(a.polygon, predicate="intersects")
+        is_roof = any(words[i] for i in hits) or sum(1 for i in hits if not words[i]) >= ROOF_SLOPES
+        total[a.component] = total.get(a.component, 0.0) + a.area
+        members.setdefault(a.component, []).append(a.id)
+        if is_roof:
+            roof_area[a.component] = roof_area.get(a.component, 0.0) + a.area
+    out = []
+    for c, r in roof_area.items():
+        if r >= ROOF_SHARE * total[c]:
+            out.extend(members[c])
+    return sorted(out)
+
+
 def connected_share(areas: List[Area], closed_ids=()) -> float:
     """The largest component's share of the floor area, counting out ``closed_ids`` (``closed_spaces``)."""
     closed = set(closed_ids)

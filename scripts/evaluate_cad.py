@@ -58,6 +58,7 @@ def evaluate_plan(path, **kwargs):
     if "largest_component_share" in floor.stats:  # wall cavities, ducts and shafts the drawing closes count out
         fig["largest_component_pct"] = 100.0 * floor.stats["largest_component_share"]
         fig["closed_spaces"] = len(floor.stats.get("closed_spaces", []))
+        fig["roof_spaces"] = len(floor.stats.get("roof_spaces", []))  # roofs below the floor count out too
     return fig
 
 

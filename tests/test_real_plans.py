@@ -23,12 +23,18 @@ KNOWN_BELOW = {
                            "a group of its own since cad_sheet.split_elevations)",
     "kindergarten-1": "the sports hall is cut into pieces by the court markings drawn on the wall layer, and its "
                       "pieces reach no door; a few rooms closed (82 % since stair flights on wall layers are free)",
-    # cleaned SIST floors: doors were removed by hand and no room names survive (see shared data README)
-    "SIST-F1": "3 components (84 %), not yet diagnosed",
-    "SIST-F4": "8 components (81 %), not yet diagnosed",
-    "SIST-F5": "the north wing (16 %) and the east lecture block (20 %) meet the main wing through no opening in "
-               "this cleaned file (the import finds no door swing on it: 0 doorways); balcony strips "
-               "along the north facade are closed (56 %)",
+    # cleaned SIST floors: doors were removed by hand and no room names survive (see shared data README);
+    # diagnosed by picture against the DWG originals, which share their frame (tests/test_sist_connect.py, README
+    # "Connected SIST floors"): what stays apart is not connected in these files
+    "SIST-F1": "3 components (84 %): the north wing E2 (16 %) is a separate building at ground level, met outdoors "
+               "(the DWG's passage 通道 between the wings); this file holds nothing between them (1 wall line, "
+               "0 texts), and a 22 m2 detached room",
+    "SIST-F4": "7 components (81 %): the north wing (18 %) meets the main wing over the bridge 室外连廊, which is not "
+               "in this cleaned file (0 entities between the wings; the DWG draws its railings and label); the "
+               "curtain-wall door at its end is found but opens onto the outside",
+    "SIST-F5": "the north wing (16 %; its bridge 连廊 is not in this cleaned file) and the roofs of the lecture block "
+               "and the atrium (about 23 %; 5 texts in the file, no roof label: the DWG labels them 屋面, with drainage "
+               "falls, and counts them out) meet the main wing through no opening (0 doorways); 56 %",
 }
 
 # DWG sheets below the connectivity target with the current segmentation (measured 2026-12-01: A-A3-10-04
@@ -43,11 +49,12 @@ KNOWN_BELOW_DWG = {
                   "not yet diagnosed by picture",
     "A-A3-10-06": "58.5 %, not yet diagnosed room by room",
     "A-A3-10-08": "a roof plan (top view): one roof area, nothing to connect",
-    "SIST-F1": "80.4 %: curtain-wall rooms and stairs merged into corridors (see README, fusion of the DWG "
-               "sheets), not yet diagnosed room by room",
-    "SIST-F4": "82 % (62 % before doors opened through the joint to the east block): the north wing meets the "
-               "covered walkway 室外连廊 only through its curtain wall, where no door is found",
-    "SIST-F5": "70.4 % (69.6 before projection lines closed a space), not yet diagnosed room by room",
+    "SIST-F1": "80.4 %: the north wing E2 (19 %) is a separate building at ground level; it meets E1 outdoors, "
+               "across the 10-12 m passage 通道 between the wings (open at both ends, ramps 残疾人出入口), not "
+               "through any indoor space (on the upper floors the bridge 连廊 joins them). The label makes 通道 an "
+               "interior-evidence case (issue 8, item 5), not a doorway: no footprint scale encloses it (the 12 m "
+               "disk enters; at 24 m its open piece is 3 490 m2, over the 576 m2 limit), so it stays outside",
+    # SIST-F4 (98.1 % since curtain-wall doors) and SIST-F5 (95.0 % since roofs below the floor count out) reach it
 }
 
 
