@@ -612,6 +612,12 @@ def _cells(free: np.ndarray, dist: Optional[np.ndarray] = None) -> Tuple[np.ndar
     peak_val = np.zeros(n, np.float64)
     peak_val[markers[peaks]] = dbox[peaks]
     del peaks
+    from . import kernels
+
+    nb = kernels.get()
+    if nb is not None:  # the same pointers and roots in one compiled pass (kernels.py)
+        cells[r0:r1, c0:c1] = nb.ascent_basins(dbox, np.ascontiguousarray(free[r0:r1, c0:c1]), markers)
+        return dist, cells, peak_val
     padded = cv2.copyMakeBorder(dbox, 1, 1, 1, 1, cv2.BORDER_CONSTANT,
                                 value=-1.0)
     best = padded[1:R + 1, 1:C + 1].copy()
@@ -1463,6 +1469,9 @@ def segment(grid: OccupancyGrid, door_width: float = DEFAULT_DOOR_WIDTH,
     stats.update(alpha_px2=float(alpha), alpha_radius_m=r_alpha * res, resolution=res,
                  pixels=float(data.size))
     progress.step(2, f"alpha = {alpha} px^2 (probe disk radius {r_alpha * res:.2f} m at {res:g} m/px)")
+    from . import kernels
+
+    progress.info(kernels.describe())
 
     t = time.perf_counter()
     free = data == FREE

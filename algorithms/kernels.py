@@ -1,0 +1,61 @@
+"""Optional compiled kernels for the segmentation's pixel loops (issue 13).
+
+numba, when installed, runs the loops the numpy code does in many full-array passes (the layered
+thinning, the steepest-ascent basins, the ring-by-ring region growth) as one compiled loop each.
+It is optional: QGIS users' Python may lack it, and then the numpy code runs, with the same
+results (every kernel is a transcription of the numpy code: tests/test_kernels.py compares both on
+random inputs, tests/test_speed_equivalence.py pins the pipeline's output).
+
+``CAD2OSMAG_NUMBA=0`` in the environment forces the numpy path. ``get()`` returns the kernel module
+or None; ``describe()`` the one line the segmentation logs about the path that runs.
+"""
+from __future__ import annotations
+
+import os
+from typing import Optional
+
+_STATE = {"loaded": False, "module": None, "why": ""}
+
+
+def get():
+    """The compiled kernel module (``_kernels_nb``), or None for the numpy path."""
+    if not _STATE["loaded"]:
+        _STATE["loaded"] = True
+        if os.environ.get("CAD2OSMAG_NUMBA", "1").strip().lower() in ("0", "no", "false", "off"):
+            _STATE["why"] = "disabled by CAD2OSMAG_NUMBA=0"
+        else:
+            try:
+                from . import _kernels_nb
+
+                _STATE["module"] = _kernels_nb
+            except Exception as exc:  # numba missing, or a numba that does not fit this numpy
+                _STATE["why"] = f"numba not usable ({type(exc).__name__}: {exc})"
+    return _STATE["module"]
+
+
+def enabled() -> bool:
+    return get() is not None
+
+
+def describe() -> str:
+    mod = get()
+    if mod is not None:
+        import numba
+
+        return f"pixel loops: compiled kernels (numba {numba.__version__})"
+    return f"pixel loops: numpy ({_STATE['why'] or 'numba not installed'}; install numba for speed)"
+
+
+def set_enabled(flag: Optional[bool]) -> None:
+    """Tests: force the numpy path (False), the compiled one (True, if numba imports), or go back
+    to the environment's choice (None)."""
+    _STATE.update(loaded=False, module=None, why="")
+    if flag is False:
+        _STATE.update(loaded=True, why="disabled")
+    elif flag is True:
+        old = os.environ.pop("CAD2OSMAG_NUMBA", None)
+        try:
+            get()
+        finally:
+            if old is not None:
+                os.environ["CAD2OSMAG_NUMBA"] = old
