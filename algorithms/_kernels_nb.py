@@ -329,3 +329,56 @@ def zone_assign(lab, zn, nl, vals, r0, c0, z):
         for c in range(C):
             if zn[r0 + r, c0 + c] == z:
                 lab[r0 + r, c0 + c] = vals[nl[r, c]]
+
+
+# --------------------------------------------------------------------------- label borders (segmentation._neighbour_pairs)
+@njit(cache=True, nogil=True)
+def neighbour_pairs(labels, dist, use_dist):
+    """4-neighbour pixel pairs with two different non-zero labels, vertical pairs first, each kind
+    in raster order (as ``np.nonzero`` lists them): (lo, hi, min clearance, axis, row, col)."""
+    R, C = labels.shape
+    n0 = 0
+    for r in range(R - 1):
+        for c in range(C):
+            a, b = labels[r, c], labels[r + 1, c]
+            if a != b and a > 0 and b > 0:
+                n0 += 1
+    n1 = 0
+    for r in range(R):
+        for c in range(C - 1):
+            a, b = labels[r, c], labels[r, c + 1]
+            if a != b and a > 0 and b > 0:
+                n1 += 1
+    n = n0 + n1
+    lo = np.empty(n, labels.dtype)
+    hi = np.empty(n, labels.dtype)
+    v = np.zeros(n, dist.dtype)
+    axis = np.empty(n, np.int8)
+    rows = np.empty(n, np.int64)
+    cols = np.empty(n, np.int64)
+    k = 0
+    for r in range(R - 1):
+        for c in range(C):
+            a, b = labels[r, c], labels[r + 1, c]
+            if a != b and a > 0 and b > 0:
+                lo[k] = min(a, b)
+                hi[k] = max(a, b)
+                if use_dist:
+                    v[k] = min(dist[r, c], dist[r + 1, c])
+                axis[k] = 0
+                rows[k] = r
+                cols[k] = c
+                k += 1
+    for r in range(R):
+        for c in range(C - 1):
+            a, b = labels[r, c], labels[r, c + 1]
+            if a != b and a > 0 and b > 0:
+                lo[k] = min(a, b)
+                hi[k] = max(a, b)
+                if use_dist:
+                    v[k] = min(dist[r, c], dist[r, c + 1])
+                axis[k] = 1
+                rows[k] = r
+                cols[k] = c
+                k += 1
+    return lo, hi, v, axis, rows, cols

@@ -689,6 +689,12 @@ def _neighbour_pairs(labels: np.ndarray, dist: Optional[np.ndarray] = None):
     pixels (if ``dist`` is given), axis 0 for vertical neighbours (row, col) / (row+1, col), axis 1
     for horizontal neighbours (row, col) / (row, col+1).
     """
+    from . import kernels
+
+    nb = kernels.get()
+    if nb is not None:  # the same pairs in the same order from one compiled scan (kernels.py)
+        d = np.zeros((1, 1), np.float32) if dist is None else dist
+        return nb.neighbour_pairs(labels, d, dist is not None)
     out = []
     for axis in (0, 1):
         if axis == 0:

@@ -181,3 +181,18 @@ def test_environment_switch_forces_numpy(monkeypatch):
     finally:
         monkeypatch.delenv("CAD2OSMAG_NUMBA")
         kernels.set_enabled(None)
+
+
+@pytest.mark.parametrize("seed", range(5))
+def test_neighbour_pairs_equal_numpy(both_paths, seed):
+    from algorithms.segmentation import _cell_graph, _cells, _neighbour_pairs
+
+    free, dist = _random_rooms(seed)
+    _, cells, _ = _cells(free, dist)
+    plain, fast = both_paths(lambda: _neighbour_pairs(cells, dist))
+    _same(plain, fast)
+    assert len(fast[0]) > 0
+    plain, fast = both_paths(lambda: _neighbour_pairs(cells))
+    _same(plain, fast)
+    plain, fast = both_paths(lambda: _cell_graph(cells, dist))
+    _same(plain, fast)
