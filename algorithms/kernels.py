@@ -25,12 +25,39 @@ def get():
             _STATE["why"] = "disabled by CAD2OSMAG_NUMBA=0"
         else:
             try:
-                from . import _kernels_nb
-
-                _STATE["module"] = _kernels_nb
-            except Exception as exc:  # numba missing, or a numba that does not fit this numpy
+                mod = _load()
+                mod.selftest()
+                _STATE["module"] = mod
+            except Exception as exc:  # numba missing, a numba that does not fit this numpy, a bad cache
                 _STATE["why"] = f"numba not usable ({type(exc).__name__}: {exc})"
     return _STATE["module"]
+
+
+_MODULE = "cad2osmag_kernels_nb"
+
+
+def _load():
+    """Import ``_kernels_nb.py`` under one fixed top-level name, whatever the package is called
+    (``algorithms`` in the tests, ``cad2osmag.algorithms`` in QGIS): numba's cache records the
+    module name of every compiled function and imports it again when it loads the cache, so a
+    cache written under one name would fail under the other."""
+    import importlib.util
+    import sys
+
+    mod = sys.modules.get(_MODULE)
+    if mod is None:
+        import numba  # noqa: F401  (ImportError here: no numba, the numpy path runs)
+
+        path = os.path.join(os.path.dirname(os.path.abspath(__file__)), "_kernels_nb.py")
+        spec = importlib.util.spec_from_file_location(_MODULE, path)
+        mod = importlib.util.module_from_spec(spec)
+        sys.modules[_MODULE] = mod
+        try:
+            spec.loader.exec_module(mod)
+        except BaseException:
+            sys.modules.pop(_MODULE, None)
+            raise
+    return mod
 
 
 def enabled() -> bool:

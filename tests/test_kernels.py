@@ -196,3 +196,36 @@ def test_neighbour_pairs_equal_numpy(both_paths, seed):
     _same(plain, fast)
     plain, fast = both_paths(lambda: _cell_graph(cells, dist))
     _same(plain, fast)
+
+
+@pytest.mark.qgis_process
+def test_qgis_process_segment_runs_the_kernels_and_gives_the_numpy_result(tmp_path):
+    """Inside QGIS the package is ``cad2osmag.algorithms``, in the tests ``algorithms``: the kernels'
+    cache, written by either, must load in both (it failed with ModuleNotFoundError before the
+    kernels got one fixed module name). The labels equal the numpy path's."""
+    from osgeo import gdal
+
+    from algorithms import segmentation
+    from algorithms.raster_io import write_grid
+
+    from .qgis_process import run_alg
+    from .test_segmentation import Plan
+
+    plan = Plan()
+    path = tmp_path / "plan.tif"
+    write_grid(str(path), plan.grid)
+    kernels.get()  # writes / loads the cache under this process's package name first
+    out = tmp_path / "labels.tif"
+    _, res, log = run_alg("segment", {"INPUT": path, "DOOR_WIDTH": 1.0, "CORRIDOR_WIDTH": 2.0,
+                                      "AREAS": tmp_path / "a.gpkg", "PASSAGES": tmp_path / "p.gpkg", "LABELS": out})
+    assert "pixel loops:" in log
+    if kernels.get() is not None:
+        assert "compiled kernels (numba" in log, log[-2000:]
+    kernels.set_enabled(False)
+    try:
+        ref = segmentation.segment(plan.grid, door_width=1.0, corridor_width=2.0)
+    finally:
+        kernels.set_enabled(None)
+    assert res["AREA_COUNT"] == len(ref.areas)
+    lab = gdal.Open(str(out)).ReadAsArray()
+    assert np.array_equal(lab, ref.labels)
