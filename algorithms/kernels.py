@@ -14,7 +14,7 @@ from __future__ import annotations
 import os
 from typing import Optional
 
-_STATE = {"loaded": False, "module": None, "why": ""}
+_STATE = {"loaded": False, "module": None, "why": "", "load_s": 0.0}
 
 
 def get():
@@ -25,9 +25,13 @@ def get():
             _STATE["why"] = "disabled by CAD2OSMAG_NUMBA=0"
         else:
             try:
+                import time
+
+                t0 = time.process_time()
                 mod = _load()
                 mod.selftest()
                 _STATE["module"] = mod
+                _STATE["load_s"] = time.process_time() - t0
             except Exception as exc:  # numba missing, a numba that does not fit this numpy, a bad cache
                 _STATE["why"] = f"numba not usable ({type(exc).__name__}: {exc})"
     return _STATE["module"]
@@ -69,14 +73,17 @@ def describe() -> str:
     if mod is not None:
         import numba
 
-        return f"pixel loops: compiled kernels (numba {numba.__version__})"
+        load = _STATE.get("load_s", 0.0)
+        note = (f", compiled on this first use in {load:.0f} s CPU, cached for the next runs" if load > 3.0
+                else f", loaded in {load:.2f} s")
+        return f"pixel loops: compiled kernels (numba {numba.__version__}{note})"
     return f"pixel loops: numpy ({_STATE['why'] or 'numba not installed'}; install numba for speed)"
 
 
 def set_enabled(flag: Optional[bool]) -> None:
     """Tests: force the numpy path (False), the compiled one (True, if numba imports), or go back
     to the environment's choice (None)."""
-    _STATE.update(loaded=False, module=None, why="")
+    _STATE.update(loaded=False, module=None, why="", load_s=0.0)
     if flag is False:
         _STATE.update(loaded=True, why="disabled")
     elif flag is True:
