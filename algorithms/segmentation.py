@@ -612,6 +612,12 @@ def _cells(free: np.ndarray, dist: Optional[np.ndarray] = None) -> Tuple[np.ndar
     peak_val = np.zeros(n, np.float64)
     peak_val[markers[peaks]] = dbox[peaks]
     del peaks
+    from . import kernels
+
+    nb = kernels.get()
+    if nb is not None:  # the same pointers and roots in one compiled pass (kernels.py)
+        cells[r0:r1, c0:c1] = nb.ascent_basins(dbox, np.ascontiguousarray(free[r0:r1, c0:c1]), markers)
+        return dist, cells, peak_val
     padded = cv2.copyMakeBorder(dbox, 1, 1, 1, 1, cv2.BORDER_CONSTANT,
                                 value=-1.0)
     best = padded[1:R + 1, 1:C + 1].copy()
@@ -683,6 +689,12 @@ def _neighbour_pairs(labels: np.ndarray, dist: Optional[np.ndarray] = None):
     pixels (if ``dist`` is given), axis 0 for vertical neighbours (row, col) / (row+1, col), axis 1
     for horizontal neighbours (row, col) / (row, col+1).
     """
+    from . import kernels
+
+    nb = kernels.get()
+    if nb is not None:  # the same pairs in the same order from one compiled scan (kernels.py)
+        d = np.zeros((1, 1), np.float32) if dist is None else dist
+        return nb.neighbour_pairs(labels, d, dist is not None)
     out = []
     for axis in (0, 1):
         if axis == 0:
@@ -1539,6 +1551,9 @@ def segment(grid: OccupancyGrid, door_width: float = DEFAULT_DOOR_WIDTH,
     stats.update(alpha_px2=float(alpha), alpha_radius_m=r_alpha * res, resolution=res,
                  pixels=float(data.size))
     progress.step(2, f"alpha = {alpha} px^2 (probe disk radius {r_alpha * res:.2f} m at {res:g} m/px)")
+    from . import kernels
+
+    progress.info(kernels.describe())
 
     t = time.perf_counter()
     free = data == FREE

@@ -86,6 +86,13 @@ def thin(mask: np.ndarray, dist: Optional[np.ndarray] = None, progress=None) -> 
 
 def _thin_box(mask: np.ndarray, dist: np.ndarray, progress=None) -> np.ndarray:
     rows, cols = mask.shape
+    from . import kernels
+
+    nb = kernels.get()
+    if nb is not None and mask.any():
+        img, pos, bounds = nb.thin_setup(mask, np.ascontiguousarray(dist))
+        _thin_compiled(nb, img, pos, bounds, _LUTS, cols + 2, progress)
+        return img.reshape(rows + 2, cols + 2)[1:-1, 1:-1].astype(bool)
     width = cols + 2
     img = np.zeros((rows + 2, width), np.uint8)
     img[1:-1, 1:-1] = mask
@@ -136,6 +143,23 @@ def _thin_box(mask: np.ndarray, dist: np.ndarray, progress=None) -> np.ndarray:
     rest = np.flatnonzero(img)
     sweep(rest)
     return img.reshape(rows + 2, width)[1:-1, 1:-1].astype(bool)
+
+
+def _thin_compiled(nb, img, pos, bounds, luts, width, progress=None, chunk=64):
+    """``_thin_box``'s layer loop as compiled kernels (``kernels``): the same candidates, sweeps and
+    carry, ``chunk`` layers per call with a cancel check between calls. ``img`` is thinned in place."""
+    cand = np.empty(len(pos), np.int64)
+    flags = np.empty(len(pos), np.bool_)
+    ncarry = 0
+    n_layers = len(bounds) - 1
+    bounds = bounds.astype(np.int64)
+    for k0 in range(0, n_layers, chunk):
+        if progress is not None:
+            progress.check()
+        ncarry = nb.thin_layers(img, pos, bounds, k0, min(k0 + chunk, n_layers), luts, width, cand, ncarry, flags)
+    if progress is not None:
+        progress.check()
+    nb.thin_rest(img, luts, width, flags)
 
 
 # --------------------------------------------------------------------------- graph
@@ -522,10 +546,19 @@ def nearest_seed_regions(seeds: np.ndarray, space: np.ndarray, zones: Optional[n
         multi = labels_in > 1
         multi[0] = False
         boxes = ndi.find_objects(zn)  # the boxes of the zones with several labels are the same
+        from . import kernels
+
+        nb = kernels.get()
         for i, z in enumerate(np.nonzero(multi)[0].tolist()):
             if progress is not None and i % 32 == 0:
                 progress.check()
             sl = boxes[z - 1]
+            if nb is not None:  # the same seed image and label lookup, compiled (kernels.py)
+                rs, cs = sl
+                src, vals = nb.zone_seeds(zn, sd, rs.start, rs.stop, cs.start, cs.stop, z)
+                _, nl = cv2.distanceTransformWithLabels(src, cv2.DIST_L2, 5, labelType=cv2.DIST_LABEL_PIXEL)
+                nb.zone_assign(lab, zn, nl, vals, rs.start, cs.start, z)
+                continue
             inside = zn[sl] == z
             sub_seeds = np.where(inside, sd[sl], 0)
             flat = np.flatnonzero(sub_seeds.ravel())
@@ -551,7 +584,17 @@ def _regrow_orphans(lab: np.ndarray, seeds: np.ndarray, space: np.ndarray, zones
     import cv2
     from scipy import ndimage as ndi
 
-    orphan = space & (lab == 0)
+    from . import kernels
+
+    nb = kernels.get()
+    if nb is not None and check_pieces:  # the same pieces from one compiled union-find pass
+        if progress is not None:
+            progress.check()
+        orphan = nb.orphan_pieces(np.ascontiguousarray(lab), np.ascontiguousarray(seeds),
+                                  np.ascontiguousarray(space))
+        check_pieces = False
+    else:
+        orphan = space & (lab == 0)
     for lab_id, sl in enumerate(ndi.find_objects(lab) if check_pieces else [], start=1):
         if progress is not None and lab_id % 64 == 0:
             progress.check()
@@ -575,6 +618,13 @@ def _regrow_orphans(lab: np.ndarray, seeds: np.ndarray, space: np.ndarray, zones
     todo = np.flatnonzero(orphan.ravel())
     flat = lab.ravel()
     zflat = None if zones is None else zones.ravel()
+    if nb is not None:  # the same synchronous rounds, compiled (kernels.py)
+        if progress is not None:
+            progress.check()
+        use = zflat is not None
+        nb.grow_rounds(flat, todo.astype(np.int64), rows, cols,
+                       zflat if use else np.zeros(1, np.int32), label_zone if use else np.zeros(1, np.int64), use)
+        return flat.reshape(rows, cols)
     while len(todo):
         if progress is not None:
             progress.check()

@@ -50,6 +50,17 @@ def test_sample_building_output_is_pinned(tmp_path):
     _check("sample-F1", _sample_f1(tmp_path), tmp_path)
 
 
+def test_sample_building_output_is_pinned_on_the_numpy_path_too(tmp_path):
+    """The compiled kernels (algorithms/kernels.py) are optional: without numba the same file results."""
+    from algorithms import kernels
+
+    kernels.set_enabled(False)
+    try:
+        _check("sample-F1", _sample_f1(tmp_path), tmp_path)
+    finally:
+        kernels.set_enabled(None)
+
+
 @pytest.mark.slow
 @pytest.mark.parametrize("name", ["SIST-F1", "SIST-F5"])
 def test_sist_output_is_pinned(name, tmp_path):

@@ -1,0 +1,95 @@
+"""Optional compiled kernels for the segmentation's pixel loops (issue 13).
+
+numba, when installed, runs the loops the numpy code does in many full-array passes (the layered
+thinning, the steepest-ascent basins, the ring-by-ring region growth) as one compiled loop each.
+It is optional: QGIS users' Python may lack it, and then the numpy code runs, with the same
+results (every kernel is a transcription of the numpy code: tests/test_kernels.py compares both on
+random inputs, tests/test_speed_equivalence.py pins the pipeline's output).
+
+``CAD2OSMAG_NUMBA=0`` in the environment forces the numpy path. ``get()`` returns the kernel module
+or None; ``describe()`` the one line the segmentation logs about the path that runs.
+"""
+from __future__ import annotations
+
+import os
+from typing import Optional
+
+_STATE = {"loaded": False, "module": None, "why": "", "load_s": 0.0}
+
+
+def get():
+    """The compiled kernel module (``_kernels_nb``), or None for the numpy path."""
+    if not _STATE["loaded"]:
+        _STATE["loaded"] = True
+        if os.environ.get("CAD2OSMAG_NUMBA", "1").strip().lower() in ("0", "no", "false", "off"):
+            _STATE["why"] = "disabled by CAD2OSMAG_NUMBA=0"
+        else:
+            try:
+                import time
+
+                t0 = time.process_time()
+                mod = _load()
+                mod.selftest()
+                _STATE["module"] = mod
+                _STATE["load_s"] = time.process_time() - t0
+            except Exception as exc:  # numba missing, a numba that does not fit this numpy, a bad cache
+                _STATE["why"] = f"numba not usable ({type(exc).__name__}: {exc})"
+    return _STATE["module"]
+
+
+_MODULE = "cad2osmag_kernels_nb"
+
+
+def _load():
+    """Import ``_kernels_nb.py`` under one fixed top-level name, whatever the package is called
+    (``algorithms`` in the tests, ``cad2osmag.algorithms`` in QGIS): numba's cache records the
+    module name of every compiled function and imports it again when it loads the cache, so a
+    cache written under one name would fail under the other."""
+    import importlib.util
+    import sys
+
+    mod = sys.modules.get(_MODULE)
+    if mod is None:
+        import numba  # noqa: F401  (ImportError here: no numba, the numpy path runs)
+
+        path = os.path.join(os.path.dirname(os.path.abspath(__file__)), "_kernels_nb.py")
+        spec = importlib.util.spec_from_file_location(_MODULE, path)
+        mod = importlib.util.module_from_spec(spec)
+        sys.modules[_MODULE] = mod
+        try:
+            spec.loader.exec_module(mod)
+        except BaseException:
+            sys.modules.pop(_MODULE, None)
+            raise
+    return mod
+
+
+def enabled() -> bool:
+    return get() is not None
+
+
+def describe() -> str:
+    mod = get()
+    if mod is not None:
+        import numba
+
+        load = _STATE.get("load_s", 0.0)
+        note = (f", compiled on this first use in {load:.0f} s CPU, cached for the next runs" if load > 3.0
+                else f", loaded in {load:.2f} s")
+        return f"pixel loops: compiled kernels (numba {numba.__version__}{note})"
+    return f"pixel loops: numpy ({_STATE['why'] or 'numba not installed'}; install numba for speed)"
+
+
+def set_enabled(flag: Optional[bool]) -> None:
+    """Tests: force the numpy path (False), the compiled one (True, if numba imports), or go back
+    to the environment's choice (None)."""
+    _STATE.update(loaded=False, module=None, why="", load_s=0.0)
+    if flag is False:
+        _STATE.update(loaded=True, why="disabled")
+    elif flag is True:
+        old = os.environ.pop("CAD2OSMAG_NUMBA", None)
+        try:
+            get()
+        finally:
+            if old is not None:
+                os.environ["CAD2OSMAG_NUMBA"] = old

@@ -1,0 +1,231 @@
+"""The compiled kernels (algorithms/kernels.py, numba) give exactly what the numpy code gives.
+
+Every helper that has a compiled path runs twice on the same random input, once with the kernels
+forced off and once on; the outputs must be equal array for array. Without numba the comparison
+is skipped (the numpy path is what runs, and the rest of the suite tests it)."""
+import numpy as np
+import pytest
+
+from algorithms import kernels
+
+from .test_speed_equivalence import _random_rooms
+
+
+@pytest.fixture
+def both_paths():
+    """Run a callable with the numpy path and with the compiled one; restores the default after."""
+    if kernels.get() is None:
+        kernels.set_enabled(True)
+        if kernels.get() is None:
+            kernels.set_enabled(None)
+            pytest.skip("numba is not installed: only the numpy path exists")
+
+    def run(fn):
+        kernels.set_enabled(False)
+        try:
+            plain = fn()
+        finally:
+            kernels.set_enabled(True)
+        return plain, fn()
+
+    yield run
+    kernels.set_enabled(None)
+
+
+def _same(a, b):
+    if isinstance(a, tuple):
+        assert len(a) == len(b)
+        for x, y in zip(a, b):
+            _same(x, y)
+    else:
+        assert a.dtype == b.dtype and a.shape == b.shape
+        assert np.array_equal(a, b)
+
+
+def _blobs(seed, shape=(97, 131), keep=0.72):
+    """Random free space: noise opened into rooms, passages and pillars (thinning's hard cases:
+    one-pixel bridges, loops, diagonal steps)."""
+    import cv2
+
+    rng = np.random.default_rng(seed)
+    img = (rng.random(shape) < keep).astype(np.uint8)
+    img = cv2.morphologyEx(img, cv2.MORPH_OPEN, np.ones((2, 2), np.uint8))
+    img[rng.integers(0, shape[0], 6), :] = 1  # long one-pixel corridors
+    img[:, rng.integers(0, shape[1], 4)] = 1
+    return img.astype(bool)
+
+
+@pytest.mark.parametrize("seed", range(10))
+def test_thinning_equals_numpy(both_paths, seed):
+    from algorithms.skeleton import thin
+
+    mask = _blobs(seed) if seed % 2 else _random_rooms(seed)[0]
+    plain, fast = both_paths(lambda: thin(mask))
+    _same(plain, fast)
+    assert fast.sum() > 0
+
+
+def test_thinning_with_float64_clearance_and_a_border_touching_mask(both_paths):
+    from algorithms.segmentation import _edt
+    from algorithms.skeleton import thin
+
+    mask = np.ones((40, 60), bool)  # touches every border: the padded image takes care of it
+    mask[10:14, 20:45] = False
+    dist = _edt(mask).astype(np.float64) + 1e-9
+    plain, fast = both_paths(lambda: thin(mask, dist))
+    _same(plain, fast)
+
+
+@pytest.mark.parametrize("seed", range(10))
+def test_basins_equal_numpy(both_paths, seed):
+    from algorithms.segmentation import _cells
+
+    free, dist = _random_rooms(seed) if seed % 2 else (_blobs(seed), None)
+    plain, fast = both_paths(lambda: _cells(free, dist)[1:])
+    _same(plain, fast)
+
+
+def test_basins_of_plateaus_and_ties(both_paths):
+    """Equal clearance everywhere on a ridge: the first direction wins a tie, on both paths."""
+    from algorithms.segmentation import _cells
+
+    free = np.zeros((30, 50), bool)
+    free[5:25, 3:47] = True
+    dist = np.where(free, 2.0, 0.0).astype(np.float32)
+    dist[10:20, 10:40] = 3.0
+    plain, fast = both_paths(lambda: _cells(free, dist)[1:])
+    _same(plain, fast)
+
+
+def _seeds_and_zones(seed, shape=(120, 160)):
+    """Free space, scattered seed pixels with labels 1..n, and zones (the clearance basins) in
+    which every label lies whole, some zones holding several labels and some none."""
+    from algorithms.segmentation import _cells
+
+    rng = np.random.default_rng(seed)
+    free, dist = _random_rooms(seed, shape)
+    _, basins, _ = _cells(free, dist)
+    seeds = np.zeros(shape, np.int32)
+    rr, cc = np.nonzero(free)
+    pick = rng.choice(len(rr), size=min(len(rr), 60), replace=False)
+    seeds[rr[pick], cc[pick]] = np.arange(1, len(pick) + 1, dtype=np.int32)
+    # short seed runs (several pixels of one label), one label per run
+    for k in range(1, len(pick) + 1, 7):
+        r, c = rr[pick[k - 1]], cc[pick[k - 1]]
+        run = free[r, c:c + 5] & (basins[r, c:c + 5] == basins[r, c])
+        seeds[r, c:c + 5][run] = k
+    # drop the seeds of a few zones: they are filled from their neighbours (fill_zones)
+    for z in rng.choice(int(basins.max()) + 1, size=3):
+        seeds[basins == z] = 0
+    return seeds, free, basins
+
+
+@pytest.mark.parametrize("seed", range(8))
+@pytest.mark.parametrize("zoned", [False, True])
+def test_nearest_seed_regions_equal_numpy(both_paths, seed, zoned):
+    from algorithms.skeleton import nearest_seed_regions
+
+    seeds, space, zones = _seeds_and_zones(seed)
+    plain, fast = both_paths(lambda: nearest_seed_regions(seeds, space, zones if zoned else None))
+    _same(plain, fast)
+    assert (fast[space] > 0).mean() > 0.9
+
+
+@pytest.mark.parametrize("seed", range(6))
+def test_orphan_regrowth_equals_numpy(both_paths, seed):
+    """Labels split into pieces by walls: the pieces without a seed of their label are cleared and
+    grown into from their neighbours, the same on both paths (zoned and not)."""
+    from algorithms.skeleton import _regrow_orphans
+
+    rng = np.random.default_rng(seed)
+    seeds, space, zones = _seeds_and_zones(seed)
+    lab = np.where(space, rng.integers(1, 9, space.shape), 0).astype(np.int32)
+    lab = np.repeat(np.repeat(lab[::8, ::8], 8, 0), 8, 1)[:space.shape[0], :space.shape[1]] * space
+    lab = lab.astype(np.int32)
+    sd = np.where(space & (rng.random(space.shape) < 0.01), lab, 0).astype(np.int32)
+    label_zone = rng.integers(0, int(zones.max()) + 1, 10)
+    label_zone[0] = 0
+    plain, fast = both_paths(lambda: _regrow_orphans(lab.copy(), sd, space))
+    _same(plain, fast)
+    plain, fast = both_paths(lambda: _regrow_orphans(lab.copy(), sd, space, zones, label_zone))
+    _same(plain, fast)
+
+
+def test_the_path_that_runs_is_logged():
+    from algorithms.progress import RecordingProgress
+    from algorithms.sample_building import generate_building  # noqa: F401  (import check only)
+
+    kernels.set_enabled(False)
+    try:
+        assert "numpy" in kernels.describe()
+    finally:
+        kernels.set_enabled(None)
+    if kernels.get() is not None:
+        assert "numba" in kernels.describe()
+    p = RecordingProgress()
+    from algorithms import segmentation
+    from algorithms.model import OccupancyGrid
+
+    data = np.full((60, 80), 255, np.uint8)
+    data[5:55, 5:75] = 0
+    segmentation.segment(OccupancyGrid(data=data, resolution=0.05, origin_x=0.0, origin_y=0.0), progress=p)
+    assert "pixel loops:" in p.text()
+
+
+def test_environment_switch_forces_numpy(monkeypatch):
+    monkeypatch.setenv("CAD2OSMAG_NUMBA", "0")
+    kernels.set_enabled(None)
+    try:
+        assert kernels.get() is None
+        assert "CAD2OSMAG_NUMBA=0" in kernels.describe()
+    finally:
+        monkeypatch.delenv("CAD2OSMAG_NUMBA")
+        kernels.set_enabled(None)
+
+
+@pytest.mark.parametrize("seed", range(5))
+def test_neighbour_pairs_equal_numpy(both_paths, seed):
+    from algorithms.segmentation import _cell_graph, _cells, _neighbour_pairs
+
+    free, dist = _random_rooms(seed)
+    _, cells, _ = _cells(free, dist)
+    plain, fast = both_paths(lambda: _neighbour_pairs(cells, dist))
+    _same(plain, fast)
+    assert len(fast[0]) > 0
+    plain, fast = both_paths(lambda: _neighbour_pairs(cells))
+    _same(plain, fast)
+    plain, fast = both_paths(lambda: _cell_graph(cells, dist))
+    _same(plain, fast)
+
+
+@pytest.mark.qgis_process
+def test_qgis_process_segment_runs_the_kernels_and_gives_the_numpy_result(tmp_path):
+    """Inside QGIS the package is ``cad2osmag.algorithms``, in the tests ``algorithms``: the kernels'
+    cache, written by either, must load in both (it failed with ModuleNotFoundError before the
+    kernels got one fixed module name). The labels equal the numpy path's."""
+    from osgeo import gdal
+
+    from algorithms import segmentation
+    from algorithms.raster_io import write_grid
+
+    from .qgis_process import run_alg
+    from .test_segmentation import Plan
+
+    plan = Plan()
+    path = tmp_path / "plan.tif"
+    write_grid(str(path), plan.grid)
+    kernels.get()  # writes / loads the cache under this process's package name first
+    out = tmp_path / "labels.tif"
+    _, res, log = run_alg("segment", {"INPUT": path, "DOOR_WIDTH": 1.0, "CORRIDOR_WIDTH": 2.0,
+                                      "AREAS": tmp_path / "a.gpkg", "PASSAGES": tmp_path / "p.gpkg", "LABELS": out})
+    assert "pixel loops:" in log
+    if kernels.get() is not None:
+        assert "compiled kernels (numba" in log, log[-2000:]
+    kernels.set_enabled(False)
+    try:
+        ref = segmentation.segment(plan.grid, door_width=1.0, corridor_width=2.0)
+    finally:
+        kernels.set_enabled(None)
+    assert res["AREA_COUNT"] == len(ref.areas)
+    lab = gdal.Open(str(out)).ReadAsArray()
+    assert np.array_equal(lab, ref.labels)
