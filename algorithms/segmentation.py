@@ -871,6 +871,69 @@ def _drop_outside_pockets(labels: np.ndarray, outside: np.ndarray, group_peak: n
     return lut[labels], np.r_[0.0, group_peak[keep_ids]], dropped_px
 
 
+# --------------------------------------------------------------------------- cluttered borders
+CLUTTER_BORDERS = True
+BORDER_LENGTH = 1.0  # a border at least as long as the widest disk of both areas is wide is no narrowing ...
+BORDER_CONTINUOUS = 0.7  # ... when it is one border: free along this share of its extent (not scattered contacts)
+
+
+def _join_cluttered_borders(labels: np.ndarray, dist: np.ndarray, group_peak: np.ndarray, stats: dict):
+    """Furniture standing in an opening makes no door. The merge judges an opening by its widest
+    gap (the saddle: the largest disk that passes); a table, a row of chairs or scan clutter across a
+    room narrows every gap, so the room comes out in pieces split through the furniture. The width of
+    an opening is its free length: two areas whose shared border is longer than ``BORDER_LENGTH`` x
+    the diameter of the widest disk in either of them (a door is narrower than the room it opens) and
+    is one border (free along ``BORDER_CONTINUOUS`` of its extent, not contacts scattered along a
+    wall) are one space. Returns (labels, group_peak); ``stats["clutter_borders_joined"]``."""
+    t = time.perf_counter()
+    joined = 0
+    for _ in range(4):
+        n = int(labels.max()) + 1
+        if n <= 2:
+            break
+        lo, hi, _, _, rr, cc = _neighbour_pairs(labels)
+        if len(lo) == 0:
+            break
+        key = lo.astype(np.int64) * n + hi
+        uk, inv, cnt = np.unique(key, return_inverse=True, return_counts=True)
+        big = np.flatnonzero(cnt >= 2.0 * BORDER_LENGTH * 2.0)
+        if len(big) == 0:
+            break
+        r0 = np.full(len(uk), np.iinfo(np.int64).max)
+        r1 = np.full(len(uk), -1)
+        c0, c1 = r0.copy(), r1.copy()
+        np.minimum.at(r0, inv, rr)
+        np.maximum.at(r1, inv, rr)
+        np.minimum.at(c0, inv, cc)
+        np.maximum.at(c1, inv, cc)
+        ext = np.hypot(r1 - r0 + 1.0, c1 - c0 + 1.0)
+        pk = group_peak if len(group_peak) >= n else np.r_[group_peak, np.zeros(n - len(group_peak))]
+        a, b = uk // n, uk % n
+        widest = 2.0 * np.maximum(pk[a], pk[b])  # px: diameter of the widest disk in either area
+        ok = (cnt >= BORDER_LENGTH * widest) & (cnt >= BORDER_CONTINUOUS * ext) & (a > 0)
+        if not ok.any():
+            break
+        uf = _UnionFind(n)
+        for i in np.flatnonzero(ok).tolist():
+            x, y = uf.find(int(a[i])), uf.find(int(b[i]))
+            if x != y:
+                uf.parent[max(x, y)] = min(x, y)
+                joined += 1
+        root = np.array([uf.find(i) for i in range(n)], np.int64)
+        reps = np.unique(root[1:])
+        lut = np.zeros(n, np.int32)
+        lut[reps] = np.arange(1, len(reps) + 1, dtype=np.int32)
+        lut = lut[root]
+        lut[0] = 0
+        newpk = np.zeros(len(reps) + 1)
+        np.maximum.at(newpk, lut, pk[:n])
+        labels = lut[labels]
+        group_peak = newpk
+    stats["clutter_borders_joined"] = float(joined)
+    stats["clutter_borders_s"] = time.perf_counter() - t
+    return labels, group_peak
+
+
 # --------------------------------------------------------------------------- wall-line openings
 WALL_CUTS = True
 WALL_MIN_M = 1.0  # a wall face is a straight run of at least this length (not clutter, not scan noise)
@@ -1557,6 +1620,8 @@ def segment(grid: OccupancyGrid, door_width: float = DEFAULT_DOOR_WIDTH,
     group_peak[0] = 0
     del cells
     labels = _single_pieces(labels)
+    if CLUTTER_BORDERS:
+        labels, group_peak = _join_cluttered_borders(labels, dist, group_peak, stats)
     if WALL_CUTS:
         labels, group_peak = _wall_line_doors(labels, space, dist, res, max(door_width + delta, envelope_gap),
                                               group_peak, stats, _observed_walls(data, space))
