@@ -877,58 +877,95 @@ BORDER_LENGTH = 1.0  # a border at least as long as the widest disk of both area
 BORDER_CONTINUOUS = 0.7  # ... when it is one border: free along this share of its extent (not scattered contacts)
 
 
-def _join_cluttered_borders(labels: np.ndarray, dist: np.ndarray, group_peak: np.ndarray, stats: dict):
+def _border_extent(labels: np.ndarray, objs, a: int, b: int):
+    """Pixel pairs on the border of areas ``a`` and ``b`` and their extent (px, the diagonal of the
+    border's bounding box), measured in the two areas' bounding boxes."""
+    sa, sb = objs[a - 1], objs[b - 1]
+    if sa is None or sb is None:
+        return 0, 0.0
+    r0, r1 = max(min(sa[0].start, sb[0].start) - 1, 0), max(sa[0].stop, sb[0].stop) + 1
+    c0, c1 = max(min(sa[1].start, sb[1].start) - 1, 0), max(sa[1].stop, sb[1].stop) + 1
+    sub = labels[r0:r1, c0:c1]
+    ia, ib = sub == a, sub == b
+    rows, cols = [], []
+    for x, y, (dr, dc) in ((ia[:-1, :], ib[1:, :], (1, 0)), (ib[:-1, :], ia[1:, :], (1, 0)),
+                           (ia[:, :-1], ib[:, 1:], (0, 1)), (ib[:, :-1], ia[:, 1:], (0, 1))):
+        rr, cc = np.nonzero(x & y)
+        rows.append(rr)
+        cols.append(cc)
+    rr, cc = np.concatenate(rows), np.concatenate(cols)
+    if len(rr) == 0:
+        return 0, 0.0
+    return int(len(rr)), float(math.hypot(np.ptp(rr) + 1.0, np.ptp(cc) + 1.0))
+
+
+def _join_cluttered_borders(labels: np.ndarray, cell_label: np.ndarray, lo, hi, border, group_peak: np.ndarray,
+                            stats: dict):
     """Furniture standing in an opening makes no door. The merge judges an opening by its widest
-    gap (the saddle: the largest disk that passes); a table, a row of chairs or scan clutter across a
-    room narrows every gap, so the room comes out in pieces split through the furniture. The width of
-    an opening is its free length: two areas whose shared border is longer than ``BORDER_LENGTH`` x
-    the diameter of the widest disk in either of them (a door is narrower than the room it opens) and
+    gap (the saddle: the largest disk that passes); a table, a row of columns or scan clutter across
+    a room narrows every gap, so the room comes out in pieces split through the furniture. The width
+    of an opening is its free length: two areas whose shared border is at least as long as the widest
+    disk in either of them is wide (``BORDER_LENGTH``: a door is narrower than the room it opens) and
     is one border (free along ``BORDER_CONTINUOUS`` of its extent, not contacts scattered along a
-    wall) are one space. Returns (labels, group_peak); ``stats["clutter_borders_joined"]``."""
+    wall) are one space. Border lengths come from the region graph (``lo``, ``hi``, ``border`` of
+    ``_cell_graph``, regions -> areas by ``cell_label``); only the candidates are measured on the
+    raster. Returns (labels, group_peak); ``stats["clutter_borders_joined"]``."""
+    from scipy import ndimage as ndi
+
     t = time.perf_counter()
+    n = int(labels.max()) + 1
     joined = 0
-    for _ in range(4):
-        n = int(labels.max()) + 1
-        if n <= 2:
-            break
-        lo, hi, _, _, rr, cc = _neighbour_pairs(labels)
-        if len(lo) == 0:
-            break
-        key = lo.astype(np.int64) * n + hi
-        uk, inv, cnt = np.unique(key, return_inverse=True, return_counts=True)
-        big = np.flatnonzero(cnt >= 2.0 * BORDER_LENGTH * 2.0)
-        if len(big) == 0:
-            break
-        r0 = np.full(len(uk), np.iinfo(np.int64).max)
-        r1 = np.full(len(uk), -1)
-        c0, c1 = r0.copy(), r1.copy()
-        np.minimum.at(r0, inv, rr)
-        np.maximum.at(r1, inv, rr)
-        np.minimum.at(c0, inv, cc)
-        np.maximum.at(c1, inv, cc)
-        ext = np.hypot(r1 - r0 + 1.0, c1 - c0 + 1.0)
-        pk = group_peak if len(group_peak) >= n else np.r_[group_peak, np.zeros(n - len(group_peak))]
-        a, b = uk // n, uk % n
-        widest = 2.0 * np.maximum(pk[a], pk[b])  # px: diameter of the widest disk in either area
-        ok = (cnt >= BORDER_LENGTH * widest) & (cnt >= BORDER_CONTINUOUS * ext) & (a > 0)
-        if not ok.any():
-            break
+    if n > 2 and len(lo):
+        ga = cell_label[np.asarray(lo, np.int64)].astype(np.int64)
+        gb = cell_label[np.asarray(hi, np.int64)].astype(np.int64)
+        w = np.asarray(border, np.float64)
+        pk = np.zeros(n)
+        pk[:min(n, len(group_peak))] = group_peak[:n]
         uf = _UnionFind(n)
-        for i in np.flatnonzero(ok).tolist():
-            x, y = uf.find(int(a[i])), uf.find(int(b[i]))
-            if x != y:
-                uf.parent[max(x, y)] = min(x, y)
+        done = set()
+        for _ in range(32):
+            root = np.array([uf.find(k) for k in range(n)], np.int64)
+            ra, rb = root[ga], root[gb]
+            m = (ra != rb) & (ra > 0) & (rb > 0)
+            x, y = np.minimum(ra[m], rb[m]), np.maximum(ra[m], rb[m])
+            key, inv = np.unique(x * n + y, return_inverse=True)
+            cnt = np.bincount(inv, weights=w[m], minlength=len(key))
+            a, b = key // n, key % n
+            cand = np.flatnonzero(cnt >= BORDER_LENGTH * 2.0 * np.maximum(pk[a], pk[b]))
+            cand = [i for i in cand[np.argsort(-cnt[cand], kind="stable")].tolist()
+                    if (int(a[i]), int(b[i])) not in done]
+            if not cand:
+                break
+            # measured on the raster: the areas as they are now (members of joined groups included)
+            cur = root[labels] if joined else labels
+            objs = ndi.find_objects(cur)
+            touched = set()
+            for i in cand:
+                p, q = int(a[i]), int(b[i])
+                if p in touched or q in touched:
+                    continue  # border lengths changed: judged again in the next round
+                done.add((p, q))
+                c, ext = _border_extent(cur, objs, p, q)
+                if c < BORDER_LENGTH * 2.0 * max(pk[p], pk[q]) or c < BORDER_CONTINUOUS * ext:
+                    continue
+                uf.parent[q] = p
+                pk[p] = max(pk[p], pk[q])
                 joined += 1
-        root = np.array([uf.find(i) for i in range(n)], np.int64)
-        reps = np.unique(root[1:])
-        lut = np.zeros(n, np.int32)
-        lut[reps] = np.arange(1, len(reps) + 1, dtype=np.int32)
-        lut = lut[root]
-        lut[0] = 0
-        newpk = np.zeros(len(reps) + 1)
-        np.maximum.at(newpk, lut, pk[:n])
-        labels = lut[labels]
-        group_peak = newpk
+                touched.update((p, q))
+            if not touched:
+                break
+            done = {d for d in done if d[0] not in touched and d[1] not in touched}  # their borders grew
+        if joined:
+            root = np.array([uf.find(k) for k in range(n)], np.int64)
+            reps = np.unique(root[1:])
+            lut = np.zeros(n, np.int32)
+            lut[reps] = np.arange(1, len(reps) + 1, dtype=np.int32)
+            lut = lut[root]
+            lut[0] = 0
+            newpk = np.zeros(len(reps) + 1)
+            np.maximum.at(newpk, lut, pk)
+            labels = lut[labels]
+            group_peak = newpk
     stats["clutter_borders_joined"] = float(joined)
     stats["clutter_borders_s"] = time.perf_counter() - t
     return labels, group_peak
@@ -1621,7 +1658,7 @@ def segment(grid: OccupancyGrid, door_width: float = DEFAULT_DOOR_WIDTH,
     del cells
     labels = _single_pieces(labels)
     if CLUTTER_BORDERS:
-        labels, group_peak = _join_cluttered_borders(labels, dist, group_peak, stats)
+        labels, group_peak = _join_cluttered_borders(labels, cell_label, lo, hi, border, group_peak, stats)
     if WALL_CUTS:
         labels, group_peak = _wall_line_doors(labels, space, dist, res, max(door_width + delta, envelope_gap),
                                               group_peak, stats, _observed_walls(data, space))
