@@ -877,19 +877,18 @@ BORDER_LENGTH = 1.0  # a border at least as long as the widest disk of both area
 BORDER_CONTINUOUS = 0.7  # ... when it is one border: free along this share of its extent (not scattered contacts)
 
 
-def _border_extent(labels: np.ndarray, objs, a: int, b: int):
-    """Pixel pairs on the border of areas ``a`` and ``b`` and their extent (px, the diagonal of the
-    border's bounding box), measured in the two areas' bounding boxes."""
-    sa, sb = objs[a - 1], objs[b - 1]
-    if sa is None or sb is None:
+def _border_extent(labels: np.ndarray, boxes: np.ndarray, root: np.ndarray, a: int, b: int):
+    """Pixel pairs on the border of areas ``a`` and ``b`` (labels mapped through ``root``: joined
+    areas count as one) and their extent (px, the diagonal of the border's bounding box), measured
+    where the two areas' bounding boxes (``boxes`` rows r0, r1, c0, c1 per root) overlap."""
+    r0, r1 = max(max(boxes[a, 0], boxes[b, 0]) - 1, 0), min(boxes[a, 1], boxes[b, 1]) + 1
+    c0, c1 = max(max(boxes[a, 2], boxes[b, 2]) - 1, 0), min(boxes[a, 3], boxes[b, 3]) + 1
+    if r1 - r0 < 2 or c1 - c0 < 2:
         return 0, 0.0
-    r0, r1 = max(min(sa[0].start, sb[0].start) - 1, 0), max(sa[0].stop, sb[0].stop) + 1
-    c0, c1 = max(min(sa[1].start, sb[1].start) - 1, 0), max(sa[1].stop, sb[1].stop) + 1
-    sub = labels[r0:r1, c0:c1]
+    sub = root[labels[r0:r1, c0:c1]]
     ia, ib = sub == a, sub == b
     rows, cols = [], []
-    for x, y, (dr, dc) in ((ia[:-1, :], ib[1:, :], (1, 0)), (ib[:-1, :], ia[1:, :], (1, 0)),
-                           (ia[:, :-1], ib[:, 1:], (0, 1)), (ib[:, :-1], ia[:, 1:], (0, 1))):
+    for x, y in ((ia[:-1, :], ib[1:, :]), (ib[:-1, :], ia[1:, :]), (ia[:, :-1], ib[:, 1:]), (ib[:, :-1], ia[:, 1:])):
         rr, cc = np.nonzero(x & y)
         rows.append(rr)
         cols.append(cc)
@@ -923,6 +922,7 @@ def _join_cluttered_borders(labels: np.ndarray, cell_label: np.ndarray, lo, hi, 
         pk[:min(n, len(group_peak))] = group_peak[:n]
         uf = _UnionFind(n)
         done = set()
+        boxes = None
         for _ in range(32):
             root = np.array([uf.find(k) for k in range(n)], np.int64)
             ra, rb = root[ga], root[gb]
@@ -936,16 +936,30 @@ def _join_cluttered_borders(labels: np.ndarray, cell_label: np.ndarray, lo, hi, 
                     if (int(a[i]), int(b[i])) not in done]
             if not cand:
                 break
-            # measured on the raster: the areas as they are now (members of joined groups included)
-            cur = root[labels] if joined else labels
-            objs = ndi.find_objects(cur)
+            # measured on the raster: the areas as they are now (members of joined groups included);
+            # the bounding box of a joined group is the union of its members'
+            if boxes is None:
+                boxes = np.zeros((n, 4), np.int64)
+                for k, sl in enumerate(ndi.find_objects(labels), start=1):
+                    if sl is not None and k < n:
+                        boxes[k] = (sl[0].start, sl[0].stop, sl[1].start, sl[1].stop)
+                boxes[0] = (0, 0, 0, 0)
+            gb_ = boxes.copy()
+            for k in range(1, n):
+                r = root[k]
+                if r != k and boxes[k, 1] > boxes[k, 0]:
+                    if gb_[r, 1] > gb_[r, 0]:
+                        gb_[r, 0], gb_[r, 2] = min(gb_[r, 0], boxes[k, 0]), min(gb_[r, 2], boxes[k, 2])
+                        gb_[r, 1], gb_[r, 3] = max(gb_[r, 1], boxes[k, 1]), max(gb_[r, 3], boxes[k, 3])
+                    else:
+                        gb_[r] = boxes[k]
             touched = set()
             for i in cand:
                 p, q = int(a[i]), int(b[i])
                 if p in touched or q in touched:
                     continue  # border lengths changed: judged again in the next round
                 done.add((p, q))
-                c, ext = _border_extent(cur, objs, p, q)
+                c, ext = _border_extent(labels, gb_, root, p, q)
                 if c < BORDER_LENGTH * 2.0 * max(pk[p], pk[q]) or c < BORDER_CONTINUOUS * ext:
                     continue
                 uf.parent[q] = p
