@@ -871,6 +871,52 @@ def _drop_outside_pockets(labels: np.ndarray, outside: np.ndarray, group_peak: n
     return lut[labels], np.r_[0.0, group_peak[keep_ids]], dropped_px
 
 
+# --------------------------------------------------------------------------- laser-ray spikes
+RAY_SPIKES = True
+RAY_UNKNOWN_SHARE = 0.5  # an area bordering unknown space for this share of its outline ...
+RAY_WIDTH_M = 0.3  # ... and narrower than this on average (2 x area / outline) is a fan of laser rays
+
+
+def _drop_ray_spikes(labels: np.ndarray, data: np.ndarray, group_peak: np.ndarray, resolution: float,
+                     stats: dict):
+    """Laser rays through doors and windows are no space. On a recorded map the rays that passed a
+    window or a door leave thin spikes of free space in the unknown beyond it; where they fan out
+    from the opening they form an area of their own. An area narrower on average than a person
+    (``RAY_WIDTH_M``, mean width 2 x area / outline length: near the opening the rays overlap, so its
+    widest disk says little) whose outline borders unknown space for ``RAY_UNKNOWN_SHARE`` of its
+    length is such a fan: it is no area (its cells stay free, unlabelled).
+    Only on recorded maps whose walls are occupied cells (``_observed_walls``: where walls are drawn
+    grey every area borders unknown); grids without unknown cells (every CAD raster) are unchanged by
+    construction. Returns (labels,
+    group_peak); ``stats["ray_spikes_m2"]``."""
+    n = int(labels.max())
+    unknown = data == UNKNOWN
+    if n == 0 or not unknown.any():
+        return labels, group_peak
+    pk = np.zeros(n + 1)
+    pk[:min(n + 1, len(group_peak))] = group_peak[:n + 1]
+    total = np.zeros(n + 1, np.int64)
+    unk = np.zeros(n + 1, np.int64)
+    for axis in (0, 1):
+        a, b = (labels[:-1, :], labels[1:, :]) if axis == 0 else (labels[:, :-1], labels[:, 1:])
+        ua, ub = (unknown[:-1, :], unknown[1:, :]) if axis == 0 else (unknown[:, :-1], unknown[:, 1:])
+        diff = a != b
+        total += np.bincount(a[diff], minlength=n + 1) + np.bincount(b[diff], minlength=n + 1)
+        unk += np.bincount(a[(a > 0) & ub], minlength=n + 1) + np.bincount(b[(b > 0) & ua], minlength=n + 1)
+    # mean width of an area: 2 x area / outline length (a fan of 0.15 m rays: about 0.15 m)
+    size = np.bincount(labels.ravel(), minlength=n + 1)
+    thin = 2.0 * size / np.maximum(total, 1) * resolution < RAY_WIDTH_M
+    drop = thin & (unk >= RAY_UNKNOWN_SHARE * np.maximum(total, 1))
+    drop[0] = False
+    if not drop.any():
+        return labels, group_peak
+    keep_ids = np.nonzero(~drop[1:])[0] + 1
+    lut = np.zeros(n + 1, np.int32)
+    lut[keep_ids] = np.arange(1, len(keep_ids) + 1, dtype=np.int32)
+    stats["ray_spikes_m2"] = float(np.count_nonzero(drop[labels])) * resolution ** 2
+    return lut[labels], np.r_[0.0, pk[keep_ids]]
+
+
 # --------------------------------------------------------------------------- cluttered borders
 CLUTTER_BORDERS = True
 BORDER_LENGTH = 1.0  # a border at least as long as the widest disk of both areas is wide is no narrowing ...
@@ -1682,6 +1728,8 @@ def segment(grid: OccupancyGrid, door_width: float = DEFAULT_DOOR_WIDTH,
     if dropped_px:
         stats["interior_area_m2"] -= dropped_px * res * res
         stats["outside_pockets_m2"] = dropped_px * res * res
+    if RAY_SPIKES and _observed_walls(data, space) is not None:  # recorded maps whose walls are occupied
+        labels, group_peak = _drop_ray_spikes(labels, data, group_peak, res, stats)
     stats["merge_s"] = time.perf_counter() - t
     progress.step(65, f"merged into {int(labels.max())} areas")
 
