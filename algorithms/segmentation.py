@@ -919,8 +919,8 @@ def _drop_ray_spikes(labels: np.ndarray, data: np.ndarray, group_peak: np.ndarra
 
 # --------------------------------------------------------------------------- cluttered borders
 CLUTTER_BORDERS = True
-BORDER_LENGTH = 1.0  # a border at least as long as the widest disk of both areas is wide is no narrowing ...
-BORDER_CONTINUOUS = 0.7  # ... when it is one border: free along this share of its extent (not scattered contacts)
+BORDER_LENGTH = 0.8  # a border at least this x as long as the widest disk of both areas is wide is no door ...
+BORDER_CONTINUOUS = 0.5  # ... when it is one border: free along this share of its extent (not scattered contacts)
 
 
 def _border_extent(labels: np.ndarray, boxes: np.ndarray, root: np.ndarray, a: int, b: int):
@@ -930,7 +930,7 @@ def _border_extent(labels: np.ndarray, boxes: np.ndarray, root: np.ndarray, a: i
     r0, r1 = max(max(boxes[a, 0], boxes[b, 0]) - 1, 0), min(boxes[a, 1], boxes[b, 1]) + 1
     c0, c1 = max(max(boxes[a, 2], boxes[b, 2]) - 1, 0), min(boxes[a, 3], boxes[b, 3]) + 1
     if r1 - r0 < 2 or c1 - c0 < 2:
-        return 0, 0.0
+        return 0.0, 0.0
     sub = root[labels[r0:r1, c0:c1]]
     ia, ib = sub == a, sub == b
     rows, cols = [], []
@@ -938,10 +938,13 @@ def _border_extent(labels: np.ndarray, boxes: np.ndarray, root: np.ndarray, a: i
         rr, cc = np.nonzero(x & y)
         rows.append(rr)
         cols.append(cc)
+    n_across = len(rows[0]) + len(rows[1])  # pairs one above the other: border steps running along x
     rr, cc = np.concatenate(rows), np.concatenate(cols)
     if len(rr) == 0:
-        return 0, 0.0
-    return int(len(rr)), float(math.hypot(np.ptp(rr) + 1.0, np.ptp(cc) + 1.0))
+        return 0.0, 0.0
+    # a staircase border along a diagonal has a pair per step in x and one per step in y: its length is
+    # the hypotenuse of the two counts, not their sum
+    return float(math.hypot(n_across, len(rr) - n_across)), float(math.hypot(np.ptp(rr) + 1.0, np.ptp(cc) + 1.0))
 
 
 def _join_cluttered_borders(labels: np.ndarray, cell_label: np.ndarray, lo, hi, border, group_peak: np.ndarray,
