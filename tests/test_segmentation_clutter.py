@@ -254,3 +254,42 @@ def test_cluttered_borders_on_the_shared_robot_maps(shared_data, folder_name):
     mean_on = np.mean([scores[(n, True)] for n in names])
     assert mean_on >= np.mean([scores[(n, False)] for n in names]) + 0.002, scores
     assert mean_on >= (0.888 if folder_name == "input" else 0.88), scores
+
+
+def _corridor_ring(cabinets):
+    """Twelve 4 x 3.85 m offices (0.9 m doors) on both sides of a 24 x 10 m ring of 2 m corridors round a
+    solid core; ``cabinets``: 0.6 x 0.5 m boxes (a printer, a bin) standing in the corridor in three places."""
+    img = _grid(26, 20)
+    _free(img, 1, 5, 25, 7)
+    _free(img, 1, 13, 25, 15)
+    _free(img, 1, 5, 3, 15)
+    _free(img, 23, 5, 25, 15)
+    for i in range(6):
+        ox = 1 + i * 4
+        _free(img, ox + 0.075, 1, ox + 3.925, 4.85)
+        _free(img, ox + 1, 4.85, ox + 1.9, 5)
+        _free(img, ox + 0.075, 15.15, ox + 3.925, 19)
+        _free(img, ox + 1, 15, ox + 1.9, 15.15)
+    if cabinets:
+        for cx, cy in ((8, 6), (18, 14), (2, 10)):
+            _block(img, cx - 0.3, cy - 0.25, cx + 0.3, cy + 0.25)
+    return img
+
+
+def test_corridor_ring_is_one_area():
+    ag = _segment(_corridor_ring(False))
+    ring = _labels_in(ag, 1, 5, 25, 15)
+    assert len(ring) == 1 and len(ag.areas) == 13, ring
+
+
+@pytest.mark.xfail(strict=False, reason="known defect (issue 14, corridors cut into pieces): a 0.6 x 0.5 m box "
+                   "standing in a 2 m corridor leaves two 0.75 m gaps, door-like narrowings; the box is shorter "
+                   "than CLUTTER_MIN_LENGTH_M (columns frame openings) and the corridor piece between two boxes "
+                   "is shorter than PASS3_ELONGATION x its width, so the ring comes out in two. Treating short "
+                   "blobs outside wall lines as clutter fixes this and intel_map (0.687 -> 0.724) but costs lab_a "
+                   "0.010 (a cubicle pair joins the corridor): see README")
+def test_corridor_ring_with_cabinets_is_one_area():
+    ag = _segment(_corridor_ring(True))
+    ring = _labels_in(ag, 1, 5, 25, 15)
+    main = max(ring.values()) / sum(ring.values())
+    assert main >= 0.97, ring
