@@ -883,6 +883,169 @@ def _drop_outside_pockets(labels: np.ndarray, outside: np.ndarray, group_peak: n
     return lut[labels], np.r_[0.0, group_peak[keep_ids]], dropped_px
 
 
+# --------------------------------------------------------------------------- laser-ray spikes
+RAY_SPIKES = True
+RAY_UNKNOWN_SHARE = 0.5  # an area bordering unknown space for this share of its outline ...
+RAY_WIDTH_M = 0.3  # ... and narrower than this on average (2 x area / outline) is a fan of laser rays
+
+
+def _drop_ray_spikes(labels: np.ndarray, data: np.ndarray, group_peak: np.ndarray, resolution: float,
+                     stats: dict):
+    """Laser rays through doors and windows are no space. On a recorded map the rays that passed a
+    window or a door leave thin spikes of free space in the unknown beyond it; where they fan out
+    from the opening they form an area of their own. An area narrower on average than a person
+    (``RAY_WIDTH_M``, mean width 2 x area / outline length: near the opening the rays overlap, so its
+    widest disk says little) whose outline borders unknown space for ``RAY_UNKNOWN_SHARE`` of its
+    length is such a fan: it is no area (its cells stay free, unlabelled).
+    Only on recorded maps whose walls are occupied cells (``_observed_walls``: where walls are drawn
+    grey every area borders unknown); grids without unknown cells (every CAD raster) are unchanged by
+    construction. Returns (labels,
+    group_peak); ``stats["ray_spikes_m2"]``."""
+    n = int(labels.max())
+    unknown = data == UNKNOWN
+    if n == 0 or not unknown.any():
+        return labels, group_peak
+    pk = np.zeros(n + 1)
+    pk[:min(n + 1, len(group_peak))] = group_peak[:n + 1]
+    total = np.zeros(n + 1, np.int64)
+    unk = np.zeros(n + 1, np.int64)
+    for axis in (0, 1):
+        a, b = (labels[:-1, :], labels[1:, :]) if axis == 0 else (labels[:, :-1], labels[:, 1:])
+        ua, ub = (unknown[:-1, :], unknown[1:, :]) if axis == 0 else (unknown[:, :-1], unknown[:, 1:])
+        diff = a != b
+        total += np.bincount(a[diff], minlength=n + 1) + np.bincount(b[diff], minlength=n + 1)
+        unk += np.bincount(a[(a > 0) & ub], minlength=n + 1) + np.bincount(b[(b > 0) & ua], minlength=n + 1)
+    # mean width of an area: 2 x area / outline length (a fan of 0.15 m rays: about 0.15 m)
+    size = np.bincount(labels.ravel(), minlength=n + 1)
+    thin = 2.0 * size / np.maximum(total, 1) * resolution < RAY_WIDTH_M
+    drop = thin & (unk >= RAY_UNKNOWN_SHARE * np.maximum(total, 1))
+    drop[0] = False
+    if not drop.any():
+        return labels, group_peak
+    keep_ids = np.nonzero(~drop[1:])[0] + 1
+    lut = np.zeros(n + 1, np.int32)
+    lut[keep_ids] = np.arange(1, len(keep_ids) + 1, dtype=np.int32)
+    stats["ray_spikes_m2"] = float(np.count_nonzero(drop[labels])) * resolution ** 2
+    return lut[labels], np.r_[0.0, pk[keep_ids]]
+
+
+# --------------------------------------------------------------------------- cluttered borders
+CLUTTER_BORDERS = True
+BORDER_LENGTH = 0.8  # a border at least this x as long as the widest disk of both areas is wide is no door ...
+BORDER_CONTINUOUS = 0.5  # ... when it is one border: free along this share of its extent (not scattered contacts)
+
+
+def _border_extent(labels: np.ndarray, boxes: np.ndarray, root: np.ndarray, a: int, b: int):
+    """Pixel pairs on the border of areas ``a`` and ``b`` (labels mapped through ``root``: joined
+    areas count as one) and their extent (px, the diagonal of the border's bounding box), measured
+    where the two areas' bounding boxes (``boxes`` rows r0, r1, c0, c1 per root) overlap."""
+    r0, r1 = max(max(boxes[a, 0], boxes[b, 0]) - 1, 0), min(boxes[a, 1], boxes[b, 1]) + 1
+    c0, c1 = max(max(boxes[a, 2], boxes[b, 2]) - 1, 0), min(boxes[a, 3], boxes[b, 3]) + 1
+    if r1 - r0 < 2 or c1 - c0 < 2:
+        return 0.0, 0.0
+    sub = root[labels[r0:r1, c0:c1]]
+    ia, ib = sub == a, sub == b
+    rows, cols = [], []
+    for x, y in ((ia[:-1, :], ib[1:, :]), (ib[:-1, :], ia[1:, :]), (ia[:, :-1], ib[:, 1:]), (ib[:, :-1], ia[:, 1:])):
+        rr, cc = np.nonzero(x & y)
+        rows.append(rr)
+        cols.append(cc)
+    n_across = len(rows[0]) + len(rows[1])  # pairs one above the other: border steps running along x
+    rr, cc = np.concatenate(rows), np.concatenate(cols)
+    if len(rr) == 0:
+        return 0.0, 0.0
+    # a staircase border along a diagonal has a pair per step in x and one per step in y: its length is
+    # the hypotenuse of the two counts, not their sum
+    return float(math.hypot(n_across, len(rr) - n_across)), float(math.hypot(np.ptp(rr) + 1.0, np.ptp(cc) + 1.0))
+
+
+def _join_cluttered_borders(labels: np.ndarray, cell_label: np.ndarray, lo, hi, border, group_peak: np.ndarray,
+                            stats: dict):
+    """Furniture standing in an opening makes no door. The merge judges an opening by its widest
+    gap (the saddle: the largest disk that passes); a table, a row of columns or scan clutter across
+    a room narrows every gap, so the room comes out in pieces split through the furniture. The width
+    of an opening is its free length: two areas whose shared border is at least as long as the widest
+    disk in either of them is wide (``BORDER_LENGTH``: a door is narrower than the room it opens) and
+    is one border (free along ``BORDER_CONTINUOUS`` of its extent, not contacts scattered along a
+    wall) are one space. Border lengths come from the region graph (``lo``, ``hi``, ``border`` of
+    ``_cell_graph``, regions -> areas by ``cell_label``); only the candidates are measured on the
+    raster. Returns (labels, group_peak); ``stats["clutter_borders_joined"]``."""
+    from scipy import ndimage as ndi
+
+    t = time.perf_counter()
+    n = int(labels.max()) + 1
+    joined = 0
+    if n > 2 and len(lo):
+        ga = cell_label[np.asarray(lo, np.int64)].astype(np.int64)
+        gb = cell_label[np.asarray(hi, np.int64)].astype(np.int64)
+        w = np.asarray(border, np.float64)
+        pk = np.zeros(n)
+        pk[:min(n, len(group_peak))] = group_peak[:n]
+        uf = _UnionFind(n)
+        done = set()
+        boxes = None
+        for _ in range(32):
+            root = np.array([uf.find(k) for k in range(n)], np.int64)
+            ra, rb = root[ga], root[gb]
+            m = (ra != rb) & (ra > 0) & (rb > 0)
+            x, y = np.minimum(ra[m], rb[m]), np.maximum(ra[m], rb[m])
+            key, inv = np.unique(x * n + y, return_inverse=True)
+            cnt = np.bincount(inv, weights=w[m], minlength=len(key))
+            a, b = key // n, key % n
+            cand = np.flatnonzero(cnt >= BORDER_LENGTH * 2.0 * np.maximum(pk[a], pk[b]))
+            cand = [i for i in cand[np.argsort(-cnt[cand], kind="stable")].tolist()
+                    if (int(a[i]), int(b[i])) not in done]
+            if not cand:
+                break
+            # measured on the raster: the areas as they are now (members of joined groups included);
+            # the bounding box of a joined group is the union of its members'
+            if boxes is None:
+                boxes = np.zeros((n, 4), np.int64)
+                for k, sl in enumerate(ndi.find_objects(labels), start=1):
+                    if sl is not None and k < n:
+                        boxes[k] = (sl[0].start, sl[0].stop, sl[1].start, sl[1].stop)
+                boxes[0] = (0, 0, 0, 0)
+            gb_ = boxes.copy()
+            for k in range(1, n):
+                r = root[k]
+                if r != k and boxes[k, 1] > boxes[k, 0]:
+                    if gb_[r, 1] > gb_[r, 0]:
+                        gb_[r, 0], gb_[r, 2] = min(gb_[r, 0], boxes[k, 0]), min(gb_[r, 2], boxes[k, 2])
+                        gb_[r, 1], gb_[r, 3] = max(gb_[r, 1], boxes[k, 1]), max(gb_[r, 3], boxes[k, 3])
+                    else:
+                        gb_[r] = boxes[k]
+            touched = set()
+            for i in cand:
+                p, q = int(a[i]), int(b[i])
+                if p in touched or q in touched:
+                    continue  # border lengths changed: judged again in the next round
+                done.add((p, q))
+                c, ext = _border_extent(labels, gb_, root, p, q)
+                if c < BORDER_LENGTH * 2.0 * max(pk[p], pk[q]) or c < BORDER_CONTINUOUS * ext:
+                    continue
+                uf.parent[q] = p
+                pk[p] = max(pk[p], pk[q])
+                joined += 1
+                touched.update((p, q))
+            if not touched:
+                break
+            done = {d for d in done if d[0] not in touched and d[1] not in touched}  # their borders grew
+        if joined:
+            root = np.array([uf.find(k) for k in range(n)], np.int64)
+            reps = np.unique(root[1:])
+            lut = np.zeros(n, np.int32)
+            lut[reps] = np.arange(1, len(reps) + 1, dtype=np.int32)
+            lut = lut[root]
+            lut[0] = 0
+            newpk = np.zeros(len(reps) + 1)
+            np.maximum.at(newpk, lut, pk)
+            labels = lut[labels]
+            group_peak = newpk
+    stats["clutter_borders_joined"] = float(joined)
+    stats["clutter_borders_s"] = time.perf_counter() - t
+    return labels, group_peak
+
+
 # --------------------------------------------------------------------------- wall-line openings
 WALL_CUTS = True
 WALL_MIN_M = 1.0  # a wall face is a straight run of at least this length (not clutter, not scan noise)
@@ -1648,6 +1811,8 @@ def segment(grid: OccupancyGrid, door_width: float = DEFAULT_DOOR_WIDTH,
     group_peak[0] = 0
     del cells
     labels = _single_pieces(labels)
+    if CLUTTER_BORDERS:
+        labels, group_peak = _join_cluttered_borders(labels, cell_label, lo, hi, border, group_peak, stats)
     if WALL_CUTS:
         labels, group_peak = _wall_line_doors(labels, space, dist, res, max(door_width + delta, envelope_gap),
                                               group_peak, stats, _observed_walls(data, space))
@@ -1657,6 +1822,8 @@ def segment(grid: OccupancyGrid, door_width: float = DEFAULT_DOOR_WIDTH,
     if dropped_px:
         stats["interior_area_m2"] -= dropped_px * res * res
         stats["outside_pockets_m2"] = dropped_px * res * res
+    if RAY_SPIKES and _observed_walls(data, space) is not None:  # recorded maps whose walls are occupied
+        labels, group_peak = _drop_ray_spikes(labels, data, group_peak, res, stats)
     stats["merge_s"] = time.perf_counter() - t
     progress.step(65, f"merged into {int(labels.max())} areas")
 

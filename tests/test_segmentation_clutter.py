@@ -149,3 +149,147 @@ def test_narrow_pocket_is_no_area():
     _free(img2, 2, 2.6, 7, 3.4)  # widen the cavity to 0.8 m: a closet, kept
     ag2 = _segment(img2)
     assert _labels_in(ag2, 2.1, 2.7, 6.9, 3.3)
+
+
+def _conference_room(ends=True):
+    """A 10 x 3.4 m conference room (x 1..11, y 1..4.4) behind a 0.9 m door on a 2 m corridor, with a
+    5 x 1.2 m oval table scanned as a dotted outline (specks of 0.35 m, larger than SPECK_M2) and a
+    0.5 m chair or table leg at each end -- so at both table ends the room narrows to two 1.2 m gaps
+    beside it (intel_map's conference room)."""
+    img = _grid(12, 8.7)
+    _free(img, 1, 1, 11, 4.4)
+    _free(img, 1, 4.55, 11, 6.55)
+    _free(img, 2, 4.4, 2.9, 4.55)  # door
+    cx, cy = 6.0, 2.7
+    for t in np.linspace(0, 2 * np.pi, 40, endpoint=False):
+        cv2.circle(img, (_px(cx + 2.5 * np.cos(t)), _px(cy + 0.6 * np.sin(t))), 3, OCCUPIED, -1)
+    if ends:
+        for ex in (cx - 2.5, cx + 2.5):
+            cv2.ellipse(img, (_px(ex), _px(cy)), (_px(0.25), _px(0.25)), 0, 0, 360, OCCUPIED, -1)
+    return img
+
+
+def _room_pieces(ag):
+    """Areas in the conference room outside the table (share of its pixels, largest first)."""
+    sub = ag.labels[_px(1):_px(4.4), _px(1):_px(11)].copy()
+    table = np.zeros(sub.shape, np.uint8)
+    cv2.ellipse(table, (_px(5.0), _px(1.7)), (_px(2.8), _px(0.9)), 0, 0, 360, 1, -1)
+    got = sub[(sub > 0) & (table == 0)]
+    vals, counts = np.unique(got, return_counts=True)
+    return sorted((c / len(got) for c in counts), reverse=True), set(vals.tolist())
+
+
+def test_table_across_the_room_makes_no_door():
+    """Furniture standing in an opening makes no door: the border the merge draws from wall to wall
+    through the table ends is as long as the room is wide, so the pieces are one room; the room
+    keeps its door onto the corridor."""
+    ag = _segment(_conference_room())
+    shares, ids = _room_pieces(ag)
+    assert shares[0] >= 0.97, shares
+    assert ag.stats["clutter_borders_joined"] >= 1
+    corridor = _labels_in(ag, 1.5, 4.8, 10.5, 6.3)
+    assert max(corridor, key=corridor.get) not in ids  # the door still separates room and corridor
+
+
+def test_table_splits_the_room_without_the_rule(monkeypatch):
+    monkeypatch.setattr(seg, "CLUTTER_BORDERS", False)
+    shares, _ = _room_pieces(_segment(_conference_room()))
+    assert shares[0] < 0.7 and shares[1] > 0.25, shares
+
+
+def test_doors_are_no_clutter_borders():
+    """Offices behind 0.9 m doors on a corridor, and two offices joined by a 1.2 m opening in the
+    wall between them, keep their splits: their borders are much shorter than the rooms are wide."""
+    img = _grid(13, 8.4)
+    _free(img, 1, 1, 6, 5)
+    _free(img, 6.15, 1, 12, 5)
+    _free(img, 6, 2.5, 6.15, 3.7)  # 1.2 m opening between the offices
+    _free(img, 1, 5.15, 12, 7.15)
+    _free(img, 2, 5, 2.9, 5.15)
+    _free(img, 9, 5, 9.9, 5.15)
+    ag = _segment(img)
+    west, east = _labels_in(ag, 1.5, 1.5, 5.5, 4.5), _labels_in(ag, 6.5, 1.5, 11.5, 4.5)
+    corridor = _labels_in(ag, 1.5, 5.5, 11.5, 6.8)
+    ids = [max(d, key=d.get) for d in (west, east, corridor)]
+    assert len(set(ids)) == 3, ids
+    assert ag.stats["clutter_borders_joined"] == 0
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("folder_name", ["input", "input_raw"])
+def test_cluttered_borders_on_the_shared_robot_maps(shared_data, folder_name):
+    """The five grid_gt maps, default widths, ``CLUTTER_BORDERS`` off / on (measured 2026-12-01):
+    input/ intel_map 0.671 -> 0.687 (the conference room split in three around its dotted table is one
+    area), the other four unchanged, mean 0.886 -> 0.889; input_raw/ freiburg_building52 0.949 ->
+    0.974, intel_map 0.671 -> 0.687, lab_a 0.867 -> 0.887, the others unchanged, mean 0.872 -> 0.884.
+    No map gets worse."""
+    import sys
+    from pathlib import Path
+
+    sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "scripts"))
+    from evaluate_grids import _read_map, load_maps
+
+    from algorithms.evaluate import evaluate, read_gt_image
+
+    folder = shared_data / "grid_gt"
+    scores = {}
+    for m in load_maps(folder):
+        path = folder / folder_name / f"{m['name']}.png"
+        if not path.is_file():
+            continue
+        grid = _read_map(path, m["resolution"])
+        gt = read_gt_image(str(folder / "gt" / f"{m['name']}.png"))
+        for on in (False, True):
+            seg.CLUTTER_BORDERS = on
+            try:
+                ag = seg.segment(grid)
+            finally:
+                seg.CLUTTER_BORDERS = True
+            scores[(m["name"], on)] = evaluate(ag.labels, gt)["mcc"]
+    names = sorted({n for n, _ in scores})
+    assert len(names) == 5
+    for n in names:
+        assert scores[(n, True)] >= scores[(n, False)] - 0.002, (n, scores)
+    assert scores[("intel_map", True)] >= scores[("intel_map", False)] + 0.01, scores
+    mean_on = np.mean([scores[(n, True)] for n in names])
+    assert mean_on >= np.mean([scores[(n, False)] for n in names]) + 0.002, scores
+    assert mean_on >= (0.888 if folder_name == "input" else 0.88), scores
+
+
+def _corridor_ring(cabinets):
+    """Twelve 4 x 3.85 m offices (0.9 m doors) on both sides of a 24 x 10 m ring of 2 m corridors round a
+    solid core; ``cabinets``: 0.6 x 0.5 m boxes (a printer, a bin) standing in the corridor in three places."""
+    img = _grid(26, 20)
+    _free(img, 1, 5, 25, 7)
+    _free(img, 1, 13, 25, 15)
+    _free(img, 1, 5, 3, 15)
+    _free(img, 23, 5, 25, 15)
+    for i in range(6):
+        ox = 1 + i * 4
+        _free(img, ox + 0.075, 1, ox + 3.925, 4.85)
+        _free(img, ox + 1, 4.85, ox + 1.9, 5)
+        _free(img, ox + 0.075, 15.15, ox + 3.925, 19)
+        _free(img, ox + 1, 15, ox + 1.9, 15.15)
+    if cabinets:
+        for cx, cy in ((8, 6), (18, 14), (2, 10)):
+            _block(img, cx - 0.3, cy - 0.25, cx + 0.3, cy + 0.25)
+    return img
+
+
+def test_corridor_ring_is_one_area():
+    ag = _segment(_corridor_ring(False))
+    ring = _labels_in(ag, 1, 5, 25, 15)
+    assert len(ring) == 1 and len(ag.areas) == 13, ring
+
+
+@pytest.mark.xfail(strict=False, reason="known defect (issue 14, corridors cut into pieces): a 0.6 x 0.5 m box "
+                   "standing in a 2 m corridor leaves two 0.75 m gaps, door-like narrowings; the box is shorter "
+                   "than CLUTTER_MIN_LENGTH_M (columns frame openings) and the corridor piece between two boxes "
+                   "is shorter than PASS3_ELONGATION x its width, so the ring comes out in two. Treating short "
+                   "blobs outside wall lines as clutter fixes this and intel_map (0.687 -> 0.724) but costs lab_a "
+                   "0.010 (a cubicle pair joins the corridor): see README")
+def test_corridor_ring_with_cabinets_is_one_area():
+    ag = _segment(_corridor_ring(True))
+    ring = _labels_in(ag, 1, 5, 25, 15)
+    main = max(ring.values()) / sum(ring.values())
+    assert main >= 0.97, ring
