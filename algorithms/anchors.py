@@ -47,11 +47,16 @@ from .progress import ensure
 
 ANCHOR_TYPES = ("stairs", "elevator")
 GROUP_GAP = {"stairs": 0.8, "elevator": 0.6}  # m: symbols this close are one stair (flights + eye) / lift group
+FLIGHT_GAP = 1.6  # m: runs of parallel treads this close are one flight (interrupted by a break line, an arrow)
 LANDING = 1.8  # m: a stair's side is pushed to a wall up to this far (landing, or the flight's side gap)
 SHAFT_REACH = 0.8  # m: a lift car's side is pushed to the shaft wall up to this far
 WALL_HIT_SHARE = 0.3  # share of a side's rays that must meet a wall within reach for the side to move
 MIN_REST_SHARE = 0.3  # the area keeps at least this share after the carve, else it is the stair/lift itself
 ALREADY_OWN = 0.5  # a footprint covering this share of an area of its own type: the anchor is that area
+OWN_MAX_AREA = {"stairs": 40.0, "elevator": 12.0}  # m²: an area typed so from its symbols and no larger is a
+# stair core / lift shaft of its own, whatever part of it the symbols cover (a core split by a middle wall)
+BREAK_GAP = 0.3  # m: a cross this close to a stair run is the flight's break line, not a lift
+LANDING_PIECE_MAX = 40.0  # m²: a piece enclosed by a stair's footprint and walls up to this size is its landing
 MIN_PIECE_AREA = 2.0  # m²: smaller leftover pieces join the footprint
 MIN_PIECE_WIDTH = 0.35  # m: leftover pieces with no point farther than this from their border join it
 MIN_PASSAGE = 0.5  # m: shorter open stretches between footprint and rest are no passage
@@ -162,14 +167,32 @@ def footprint(symbol, host: Polygon, reach: float, min_walls: int = 0) -> Option
     return best, walls
 
 
-def _groups(shapes: Sequence[Polygon], gap: float, angles=None) -> List[Tuple[Polygon, tuple]]:
-    """Symbols closer than ``gap`` merged: each group's convex hull and its members' ``angles``."""
-    if not shapes:
+def _groups(shapes: Sequence[Polygon], gap: float, angles=None, flight_gap: float = 0.0) -> List[Tuple[Polygon, tuple]]:
+    """Symbols closer than ``gap`` merged (and runs of parallel treads closer than ``flight_gap``: one flight
+    whose treads a break line or an arrow interrupts): each group's convex hull and its members' ``angles``."""
+    n = len(shapes)
+    if not n:
         return []
-    merged = unary_union([s.buffer(gap / 2.0) for s in shapes])
+    parent = list(range(n))
+
+    def find(i):
+        while parent[i] != i:
+            parent[i] = parent[parent[i]]
+            i = parent[i]
+        return i
+
+    for i in range(n):
+        for j in range(i + 1, n):
+            d = shapes[i].distance(shapes[j])
+            same = False
+            if angles is not None and d < flight_gap:
+                da = abs(angles[i] - angles[j]) % math.pi
+                same = min(da, math.pi - da) < math.radians(5)
+            if d < gap or same:
+                parent[find(i)] = find(j)
     out = []
-    for g in getattr(merged, "geoms", [merged]):
-        idx = [k for k, s in enumerate(shapes) if s.intersects(g)]
+    for root in sorted({find(i) for i in range(n)}):
+        idx = [k for k in range(n) if find(k) == root]
         out.append((unary_union([shapes[k] for k in idx]).convex_hull,
                     tuple(angles[k] for k in idx) if angles is not None else ()))
     return out
@@ -181,9 +204,17 @@ def find_anchor_symbols(geometries: Sequence[CadGeometry]) -> List[Tuple[str, Po
     geoms = [g for g in geometries if g.kind != "boundary"]
     segs = _segments(geoms)
     runs = stair_runs(geoms, segments=segs)
-    out = [("stairs", g, a) for g, a in _groups([r for r, _ in runs], GROUP_GAP["stairs"], [a for _, a in runs])]
-    out += [("elevator", g, ()) for g, _ in _groups(find_lift_crosses(geoms, segments=segs), GROUP_GAP["elevator"])]
+    out = [("stairs", g, a) for g, a in _groups([r for r, _ in runs], GROUP_GAP["stairs"], [a for _, a in runs],
+                                                FLIGHT_GAP)]
+    # a cross on or beside a flight is its break line (the cut of the plan through the flight), not a lift car
+    crosses = [b for b in find_lift_crosses(geoms, segments=segs) if not any(b.distance(r) < BREAK_GAP for r, _ in runs)]
+    out += [("elevator", g, ()) for g, _ in _groups(crosses, GROUP_GAP["elevator"])]
     return out
+
+
+def _island_hole(g: Polygon, fpoly: Polygon) -> bool:
+    """``g`` has a hole where the footprint is (the footprint is an island inside it)."""
+    return any(Polygon(r).buffer(1e-6).intersects(fpoly) for r in g.interiors)
 
 
 def _cut_islands(pieces: List[Polygon], fpoly: Polygon) -> Optional[List[Polygon]]:
@@ -194,7 +225,7 @@ def _cut_islands(pieces: List[Polygon], fpoly: Polygon) -> Optional[List[Polygon
     out = []
     c, u, v, half = _oriented_box(fpoly)
     for g in pieces:
-        if not g.interiors:
+        if not _island_hole(g, fpoly):
             out.append(g)
             continue
         ext = LineString(g.exterior.coords)
@@ -213,11 +244,12 @@ def _cut_islands(pieces: List[Polygon], fpoly: Polygon) -> Optional[List[Polygon
                     best = ln
         if best is None:
             return None
-        filled = Polygon(g.exterior)
+        # the other holes (columns) stay holes of the pieces they fall in
+        filled = Polygon(g.exterior, [r for r in g.interiors if not Polygon(r).intersects(fpoly)])
         parts = split(filled, best)
         parts = [p.difference(fpoly) for p in getattr(parts, "geoms", [parts])]
         flat = [q for p in parts for q in getattr(p, "geoms", [p]) if q.geom_type == "Polygon" and q.area > 1e-6]
-        if len(flat) < 2 or any(q.interiors for q in flat):
+        if len(flat) < 2 or any(_island_hole(q, fpoly) for q in flat):
             return None
         out.extend(flat)
     return out
@@ -229,6 +261,21 @@ def _parallel(ln: LineString, angles, tol_deg: float = 25.0) -> bool:
     for b in angles:
         d = abs(a - b) % math.pi
         if min(d, math.pi - d) <= math.radians(tol_deg):
+            return True
+    return False
+
+
+def _touch(a: Polygon, b: Polygon) -> bool:
+    """The two polygons share a border stretch of at least MIN_PASSAGE."""
+    return a.distance(b) < 1e-6 and a.boundary.intersection(b.buffer(1e-4)).length >= MIN_PASSAGE
+
+
+def _has_door(g: Polygon, host_id: int, passages, skip_ids=()) -> bool:
+    """One of the host's passages (other than those to ``skip_ids``: stairs carved before) lies on piece
+    ``g``'s border."""
+    for p in passages:
+        if host_id in (p.from_id, p.to_id) and not ({p.from_id, p.to_id} & set(skip_ids)) and \
+                p.line.distance(g) < 0.3:
             return True
     return False
 
@@ -272,6 +319,7 @@ def carve_anchors(areas: List[Area], passages: List[Passage], geometries: Sequen
     def skip(reason):
         stats["skipped"][reason] = stats["skipped"].get(reason, 0) + 1
 
+    carved_ids = set()
     next_area = max([a.id for a in areas] + [0]) + 1
     next_pass = max([p.id for p in passages] + [0]) + 1
     # stairs first (larger), then lifts; larger symbols first
@@ -298,12 +346,12 @@ def carve_anchors(areas: List[Area], passages: List[Passage], geometries: Sequen
             continue
         fpoly, _walls = fp
         hpoly = host.polygon
-        if host.type == kind and fpoly.area >= ALREADY_OWN * hpoly.area:
+        if host.type == kind and (fpoly.area >= ALREADY_OWN * hpoly.area or hpoly.area <= OWN_MAX_AREA[kind]):
             skip("already its own area")
             continue
         rest = hpoly.difference(fpoly)
         pieces = [g for g in getattr(rest, "geoms", [rest]) if g.geom_type == "Polygon" and g.area > 1e-6]
-        if any(len(g.interiors) for g in pieces):
+        if any(_island_hole(g, fpoly) for g in pieces):
             # a free-standing stair (an island in a hall): an area is one ring, so the hall is cut from wall to
             # wall through the stair, along the stair's shorter way to the walls
             pieces = _cut_islands(pieces, fpoly)
@@ -331,6 +379,25 @@ def carve_anchors(areas: List[Area], passages: List[Passage], geometries: Sequen
             skip("footprint not one piece")
             continue
         keep.sort(key=lambda g: -g.area)
+        # a piece of floor left between this stair and walls (and other stairs carved before: a curved flight
+        # whose middle treads are not parallel), with no door of the host and no open side onto the rest
+        # of the host, is the stair's own landing: it joins the footprint, and so do those other stairs
+        absorbed = []
+        if kind == "stairs" and len(keep) > 1:
+            lone = [g for g in keep[1:] if g.area <= LANDING_PIECE_MAX and not _has_door(g, host.id, passages, carved_ids)
+                    and not any(_touch(g, o) for o in keep if o is not g)]
+            if lone:
+                keep = [g for g in keep if not any(g is x for x in lone)]
+                for g in lone:
+                    for b in areas:
+                        if b.type == kind and b.id in carved_ids and _touch(g, b.polygon):
+                            absorbed.append(b)
+                grown = unary_union([fpoly] + lone + [b.polygon for b in absorbed])
+                if grown.geom_type != "Polygon":
+                    keep.extend(lone)
+                    absorbed = []
+                else:
+                    fpoly = grown
         old_type = host.type
         # the rest keeps the host's id and passages; a host typed as this kind only because of the
         # symbol now carved out (a corridor holding a stair) is a room again: stage 5 retypes it
@@ -347,6 +414,20 @@ def carve_anchors(areas: List[Area], passages: List[Passage], geometries: Sequen
             stats["pieces"][new.id] = [e.id for e in extra]  # the host's other pieces, for ``relabel``
         areas.append(new)
         areas.extend(extra)
+        for b in absorbed:  # earlier carved stairs joined by a landing piece: one stair
+            areas.remove(b)
+            for p in list(passages):
+                if b.id in (p.from_id, p.to_id):
+                    other = p.to_id if p.from_id == b.id else p.from_id
+                    if other == host.id and p.line.distance(host.polygon) > 1e-3 or other == new.id:
+                        passages.remove(p)  # a cut line now inside the stair
+                        continue
+                    if p.from_id == b.id:
+                        p.from_id = new.id
+                    else:
+                        p.to_id = new.id
+            stats["carved"] = [c for c in stats["carved"] if c[1] != b.id]
+            carved_ids.discard(b.id)
         pieces_by_id = {host.id: host.polygon, new.id: fpoly}
         pieces_by_id.update({e.id: e.polygon for e in extra})
         # the host's passages go to the piece they lie on
@@ -372,6 +453,7 @@ def carve_anchors(areas: List[Area], passages: List[Passage], geometries: Sequen
                     passages.append(Passage(id=next_pass, from_id=a_id, to_id=b_id, line=ln))
                     next_pass += 1
         stats["carved"].append((kind, new.id, host.id, round(fpoly.area, 2)))
+        carved_ids.add(new.id)
     progress.step(100)
     return stats
 
