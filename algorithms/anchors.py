@@ -48,6 +48,7 @@ from .progress import ensure
 ANCHOR_TYPES = ("stairs", "elevator")
 GROUP_GAP = {"stairs": 0.8, "elevator": 0.6}  # m: symbols this close are one stair (flights + eye) / lift group
 FLIGHT_GAP = 1.6  # m: runs of parallel treads this close are one flight (interrupted by a break line, an arrow)
+LANDING_GAP = 3.0  # m: runs of parallel treads in line (same width band) this close are flights of one stair
 LANDING = 1.8  # m: a stair's side is pushed to a wall up to this far (landing, or the flight's side gap)
 SHAFT_REACH = 0.8  # m: a lift car's side is pushed to the shaft wall up to this far
 WALL_HIT_SHARE = 0.3  # share of a side's rays that must meet a wall within reach for the side to move
@@ -167,9 +168,17 @@ def footprint(symbol, host: Polygon, reach: float, min_walls: int = 0) -> Option
     return best, walls
 
 
-def _groups(shapes: Sequence[Polygon], gap: float, angles=None, flight_gap: float = 0.0) -> List[Tuple[Polygon, tuple]]:
+def _extent(poly: Polygon, t: np.ndarray) -> float:
+    xy = np.asarray(poly.exterior.coords)
+    proj = xy @ t
+    return float(proj.max() - proj.min())
+
+
+def _groups(shapes: Sequence[Polygon], gap: float, angles=None, flight_gap: float = 0.0,
+            landing_gap: float = 0.0) -> List[Tuple[Polygon, tuple]]:
     """Symbols closer than ``gap`` merged (and runs of parallel treads closer than ``flight_gap``: one flight
-    whose treads a break line or an arrow interrupts): each group's convex hull and its members' ``angles``."""
+    whose treads a break line or an arrow interrupts; or in line and closer than ``landing_gap``: flights
+    with a landing between): each group's convex hull and its members' ``angles``."""
     n = len(shapes)
     if not n:
         return []
@@ -185,9 +194,15 @@ def _groups(shapes: Sequence[Polygon], gap: float, angles=None, flight_gap: floa
         for j in range(i + 1, n):
             d = shapes[i].distance(shapes[j])
             same = False
-            if angles is not None and d < flight_gap:
+            if angles is not None and d < max(flight_gap, landing_gap):
                 da = abs(angles[i] - angles[j]) % math.pi
                 same = min(da, math.pi - da) < math.radians(5)
+                if same and d >= flight_gap:
+                    # farther apart: one stair only when in line (flights with a landing between, climbing on)
+                    t = np.array([math.cos(angles[i]), math.sin(angles[i])])
+                    ci, cj = np.asarray(shapes[i].centroid.coords[0]), np.asarray(shapes[j].centroid.coords[0])
+                    width = min(_extent(shapes[i], t), _extent(shapes[j], t))
+                    same = abs(float((cj - ci) @ t)) < 0.5 * width
             if d < gap or same:
                 parent[find(i)] = find(j)
     out = []
@@ -205,7 +220,7 @@ def find_anchor_symbols(geometries: Sequence[CadGeometry]) -> List[Tuple[str, Po
     segs = _segments(geoms)
     runs = stair_runs(geoms, segments=segs)
     out = [("stairs", g, a) for g, a in _groups([r for r, _ in runs], GROUP_GAP["stairs"], [a for _, a in runs],
-                                                FLIGHT_GAP)]
+                                                FLIGHT_GAP, LANDING_GAP)]
     # a cross on or beside a flight is its break line (the cut of the plan through the flight), not a lift car
     crosses = [b for b in find_lift_crosses(geoms, segments=segs) if not any(b.distance(r) < BREAK_GAP for r, _ in runs)]
     out += [("elevator", g, ()) for g, _ in _groups(crosses, GROUP_GAP["elevator"])]
@@ -299,8 +314,29 @@ def _passage_lines(a: Polygon, b: Polygon) -> List[LineString]:
         xy = np.asarray(ln.simplify(0.05).coords)
         for p, q in zip(xy[:-1], xy[1:]):
             if np.hypot(*(q - p)) >= MIN_PASSAGE:
-                out.append(LineString([tuple(p), tuple(q)]))
+                out.append(LineString([_on_border(p, a, b), _on_border(q, a, b)]))
     return out
+
+
+def _on_border(pt, a: Polygon, b: Polygon):
+    """``pt`` (within 1e-4 of both borders) moved onto the nearest vertex of ``a`` or ``b`` when one is within
+    1 cm, else onto ``b``'s border: the osmAG writer makes passage ends nodes of both areas' ways."""
+    from shapely.geometry import Point
+
+    p = Point(pt)
+    best, dist = None, 0.01
+    for poly in (a, b):
+        for ring in [poly.exterior] + list(poly.interiors):
+            xy = np.asarray(ring.coords)
+            d = np.hypot(xy[:, 0] - pt[0], xy[:, 1] - pt[1])
+            k = int(np.argmin(d))
+            if d[k] < dist:
+                best, dist = (float(xy[k, 0]), float(xy[k, 1])), float(d[k])
+    if best is not None:
+        return best
+    ring = min([b.exterior] + list(b.interiors), key=lambda r: r.distance(p))
+    q = ring.interpolate(ring.project(p))
+    return (q.x, q.y)
 
 
 def carve_anchors(areas: List[Area], passages: List[Passage], geometries: Sequence[CadGeometry],
@@ -430,15 +466,39 @@ def carve_anchors(areas: List[Area], passages: List[Passage], geometries: Sequen
             carved_ids.discard(b.id)
         pieces_by_id = {host.id: host.polygon, new.id: fpoly}
         pieces_by_id.update({e.id: e.polygon for e in extra})
-        # the host's passages go to the piece they lie on
-        for p in passages:
-            for end in ("from_id", "to_id"):
-                if getattr(p, end) == host.id:
-                    mid = p.line.interpolate(0.5, normalized=True)
-                    best = min(pieces_by_id, key=lambda i: pieces_by_id[i].distance(mid))
-                    other = p.to_id if end == "from_id" else p.from_id
-                    if best != other:
-                        setattr(p, end, best)
+        # the host's passages go to the piece they lie on; one that spans two pieces (a door the cut runs
+        # through) is split at the cut, one part per piece
+        for p in list(passages):
+            if host.id not in (p.from_id, p.to_id):
+                continue
+            end = "from_id" if p.from_id == host.id else "to_id"
+            other = p.to_id if end == "from_id" else p.from_id
+            parts = []
+            for i, poly in pieces_by_id.items():
+                if i == other:
+                    continue
+                seg = p.line.intersection(poly.buffer(1e-4))
+                if seg.geom_type == "LineString" and seg.length >= 0.2 and seg.length < p.line.length - 1e-3:
+                    parts.append((i, seg))
+            if len(parts) >= 2:
+                for n_part, (i, seg) in enumerate(parts):
+                    xy = np.asarray(seg.coords)[[0, -1]]
+                    line = LineString([_on_border(xy[0], pieces_by_id[i], pieces_by_id[i]),
+                                       _on_border(xy[1], pieces_by_id[i], pieces_by_id[i])])
+                    if n_part == 0:
+                        p.line = line
+                        setattr(p, end, i)
+                    else:
+                        q = Passage(id=next_pass, from_id=p.from_id, to_id=p.to_id, line=line, name="",
+                                    tags=dict(p.tags or {}))
+                        setattr(q, end, i)
+                        passages.append(q)
+                        next_pass += 1
+                continue
+            mid = p.line.interpolate(0.5, normalized=True)
+            best = min(pieces_by_id, key=lambda i: pieces_by_id[i].distance(mid))
+            if best != other:
+                setattr(p, end, best)
         ids = [new.id, host.id] + [e.id for e in extra]
         for i, a_id in enumerate(ids):
             for b_id in ids[i + 1:]:

@@ -194,3 +194,22 @@ def test_sample_open_stair_and_open_lift_become_typed_areas_with_passages(open_a
     # and the label raster shows them (preview, later raster stages)
     lab = floor.refined.labels
     assert (lab == stairs[0].id).sum() * floor.grid.resolution ** 2 == pytest.approx(stairs[0].polygon.area, rel=0.2)
+
+
+def test_carved_passages_are_nodes_of_both_areas_in_the_osmag_file(open_anchors, tmp_path):
+    """The osmAG writer makes each passage end a node of both areas' ways: the carved passages' ends lie on
+    both borders (no 'not on the border' warning), and the file reads back with every area and passage."""
+    from algorithms import osmag
+    from algorithms.georef import LocalFrame
+    from algorithms.progress import RecordingProgress
+
+    _info, _plain, floor = open_anchors
+    rec = RecordingProgress()
+    out = tmp_path / "open-anchors.osm"
+    osmag.write_osmag(str(out), floor.refined.areas, floor.refined.passages, frame=LocalFrame(0.0, 0.0), level="1",
+                      variant="fix-id", progress=rec)
+    assert not [m for k, m in rec.messages if "not on the border" in m]
+    areas, passages, _root, rep = osmag.read_osmag(str(out))
+    assert sum(a.type != "structure" for a in areas) == len(floor.refined.areas)
+    assert len(passages) == len(floor.refined.passages) and rep["dangling_refs"] == []
+    assert sorted(a.type for a in areas if a.type in ("stairs", "elevator")) == ["elevator", "stairs"]
