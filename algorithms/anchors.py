@@ -61,6 +61,7 @@ LANDING_PIECE_MAX = 40.0  # m²: a piece enclosed by a stair's footprint and wal
 MIN_PIECE_AREA = 2.0  # m²: smaller leftover pieces join the footprint
 MIN_PIECE_WIDTH = 0.35  # m: leftover pieces with no point farther than this from their border join it
 MIN_PASSAGE = 0.5  # m: shorter open stretches between footprint and rest are no passage
+WALL_FILL = 0.3  # m: walls up to 2 x this thick inside a stair's box (between its flights) belong to the stair
 SIDE_SLACK = 0.3  # m: a landing runs on while the walls left and right stay this close to the symbol's sides
 MIN_LIFT_WALLS = 2  # sides of a lift footprint that must meet a wall within reach
 
@@ -165,6 +166,12 @@ def footprint(symbol, host: Polygon, reach: float, min_walls: int = 0) -> Option
     if not parts:
         return None
     best = max(parts, key=lambda g: (g.intersection(core).area if not core.is_empty else 0.0, g.area))
+    # walls inside the stair (the wall between two flights, the eye's railing) are part of its footprint, as an
+    # enclosed core's outline holds them: gaps narrower than 2 x WALL_FILL inside the box are closed
+    closed = best.buffer(WALL_FILL, join_style=2).buffer(-WALL_FILL, join_style=2).intersection(box)
+    closed = unary_union([closed, best])
+    if closed.geom_type == "Polygon" and closed.is_valid:
+        best = closed
     return best, walls
 
 
@@ -382,6 +389,14 @@ def carve_anchors(areas: List[Area], passages: List[Passage], geometries: Sequen
             continue
         fpoly, _walls = fp
         hpoly = host.polygon
+        others = [a.polygon for a in areas if a is not host and a.type != "structure" and a.polygon.intersects(fpoly)]
+        if others:  # the closed walls never reach into a neighbour
+            cut = fpoly.difference(unary_union(others))
+            cut = max(getattr(cut, "geoms", [cut]), key=lambda g: g.area) if not cut.is_empty else cut
+            if cut.is_empty or cut.geom_type != "Polygon":
+                skip("no footprint")
+                continue
+            fpoly = cut
         if host.type == kind and (fpoly.area >= ALREADY_OWN * hpoly.area or hpoly.area <= OWN_MAX_AREA[kind]):
             skip("already its own area")
             continue
