@@ -213,3 +213,23 @@ def test_carved_passages_are_nodes_of_both_areas_in_the_osmag_file(open_anchors,
     assert sum(a.type != "structure" for a in areas) == len(floor.refined.areas)
     assert len(passages) == len(floor.refined.passages) and rep["dangling_refs"] == []
     assert sorted(a.type for a in areas if a.type in ("stairs", "elevator")) == ["elevator", "stairs"]
+
+
+@pytest.mark.qgis_process
+def test_dxftoosmag_headless_carves_the_open_stair_and_lift(tmp_path):
+    """``cad2osmag:dxftoosmag`` through qgis_process on the open-anchors sample: the osmAG file holds one
+    stairs and one elevator area, each joined by passages, and the log says what was carved."""
+    from algorithms import osmag, sample_building
+
+    from .qgis_process import run_alg
+
+    info = sample_building.generate_open_anchors(str(tmp_path))
+    out = tmp_path / "open-anchors.osm"
+    _, res, log = run_alg("dxftoosmag", {"INPUT": info["dxf"], "OUTPUT": str(out), "LEVEL": 1})
+    assert "stair/lift area(s) carved out" in log
+    areas, passages, _root, report = osmag.read_osmag(str(out))
+    typed = [a for a in areas if a.type in ("stairs", "elevator")]
+    assert sorted(a.type for a in typed) == ["elevator", "stairs"]
+    for a in typed:
+        assert any(a.id in (p.from_id, p.to_id) for p in passages), a.name
+    assert report["dangling_refs"] == [] and res["AREA_COUNT"] == len(areas) - 1
