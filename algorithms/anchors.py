@@ -56,6 +56,7 @@ MIN_REST_SHARE = 0.3  # the area keeps at least this share after the carve, else
 ALREADY_OWN = 0.5  # a footprint covering this share of an area of its own type: the anchor is that area
 OWN_MAX_AREA = {"stairs": 40.0, "elevator": 12.0}  # m²: an area typed so from its symbols and no larger is a
 # stair core / lift shaft of its own, whatever part of it the symbols cover (a core split by a middle wall)
+CONTINUING_TREADS = 3  # tread-like lines (within 25°, 40 % of its width) up to 0.9 m beyond a run: the flight goes on (curved), the run is a part
 BREAK_GAP = 0.3  # m: a cross this close to a stair run is the flight's break line, not a lift
 LANDING_PIECE_MAX = 40.0  # m²: a piece enclosed by a stair's footprint and walls up to this size is its landing
 MIN_PIECE_AREA = 2.0  # m²: smaller leftover pieces join the footprint
@@ -220,17 +221,53 @@ def _groups(shapes: Sequence[Polygon], gap: float, angles=None, flight_gap: floa
     return out
 
 
-def find_anchor_symbols(geometries: Sequence[CadGeometry]) -> List[Tuple[str, Polygon, tuple]]:
+def find_anchor_symbols(geometries: Sequence[CadGeometry]) -> List[Tuple[str, Polygon, tuple, bool]]:
     """Stair footprints' cores (runs of treads, flights of one stair grouped) and lift groups (crosses)
-    the drawing shows, on any layer: [(kind, hull, tread angles (stairs; radians modulo pi))]."""
+    the drawing shows, on any layer: [(kind, hull, tread angles (stairs; radians modulo pi), whether treads
+    continue beyond the hull (a curved flight))]."""
     geoms = [g for g in geometries if g.kind != "boundary"]
     segs = _segments(geoms)
     runs = stair_runs(geoms, segments=segs)
-    out = [("stairs", g, a) for g, a in _groups([r for r, _ in runs], GROUP_GAP["stairs"], [a for _, a in runs],
-                                                FLIGHT_GAP, LANDING_GAP)]
+    groups = _groups([r for r, _ in runs], GROUP_GAP["stairs"], [a for _, a in runs], FLIGHT_GAP, LANDING_GAP)
+    out = [("stairs", g, a) for g, a in groups]
+    curved = _continuing(groups, segs)
     # a cross on or beside a flight is its break line (the cut of the plan through the flight), not a lift car
     crosses = [b for b in find_lift_crosses(geoms, segments=segs) if not any(b.distance(r) < BREAK_GAP for r, _ in runs)]
     out += [("elevator", g, ()) for g, _ in _groups(crosses, GROUP_GAP["elevator"])]
+    return [(k, g, a, i < len(groups) and curved[i]) for i, (k, g, a) in enumerate(out)]
+
+
+def _continuing(groups, segs: np.ndarray) -> List[bool]:
+    """Per stair group: do tread-like segments (tread length, within 40 % of the group's treads) continue
+    beyond it, just outside its hull (>= CONTINUING_TREADS of them within 0.6 m)? Then the straight run is
+    part of a curved (or winding) flight the box does not describe."""
+    from shapely import STRtree, points
+
+    from .area_types import TREAD_LENGTH
+
+    out = []
+    if not len(segs):
+        return [False] * len(groups)
+    L = np.linalg.norm(segs[:, 1] - segs[:, 0], axis=1)
+    keep = L >= 0.6 * TREAD_LENGTH[0]
+    S, L = segs[keep], L[keep]
+    A = np.arctan2(S[:, 1, 1] - S[:, 0, 1], S[:, 1, 0] - S[:, 0, 0]) % math.pi
+    mids = points(S.mean(axis=1))
+    tree = STRtree(mids)
+    for hull, angles in groups:
+        if not len(S) or not angles:
+            out.append(False)
+            continue
+        t = np.array([math.cos(angles[0]), math.sin(angles[0])])
+        width = _extent(hull, t)
+        inner = hull.buffer(0.05)
+        n = 0
+        for i in tree.query(hull.buffer(0.9), predicate="contains"):
+            da = abs(A[i] - angles[0]) % math.pi
+            if min(da, math.pi - da) <= math.radians(25) and abs(L[i] - width) <= 0.4 * width and \
+                    not inner.contains(mids[i]):
+                n += 1
+        out.append(n >= CONTINUING_TREADS)
     return out
 
 
@@ -367,7 +404,7 @@ def carve_anchors(areas: List[Area], passages: List[Passage], geometries: Sequen
     next_pass = max([p.id for p in passages] + [0]) + 1
     # stairs first (larger), then lifts; larger symbols first
     order = sorted(symbols, key=lambda s: (s[0] != "stairs", -s[1].area))
-    for k, (kind, sym, angles) in enumerate(order):
+    for k, (kind, sym, angles, continues) in enumerate(order):
         progress.check()
         progress.step(100.0 * k / len(order))
         cand = [a for a in areas if a.type != "structure" and a.polygon is not None and a.polygon.intersects(sym)]
@@ -405,6 +442,11 @@ def carve_anchors(areas: List[Area], passages: List[Passage], geometries: Sequen
         if any(_island_hole(g, fpoly) for g in pieces):
             # a free-standing stair (an island in a hall): an area is one ring, so the hall is cut from wall to
             # wall through the stair, along the stair's shorter way to the walls
+            if continues:
+                # the run is a straight part of a curved flight standing free in a hall: its box is no footprint,
+                # and a cut through the hall for it would fragment the hall for a fragment of a stair
+                skip("free-standing curved flight")
+                continue
             pieces = _cut_islands(pieces, fpoly)
             if pieces is None:
                 skip("island with no cut to the walls")
