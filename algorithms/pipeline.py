@@ -140,7 +140,7 @@ def process_floor(dxf_path: str, *, rules=None, layers=None, units=None, include
 def _carve_anchors(refined: AreaGraph, drawing: CadDrawing, grid, timings, cpu, progress) -> None:
     """``anchors.carve_anchors`` on the refined graph (labels repainted), timed with stage "types"."""
     t0, c0 = time.perf_counter(), time.process_time()
-    st = anchors.carve_anchors(refined.areas, refined.passages, drawing.geometries)
+    st = anchors.carve_anchors(refined.areas, refined.passages, drawing.geometries, progress=progress.sub(95, 95))
     anchors.relabel(refined.labels, grid, refined.areas, st)
     if st["carved"]:
         progress.info(f"{len(st['carved'])} stair/lift area(s) carved out of the areas that swallowed them ("
