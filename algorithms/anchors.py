@@ -552,8 +552,9 @@ def carve_anchors(areas: List[Area], passages: List[Passage], geometries: Sequen
                         passages.append(q)
                         next_pass += 1
                 continue
-            mid = p.line.interpolate(0.5, normalized=True)
-            best = min(pieces_by_id, key=lambda i: pieces_by_id[i].distance(mid))
+            # the piece whose border holds most of the passage (its midpoint may lie on two borders)
+            best = max(pieces_by_id, key=lambda i: (p.line.intersection(pieces_by_id[i].boundary.buffer(1e-3)).length,
+                                                    -pieces_by_id[i].distance(p.line.interpolate(0.5, normalized=True))))
             if best != other:
                 setattr(p, end, best)
         ids = [new.id, host.id] + [e.id for e in extra]
