@@ -135,6 +135,12 @@ def _segments(geometries: Sequence[CadGeometry]) -> np.ndarray:
 def find_stair_runs(geometries: Sequence[CadGeometry], min_treads: int = MIN_TREADS, segments=None) -> List[Polygon]:
     """Stair runs drawn as treads on any layer: clusters of >= ``min_treads`` parallel segments of similar
     length side by side at a regular tread spacing. Returns each run's minimum rotated rectangle."""
+    return [r for r, _ in stair_runs(geometries, min_treads, segments)]
+
+
+def stair_runs(geometries: Sequence[CadGeometry], min_treads: int = MIN_TREADS, segments=None):
+    """``find_stair_runs`` with each run's tread direction: [(rectangle, angle of the treads in radians,
+    modulo pi)]. A flight is entered and left across its treads' direction (its first and last tread)."""
     from scipy.sparse import coo_matrix
     from scipy.sparse.csgraph import connected_components
     from scipy.spatial import cKDTree
@@ -177,7 +183,7 @@ def find_stair_runs(geometries: Sequence[CadGeometry], min_treads: int = MIN_TRE
         steps = steps[steps > 0.05]
         if len(steps) < min_treads - 1 or np.std(steps) > 0.25 * np.mean(steps):
             continue
-        runs.append(MultiPoint(S[idx].reshape(-1, 2)).minimum_rotated_rectangle)
+        runs.append((MultiPoint(S[idx].reshape(-1, 2)).minimum_rotated_rectangle, float(a0)))
     return runs
 
 

@@ -16,7 +16,7 @@ from typing import Dict, Optional, Sequence
 from shapely.geometry import Polygon
 from shapely.ops import unary_union
 
-from . import cad_import, osmag, rasterize, refine, segmentation, semantics
+from . import anchors, cad_import, osmag, rasterize, refine, segmentation, semantics
 from .area_types import classify_vertical_areas
 from .georef import LocalFrame
 from .errors import Canceled, InputError
@@ -70,7 +70,8 @@ def process_floor(dxf_path: str, *, rules=None, layers=None, units=None, include
                   corridor_width: float = segmentation.DEFAULT_CORRIDOR_WIDTH,
                   delta: float = segmentation.DEFAULT_DELTA, prune: float = segmentation.DEFAULT_PRUNE,
                   epsilon_px: float = refine.EPSILON_PX, min_area: float = refine.MIN_AREA_M2,
-                  level: str = "1", names: bool = True, name_rules=None, progress=None) -> FloorResult:
+                  level: str = "1", names: bool = True, name_rules=None, carve: bool = True,
+                  progress=None) -> FloorResult:
     """Run stages 1-5 on one DXF floor (stage 5, room names and types, unless ``names`` is False);
     nothing is written."""
     progress = ensure(progress)
@@ -110,6 +111,8 @@ def process_floor(dxf_path: str, *, rules=None, layers=None, units=None, include
     refined, rstats = timed("refine", 80, 95, refine.refine, seg, grid.resolution, epsilon_px=epsilon_px,
                             min_area=min_area, keep_types=refine.KEEP_TYPES + (semantics.PROTECTED_TYPE,))
     semantics.restore_types(protected, seg.areas, refined.areas)
+    if carve:  # stairs and lifts swallowed by a larger area become areas of their own (before names: codes name them)
+        _carve_anchors(refined, drawing, grid, timings, cpu, progress)
     names_report = None
     if names:
         names_report = timed("names", 95, 98, semantics.assign_names, refined.areas, drawing.texts, level,
@@ -133,6 +136,19 @@ def process_floor(dxf_path: str, *, rules=None, layers=None, units=None, include
     progress.info(f"floor {level}: {len(refined.areas)} areas, {len(refined.passages)} passages "
                   f"({rstats.get('vertex_reduction', 0):.0%} fewer vertices after refinement)")
     return FloorResult(drawing, grid, seg, refined, floor_area, stats, names_report)
+
+
+def _carve_anchors(refined: AreaGraph, drawing: CadDrawing, grid, timings, cpu, progress) -> None:
+    """``anchors.carve_anchors`` on the refined graph (labels repainted), timed with stage "types"."""
+    t0, c0 = time.perf_counter(), time.process_time()
+    st = anchors.carve_anchors(refined.areas, refined.passages, drawing.geometries, progress=progress.sub(95, 95))
+    anchors.relabel(refined.labels, grid, refined.areas, st)
+    if st["carved"]:
+        progress.info(f"{len(st['carved'])} stair/lift area(s) carved out of the areas that swallowed them ("
+                      + ", ".join(f"{k} {m2:.0f} m² from area {h}" for k, _n, h, m2 in st["carved"][:12]) + ")")
+    # counted with the stair/lift typing it completes (stage "types")
+    timings["types"] = timings.get("types", 0.0) + time.perf_counter() - t0
+    cpu["types"] = cpu.get("types", 0.0) + time.process_time() - c0
 
 
 def _closed_spaces(refined: AreaGraph, drawing: CadDrawing, name_rules, rstats, progress):

@@ -1264,3 +1264,79 @@ def _pieces_m(geom) -> List[Polygon]:
     geoms = list(geom.geoms) if hasattr(geom, "geoms") else [geom]
     geoms = [g for g in geoms if g.area > 1e-6]
     return sorted(geoms, key=lambda g: (round(g.bounds[0], 3), round(g.bounds[1], 3), round(g.area, 3)))
+
+
+# ------------------------------------------------------------------ open stairs and lifts (vertical anchors)
+OPEN_ANCHORS_WALL = 0.25  # metres
+
+
+def open_anchors_plan():
+    """The layout of ``generate_open_anchors`` in metres: ``(walls, rooms, stair, lift, labels)``.
+
+    An atrium ("ATRIO", x 0..20, y 0..14) holds an **open stair**: one straight flight of 12 treads (1.4 m
+    wide, 0.28 m going) drawn on the stair layer, free-standing in the middle of the atrium with no wall
+    around it. North of the atrium runs a corridor ("CORRIDOIO", y 14..16.4, x 0..32) it opens onto through
+    a 2 m doorway. North of the corridor, between two offices, a **lift shaft** (2.2 x 2.2 m, walls on
+    three sides) opens straight onto the corridor over its whole width: no door, no narrowing; its car is
+    drawn with a cross on the lift layer. An office ("UFFICIO EST", x 20..32, y 0..14) beside the atrium has a
+    door to the corridor, and two offices north of the corridor one door each. ``stair`` and ``lift`` are
+    the ground-truth footprints (the flight's box; the shaft's free inside)."""
+    t = OPEN_ANCHORS_WALL
+    segs = [(0, 0, 32, 0), (0, 0, 0, 19), (32, 0, 32, 19), (0, 19, 32, 19),  # envelope
+            (0, 14, 32, 14), (20, 0, 20, 14),  # corridor's south wall, atrium | office
+            (0, 16.4, 32, 16.4),  # corridor's north wall
+            (12, 16.4, 12, 19), (14.2, 16.4, 14.2, 19)]  # lift shaft side walls (the shaft is 12..14.2)
+    walls = unary_union([LineString([(a, b), (c, d)]).buffer(t / 2.0, cap_style=3) for a, b, c, d in segs])
+    doors = [box(9.0, 14 - t, 11.0, 14 + t),  # atrium -> corridor, 2 m
+             box(25.0, 14 - t, 26.0, 14 + t),  # east office -> corridor
+             box(5.0, 16.4 - t, 6.0, 16.4 + t), box(22.0, 16.4 - t, 23.0, 16.4 + t),  # north offices
+             box(12 + t / 2, 16.4 - t, 14.2 - t / 2, 16.4 + t)]  # the lift's open side: the whole shaft width
+    walls = walls.difference(unary_union(doors))
+    h = t / 2
+    rooms = {"ATRIO": box(h, h, 20 - h, 14 - h), "UFFICIO EST": box(20 + h, h, 32 - h, 14 - h),
+             "CORRIDOIO": box(h, 14 + h, 32 - h, 16.4 - h), "UFFICIO NORD 1": box(h, 16.4 + h, 12 - h, 19 - h),
+             "UFFICIO NORD 2": box(14.2 + h, 16.4 + h, 32 - h, 19 - h)}
+    stair = box(9.3, 4.0, 10.7, 4.0 + 12 * 0.28)
+    lift = box(12 + h, 16.4 + h, 14.2 - h, 19 - h)
+    labels = {"ATRIO": (4.0, 10.0), "UFFICIO EST": (26.0, 7.0), "CORRIDOIO": (20.0, 15.2),
+              "UFFICIO NORD 1": (6.0, 17.7), "UFFICIO NORD 2": (23.0, 17.7)}
+    return walls, rooms, stair, lift, labels
+
+
+def generate_open_anchors(out_dir: str, name: str = "open-anchors") -> dict:
+    """Write ``<out_dir>/<name>.dxf`` (metres, ``$INSUNITS`` = 6) of ``open_anchors_plan``: walls as solid
+    hatches with outlines on ``A-WALL``, the open stair's treads and side strings on ``A-STAIR``, the lift
+    car (outline and cross) on the lift layer, room names as TEXT on ``A-ANNO-TEXT``. Returns
+    ``{"dxf", "rooms", "stair", "lift", "labels"}``."""
+    import ezdxf
+
+    walls, rooms, stair, lift, labels = open_anchors_plan()
+    os.makedirs(os.path.abspath(out_dir), exist_ok=True)
+    doc = ezdxf.new("R2018")
+    doc.ezdxf_metadata()["CREATED_BY_EZDXF"] = f"{ezdxf.__version__} @ cad2osmag open anchors sample"
+    doc.header["$INSUNITS"] = 6
+    for layer in ("A-WALL", "A-STAIR", LIFT_LAYER, "A-ANNO-TEXT"):
+        doc.layers.add(layer, color=7)
+    msp = doc.modelspace()
+    for poly in _pieces_m(walls):
+        _add_solid_hatch(msp, poly, "A-WALL")
+        msp.add_lwpolyline(list(poly.exterior.coords)[:-1], close=True, dxfattribs={"layer": "A-WALL"})
+    x0, y0, x1, y1 = stair.bounds
+    lay = {"layer": "A-STAIR"}
+    for k in range(13):  # 12 goings: 13 nosing lines
+        y = y0 + 0.28 * k
+        msp.add_line((x0, y), (x1, y), dxfattribs=lay)
+    msp.add_line((x0, y0), (x0, y1), dxfattribs=lay)  # strings
+    msp.add_line((x1, y0), (x1, y1), dxfattribs=lay)
+    lx0, ly0, lx1, ly1 = lift.bounds
+    c0, c1 = (lx0 + 0.15, ly0 + 0.25), (lx1 - 0.15, ly1 - 0.15)
+    lay = {"layer": LIFT_LAYER}
+    msp.add_lwpolyline([c0, (c1[0], c0[1]), c1, (c0[0], c1[1])], close=True, dxfattribs=lay)
+    msp.add_line(c0, c1, dxfattribs=lay)
+    msp.add_line((c1[0], c0[1]), (c0[0], c1[1]), dxfattribs=lay)
+    for text, (x, y) in labels.items():
+        msp.add_text(text, height=0.3, dxfattribs={"layer": "A-ANNO-TEXT"}).set_placement(
+            (x, y), align=ezdxf.enums.TextEntityAlignment.MIDDLE_CENTER)
+    path = os.path.join(os.path.abspath(out_dir), f"{name}.dxf")
+    _save_deterministic(doc, path)
+    return {"dxf": path, "rooms": rooms, "stair": stair, "lift": lift, "labels": labels}

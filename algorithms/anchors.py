@@ -1,0 +1,601 @@
+"""Stairs and lifts as areas of their own: carving vertical anchors out of the areas that swallowed them.
+
+A robot routes between floors through stair cores and lift shafts, so the fusion of floors (``building``)
+needs every stair and lift the drawing shows as an area typed stairs / elevator. Segmentation makes an
+area of a space closed by walls; a stair or lift that is *open* to the space around it is swallowed:
+
+- an open stair inside an atrium or hall (no wall around it),
+- a lift shaft opening straight onto a corridor with no door (the shaft is as wide as its opening),
+- a stair core whose landing runs into a corridor (the corridor and stair are one area).
+
+This stage finds the symbols the drawing shows (stair runs: treads on any layer, ``area_types.find_stair_runs``,
+including treads on wall layers that ``cad_classify.free_stair_treads`` turned into stair lines; lift cars:
+their cross, ``area_types.find_lift_crosses``) and, when one lies inside a larger area, carves its
+**footprint** out of that area into an area of its own:
+
+- footprint = the (oriented) hull of the stair's runs (flights closer than ``GROUP_GAP`` are one stair) or of
+  the lift group's crosses, each side pushed out to the wall it faces when that wall is within reach
+  (``LANDING`` m for a stair: the landing between the last tread and the wall; ``SHAFT_REACH`` m for a lift:
+  the gap between car and shaft wall) on at least ``WALL_HIT_SHARE`` of the side. A side with no wall
+  within reach (the open end of a stair, the front of a lift) runs on between the walls left and right of it
+  while they stay within ``SIDE_SLACK`` of the footprint (the landing inside a core up to its mouth onto a
+  corridor), and stays at the symbol when there are none (an open stair in a hall).
+- the rest of the area stays as it was (its id, type and passages), split into pieces when the footprint
+  cuts it in two; slivers thinner than ``MIN_PIECE_WIDTH`` or smaller than ``MIN_PIECE_AREA`` go to the
+  footprint.
+- a passage joins the footprint and each piece along every straight stretch of their common boundary (the
+  open sides), and the area's old passages go to the piece they lie on.
+
+Never carves a hall into a stair: the area is carved only when the rest keeps at least
+``MIN_REST_SHARE`` of it (otherwise the area *is* the stair core or shaft and is only typed, when it is not
+yet). A stair or lift that already is its own area (the footprint covers most of an area already typed so)
+is left alone. A lift needs walls: a cross with no wall within reach on at least two sides (a void marked
+with a cross in a hall) is not a lift.
+"""
+from __future__ import annotations
+
+import math
+from typing import Dict, List, Optional, Sequence, Tuple
+
+import numpy as np
+from shapely.geometry import LineString, MultiPolygon, Polygon
+from shapely.ops import linemerge, unary_union
+
+from .area_types import find_lift_crosses, stair_runs, _segments
+from .model import Area, CadGeometry, Passage
+from .progress import ensure
+
+ANCHOR_TYPES = ("stairs", "elevator")
+GROUP_GAP = {"stairs": 0.8, "elevator": 0.6}  # m: symbols this close are one stair (flights + eye) / lift group
+FLIGHT_GAP = 1.6  # m: runs of parallel treads this close are one flight (interrupted by a break line, an arrow)
+LANDING_GAP = 3.0  # m: runs of parallel treads in line (same width band) this close are flights of one stair
+LANDING = 1.8  # m: a stair's side is pushed to a wall up to this far (landing, or the flight's side gap)
+SHAFT_REACH = 0.8  # m: a lift car's side is pushed to the shaft wall up to this far
+WALL_HIT_SHARE = 0.3  # share of a side's rays that must meet a wall within reach for the side to move
+MIN_REST_SHARE = 0.3  # the area keeps at least this share after the carve, else it is the stair/lift itself
+ALREADY_OWN = 0.5  # a footprint covering this share of an area of its own type: the anchor is that area
+OWN_MAX_AREA = {"stairs": 40.0, "elevator": 12.0}  # m²: an area typed so from its symbols and no larger is a
+# stair core / lift shaft of its own, whatever part of it the symbols cover (a core split by a middle wall)
+CONTINUING_TREADS = 3  # tread-like lines (within 25°, 40 % of its width) up to 0.9 m beyond a run: the flight goes on (curved), the run is a part
+BREAK_GAP = 0.3  # m: a cross this close to a stair run is the flight's break line, not a lift
+LANDING_PIECE_MAX = 40.0  # m²: a piece enclosed by a stair's footprint and walls up to this size is its landing
+MIN_PIECE_AREA = 2.0  # m²: smaller leftover pieces join the footprint
+MIN_PIECE_WIDTH = 0.35  # m: leftover pieces with no point farther than this from their border join it
+MIN_PASSAGE = 0.5  # m: shorter open stretches between footprint and rest are no passage
+WALL_FILL = 0.3  # m: walls up to 2 x this thick inside a stair's box (between its flights) belong to the stair
+SIDE_SLACK = 0.3  # m: a landing runs on while the walls left and right stay this close to the symbol's sides
+MIN_LIFT_WALLS = 2  # sides of a lift footprint that must meet a wall within reach
+
+
+def _oriented_box(geom) -> Tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+    """(centre, u, v, half) of the minimum rotated rectangle of ``geom``: axes u, v and half extents."""
+    r = geom.minimum_rotated_rectangle
+    xy = np.asarray(r.exterior.coords)[:4] if r.geom_type == "Polygon" else np.asarray(geom.envelope.exterior.coords)[:4]
+    e1, e2 = xy[1] - xy[0], xy[2] - xy[1]
+    l1, l2 = float(np.hypot(*e1)), float(np.hypot(*e2))
+    u = e1 / max(l1, 1e-9)
+    v = e2 / max(l2, 1e-9)
+    c = xy.mean(axis=0)
+    return c, u, v, np.array([l1 / 2.0, l2 / 2.0])
+
+
+def _box_polygon(c, u, v, lo, hi) -> Polygon:
+    """Rectangle c + s*u + t*v for s in [lo0, hi0], t in [lo1, hi1]."""
+    pts = [c + lo[0] * u + lo[1] * v, c + hi[0] * u + lo[1] * v, c + hi[0] * u + hi[1] * v, c + lo[0] * u + hi[1] * v]
+    return Polygon(pts)
+
+
+def _wall_distances(boundary, starts: np.ndarray, direction: np.ndarray, reach: float) -> np.ndarray:
+    """Distance from each start point along ``direction`` to the first crossing of ``boundary`` (inf when
+    none within ``reach``)."""
+    out = np.full(len(starts), np.inf)
+    for k, p in enumerate(starts):
+        ray = LineString([tuple(p), tuple(p + direction * reach)])
+        hit = ray.intersection(boundary)
+        if hit.is_empty:
+            continue
+        pts = []
+        for g in getattr(hit, "geoms", [hit]):
+            if g.geom_type == "Point":
+                pts.append((g.x, g.y))
+            else:
+                pts.extend(np.asarray(g.coords)[:, :2].tolist())
+        if pts:
+            out[k] = float(np.min(np.hypot(*(np.asarray(pts) - p).T)))
+    return out
+
+
+def footprint(symbol, host: Polygon, reach: float, min_walls: int = 0) -> Optional[Tuple[Polygon, int]]:
+    """The anchor's footprint in ``host``: the symbol's oriented box with each side pushed to the wall (the
+    host's border) it faces within ``reach``. Returns (polygon, number of sides that met a wall), or None."""
+    c, u, v, half = _oriented_box(symbol)
+    lo, hi = -half.copy(), half.copy()
+    boundary = host.boundary
+    walls = 0
+    n = 9
+    hit, opened = {}, []
+    for axis in (0, 1):
+        ax, other = (u, v) if axis == 0 else (v, u)
+        oh = half[1 - axis]
+        ts = np.linspace(-oh * 0.9, oh * 0.9, n)
+        for sign in (1.0, -1.0):
+            edge = half[axis] * sign
+            starts = c[None, :] + edge * ax[None, :] + ts[:, None] * other[None, :]
+            # start just inside the box: a wall right on the symbol's edge counts (distance ~0)
+            back = 0.05
+            d = _wall_distances(boundary, starts - sign * back * ax[None, :], sign * ax, reach + back) - back
+            hits = d[np.isfinite(d)]
+            hit[(axis, sign)] = len(hits) >= WALL_HIT_SHARE * n
+            if not hit[(axis, sign)]:
+                opened.append((axis, sign, True))
+            if len(hits) >= WALL_HIT_SHARE * n:
+                walls += 1
+                push = float(np.clip(np.median(hits), 0.0, reach))
+                if sign > 0:
+                    hi[axis] = edge + push
+                else:
+                    lo[axis] = edge - push
+    if walls < min_walls:
+        return None
+    # a side with no wall in front (the core's mouth onto a corridor): the landing still runs on between the
+    # walls on its left and right, up to where they stop (the space widens)
+    for axis, sign, open_side in opened:
+        if not (hit[(1 - axis, 1.0)] and hit[(1 - axis, -1.0)]):
+            continue
+        ax, other = (u, v) if axis == 0 else (v, u)
+        edge = hi[axis] if sign > 0 else lo[axis]
+        span_hi, span_lo = hi[1 - axis], -lo[1 - axis]
+        last = 0.0
+        for step in np.arange(0.1, reach + 1e-9, 0.1):
+            p = c + (edge + sign * step) * ax
+            d_hi = _wall_distances(boundary, p[None, :], other, span_hi + 2 * SIDE_SLACK)[0]
+            d_lo = _wall_distances(boundary, p[None, :], -other, span_lo + 2 * SIDE_SLACK)[0]
+            if not (d_hi <= span_hi + SIDE_SLACK and d_lo <= span_lo + SIDE_SLACK):
+                break
+            last = step
+        if last > 0:
+            if sign > 0:
+                hi[axis] = edge + last
+            else:
+                lo[axis] = edge - last
+    box = _box_polygon(c, u, v, lo, hi)
+    fp = box.intersection(host)
+    if fp.is_empty:
+        return None
+    core = symbol.intersection(host)
+    parts = [g for g in getattr(fp, "geoms", [fp]) if g.geom_type == "Polygon" and g.area > 0]
+    if not parts:
+        return None
+    best = max(parts, key=lambda g: (g.intersection(core).area if not core.is_empty else 0.0, g.area))
+    # walls inside the stair (the wall between two flights, the eye's railing) are part of its footprint, as an
+    # enclosed core's outline holds them: gaps narrower than 2 x WALL_FILL inside the box are closed
+    closed = best.buffer(WALL_FILL, join_style=2).buffer(-WALL_FILL, join_style=2).intersection(box)
+    closed = unary_union([closed, best])
+    if closed.geom_type == "Polygon" and closed.is_valid:
+        best = closed
+    return best, walls
+
+
+def _extent(poly: Polygon, t: np.ndarray) -> float:
+    xy = np.asarray(poly.exterior.coords)
+    proj = xy @ t
+    return float(proj.max() - proj.min())
+
+
+def _groups(shapes: Sequence[Polygon], gap: float, angles=None, flight_gap: float = 0.0,
+            landing_gap: float = 0.0) -> List[Tuple[Polygon, tuple]]:
+    """Symbols closer than ``gap`` merged (and runs of parallel treads closer than ``flight_gap``: one flight
+    whose treads a break line or an arrow interrupts; or in line and closer than ``landing_gap``: flights
+    with a landing between): each group's convex hull and its members' ``angles``."""
+    n = len(shapes)
+    if not n:
+        return []
+    parent = list(range(n))
+
+    def find(i):
+        while parent[i] != i:
+            parent[i] = parent[parent[i]]
+            i = parent[i]
+        return i
+
+    for i in range(n):
+        for j in range(i + 1, n):
+            d = shapes[i].distance(shapes[j])
+            same = False
+            if angles is not None and d < max(flight_gap, landing_gap):
+                da = abs(angles[i] - angles[j]) % math.pi
+                same = min(da, math.pi - da) < math.radians(5)
+                if same and d >= flight_gap:
+                    # farther apart: one stair only when in line (flights with a landing between, climbing on)
+                    t = np.array([math.cos(angles[i]), math.sin(angles[i])])
+                    ci, cj = np.asarray(shapes[i].centroid.coords[0]), np.asarray(shapes[j].centroid.coords[0])
+                    width = min(_extent(shapes[i], t), _extent(shapes[j], t))
+                    same = abs(float((cj - ci) @ t)) < 0.5 * width
+            if d < gap or same:
+                parent[find(i)] = find(j)
+    out = []
+    for root in sorted({find(i) for i in range(n)}):
+        idx = [k for k in range(n) if find(k) == root]
+        out.append((unary_union([shapes[k] for k in idx]).convex_hull,
+                    tuple(angles[k] for k in idx) if angles is not None else ()))
+    return out
+
+
+def find_anchor_symbols(geometries: Sequence[CadGeometry]) -> List[Tuple[str, Polygon, tuple, bool]]:
+    """Stair footprints' cores (runs of treads, flights of one stair grouped) and lift groups (crosses)
+    the drawing shows, on any layer: [(kind, hull, tread angles (stairs; radians modulo pi), whether treads
+    continue beyond the hull (a curved flight))]."""
+    geoms = [g for g in geometries if g.kind != "boundary"]
+    segs = _segments(geoms)
+    runs = stair_runs(geoms, segments=segs)
+    groups = _groups([r for r, _ in runs], GROUP_GAP["stairs"], [a for _, a in runs], FLIGHT_GAP, LANDING_GAP)
+    out = [("stairs", g, a) for g, a in groups]
+    curved = _continuing(groups, segs)
+    # a cross on or beside a flight is its break line (the cut of the plan through the flight), not a lift car
+    crosses = [b for b in find_lift_crosses(geoms, segments=segs) if not any(b.distance(r) < BREAK_GAP for r, _ in runs)]
+    out += [("elevator", g, ()) for g, _ in _groups(crosses, GROUP_GAP["elevator"])]
+    return [(k, g, a, i < len(groups) and curved[i]) for i, (k, g, a) in enumerate(out)]
+
+
+def _continuing(groups, segs: np.ndarray) -> List[bool]:
+    """Per stair group: do tread-like segments (tread length, within 40 % of the group's treads) continue
+    beyond it, just outside its hull (>= CONTINUING_TREADS of them within 0.6 m)? Then the straight run is
+    part of a curved (or winding) flight the box does not describe."""
+    from shapely import STRtree, points
+
+    from .area_types import TREAD_LENGTH
+
+    out = []
+    if not len(segs):
+        return [False] * len(groups)
+    L = np.linalg.norm(segs[:, 1] - segs[:, 0], axis=1)
+    keep = L >= 0.6 * TREAD_LENGTH[0]
+    S, L = segs[keep], L[keep]
+    A = np.arctan2(S[:, 1, 1] - S[:, 0, 1], S[:, 1, 0] - S[:, 0, 0]) % math.pi
+    mids = points(S.mean(axis=1))
+    tree = STRtree(mids)
+    for hull, angles in groups:
+        if not len(S) or not angles:
+            out.append(False)
+            continue
+        t = np.array([math.cos(angles[0]), math.sin(angles[0])])
+        width = _extent(hull, t)
+        inner = hull.buffer(0.05)
+        n = 0
+        for i in tree.query(hull.buffer(0.9), predicate="contains"):
+            da = abs(A[i] - angles[0]) % math.pi
+            if min(da, math.pi - da) <= math.radians(25) and abs(L[i] - width) <= 0.4 * width and \
+                    not inner.contains(mids[i]):
+                n += 1
+        out.append(n >= CONTINUING_TREADS)
+    return out
+
+
+def _island_hole(g: Polygon, fpoly: Polygon) -> bool:
+    """``g`` has a hole where the footprint is (the footprint is an island inside it)."""
+    return any(Polygon(r).buffer(1e-6).intersects(fpoly) for r in g.interiors)
+
+
+def _cut_islands(pieces: List[Polygon], fpoly: Polygon) -> Optional[List[Polygon]]:
+    """Pieces with holes (the footprint is an island) split by the shortest straight cut from their outer
+    border to their outer border through the footprint, along one of the footprint's axes."""
+    from shapely.ops import split
+
+    out = []
+    c, u, v, half = _oriented_box(fpoly)
+    for g in pieces:
+        if not _island_hole(g, fpoly):
+            out.append(g)
+            continue
+        ext = LineString(g.exterior.coords)
+        best = None
+        reach = math.hypot(*(np.asarray(g.bounds[2:]) - np.asarray(g.bounds[:2]))) + 1.0
+        for ax in (u, v):
+            ends = []
+            for sgn in (1.0, -1.0):
+                d = _wall_distances(ext, c[None, :], sgn * ax, reach)[0]
+                if not np.isfinite(d):
+                    break
+                ends.append(c + sgn * ax * (d + 1e-3))
+            if len(ends) == 2:
+                ln = LineString([tuple(ends[1]), tuple(ends[0])])
+                if best is None or ln.length < best.length:
+                    best = ln
+        if best is None:
+            return None
+        # the other holes (columns) stay holes of the pieces they fall in
+        filled = Polygon(g.exterior, [r for r in g.interiors if not Polygon(r).intersects(fpoly)])
+        parts = split(filled, best)
+        parts = [p.difference(fpoly) for p in getattr(parts, "geoms", [parts])]
+        flat = [q for p in parts for q in getattr(p, "geoms", [p]) if q.geom_type == "Polygon" and q.area > 1e-6]
+        if len(flat) < 2 or any(_island_hole(q, fpoly) for q in flat):
+            return None
+        out.extend(flat)
+    return out
+
+
+def _parallel(ln: LineString, angles, tol_deg: float = 25.0) -> bool:
+    (x0, y0), (x1, y1) = ln.coords[0], ln.coords[-1]
+    a = math.atan2(y1 - y0, x1 - x0) % math.pi
+    for b in angles:
+        d = abs(a - b) % math.pi
+        if min(d, math.pi - d) <= math.radians(tol_deg):
+            return True
+    return False
+
+
+def _touch(a: Polygon, b: Polygon) -> bool:
+    """The two polygons share a border stretch of at least MIN_PASSAGE."""
+    return a.distance(b) < 1e-6 and a.boundary.intersection(b.buffer(1e-4)).length >= MIN_PASSAGE
+
+
+def _has_door(g: Polygon, host_id: int, passages, skip_ids=()) -> bool:
+    """One of the host's passages (other than those to ``skip_ids``: stairs carved before) lies on piece
+    ``g``'s border."""
+    for p in passages:
+        if host_id in (p.from_id, p.to_id) and not ({p.from_id, p.to_id} & set(skip_ids)) and \
+                p.line.distance(g) < 0.3:
+            return True
+    return False
+
+
+def _width_ok(p: Polygon) -> bool:
+    return p.area >= MIN_PIECE_AREA and not p.buffer(-MIN_PIECE_WIDTH).is_empty
+
+
+def _passage_lines(a: Polygon, b: Polygon) -> List[LineString]:
+    """Straight stretches (>= MIN_PASSAGE) of the common border of two touching polygons."""
+    common = a.boundary.intersection(b.buffer(1e-4))
+    lines = [g for g in getattr(common, "geoms", [common]) if g.geom_type in ("LineString", "MultiLineString")]
+    if not lines:
+        return []
+    u = unary_union(lines)
+    merged = linemerge(list(u.geoms)) if hasattr(u, "geoms") else u
+    out = []
+    for ln in getattr(merged, "geoms", [merged]):
+        if ln.length < MIN_PASSAGE:
+            continue
+        xy = np.asarray(ln.simplify(0.05).coords)
+        for p, q in zip(xy[:-1], xy[1:]):
+            if np.hypot(*(q - p)) >= MIN_PASSAGE:
+                out.append(LineString([_on_border(p, a, b), _on_border(q, a, b)]))
+    return out
+
+
+def _on_border(pt, a: Polygon, b: Polygon):
+    """``pt`` (within 1e-4 of both borders) moved onto the nearest vertex of ``a`` or ``b`` when one is within
+    1 cm, else onto ``b``'s border: the osmAG writer makes passage ends nodes of both areas' ways."""
+    from shapely.geometry import Point
+
+    p = Point(pt)
+    best, dist = None, 0.01
+    for poly in (a, b):
+        for ring in [poly.exterior] + list(poly.interiors):
+            xy = np.asarray(ring.coords)
+            d = np.hypot(xy[:, 0] - pt[0], xy[:, 1] - pt[1])
+            k = int(np.argmin(d))
+            if d[k] < dist:
+                best, dist = (float(xy[k, 0]), float(xy[k, 1])), float(d[k])
+    if best is not None:
+        return best
+    ring = min([b.exterior] + list(b.interiors), key=lambda r: r.distance(p))
+    q = ring.interpolate(ring.project(p))
+    return (q.x, q.y)
+
+
+def carve_anchors(areas: List[Area], passages: List[Passage], geometries: Sequence[CadGeometry],
+                  progress=None, symbols=None) -> Dict[str, object]:
+    """Carve every stair and lift the drawing shows inside a larger area into a typed area of its own (in
+    place: ``areas`` and ``passages`` are extended and updated; see the module doc). Returns figures:
+    ``carved`` [(kind, new area id, host id, m²)], ``pieces`` {new area id: ids of the host's other
+    pieces when the carve cut it in two}, ``typed`` [(kind, area id)] (areas that are the anchor
+    themselves, typed), ``skipped`` counts by reason."""
+    progress = ensure(progress)
+    symbols = find_anchor_symbols(geometries) if symbols is None else symbols
+    stats: Dict[str, object] = {"symbols": len(symbols), "carved": [], "typed": [], "skipped": {}, "pieces": {}}
+    if not symbols:
+        return stats
+
+    def skip(reason):
+        stats["skipped"][reason] = stats["skipped"].get(reason, 0) + 1
+
+    carved_ids = set()
+    next_area = max([a.id for a in areas] + [0]) + 1
+    next_pass = max([p.id for p in passages] + [0]) + 1
+    # stairs first (larger), then lifts; larger symbols first
+    order = sorted(symbols, key=lambda s: (s[0] != "stairs", -s[1].area))
+    for k, (kind, sym, angles, continues) in enumerate(order):
+        progress.check()
+        progress.step(100.0 * k / len(order))
+        cand = [a for a in areas if a.type != "structure" and a.polygon is not None and a.polygon.intersects(sym)]
+        if not cand:
+            skip("outside every area")
+            continue
+        host = max(cand, key=lambda a: a.polygon.intersection(sym).area)
+        inside = host.polygon.intersection(sym).area
+        if inside < 0.5 * sym.area:
+            skip("symbol across areas")
+            continue
+        if host.type in ANCHOR_TYPES and host.type != kind:
+            skip("in an area of the other kind")
+            continue
+        reach = LANDING if kind == "stairs" else SHAFT_REACH
+        fp = footprint(sym, host.polygon, reach, MIN_LIFT_WALLS if kind == "elevator" else 0)
+        if fp is None:
+            skip("no walls around a lift cross" if kind == "elevator" else "no footprint")
+            continue
+        fpoly, _walls = fp
+        hpoly = host.polygon
+        others = [a.polygon for a in areas if a is not host and a.type != "structure" and a.polygon.intersects(fpoly)]
+        if others:  # the closed walls never reach into a neighbour
+            cut = fpoly.difference(unary_union(others))
+            cut = max(getattr(cut, "geoms", [cut]), key=lambda g: g.area) if not cut.is_empty else cut
+            if cut.is_empty or cut.geom_type != "Polygon":
+                skip("no footprint")
+                continue
+            fpoly = cut
+        if host.type == kind and (fpoly.area >= ALREADY_OWN * hpoly.area or hpoly.area <= OWN_MAX_AREA[kind]):
+            skip("already its own area")
+            continue
+        rest = hpoly.difference(fpoly)
+        pieces = [g for g in getattr(rest, "geoms", [rest]) if g.geom_type == "Polygon" and g.area > 1e-6]
+        if any(_island_hole(g, fpoly) for g in pieces):
+            # a free-standing stair (an island in a hall): an area is one ring, so the hall is cut from wall to
+            # wall through the stair, along the stair's shorter way to the walls
+            if continues:
+                # the run is a straight part of a curved flight standing free in a hall: its box is no footprint,
+                # and a cut through the hall for it would fragment the hall for a fragment of a stair
+                skip("free-standing curved flight")
+                continue
+            pieces = _cut_islands(pieces, fpoly)
+            if pieces is None:
+                skip("island with no cut to the walls")
+                continue
+        keep = [g for g in pieces if _width_ok(g)]
+        small = [g for g in pieces if not _width_ok(g)]
+        if small:
+            grown = unary_union([fpoly] + small)
+            if grown.geom_type == "Polygon":
+                fpoly = grown
+            else:  # a sliver touching the footprint at a point only: keep it with the footprint's largest part
+                fpoly = max(grown.geoms, key=lambda g: g.area)
+        if not keep or sum(g.area for g in keep) < MIN_REST_SHARE * hpoly.area:
+            if host.type not in ANCHOR_TYPES and hpoly.area <= 4.0 * max(fpoly.area, 1.0) and \
+                    (kind == "stairs" or hpoly.area <= 40.0):
+                host.type = kind
+                stats["typed"].append((kind, host.id))
+            else:
+                skip("the area is mostly the anchor")
+            continue
+        fpoly = fpoly.buffer(0) if not fpoly.is_valid else fpoly
+        if fpoly.geom_type != "Polygon":
+            skip("footprint not one piece")
+            continue
+        keep.sort(key=lambda g: -g.area)
+        # a piece of floor left between this stair and walls (and other stairs carved before: a curved flight
+        # whose middle treads are not parallel), with no door of the host and no open side onto the rest
+        # of the host, is the stair's own landing: it joins the footprint, and so do those other stairs
+        absorbed = []
+        if kind == "stairs" and len(keep) > 1:
+            lone = [g for g in keep[1:] if g.area <= LANDING_PIECE_MAX and not _has_door(g, host.id, passages, carved_ids)
+                    and not any(_touch(g, o) for o in keep if o is not g)]
+            if lone:
+                keep = [g for g in keep if not any(g is x for x in lone)]
+                for g in lone:
+                    for b in areas:
+                        if b.type == kind and b.id in carved_ids and _touch(g, b.polygon):
+                            absorbed.append(b)
+                grown = unary_union([fpoly] + lone + [b.polygon for b in absorbed])
+                if grown.geom_type != "Polygon":
+                    keep.extend(lone)
+                    absorbed = []
+                else:
+                    fpoly = grown
+        old_type = host.type
+        # the rest keeps the host's id and passages; a host typed as this kind only because of the
+        # symbol now carved out (a corridor holding a stair) is a room again: stage 5 retypes it
+        host.polygon = keep[0]
+        if old_type == kind:
+            host.type = "room"
+        new = Area(id=next_area, polygon=fpoly, type=kind, component=host.component)
+        next_area += 1
+        extra = []
+        for g in keep[1:]:
+            extra.append(Area(id=next_area, polygon=g, type=host.type, component=host.component))
+            next_area += 1
+        if extra:
+            stats["pieces"][new.id] = [e.id for e in extra]  # the host's other pieces, for ``relabel``
+        areas.append(new)
+        areas.extend(extra)
+        for b in absorbed:  # earlier carved stairs joined by a landing piece: one stair
+            areas.remove(b)
+            for p in list(passages):
+                if b.id in (p.from_id, p.to_id):
+                    other = p.to_id if p.from_id == b.id else p.from_id
+                    if other == host.id and p.line.distance(host.polygon) > 1e-3 or other == new.id:
+                        passages.remove(p)  # a cut line now inside the stair
+                        continue
+                    if p.from_id == b.id:
+                        p.from_id = new.id
+                    else:
+                        p.to_id = new.id
+            stats["carved"] = [c for c in stats["carved"] if c[1] != b.id]
+            carved_ids.discard(b.id)
+        pieces_by_id = {host.id: host.polygon, new.id: fpoly}
+        pieces_by_id.update({e.id: e.polygon for e in extra})
+        # the host's passages go to the piece they lie on; one that spans two pieces (a door the cut runs
+        # through) is split at the cut, one part per piece
+        for p in list(passages):
+            if host.id not in (p.from_id, p.to_id):
+                continue
+            end = "from_id" if p.from_id == host.id else "to_id"
+            other = p.to_id if end == "from_id" else p.from_id
+            parts = []
+            for i, poly in pieces_by_id.items():
+                if i == other:
+                    continue
+                seg = p.line.intersection(poly.buffer(1e-4))
+                if seg.geom_type == "LineString" and seg.length >= 0.2 and seg.length < p.line.length - 1e-3:
+                    parts.append((i, seg))
+            if len(parts) >= 2:
+                for n_part, (i, seg) in enumerate(parts):
+                    xy = np.asarray(seg.coords)[[0, -1]]
+                    line = LineString([_on_border(xy[0], pieces_by_id[i], pieces_by_id[i]),
+                                       _on_border(xy[1], pieces_by_id[i], pieces_by_id[i])])
+                    if n_part == 0:
+                        p.line = line
+                        setattr(p, end, i)
+                    else:
+                        q = Passage(id=next_pass, from_id=p.from_id, to_id=p.to_id, line=line, name="",
+                                    tags=dict(p.tags or {}))
+                        setattr(q, end, i)
+                        passages.append(q)
+                        next_pass += 1
+                continue
+            # the piece whose border holds most of the passage (its midpoint may lie on two borders)
+            best = max(pieces_by_id, key=lambda i: (p.line.intersection(pieces_by_id[i].boundary.buffer(1e-3)).length,
+                                                    -pieces_by_id[i].distance(p.line.interpolate(0.5, normalized=True))))
+            if best != other:
+                setattr(p, end, best)
+        ids = [new.id, host.id] + [e.id for e in extra]
+        for i, a_id in enumerate(ids):
+            for b_id in ids[i + 1:]:
+                if not pieces_by_id[a_id].intersects(pieces_by_id[b_id]):
+                    continue
+                lines = _passage_lines(pieces_by_id[a_id], pieces_by_id[b_id])
+                if a_id == new.id and angles:
+                    # a flight is entered across its first and last tread, not over its strings (handrails)
+                    along = [ln for ln in lines if _parallel(ln, angles)]
+                    lines = along or lines
+                for ln in lines:
+                    passages.append(Passage(id=next_pass, from_id=a_id, to_id=b_id, line=ln))
+                    next_pass += 1
+        stats["carved"].append((kind, new.id, host.id, round(fpoly.area, 2)))
+        carved_ids.add(new.id)
+    progress.step(100)
+    return stats
+
+
+def relabel(labels: Optional[np.ndarray], grid, areas: Sequence[Area], stats) -> None:
+    """Paint the carved areas (``carve_anchors``' ``carved`` and ``pieces``) into the label raster
+    of ``grid`` where it holds their host, so previews and later raster stages see them."""
+    import cv2
+
+    carved = stats.get("carved") or []
+    if labels is None or grid is None or not carved:
+        return
+    by_id = {a.id: a for a in areas}
+    rows, cols = labels.shape
+    for _kind, new_id, host_id, _m2 in carved:
+        for aid in [new_id] + list(stats.get("pieces", {}).get(new_id, [])):
+            a = by_id.get(aid)
+            if a is None:
+                continue
+            m = np.zeros((rows, cols), np.uint8)
+            xs, ys = np.asarray(a.polygon.exterior.coords).T
+            c, r = grid.world_to_pixel(xs, ys)
+            cv2.fillPoly(m, [np.round(np.column_stack((c, r)) * 8).astype(np.int32)], 1, shift=3)
+            labels[(labels == host_id) & m.astype(bool)] = a.id
+
+
+__all__ = ["carve_anchors", "relabel", "find_anchor_symbols", "footprint"]

@@ -1,0 +1,235 @@
+"""Stairs and lifts as areas of their own (``algorithms/anchors.py``): a stair or lift the drawing shows
+inside a larger area is carved out of it, typed, with passages where it stays open (issue 9)."""
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pytest
+from shapely.geometry import LineString, box
+from shapely.ops import unary_union
+
+from algorithms import anchors
+from algorithms.model import Area, CadGeometry, Passage
+
+
+def _line(p, q, kind="stair", layer="A-STAIR"):
+    return CadGeometry(layer=layer, kind=kind, coords=np.array([p, q], float))
+
+
+def _flight(x0, y0, width=1.2, n=12, going=0.28, kind="stair"):
+    """Treads of a straight flight climbing north from (x0, y0)."""
+    return [_line((x0, y0 + k * going), (x0 + width, y0 + k * going), kind) for k in range(n + 1)]
+
+
+def _cross(x0, y0, x1, y1, kind="elevator"):
+    return [_line((x0, y0), (x1, y1), kind, "A-LIFT"), _line((x0, y1), (x1, y0), kind, "A-LIFT")]
+
+
+def _graph_ok(areas, passages):
+    ids = {a.id for a in areas}
+    assert len(ids) == len(areas)
+    for a in areas:
+        assert a.polygon.geom_type == "Polygon" and a.polygon.is_valid and not a.polygon.interiors, a
+    for p in passages:
+        assert p.from_id in ids and p.to_id in ids and p.from_id != p.to_id
+        assert len(p.line.coords) == 2 and p.line.length > 0
+    # areas never overlap
+    for i, a in enumerate(areas):
+        for b in areas[i + 1:]:
+            assert a.polygon.intersection(b.polygon).area < 1e-6, (a.id, b.id)
+
+
+def test_stair_core_open_onto_a_corridor_is_carved_and_the_corridor_stays():
+    """A 3 x 6 m stair core (walls on three sides) whose open side runs straight into a 2 m corridor: one
+    area. The flight and its landing up to the three walls become a stairs area; the corridor keeps its id,
+    its door and loses its 'stairs' type; one passage joins them across the core's open side."""
+    core_and_corridor = unary_union([box(0, 0, 3, 6), box(-10, 6, 13, 8)])
+    host = Area(id=1, polygon=core_and_corridor, type="stairs", name="")  # typed by the symbol density
+    room = Area(id=2, polygon=box(4, 0, 8, 5.8))
+    door = Passage(id=1, from_id=2, to_id=1, line=LineString([(5, 5.9), (6, 5.9)]))
+    geoms = _flight(0.2, 1.0, width=1.2, n=12) + _flight(1.6, 1.0, width=1.2, n=12)
+    areas, passages = [host, room], [door]
+    st = anchors.carve_anchors(areas, passages, geoms)
+    _graph_ok(areas, passages)
+    assert len(st["carved"]) == 1
+    stair = [a for a in areas if a.type == "stairs"]
+    assert len(stair) == 1
+    s = stair[0].polygon
+    # the whole core (to the walls on three sides), not the corridor
+    assert s.area == pytest.approx(18.0, rel=0.08), s.bounds
+    assert s.bounds[3] <= 6.0 + 1e-6
+    assert host.type == "room" and host.polygon.area == pytest.approx(46.0, rel=0.05)
+    sp = [p for p in passages if {p.from_id, p.to_id} == {stair[0].id, 1}]
+    assert len(sp) == 1 and sp[0].line.length == pytest.approx(3.0, abs=0.1)  # the core's open side at y = 6
+    assert door.to_id == 1  # the office door stays on the corridor
+
+
+def test_open_stair_in_an_atrium_becomes_an_island_area_with_passages_at_both_ends():
+    """A free-standing flight in a 20 x 14 m atrium: the stair (its treads' box) becomes a stairs area, the
+    atrium is cut from wall to wall through it (an area is one ring), and the stair's passages lie across
+    its first and last tread (never over its strings)."""
+    hall = Area(id=7, polygon=box(0, 0, 20, 14), type="room")
+    geoms = _flight(9.3, 4.0, width=1.4, n=12)
+    areas, passages = [hall], []
+    st = anchors.carve_anchors(areas, passages, geoms)
+    _graph_ok(areas, passages)
+    assert [c[0] for c in st["carved"]] == ["stairs"]
+    stair = [a for a in areas if a.type == "stairs"][0]
+    assert stair.polygon.area == pytest.approx(1.4 * 12 * 0.28, rel=0.1)
+    assert sum(a.polygon.area for a in areas) == pytest.approx(280.0, rel=1e-6)  # nothing lost
+    sp = [p for p in passages if stair.id in (p.from_id, p.to_id)]
+    assert sp
+    for p in sp:  # every stair passage is parallel to the treads (horizontal) at y = 4.0 or 7.36
+        (x0, y0), (x1, y1) = p.line.coords
+        assert abs(y1 - y0) < 1e-6 and min(abs(y0 - 4.0), abs(y0 - 7.36)) < 0.02
+    assert {round(p.line.coords[0][1], 1) for p in sp} == {4.0, 7.4}
+    # the atrium's pieces join each other where the cut runs through open floor
+    others = [a.id for a in areas if a.id != stair.id]
+    assert len(others) == 2 and any({p.from_id, p.to_id} == set(others) for p in passages)
+
+
+def test_lift_open_onto_a_corridor_is_carved_and_a_cross_in_a_hall_is_not():
+    """A 2.2 x 2.2 m shaft (walls on three sides) opens straight onto a corridor: its car with a cross
+    becomes an elevator area with a passage onto the corridor. A cross drawn in the middle of a hall (a
+    floor void) has no walls around it: no lift."""
+    corridor = Area(id=1, polygon=unary_union([box(0, 0, 30, 2.4), box(12, 2.4, 14.2, 4.6)]), type="corridor")
+    hall = Area(id=2, polygon=box(0, 10, 20, 24), type="room")
+    geoms = _cross(12.15, 2.65, 14.05, 4.45) + _cross(9, 16, 11, 18)
+    areas, passages = [corridor, hall], []
+    st = anchors.carve_anchors(areas, passages, geoms)
+    _graph_ok(areas, passages)
+    lifts = [a for a in areas if a.type == "elevator"]
+    assert len(lifts) == 1 and lifts[0].polygon.intersection(box(12, 2.4, 14.2, 4.6)).area >= 0.8 * 2.2 * 2.2
+    assert lifts[0].polygon.area <= 2.2 * 2.2 + 1e-6
+    assert hall.polygon.area == pytest.approx(280.0) and hall.type == "room"
+    assert st["skipped"].get("no walls around a lift cross") == 1
+    lp = [p for p in passages if lifts[0].id in (p.from_id, p.to_id)]
+    assert len(lp) == 1 and lp[0].line.length == pytest.approx(2.2, abs=0.3)
+    assert corridor.type == "corridor"
+
+
+def test_a_stair_that_is_its_own_area_is_left_alone_and_a_hall_is_never_carved_into_a_stair():
+    """An enclosed stair core already typed stairs, a lift shaft already typed elevator: nothing changes. A
+    small room that is mostly a stair is typed stairs, not carved. A large hall holding a flight keeps all
+    but the flight's footprint."""
+    core = Area(id=1, polygon=box(0, 0, 3, 6), type="stairs")
+    shaft = Area(id=2, polygon=box(5, 0, 7.2, 2.2), type="elevator")
+    closet = Area(id=3, polygon=box(10, 0, 12, 4.2), type="room")
+    hall = Area(id=4, polygon=box(20, 0, 60, 30), type="room")
+    geoms = _flight(0.2, 1.0, n=12) + _cross(5.2, 0.2, 7.0, 2.0) + _flight(10.2, 0.4, width=1.6, n=12)
+    geoms += _flight(40, 10, width=1.5, n=14)
+    areas, passages = [core, shaft, closet, hall], []
+    before = {a.id: (a.type, a.polygon.wkt) for a in areas}
+    st = anchors.carve_anchors(areas, passages, geoms)
+    _graph_ok(areas, passages)
+    for aid in (1, 2):
+        assert (areas[aid - 1].type, areas[aid - 1].polygon.wkt) == before[aid]
+    assert st["skipped"].get("already its own area") == 2
+    assert closet.type == "stairs" and closet.polygon.wkt == before[3][1] and ("stairs", 3) in st["typed"]
+    carved = [c for c in st["carved"] if c[2] == 4]
+    assert len(carved) == 1 and carved[0][3] <= 1.5 * 15 * 0.28 * 1.15  # the flight, not the hall
+    assert sum(a.polygon.area for a in areas if a.id not in (1, 2, 3)) == pytest.approx(1200.0)
+
+
+def test_no_symbols_no_change_and_cancel_is_honoured():
+    from algorithms.errors import Canceled
+    from algorithms.progress import RecordingProgress
+
+    hall = Area(id=1, polygon=box(0, 0, 10, 10))
+    st = anchors.carve_anchors([hall], [], [])
+    assert st["carved"] == [] and st["symbols"] == 0
+
+    class Cancelled(RecordingProgress):
+        def is_canceled(self):
+            return True
+
+    with pytest.raises(Canceled):
+        anchors.carve_anchors([hall], [], _flight(2, 2), progress=Cancelled())
+
+
+@pytest.fixture(scope="module")
+def open_anchors(tmp_path_factory):
+    from algorithms import pipeline, sample_building
+
+    info = sample_building.generate_open_anchors(str(tmp_path_factory.mktemp("open-anchors")))
+    return info, pipeline.process_floor(info["dxf"], carve=False), pipeline.process_floor(info["dxf"])
+
+
+def test_sample_open_stair_and_open_lift_become_typed_areas_with_passages(open_anchors):
+    """The synthetic plan (``sample_building.generate_open_anchors``): segmentation alone swallows the
+    open stair into the atrium and the door-less lift into the corridor; with the carve each is one typed
+    area, joined to the floor by passages, and every room keeps its name."""
+    info, plain, floor = open_anchors
+    assert not [a for a in plain.refined.areas if a.type in ("stairs", "elevator")]  # what the rule fixes
+    areas, passages = floor.refined.areas, floor.refined.passages
+    stairs = [a for a in areas if a.type == "stairs"]
+    lifts = [a for a in areas if a.type == "elevator"]
+    assert len(stairs) == 1 and len(lifts) == 1
+    gt_s, gt_l = info["stair"], info["lift"]
+    assert stairs[0].polygon.intersection(gt_s).area >= 0.9 * gt_s.area
+    assert stairs[0].polygon.area <= 1.25 * gt_s.area
+    assert lifts[0].polygon.intersection(gt_l).area >= 0.7 * gt_l.area
+    assert lifts[0].polygon.area <= 1.1 * gt_l.area
+    by_id = {a.id: a for a in areas}
+    s_pass = [p for p in passages if stairs[0].id in (p.from_id, p.to_id)]
+    l_pass = [p for p in passages if lifts[0].id in (p.from_id, p.to_id)]
+    assert len(s_pass) >= 2 and len(l_pass) == 1
+    other = l_pass[0].to_id if l_pass[0].from_id == lifts[0].id else l_pass[0].from_id
+    assert by_id[other].name == "CORRIDOIO" and by_id[other].type == "corridor"
+    names = {a.name for a in areas}
+    assert {"ATRIO", "CORRIDOIO", "UFFICIO EST", "UFFICIO NORD 1", "UFFICIO NORD 2"} <= names
+    # one connected floor
+    adj = {a.id: set() for a in areas}
+    for p in passages:
+        adj[p.from_id].add(p.to_id)
+        adj[p.to_id].add(p.from_id)
+    seen, todo = set(), [areas[0].id]
+    while todo:
+        k = todo.pop()
+        if k not in seen:
+            seen.add(k)
+            todo.extend(adj[k] - seen)
+    assert seen == set(adj)
+    # and the label raster shows them (preview, later raster stages)
+    lab = floor.refined.labels
+    assert (lab == stairs[0].id).sum() * floor.grid.resolution ** 2 == pytest.approx(stairs[0].polygon.area, rel=0.2)
+
+
+def test_carved_passages_are_nodes_of_both_areas_in_the_osmag_file(open_anchors, tmp_path):
+    """The osmAG writer makes each passage end a node of both areas' ways: the carved passages' ends lie on
+    both borders (no 'not on the border' warning), and the file reads back with every area and passage."""
+    from algorithms import osmag
+    from algorithms.georef import LocalFrame
+    from algorithms.progress import RecordingProgress
+
+    _info, _plain, floor = open_anchors
+    rec = RecordingProgress()
+    out = tmp_path / "open-anchors.osm"
+    osmag.write_osmag(str(out), floor.refined.areas, floor.refined.passages, frame=LocalFrame(0.0, 0.0), level="1",
+                      variant="fix-id", progress=rec)
+    assert not [m for k, m in rec.messages if "not on the border" in m]
+    areas, passages, _root, rep = osmag.read_osmag(str(out))
+    assert sum(a.type != "structure" for a in areas) == len(floor.refined.areas)
+    assert len(passages) == len(floor.refined.passages) and rep["dangling_refs"] == []
+    assert sorted(a.type for a in areas if a.type in ("stairs", "elevator")) == ["elevator", "stairs"]
+
+
+@pytest.mark.qgis_process
+def test_dxftoosmag_headless_carves_the_open_stair_and_lift(tmp_path):
+    """``cad2osmag:dxftoosmag`` through qgis_process on the open-anchors sample: the osmAG file holds one
+    stairs and one elevator area, each joined by passages, and the log says what was carved."""
+    from algorithms import osmag, sample_building
+
+    from .qgis_process import run_alg
+
+    info = sample_building.generate_open_anchors(str(tmp_path))
+    out = tmp_path / "open-anchors.osm"
+    _, res, log = run_alg("dxftoosmag", {"INPUT": info["dxf"], "OUTPUT": str(out), "LEVEL": 1})
+    assert "stair/lift area(s) carved out" in log
+    areas, passages, _root, report = osmag.read_osmag(str(out))
+    typed = [a for a in areas if a.type in ("stairs", "elevator")]
+    assert sorted(a.type for a in typed) == ["elevator", "stairs"]
+    for a in typed:
+        assert any(a.id in (p.from_id, p.to_id) for p in passages), a.name
+    assert report["dangling_refs"] == [] and res["AREA_COUNT"] == len(areas) - 1
