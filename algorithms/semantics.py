@@ -87,6 +87,10 @@ class NameRules:
     # the largest area (m²) a stair / lift code or keyword may type as stairs / elevator (a stair core, a
     # lift shaft or group; an atrium holding an open stair stays what it is)
     vertical_max_area: Dict[str, float] = field(default_factory=lambda: {"stairs": 80.0, "elevator": 40.0})
+    # MEP shafts (水井, 加压, shaft, cavedio): closed cavities of the walls, labelled in or beside the cavity
+    shaft_keywords: List[str] = field(default_factory=list)
+    # outdoor labels (室外…, 排水暗沟, lawn): name no indoor space when they lie outside every area
+    outdoor_keywords: List[str] = field(default_factory=list)
 
     def __post_init__(self):
         # keyword -> (type entry) sorted longest first: the longest keyword found in a name wins
@@ -164,7 +168,8 @@ def load_name_rules(path: Optional[str] = None) -> NameRules:
                      callout=re.compile(data["callout"], re.IGNORECASE) if data.get("callout") else None,
                      callout_tail=re.compile(data["callout_tail"], re.IGNORECASE) if data.get("callout_tail") else None,
                      weak_name_layers=words("weak_name_layers"),
-                     vertical_max_area=vmax)
+                     vertical_max_area=vmax, shaft_keywords=words("shaft_keywords"),
+                     outdoor_keywords=words("outdoor_keywords"))
 
 
 _DEFAULT: Optional[NameRules] = None
@@ -485,7 +490,36 @@ def classify_labels(texts: Sequence[CadText], rules=None) -> List[Label]:
             out.append(replace(lab, text=parts[1], role="number", reason="code after the name"))
             continue
         out.append(lab)
-    return out
+    return _merge_copies(out)
+
+
+def _merge_copies(labels: List[Label]) -> List[Label]:
+    """One label drawn twice is one label: a room tag block inserted twice (an xref bound twice, a copy
+    pasted in place: every tag of library sheet A-A3-10-04 is there twice) or the same name copied to a
+    layer for another print scale ('大厅' on 'I—平面—文字' and, shifted by a line and at half the height,
+    on 'I—平面—文字（放大1：100）' on SIST-F1). Names and numbers with the same text count once when
+    their insertion points are within a quarter of the text height, or, on different layers, within twice
+    the larger height; the copy's ids join the first label."""
+    keep: List[Label] = []
+    seen: Dict[Tuple[str, str], List[Label]] = {}
+    for lab in labels:
+        if lab.role not in ("name", "number") or not (math.isfinite(lab.x) and math.isfinite(lab.y)):
+            keep.append(lab)
+            continue
+        key = (lab.role, _key(lab.text))
+        twin = None
+        for o in seen.get(key, []):
+            d = math.hypot(lab.x - o.x, lab.y - o.y)
+            h = max(lab.height, o.height, 0.0)
+            if d <= max(0.25 * h, 1e-3) or (lab.layer != o.layer and d <= 2.0 * h):
+                twin = o
+                break
+        if twin is not None:
+            twin.ids = list(dict.fromkeys(twin.ids + lab.ids))
+            continue
+        seen.setdefault(key, []).append(lab)
+        keep.append(lab)
+    return keep
 
 
 def room_name_points(texts: Sequence[CadText], rules=None) -> List[Tuple[float, float, str]]:
@@ -705,6 +739,7 @@ def assign_names(areas: List[Area], texts: Sequence[CadText], level="1", rules=N
         room = [r for r in records if r.role in ("name", "number")]
         _place_records(room, index, best_by_area, rules, rho_max, d_max, inside_first, progress)
     progress.step(50, "naming areas")
+    _demote_shafts_and_outdoor(best_by_area, records, rules)
     by_id = {a.id: a for a in areas}
     # ---- split areas holding several different names
     if split:
@@ -867,12 +902,20 @@ def _place_records(room: Sequence["TextRecord"], index, best_by_area: Dict[int, 
                 s, how = score(r.x, r.y, polys[i], cents[i], rho_max=rho_max, d_max=d_max)
             except Exception:  # GEOS on an invalid polygon: this area is no candidate
                 continue
-            if inside_first and how == "inside":
+            if how != "inside" and _on_island(polys[i], p):
+                # written on a pillar or a piece of furniture standing free in the room (a small hole of
+                # the area): inside the room, ranked after an area that holds the point itself
+                s, how = _island_score(r.x, r.y, polys[i], cents[i], rho_max), "inside"
+                if inside_first:
+                    s += 500.0
+            elif inside_first and how == "inside":
                 s += 1000.0  # a text inside an area is that area's (nearby scores only for texts outside)
             if s > best[0]:
                 best = (s, i, how)
         if best[0] > 1000.0:
             best = (best[0] - 1000.0, best[1], best[2])
+        elif best[0] > 500.0 and inside_first:
+            best = (best[0] - 500.0, best[1], best[2])
         if vtype and (best[1] is None or polys[best[1]].area > _max_area(rules, vtype)
                       or areas_ok[best[1]].type == "corridor"
                       or (only is not None and not only(areas_ok[best[1]].id))):
@@ -884,6 +927,64 @@ def _place_records(room: Sequence["TextRecord"], index, best_by_area: Dict[int, 
             best_by_area.setdefault(a.id, []).append(r)
     if deferred:
         _place_vertical(deferred, index, best_by_area, rules, rho_max, d_max, only_vertical or only)
+
+
+ISLAND_MAX_M2 = 4.0  # the largest hole of an area a label may sit on and still be in the area (a pillar, a desk)
+
+
+def _on_island(poly, p: Point) -> bool:
+    """p lies in a small hole of ``poly`` (at most ISLAND_MAX_M2): on an obstacle standing free inside it."""
+    if poly.geom_type != "Polygon" or not poly.interiors:
+        return False
+    from shapely.geometry import Polygon
+
+    for ring in poly.interiors:
+        h = Polygon(ring)
+        if h.area <= ISLAND_MAX_M2 and h.covers(p):
+            return True
+    return False
+
+
+def _island_score(px, py, poly, cent, rho_max) -> float:
+    S = math.sqrt(float(poly.area) / math.pi)
+    rho = math.hypot(px - cent.x, py - cent.y) / max(S, 1e-9)
+    s = 100.0 - 50.0 * rho if rho <= rho_max else 50.0 - 25.0 * (rho - rho_max)
+    return max(s, 1.0)
+
+
+def _matches(words: Sequence[str], text: str) -> bool:
+    low = normalize_text(text).casefold()
+    return any(_keyword_regex(w).search(low) for w in words)
+
+
+def _demote_shafts_and_outdoor(best_by_area: Dict[int, List[TextRecord]], records: Sequence[TextRecord],
+                               rules: NameRules) -> None:
+    """Two kinds of name that name no space of the indoor map where they are written:
+
+    * an MEP shaft label (水井, 风井, 加压, shaft, cavedio) written outside every area, or in (beside) an
+      area that another, non-shaft name labels from inside: the shaft is a closed cavity of the wall,
+      too small to hold its label (library sheets write '加压' in the hall beside the pressurisation
+      shafts, SIST-F1 '水井' in the laboratory beside its shaft) -> ignored, 'shaft label';
+    * an outdoor label (室外庭院, 排水暗沟, lawn) outside every area -> ignored, 'outdoor'.
+
+    A shaft segmentation made an area of, holding its own label, keeps it as its name."""
+    shaft = rules.shaft_keywords
+    outdoor = rules.outdoor_keywords
+    if not shaft and not outdoor:
+        return
+    for r in records:
+        if r.role != "name" or r.hidden:
+            continue
+        if shaft and _matches(shaft, r.text):
+            if r.area_id is None:
+                r.role, r.reason = "ignored", "shaft label"
+                continue
+            others = [o for o in best_by_area.get(r.area_id, []) if o is not r and o.role == "name"
+                      and o.match == "inside" and not _matches(shaft, o.text)]
+            if others:
+                r.role, r.reason = "ignored", "shaft label"
+        elif outdoor and r.match != "inside" and _matches(outdoor, r.text):
+            r.role, r.reason = "ignored", "outdoor"
 
 
 def _place_vertical(deferred, index, best_by_area, rules, rho_max, d_max, allow=None) -> None:

@@ -510,3 +510,78 @@ def test_detail_callouts_name_the_nearest_stair_never_the_corridor():
     assert corridor.name == "走道" and corridor.type == "corridor" and not corridor.ref
     assert far_stair.ref == ""  # 15 m away: the callout is left unassigned (counted outside)
     assert rep.counts()["outside"] == 1
+
+
+# ------------------------------------------------------------------ texts that name no space where they lie
+def test_a_label_drawn_twice_is_one_label():
+    # a room-tag block inserted twice at the same point (library sheets: every tag twice)
+    tag = dict(layer="A-SYMB", entity="ATTRIB", block="ECADI-TAG-ROOM", tag="CHINESENAME", h=0.45)
+    labs = S.classify_labels([T("前室", 3, 2, id=1, **tag), T("前室", 3, 2, id=2, **tag)])
+    assert [(l.text, l.ids) for l in labs] == [("前室", [1, 2])]
+    # the same name copied to a layer for another print scale: shifted by a line, half the height (SIST-F1)
+    labs = S.classify_labels([T("大厅", 10.0, 5.0, layer="I-平面-文字", h=0.6, id=3),
+                              T("大厅", 10.26, 5.95, layer="I-平面-文字(放大1:100)", h=0.3, id=4)])
+    assert [l.ids for l in labs] == [[3, 4]]
+    # two rooms of one name side by side stay two labels; so does one name repeated along a long space
+    labs = S.classify_labels([T("WC", 1, 1, h=0.3, id=5), T("WC", 2.2, 1, h=0.3, id=6),
+                              T("中庭回廊", 0, 0, h=0.45, id=7), T("中庭回廊", 12, 3, h=0.45, id=8)])
+    assert len(labs) == 4
+    # and the figures count the label once: one name, naming its area
+    areas = [Area(id=1, polygon=box(0, 0, 6, 5))]
+    rep = S.assign_names(areas, [T("前室", 3, 2, id=1, **tag), T("前室", 3, 2, id=2, **tag)])
+    fig = S.floor_figures(areas, [], rep)
+    assert fig["room_texts"] == 1 and fig["own_area_pct"] == 100.0 and areas[0].tags["label_texts"] == "1;2"
+
+
+def test_a_label_on_a_pillar_is_inside_its_room():
+    # the name's insertion point falls on a pillar (a small hole of the room): inside the room, not nearby
+    room = box(0, 0, 6, 5).difference(box(2.8, 2.3, 3.3, 2.8))
+    areas = [Area(id=1, polygon=room), Area(id=2, polygon=box(6.2, 0, 9, 5))]
+    rep = S.assign_names(areas, [T("AMBIENTE 15", 3.0, 2.5)])
+    assert areas[0].name == "AMBIENTE 15" and rep.texts[0].match == "inside"
+    assert S.floor_figures(areas, [], rep)["inside_pct"] == 100.0
+    # a courtyard (a large hole) is no pillar: a label in it lies outside the ring around it
+    ring = box(0, 0, 20, 20).difference(box(4, 4, 16, 16))
+    areas = [Area(id=1, polygon=ring)]
+    rep = S.assign_names(areas, [T("Patio", 10, 10)])
+    assert rep.texts[0].match != "inside"
+    # an area standing in the hole keeps its own label
+    areas = [Area(id=1, polygon=box(0, 0, 6, 5).difference(box(2, 2, 3.5, 3.5))),
+             Area(id=2, polygon=box(2, 2, 3.5, 3.5))]
+    S.assign_names(areas, [T("Lift lobby", 2.8, 2.8)])
+    assert areas[1].name == "Lift lobby" and areas[0].name != "Lift lobby"
+
+
+def test_shaft_labels_beside_a_room_are_no_conflict():
+    # '加压' (pressurisation shaft) written in the hall beside its shaft, a closed cavity of the wall
+    areas = [Area(id=1, polygon=box(0, 0, 20, 15)), Area(id=2, polygon=box(0, 15, 4, 19))]
+    texts = [T("媒体实验室", 10, 10, layer="A-ROOM"), T("加压", 9, 2.5, layer="A-ROOM"),
+             T("水井", 30, 30, layer="A-ROOM"), T("Shaft", 2, 17), T("电梯厅", 2, 18)]
+    pr = RecordingProgress()
+    rep = S.assign_names(areas, texts, progress=pr)
+    assert areas[0].name == "媒体实验室" and "label_conflict" not in areas[0].tags and not rep.conflicts
+    reasons = {r.text: (r.role, r.reason) for r in rep.texts}
+    assert reasons["加压"] == ("ignored", "shaft label") and reasons["水井"] == ("ignored", "shaft label")
+    assert rep.counts()["ignored_by_reason"]["shaft label"] == 3
+    assert areas[1].name == "电梯厅"  # the lift lobby's name wins over the shaft beside it
+    # a shaft segmentation made an area of keeps its label
+    areas = [Area(id=1, polygon=box(0, 0, 2, 2)), Area(id=2, polygon=box(2.2, 0, 9, 5))]
+    rep = S.assign_names(areas, [T("风井", 1, 1), T("办公室", 5, 2.5)])
+    assert areas[0].name == "风井" and rep.texts[0].role == "name"
+
+
+def test_outdoor_and_roof_labels_are_no_room_names():
+    areas = [Area(id=1, polygon=box(0, 0, 10, 8))]
+    rep = S.assign_names(areas, [T("室外庭院", 30, 3), T("排水暗沟", 40, 3), T("办公室", 5, 4)])
+    reasons = {r.text: (r.role, r.reason) for r in rep.texts}
+    assert reasons["室外庭院"] == ("ignored", "outdoor") == reasons["排水暗沟"]
+    fig = S.floor_figures(areas, [], rep)
+    assert fig["room_texts"] == 1 and fig["inside_pct"] == 100.0
+    # a courtyard segmentation made an area of keeps its name
+    areas = [Area(id=1, polygon=box(0, 0, 10, 8))]
+    rep = S.assign_names(areas, [T("室外庭院", 5, 4)])
+    assert areas[0].name == "室外庭院" and rep.texts[0].role == "name"
+    # roof plans label building elements, not rooms ('scroll slanted wall, top face', parapet, gutter)
+    tag = dict(layer="A-SYMB", block="ECADI-TAG-ROOM", tag="CHINESENAME")
+    for text in ("卷轴斜墙顶面", "女儿墙", "天沟"):
+        assert S.classify_text(text, **tag) == ("ignored", "note"), text
