@@ -373,6 +373,7 @@ class Label:
     tag: str
     role: str = ""
     reason: str = ""
+    alts: List[Tuple[float, float]] = field(default_factory=list)  # where copies of it are drawn
 
 
 def _text_id(t: CadText, k: int) -> int:
@@ -499,7 +500,8 @@ def _merge_copies(labels: List[Label]) -> List[Label]:
     layer for another print scale ('大厅' on 'I—平面—文字' and, shifted by a line and at half the height,
     on 'I—平面—文字（放大1：100）' on SIST-F1). Names and numbers with the same text count once when
     their insertion points are within a quarter of the text height, or, on different layers, within twice
-    the larger height; the copy's ids join the first label."""
+    the larger height; the copy's ids join the first label and its position is kept as an alternative
+    (``Label.alts``: the label is where its best-placed copy is)."""
     keep: List[Label] = []
     seen: Dict[Tuple[str, str], List[Label]] = {}
     for lab in labels:
@@ -516,6 +518,7 @@ def _merge_copies(labels: List[Label]) -> List[Label]:
                 break
         if twin is not None:
             twin.ids = list(dict.fromkeys(twin.ids + lab.ids))
+            twin.alts.append((lab.x, lab.y))
             continue
         seen.setdefault(key, []).append(lab)
         keep.append(lab)
@@ -527,8 +530,12 @@ def room_name_points(texts: Sequence[CadText], rules=None) -> List[Tuple[float, 
     uses them as evidence that the space around them is inside the building. Door and window tags of
     tag blocks ('1522' in ECADI-TAG-DOOR) are no names but mark the building's doorways: they count as
     evidence too (without them SIST-F3's largest component fell from 98 % to 80 % of the floor)."""
-    return [(lab.x, lab.y, lab.text) for lab in classify_labels(texts, rules)
-            if lab.role in ("name", "number") or lab.reason == "door/window code (block)"]
+    out = []
+    for lab in classify_labels(texts, rules):
+        if lab.role in ("name", "number") or lab.reason == "door/window code (block)":
+            out.append((lab.x, lab.y, lab.text))
+            out.extend((x, y, lab.text) for x, y in lab.alts)  # every copy of a label drawn twice
+    return out
 
 
 PROTECTED_TYPE = "room:labelled"  # temporary type that keeps refinement from merging a labelled small room
@@ -601,6 +608,7 @@ class TextRecord:
     score: float = 0.0
     match: str = ""  # inside | nearby | "" (outside every area)
     hidden: bool = False  # on a frozen / off layer (CadDrawing.hidden_texts)
+    alts: List[Tuple[float, float]] = field(default_factory=list)  # copies of the label drawn elsewhere
 
 
 @dataclass
@@ -727,7 +735,7 @@ def assign_names(areas: List[Area], texts: Sequence[CadText], level="1", rules=N
     level = str(level).strip() or "1"
     progress.step(0, "classifying texts")
     labs = classify_labels(list(texts or []), rules)
-    records = [TextRecord(l.ids, l.text, l.x, l.y, l.layer, l.role, l.reason) for l in labs]
+    records = [TextRecord(l.ids, l.text, l.x, l.y, l.layer, l.role, l.reason, alts=list(l.alts)) for l in labs]
     report.texts = records
     areas_ok = [a for a in areas if a.polygon is not None and not a.polygon.is_empty and a.polygon.area > 0
                 and a.type != "structure"]
@@ -770,7 +778,8 @@ def assign_names(areas: List[Area], texts: Sequence[CadText], level="1", rules=N
     # ---- texts of frozen / off layers: names for areas that no visible text names
     if hidden_texts:
         hl = [l for l in classify_labels(list(hidden_texts), rules) if l.role in ("name", "number")]
-        report.hidden = [TextRecord(l.ids, l.text, l.x, l.y, l.layer, l.role, l.reason, hidden=True) for l in hl]
+        report.hidden = [TextRecord(l.ids, l.text, l.x, l.y, l.layer, l.role, l.reason, hidden=True, alts=list(l.alts))
+                       for l in hl]
         # scored against every area (a hidden text inside a named room must not drift to its neighbour),
         # kept only where the best area has no visible name or number
         cand = [a for a in areas if a.polygon is not None and not a.polygon.is_empty and a.polygon.area > 0
@@ -886,6 +895,7 @@ def _place_records(room: Sequence["TextRecord"], index, best_by_area: Dict[int, 
     stair), go to ``_place_vertical`` instead (``only_vertical``: its extra eligibility predicate)."""
     areas_ok, polys, tree, cents = index
     deferred = []
+    placed_copies = []
     for n, r in enumerate(room):
         if progress is not None and n % 200 == 0:
             progress.step(15 + 35 * n / max(1, len(room)))
@@ -895,23 +905,17 @@ def _place_records(room: Sequence["TextRecord"], index, best_by_area: Dict[int, 
         if vtype and r.reason == "callout":
             deferred.append((r, vtype))
             continue
-        p = Point(r.x, r.y)
-        best = (0.0, None, "")
-        for i in sorted(tree.query(p, predicate="dwithin", distance=d_max).tolist()):
-            try:
-                s, how = score(r.x, r.y, polys[i], cents[i], rho_max=rho_max, d_max=d_max)
-            except Exception:  # GEOS on an invalid polygon: this area is no candidate
-                continue
-            if how != "inside" and _on_island(polys[i], p):
-                # written on a pillar or a piece of furniture standing free in the room (a small hole of
-                # the area): inside the room, ranked after an area that holds the point itself
-                s, how = _island_score(r.x, r.y, polys[i], cents[i], rho_max), "inside"
-                if inside_first:
-                    s += 500.0
-            elif inside_first and how == "inside":
-                s += 1000.0  # a text inside an area is that area's (nearby scores only for texts outside)
-            if s > best[0]:
-                best = (s, i, how)
+        # a label drawn twice (``_merge_copies``) is where its best-placed copy is
+        best, best_xy = (0.0, None, ""), (r.x, r.y)
+        copies = []
+        for xy in [(r.x, r.y)] + [q for q in r.alts if math.isfinite(q[0]) and math.isfinite(q[1])]:
+            cand = _best_area(xy[0], xy[1], polys, tree, cents, rho_max, d_max, inside_first)
+            copies.append((cand, xy))
+            if cand[0] > best[0]:
+                best, best_xy = cand, xy
+        if len(copies) > 1:
+            placed_copies.append((r, copies))
+        r.x, r.y = best_xy
         if best[0] > 1000.0:
             best = (best[0] - 1000.0, best[1], best[2])
         elif best[0] > 500.0 and inside_first:
@@ -925,8 +929,57 @@ def _place_records(room: Sequence["TextRecord"], index, best_by_area: Dict[int, 
             a = areas_ok[best[1]]
             r.area_id, r.score, r.match = a.id, round(best[0], 2), best[2]
             best_by_area.setdefault(a.id, []).append(r)
+    _settle_copies(placed_copies, areas_ok, best_by_area, inside_first, only)
     if deferred:
         _place_vertical(deferred, index, best_by_area, rules, rho_max, d_max, only_vertical or only)
+
+
+def _settle_copies(placed_copies, areas_ok, best_by_area, inside_first: bool, only=None) -> None:
+    """A name drawn twice whose best-placed copy landed in an area another name labels, while another
+    copy lies in (or beside) an area no name labels, names that area: the copies of SIST-F4's '女卫生间'
+    are 1 m apart, one in the corridor-side area of the next room, one in the WC itself."""
+    for r, copies in placed_copies:
+        if r.role != "name" or r.area_id is None:
+            continue
+        cur = r.area_id
+        if not any(o is not r and o.role == "name" and _key(o.text) != _key(r.text) for o in best_by_area.get(cur, [])):
+            continue
+        for (sc, i, how), xy in sorted(copies, key=lambda c: -c[0][0]):
+            if i is None or areas_ok[i].id == cur or (only is not None and not only(areas_ok[i].id)):
+                continue
+            if any(o.role == "name" for o in best_by_area.get(areas_ok[i].id, [])):
+                continue
+            best_by_area[cur].remove(r)
+            if sc > 1000.0:
+                sc -= 1000.0
+            elif sc > 500.0 and inside_first:
+                sc -= 500.0
+            r.area_id, r.score, r.match = areas_ok[i].id, round(sc, 2), how
+            r.x, r.y = xy
+            best_by_area.setdefault(r.area_id, []).append(r)
+            break
+
+
+def _best_area(x, y, polys, tree, cents, rho_max, d_max, inside_first):
+    """(score with the inside bonus, index, how) of the best area for the point (x, y)."""
+    p = Point(x, y)
+    best = (0.0, None, "")
+    for i in sorted(tree.query(p, predicate="dwithin", distance=d_max).tolist()):
+        try:
+            s, how = score(x, y, polys[i], cents[i], rho_max=rho_max, d_max=d_max)
+        except Exception:  # GEOS on an invalid polygon: this area is no candidate
+            continue
+        if how != "inside" and _on_island(polys[i], p):
+            # written on a pillar or a piece of furniture standing free in the room (a small hole of
+            # the area): inside the room, ranked after an area that holds the point itself
+            s, how = _island_score(x, y, polys[i], cents[i], rho_max), "inside"
+            if inside_first:
+                s += 500.0
+        elif inside_first and how == "inside":
+            s += 1000.0  # a text inside an area is that area's (nearby scores only for texts outside)
+        if s > best[0]:
+            best = (s, i, how)
+    return best
 
 
 ISLAND_MAX_M2 = 4.0  # the largest hole of an area a label may sit on and still be in the area (a pillar, a desk)
@@ -953,8 +1006,10 @@ def _island_score(px, py, poly, cent, rho_max) -> float:
 
 
 def _matches(words: Sequence[str], text: str) -> bool:
+    """A keyword occurs in ``text``; a keyword written '=水' must be the whole text (a one-character shaft
+    label '水' beside the shaft, while '水泵房' is a pump room)."""
     low = normalize_text(text).casefold()
-    return any(_keyword_regex(w).search(low) for w in words)
+    return any((low == w[1:].strip()) if w.startswith("=") else bool(_keyword_regex(w).search(low)) for w in words)
 
 
 def _demote_shafts_and_outdoor(best_by_area: Dict[int, List[TextRecord]], records: Sequence[TextRecord],
