@@ -585,3 +585,33 @@ def test_outdoor_and_roof_labels_are_no_room_names():
     tag = dict(layer="A-SYMB", block="ECADI-TAG-ROOM", tag="CHINESENAME")
     for text in ("卷轴斜墙顶面", "女儿墙", "天沟"):
         assert S.classify_text(text, **tag) == ("ignored", "note"), text
+
+
+def test_copies_of_a_label_name_the_area_no_other_name_labels():
+    # 'WC' drawn at 0.6 m and copied at 0.3 m one line up on a 1:100 layer; the first copy falls in the
+    # office next door (near its centre), the other in the WC: the WC is named, the office keeps its name
+    areas = [Area(id=1, polygon=box(0, 0, 4, 4)), Area(id=2, polygon=box(4.2, 0, 7, 4))]
+    texts = [T("Office", 2, 2.6, layer="A-ROOM", h=0.6), T("WC", 3.5, 1.9, layer="A-TEXT", h=0.6),
+             T("WC", 4.5, 2.2, layer="A-TEXT-100", h=0.3)]
+    rep = S.assign_names(areas, texts)
+    assert [a.name for a in areas] == ["Office", "WC"] and not rep.conflicts
+    fig = S.floor_figures(areas, [], rep)
+    assert fig["room_texts"] == 2 and fig["own_area_pct"] == 100.0 and fig["inside_pct"] == 100.0
+    # segmentation still gets every copy as evidence of the inside
+    assert len(S.room_name_points(texts)) == 3
+
+
+@pytest.mark.parametrize("text,reason", [("18.750(结构)", "elevation"), ("+19.700（建筑）", "elevation"),
+                                         ("外部参照.\\E-RT-3F .dwg", "cad internals"), ("E-RG-2F.dwg", "cad internals")])
+def test_structural_elevations_and_xref_names_are_ignored(text, reason):
+    assert S.classify_text(text, layer="I-平面-文字", block="ROOMBLOCK") == ("ignored", reason)
+
+
+def test_one_character_shaft_labels():
+    # '水' / '暖' beside the water / heating shaft, in the WC next to it: no name of the WC
+    areas = [Area(id=1, polygon=box(0, 0, 4, 3)), Area(id=2, polygon=box(4.2, 0, 5.2, 1))]
+    rep = S.assign_names(areas, [T("女卫生间", 2, 1.5), T("水", 3.6, 0.4), T("暖", 4.7, 0.5)])
+    assert areas[0].name == "女卫生间" and not rep.conflicts
+    assert {r.text: r.reason for r in rep.texts}["水"] == "shaft label"
+    assert areas[1].name == "暖"  # the heating shaft is an area of its own: its label names it
+    assert S.classify_text("水泵房")[0] == "name"  # a pump room is a room
