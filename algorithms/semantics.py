@@ -61,6 +61,11 @@ RHO_MAX = 0.7
 D_MAX = 2.2  # metres
 CALLOUT_REACH = 8.0  # metres from a stair/lift detail callout to the stair or lift it names
 NARROWING_RATIO = 0.6  # a split cut must be at most this share of the narrower piece's width
+MAX_SPLIT_ROUNDS = 4  # an area and its pieces are split at most this many times
+DOOR_HALF_WIDTH = 1.4  # metres: clearance thresholds up to half the widest door seed every core
+WIDE_OPENING_HALF_WIDTH = 3.0  # beyond, up to this half-width (6 m openings), only the named cores seed
+SPLIT_THRESHOLDS = tuple(np.round(np.concatenate([np.arange(0.2, DOOR_HALF_WIDTH + 0.01, 0.1),
+                                                  np.arange(DOOR_HALF_WIDTH + 0.2, WIDE_OPENING_HALF_WIDTH + 0.01, 0.2)]), 2))
 LABEL_FIELDS = ("label_score", "label_texts", "label_conflict")
 ROLES = ("name", "number", "ignored")
 
@@ -751,11 +756,17 @@ def assign_names(areas: List[Area], texts: Sequence[CadText], level="1", rules=N
     by_id = {a.id: a for a in areas}
     # ---- split areas holding several different names
     if split:
-        for aid in sorted(best_by_area):
-            recs = best_by_area[aid]
+        # a piece still holding two names is split again (a hall with a lift lobby at one end and a round
+        # room opening onto it: the corridor comes off at a doorway, the round room at its wide opening)
+        queue = sorted(best_by_area)
+        rounds: Dict[int, int] = {}
+        while queue:
+            aid = queue.pop(0)
+            recs = best_by_area.get(aid, [])
             names = {_key(r.text): r for r in reversed(_competing(recs))}
-            if len(names) < 2:
+            if len(names) < 2 or rounds.get(aid, 0) >= MAX_SPLIT_ROUNDS:
                 continue
+            rounds[aid] = rounds.get(aid, 0) + 1
             a = by_id[aid]
             if a.type in ("stairs", "elevator"):
                 continue
@@ -775,6 +786,10 @@ def assign_names(areas: List[Area], texts: Sequence[CadText], level="1", rules=N
                 report.new_passages.extend(pieces[0].tags.pop("_new_passages", []))
                 progress.info(f"area {aid} held {len(names)} room names ({', '.join(r.text for r in names.values())}); "
                               f"split along the narrowing between them into areas {[p.id for p in pieces]}")
+                for p in pieces:
+                    rounds.setdefault(p.id, rounds[aid])
+                    if len({_key(r.text) for r in _competing(best_by_area[p.id])}) >= 2:
+                        queue.append(p.id)
     # ---- texts of frozen / off layers: names for areas that no visible text names
     if hidden_texts:
         hl = [l for l in classify_labels(list(hidden_texts), rules) if l.role in ("name", "number")]
@@ -1286,7 +1301,7 @@ def _split_area(a: Area, recs: List[TextRecord], names: Dict[str, TextRecord], g
         seeds[k].append((ri, ci))
     min_core_px = 2.0 / (res * res)
     found = None
-    for t in np.arange(0.2, 1.41, 0.1):
+    for t in SPLIT_THRESHOLDS:
         core = clearance > t
         comp, n = ndimage.label(core)
         if n < 2:
@@ -1302,29 +1317,39 @@ def _split_area(a: Area, recs: List[TextRecord], names: Dict[str, TextRecord], g
                     continue
                 if cr is None:
                     cr, cc_ = np.nonzero(core)
+                if not len(cr):
+                    break
                 j = int(np.argmin((cr - pr) ** 2 + (cc_ - pc) ** 2))
                 cs.add(int(comp[cr[j], cc_[j]]))
-            owner[k] = min(cs)
-        if len(set(owner.values())) >= 2:
-            found = (t, comp, n, owner)
-            break
+            if cs:
+                owner[k] = min(cs)
+        if len(set(owner.values())) < 2:
+            continue
+        if t <= DOOR_HALF_WIDTH:
+            # doorway-wide narrowings: every core is a space (a corridor joining two rooms is its own area)
+            sizes = ndimage.sum(np.ones_like(comp), comp, index=np.arange(1, n + 1))
+            keep = {i + 1 for i, sz in enumerate(sizes) if sz >= min_core_px} | set(owner.values())
+        else:
+            # wider openings (an arch, the open front of a round room onto a hall): only the named cores
+            # seed, so that the hall is not cut into the pieces its columns and bays make at this scale
+            keep = set(owner.values())
+        markers = np.where(np.isin(comp, list(keep)), comp, 0).astype(np.int32)
+        # every pixel goes to the core nearest along the floor (a watershed of the clearance leaked: its
+        # ties let a corridor's flood run through the door along every wall of the hall behind it)
+        reg = _geodesic_regions(markers, inside)
+        reg[~inside] = 0
+        present = [k for k in sorted(keep) if (reg == k).any()]
+        if len(present) < 2:
+            continue
+        # the opening must be clearly narrower than every piece; if not, a wider threshold may still
+        # find the narrowing between the names (the first separation can be a bay of one room)
+        if any(2 * t > NARROWING_RATIO * 2.0 * float(clearance[reg == k].max()) for k in present):
+            continue
+        found = (t, reg, present, owner)
+        break
     if found is None:
         return None
-    t, comp, n, owner = found
-    sizes = ndimage.sum(np.ones_like(comp), comp, index=np.arange(1, n + 1))
-    keep = {i + 1 for i, sz in enumerate(sizes) if sz >= min_core_px} | set(owner.values())
-    markers = np.where(np.isin(comp, list(keep)), comp, 0).astype(np.int32)
-    cost = np.full((rows, cols), 65535, np.uint16)
-    cmax = max(float(clearance.max()), 1e-9)
-    cost[inside] = np.round(60000 * (1.0 - clearance[inside] / cmax)).astype(np.uint16)
-    reg = ndimage.watershed_ift(cost, markers)
-    reg[~inside] = 0
-    present = [k for k in sorted(keep) if (reg == k).any()]
-    if len(present) < 2:
-        return None
-    for k in present:  # the opening must be clearly narrower than every piece
-        if 2 * t > NARROWING_RATIO * 2.0 * float(clearance[reg == k].max()):
-            return None
+    t, reg, present, owner = found
     # cells tiling the window: every pixel takes the region of the nearest area pixel
     _, (ir, ic) = ndimage.distance_transform_edt(reg == 0, return_indices=True)
     cells = reg[ir, ic].astype(np.int32)
@@ -1358,6 +1383,27 @@ def _split_area(a: Area, recs: List[TextRecord], names: Dict[str, TextRecord], g
             pieces[j] = (merged, pieces[j][1])
     pieces = _straighten(pieces, res)
     return _finish(a, pieces, areas, passages, labels, grid, recs, t)
+
+
+def _geodesic_regions(markers: np.ndarray, inside: np.ndarray, max_iter: int = 5000) -> np.ndarray:
+    """Each pixel of ``inside`` takes the label of the marker nearest to it along ``inside`` (growth of
+    one pixel per round, ties to the larger label)."""
+    import cv2
+
+    if int(markers.max()) >= 65535:
+        return markers.copy()
+    lab = markers.astype(np.uint16)
+    # cross and square steps alternate: an octagonal metric, close to the Euclidean one
+    kernels = (cv2.getStructuringElement(cv2.MORPH_CROSS, (3, 3)), np.ones((3, 3), np.uint8))
+    todo = inside & (lab == 0)
+    for it in range(max_iter):
+        grown = cv2.dilate(lab, kernels[it % 2])
+        new = todo & (grown > 0)
+        if not new.any():
+            break
+        lab[new] = grown[new]
+        todo &= ~new
+    return lab.astype(np.int32)
 
 
 def _straighten(pieces, res: float):

@@ -615,3 +615,27 @@ def test_one_character_shaft_labels():
     assert {r.text: r.reason for r in rep.texts}["水"] == "shaft label"
     assert areas[1].name == "暖"  # the heating shaft is an area of its own: its label names it
     assert S.classify_text("水泵房")[0] == "name"  # a pump room is a room
+
+
+def test_three_names_split_in_rounds_at_a_door_and_at_a_wide_opening():
+    # a 20 x 14 m hall; a 10 x 10 m room opens onto it through a 4.5 m wide opening (wider than any door);
+    # a 2 m corridor is joined to the hall by a 1 m door. Three names: the corridor comes off first (at
+    # the door), the room at its wide opening in a second round
+    hall = box(0, 0, 20, 14)
+    room = box(20.2, 2, 30.2, 12).union(box(19.9, 4.75, 20.3, 9.25))  # 4.5 m opening
+    corridor = box(0, 14.2, 20, 16.2).union(box(9.5, 13.9, 10.5, 14.3))  # 1 m door
+    poly = hall.union(room).union(corridor)
+    areas = [Area(id=1, polygon=poly)]
+    pr = RecordingProgress()
+    rep = S.assign_names(areas, [T("Hall", 10, 7), T("Reading room", 25, 7), T("Corridor", 15, 15.2)],
+                         progress=pr)
+    by_name = {a.name: a for a in areas}
+    assert set(by_name) == {"Hall", "Reading room", "Corridor"} and not rep.conflicts, [a.name for a in areas]
+    assert by_name["Reading room"].polygon.area == pytest.approx(100, rel=0.08)
+    assert by_name["Corridor"].polygon.area == pytest.approx(40, rel=0.08)
+    assert sum(a.polygon.area for a in areas) == pytest.approx(poly.area, rel=1e-6)
+    assert len(rep.splits) == 2
+    # an opening as wide as the room itself is no narrowing: a conflict, not a split
+    areas = [Area(id=1, polygon=box(0, 0, 20, 14).union(box(20, 2, 26, 12)))]
+    rep = S.assign_names(areas, [T("Hall", 10, 7), T("Reading room", 23, 7)])
+    assert not rep.splits and rep.conflicts == [1]
