@@ -550,7 +550,8 @@ def protect_labelled_areas(areas: Sequence[Area], texts: Sequence[CadText], min_
                            smallest: float = 1.0) -> Dict[int, str]:
     """Before refinement: areas smaller than ``min_area`` (but at least ``smallest`` m²) that hold a room
     name or number get the temporary type ``PROTECTED_TYPE`` so that the small-area merge keeps them (a
-    labelled WC or store room is a room, however small). Returns {area id: original type} for
+    labelled WC or store room is a room, however small); so do those a room name lies beside, in the
+    wall, outside every area (within ``PROTECT_REACH``). Returns {area id: original type} for
     ``restore_types``."""
     pts = room_name_points(texts, rules)
     if not pts:
@@ -566,7 +567,31 @@ def protect_labelled_areas(areas: Sequence[Area], texts: Sequence[CadText], min_
             if a.id not in saved:
                 saved[a.id] = a.type
                 a.type = PROTECTED_TYPE
+    # a room name whose insertion point falls in the wall (outside every area) within PROTECT_REACH of a
+    # small area labels that area: SIST-F3's 4 m² '储藏室' starts 9 cm inside the wall of its store room,
+    # which the merge then gave to the boiled-water room next door
+    all_polys = [a.polygon for a in areas if a.polygon is not None and not a.polygon.is_empty]
+    any_tree = STRtree(all_polys)
+    for lab in classify_labels(texts, rules):
+        if lab.role != "name":
+            continue
+        for x, y in [(lab.x, lab.y)] + list(lab.alts):
+            if not (math.isfinite(x) and math.isfinite(y)):
+                continue
+            p = Point(x, y)
+            if len(any_tree.query(p, predicate="intersects")):
+                continue
+            near = tree.query(p, predicate="dwithin", distance=PROTECT_REACH).tolist()
+            if not near:
+                continue
+            a = small[min(near, key=lambda i: (small[i].polygon.distance(p), small[i].id))]
+            if a.id not in saved:
+                saved[a.id] = a.type
+                a.type = PROTECTED_TYPE
     return saved
+
+
+PROTECT_REACH = 0.3  # metres: a name this close to a small area, outside every area, labels it (in the wall)
 
 
 def restore_types(saved: Dict[int, str], *area_lists: Sequence[Area]) -> None:

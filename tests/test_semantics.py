@@ -639,3 +639,25 @@ def test_three_names_split_in_rounds_at_a_door_and_at_a_wide_opening():
     areas = [Area(id=1, polygon=box(0, 0, 20, 14).union(box(20, 2, 26, 12)))]
     rep = S.assign_names(areas, [T("Hall", 10, 7), T("Reading room", 23, 7)])
     assert not rep.splits and rep.conflicts == [1]
+
+
+def test_a_name_in_the_wall_beside_a_small_room_keeps_the_room():
+    # a 4 m² store room and a 6 m² boiled-water room behind one 0.2 m wall; the store's name starts in
+    # the wall, 9 cm from its room: without it the merge gave the store to its neighbour (SIST-F3)
+    from algorithms import refine
+
+    store, boiler = box(0, 0, 2, 2), box(2.2, 0, 5.2, 2)
+    hall = box(0, 2.2, 20, 10)
+    areas = [Area(id=1, polygon=store), Area(id=2, polygon=boiler), Area(id=3, polygon=hall)]
+    texts = [T("储藏室", -0.09, 1.0), T("开水间", 3.7, 1.0)]
+    saved = S.protect_labelled_areas(areas, texts, min_area=10.0)
+    assert set(saved) == {1, 2}
+    # a name far from any small area protects nothing; a name inside a big area protects nothing else
+    fresh = [Area(id=1, polygon=store), Area(id=3, polygon=hall)]
+    assert S.protect_labelled_areas(fresh, [T("储藏室", -1.0, 1.0), T("大厅", 10, 2.1)], min_area=10.0) == {}
+    # through the merge: both small rooms survive and get their names
+    kept, _, info = refine.merge_small_areas(areas, [], 10.0, keep_types=refine.KEEP_TYPES + (S.PROTECTED_TYPE,))
+    S.restore_types(saved, kept)
+    assert {a.id for a in kept} == {1, 2, 3} and info["merged"] == 0
+    S.assign_names(kept, texts)
+    assert {a.id: a.name for a in kept}[1] == "储藏室" and {a.id: a.name for a in kept}[2] == "开水间"
