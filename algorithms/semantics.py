@@ -96,6 +96,8 @@ class NameRules:
     shaft_keywords: List[str] = field(default_factory=list)
     # outdoor labels (室外…, 排水暗沟, lawn): name no indoor space when they lie outside every area
     outdoor_keywords: List[str] = field(default_factory=list)
+    # zones of an open space (阅览区, 开放性坐区, open space, zona): no room where another name labels the space
+    zone_keywords: List[str] = field(default_factory=list)
 
     def __post_init__(self):
         # keyword -> (type entry) sorted longest first: the longest keyword found in a name wins
@@ -174,7 +176,7 @@ def load_name_rules(path: Optional[str] = None) -> NameRules:
                      callout_tail=re.compile(data["callout_tail"], re.IGNORECASE) if data.get("callout_tail") else None,
                      weak_name_layers=words("weak_name_layers"),
                      vertical_max_area=vmax, shaft_keywords=words("shaft_keywords"),
-                     outdoor_keywords=words("outdoor_keywords"))
+                     outdoor_keywords=words("outdoor_keywords"), zone_keywords=words("zone_keywords"))
 
 
 _DEFAULT: Optional[NameRules] = None
@@ -815,6 +817,7 @@ def assign_names(areas: List[Area], texts: Sequence[CadText], level="1", rules=N
                     rounds.setdefault(p.id, rounds[aid])
                     if len({_key(r.text) for r in _competing(best_by_area[p.id])}) >= 2:
                         queue.append(p.id)
+    _demote_zones(best_by_area, rules, progress)
     # ---- texts of frozen / off layers: names for areas that no visible text names
     if hidden_texts:
         hl = [l for l in classify_labels(list(hidden_texts), rules) if l.role in ("name", "number")]
@@ -1080,6 +1083,27 @@ def _demote_shafts_and_outdoor(best_by_area: Dict[int, List[TextRecord]], record
                 r.role, r.reason = "ignored", "shaft label"
         elif outdoor and r.match != "inside" and _matches(outdoor, r.text):
             r.role, r.reason = "ignored", "outdoor"
+
+
+def _demote_zones(best_by_area: Dict[int, List[TextRecord]], rules: NameRules, progress) -> None:
+    """A zone of an open space ('阅览区(随意开放性坐区)', a reading zone with free seating in the atrium
+    gallery of library sheet A-A3-10-04; 'open space', 'zona relax') that shares its area with another
+    room name, and that no narrowing split off, is a part of that space, not a second room: it is
+    reported as ignored ('zone in a named space'), and the space keeps its name without a conflict."""
+    if not rules.zone_keywords:
+        return
+    for aid, recs in best_by_area.items():
+        comp = _competing(recs)
+        if len(comp) < 2:
+            continue
+        zones = [r for r in comp if _matches(rules.zone_keywords, r.text)]
+        if not zones or len(zones) == len(comp):
+            continue
+        keys = {_key(r.text) for r in zones}
+        for r in recs:
+            if r.role == "name" and _key(r.text) in keys:
+                r.role, r.reason = "ignored", "zone in a named space"
+        progress.info(f"area {aid}: {', '.join(sorted(keys))} is a zone of the space, not a room of its own")
 
 
 def _place_vertical(deferred, index, best_by_area, rules, rho_max, d_max, allow=None) -> None:

@@ -661,3 +661,23 @@ def test_a_name_in_the_wall_beside_a_small_room_keeps_the_room():
     assert {a.id for a in kept} == {1, 2, 3} and info["merged"] == 0
     S.assign_names(kept, texts)
     assert {a.id: a.name for a in kept}[1] == "储藏室" and {a.id: a.name for a in kept}[2] == "开水间"
+
+
+def test_a_zone_of_an_open_space_is_no_second_room():
+    # library A-A3-10-04: the atrium gallery (named seven times) holds '阅览区(随意开放性坐区)', a reading
+    # zone with free seating, with no wall nor narrowing between them: one space, no conflict
+    gallery = box(0, 0, 60, 12)
+    tag = dict(layer="A-SYMB", entity="ATTRIB", block="ECADI-TAG-ROOM", tag="CHINESENAME", h=0.45)
+    texts = [T("中庭回廊", 8, 6, **tag), T("中庭回廊", 30, 6, **tag), T("阅览区(随意开放性坐区)", 52, 6, **tag)]
+    areas = [Area(id=1, polygon=gallery)]
+    rep = S.assign_names(areas, texts)
+    assert areas[0].name == "中庭回廊" and not rep.conflicts and "label_conflict" not in areas[0].tags
+    assert {r.text: r.reason for r in rep.texts}["阅览区(随意开放性坐区)"] == "zone in a named space"
+    assert S.floor_figures(areas, [], rep)["own_area_pct"] == 100.0
+    # a zone walled off as an area of its own keeps its name; two rooms in one area are still a conflict
+    areas = [Area(id=1, polygon=box(0, 0, 10, 8)), Area(id=2, polygon=box(10.2, 0, 20, 8))]
+    S.assign_names(areas, [T("办公区", 5, 4), T("Office", 15, 4)])
+    assert [a.name for a in areas] == ["办公区", "Office"]
+    areas = [Area(id=1, polygon=box(0, 0, 12, 5))]
+    rep = S.assign_names(areas, [T("会议室", 3, 2.5), T("办公室", 9, 2.5)])
+    assert rep.conflicts == [1]
