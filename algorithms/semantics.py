@@ -736,6 +736,36 @@ def floor_figures(areas: Sequence[Area], passages: Sequence[Passage], report: Op
     return out
 
 
+def missed_texts(areas: Sequence[Area], report: Optional[NamesReport]) -> List[Dict[str, object]]:
+    """The room-name texts that miss the quality figures, with why: ``outside`` (no area), ``nearby``
+    (beside an area, not in one), ``conflict`` (in an area holding another name), ``not own`` (the area
+    is named after another text). For ``make evaluate-cad --misses``: the list to look at on a new drawing."""
+    if report is None:
+        return []
+    by_id = {a.id: a for a in areas}
+    conflict = {a.id for a in areas if (a.tags or {}).get("label_conflict")}
+    out = []
+    for r in report.texts:
+        if r.role != "name":
+            continue
+        why = []
+        if r.area_id is None:
+            why.append("outside")
+        elif r.match != "inside":
+            why.append("nearby")
+        if r.area_id in conflict:
+            why.append("conflict")
+        elif r.area_id is not None and _key(report.base_names.get(r.area_id, "")) != _key(r.text):
+            why.append("not own")
+        if why:
+            a = by_id.get(r.area_id)
+            out.append({"text": r.text, "x": round(r.x, 2), "y": round(r.y, 2), "layer": r.layer, "why": "+".join(why),
+                        "area": r.area_id, "area_name": a.name if a is not None else "",
+                        "area_m2": round(float(a.polygon.area), 1) if a is not None else None,
+                        "conflict": (a.tags or {}).get("label_conflict", "") if a is not None else ""})
+    return out
+
+
 # ------------------------------------------------------------------------------------------ assign
 _LEVEL_PREFIX = re.compile(r"^(\d{1,2}f|b\d)\s*(?=[\u3400-\u9fff])")
 
@@ -1565,4 +1595,4 @@ def _relabel(labels: np.ndarray, grid, old_id: int, pieces: List[Area]) -> None:
 
 __all__ = ["NameRules", "load_name_rules", "default_name_rules", "normalize_text", "strip_xref", "classify_text",
            "classify_labels", "group_lines", "room_name_points", "score", "assign_names", "NamesReport",
-           "TextRecord", "type_of_name", "floor_figures", "protect_labelled_areas", "restore_types", "auto_id", "osm_tags", "for_osm", "LABEL_FIELDS", "RHO_MAX", "D_MAX"]
+           "TextRecord", "type_of_name", "floor_figures", "missed_texts", "protect_labelled_areas", "restore_types", "auto_id", "osm_tags", "for_osm", "LABEL_FIELDS", "RHO_MAX", "D_MAX"]
