@@ -372,19 +372,24 @@ def test_archweb_texts_classified_as_read_by_hand(shared_data, plan):
 
 # known defects, reported as expected failures until fixed (the floor stays the target)
 NAMES_KNOWN_BELOW = {
-    "schema-ufficio-1.dxf": "since door swings drawn as one polyline open their doorway (issue 8), the 2.9 m² "
-                            "washroom is one segmentation area with the bar: its door hint does not become a "
-                            "passage there, and the split at the two names finds no narrowing (78.9 -> 73.7 %)",
+    "schema-ufficio-1.dxf": "segmentation, not names (73.7 %, 14 of 19): the 2.9 m² washroom is part of the bar's "
+                            "area before refinement (segmentation area of 179 m²: its door swing opened the doorway "
+                            "and the strip, 1.2 m wide, opens onto the bar over its whole width, so no narrowing "
+                            "splits it off); 'area bar' / 'wine & water bar' name one open bar space and the two "
+                            "general secretaries' desks share one room with no partition: honest conflicts",
 }
 
 
 @pytest.mark.slow
 @pytest.mark.parametrize("plan,floors", [
     # measured figures (make evaluate-cad), kept as floors against regressions; see README for the targets
-    # (2026-12-01: ufficio 100 / 78.9 / 100 / 2, museum 97.0 / 90.9 / 96.7 / 1, Aule 80 / 80 / 100 / 0)
+    # (2026-12-01 session 4: ufficio 100 / 73.7 / 100 / 2, museum 97.0 / 93.9 / 96.8 / 0 since the hall and
+    # the void split at their narrowing, Aule 100 / 100 / 100 / 0, CASONA 100 / 100 / 100 / 0 since a label on a
+    # pillar is inside its room)
     ("schema-ufficio-1.dxf", {"inside_pct": 95, "own_area_pct": 75, "semantic_accuracy_pct": 95, "max_conflicts": 2}),
-    ("historical_museum.dxf", {"inside_pct": 95, "own_area_pct": 85, "semantic_accuracy_pct": 90, "max_conflicts": 2}),
-    ("Aule-scolastiche-pianta-1.dxf", {"inside_pct": 80, "own_area_pct": 75, "semantic_accuracy_pct": 95, "max_conflicts": 0}),
+    ("historical_museum.dxf", {"inside_pct": 95, "own_area_pct": 90, "semantic_accuracy_pct": 95, "max_conflicts": 1}),
+    ("Aule-scolastiche-pianta-1.dxf", {"inside_pct": 95, "own_area_pct": 95, "semantic_accuracy_pct": 95, "max_conflicts": 0}),
+    ("CASONA_DE_YANAHUARA.dxf", {"inside_pct": 95, "own_area_pct": 95, "semantic_accuracy_pct": 95, "max_conflicts": 0}),
 ])
 def test_archweb_names_figures(shared_data, plan, floors, floor_cache):
     floor = floor_cache.process_floor(shared_data / "dxf" / "archweb" / plan)  # pipeline.process_floor, shared
@@ -489,6 +494,41 @@ def test_dwg_stairs_and_lifts_become_typed_areas(shared_data, sheet, floor_cache
             assert a.polygon.area <= 80.0, (a.name, a.polygon.area)
     if sheet.startswith("sist"):
         assert sum(1 for a in floor.refined.areas if any("\u4e00" <= ch <= "\u9fff" for ch in a.name)) >= 10
+
+
+# Issue 8/9 figures per DWG sheet (make evaluate-cad): >= 95 % of the room-name texts inside an area and
+# >= 90 % naming an area of their own, per plan. Below it, with the evidence (a picture and the texts):
+DWG_NAMES_KNOWN_BELOW = {
+    "library/A-A3-10-06.dwg": "segmentation, not names: the six '中庭回廊' (atrium gallery) tags lie in the gallery "
+                              "between the two wings, open to the south-west, which the envelope leaves outside: "
+                              "four in no area, two just outside the rooms beside it; 82.9 % (29 of 35)",
+}
+# measured 2026-12-01 (session 4): (inside %, own %, conflicts at most), kept as floors against regressions
+DWG_NAMES_FLOORS = {
+    "library/A-A3-10-04.dwg": (100.0, 100.0, 0), "library/A-A3-10-05.dwg": (100.0, 100.0, 0),
+    "library/A-A3-10-06.dwg": (82.0, 82.0, 0), "sist-original/SIST-F1.dwg": (96.0, 93.0, 3),
+    "sist-original/SIST-F3.dwg": (97.0, 95.0, 2), "sist-original/SIST-F4.dwg": (98.0, 98.0, 1),
+    "sist-original/SIST-F5.dwg": (97.0, 98.0, 0),
+}
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("sheet", sorted(DWG_NAMES_FLOORS) + ["library/A-A3-10-08.dwg"])
+def test_dwg_room_name_figures(shared_data, sheet, floor_cache):
+    _dwg_reader()
+    floor = floor_cache.process_floor(shared_data / "dwg" / sheet)  # pipeline.process_floor, shared
+    fig = S.floor_figures(floor.refined.areas, floor.refined.passages, floor.names)
+    if sheet.endswith("A-A3-10-08.dwg"):  # a roof plan: its labels are roof elements ('卷轴斜墙顶面'), no rooms
+        assert fig["room_texts"] == 0
+        return
+    inside, own, conflicts = DWG_NAMES_FLOORS[sheet]
+    assert fig["inside_pct"] >= inside and fig["own_area_pct"] >= own and fig["conflicts"] <= conflicts, fig
+    assert fig["semantic_accuracy_pct"] >= 95.0, fig
+    if fig["inside_pct"] < 95.0 or fig["own_area_pct"] < 90.0:
+        assert sheet in DWG_NAMES_KNOWN_BELOW, fig
+        pytest.xfail(f"{sheet}: {fig['inside_pct']:.1f} % inside, {fig['own_area_pct']:.1f} % own: "
+                     f"{DWG_NAMES_KNOWN_BELOW[sheet]}")
+    assert sheet not in DWG_NAMES_KNOWN_BELOW, f"{sheet} reaches the targets now: remove it from DWG_NAMES_KNOWN_BELOW"
 
 
 def test_invalid_polygons_do_not_stop_naming():
