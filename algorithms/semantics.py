@@ -61,6 +61,11 @@ RHO_MAX = 0.7
 D_MAX = 2.2  # metres
 CALLOUT_REACH = 8.0  # metres from a stair/lift detail callout to the stair or lift it names
 NARROWING_RATIO = 0.6  # a split cut must be at most this share of the narrower piece's width
+MAX_SPLIT_ROUNDS = 4  # an area and its pieces are split at most this many times
+DOOR_HALF_WIDTH = 1.4  # metres: clearance thresholds up to half the widest door seed every core
+WIDE_OPENING_HALF_WIDTH = 3.0  # beyond, up to this half-width (6 m openings), only the named cores seed
+SPLIT_THRESHOLDS = tuple(np.round(np.concatenate([np.arange(0.2, DOOR_HALF_WIDTH + 0.01, 0.1),
+                                                  np.arange(DOOR_HALF_WIDTH + 0.2, WIDE_OPENING_HALF_WIDTH + 0.01, 0.2)]), 2))
 LABEL_FIELDS = ("label_score", "label_texts", "label_conflict")
 ROLES = ("name", "number", "ignored")
 
@@ -87,6 +92,12 @@ class NameRules:
     # the largest area (m²) a stair / lift code or keyword may type as stairs / elevator (a stair core, a
     # lift shaft or group; an atrium holding an open stair stays what it is)
     vertical_max_area: Dict[str, float] = field(default_factory=lambda: {"stairs": 80.0, "elevator": 40.0})
+    # MEP shafts (水井, 加压, shaft, cavedio): closed cavities of the walls, labelled in or beside the cavity
+    shaft_keywords: List[str] = field(default_factory=list)
+    # outdoor labels (室外…, 排水暗沟, lawn): name no indoor space when they lie outside every area
+    outdoor_keywords: List[str] = field(default_factory=list)
+    # zones of an open space (阅览区, 开放性坐区, open space, zona): no room where another name labels the space
+    zone_keywords: List[str] = field(default_factory=list)
 
     def __post_init__(self):
         # keyword -> (type entry) sorted longest first: the longest keyword found in a name wins
@@ -164,7 +175,8 @@ def load_name_rules(path: Optional[str] = None) -> NameRules:
                      callout=re.compile(data["callout"], re.IGNORECASE) if data.get("callout") else None,
                      callout_tail=re.compile(data["callout_tail"], re.IGNORECASE) if data.get("callout_tail") else None,
                      weak_name_layers=words("weak_name_layers"),
-                     vertical_max_area=vmax)
+                     vertical_max_area=vmax, shaft_keywords=words("shaft_keywords"),
+                     outdoor_keywords=words("outdoor_keywords"), zone_keywords=words("zone_keywords"))
 
 
 _DEFAULT: Optional[NameRules] = None
@@ -368,6 +380,7 @@ class Label:
     tag: str
     role: str = ""
     reason: str = ""
+    alts: List[Tuple[float, float]] = field(default_factory=list)  # where copies of it are drawn
 
 
 def _text_id(t: CadText, k: int) -> int:
@@ -485,7 +498,38 @@ def classify_labels(texts: Sequence[CadText], rules=None) -> List[Label]:
             out.append(replace(lab, text=parts[1], role="number", reason="code after the name"))
             continue
         out.append(lab)
-    return out
+    return _merge_copies(out)
+
+
+def _merge_copies(labels: List[Label]) -> List[Label]:
+    """One label drawn twice is one label: a room tag block inserted twice (an xref bound twice, a copy
+    pasted in place: every tag of library sheet A-A3-10-04 is there twice) or the same name copied to a
+    layer for another print scale ('大厅' on 'I—平面—文字' and, shifted by a line and at half the height,
+    on 'I—平面—文字（放大1：100）' on SIST-F1). Names and numbers with the same text count once when
+    their insertion points are within a quarter of the text height, or, on different layers, within twice
+    the larger height; the copy's ids join the first label and its position is kept as an alternative
+    (``Label.alts``: the label is where its best-placed copy is)."""
+    keep: List[Label] = []
+    seen: Dict[Tuple[str, str], List[Label]] = {}
+    for lab in labels:
+        if lab.role not in ("name", "number") or not (math.isfinite(lab.x) and math.isfinite(lab.y)):
+            keep.append(lab)
+            continue
+        key = (lab.role, _key(lab.text))
+        twin = None
+        for o in seen.get(key, []):
+            d = math.hypot(lab.x - o.x, lab.y - o.y)
+            h = max(lab.height, o.height, 0.0)
+            if d <= max(0.25 * h, 1e-3) or (lab.layer != o.layer and d <= 2.0 * h):
+                twin = o
+                break
+        if twin is not None:
+            twin.ids = list(dict.fromkeys(twin.ids + lab.ids))
+            twin.alts.append((lab.x, lab.y))
+            continue
+        seen.setdefault(key, []).append(lab)
+        keep.append(lab)
+    return keep
 
 
 def room_name_points(texts: Sequence[CadText], rules=None) -> List[Tuple[float, float, str]]:
@@ -493,8 +537,12 @@ def room_name_points(texts: Sequence[CadText], rules=None) -> List[Tuple[float, 
     uses them as evidence that the space around them is inside the building. Door and window tags of
     tag blocks ('1522' in ECADI-TAG-DOOR) are no names but mark the building's doorways: they count as
     evidence too (without them SIST-F3's largest component fell from 98 % to 80 % of the floor)."""
-    return [(lab.x, lab.y, lab.text) for lab in classify_labels(texts, rules)
-            if lab.role in ("name", "number") or lab.reason == "door/window code (block)"]
+    out = []
+    for lab in classify_labels(texts, rules):
+        if lab.role in ("name", "number") or lab.reason == "door/window code (block)":
+            out.append((lab.x, lab.y, lab.text))
+            out.extend((x, y, lab.text) for x, y in lab.alts)  # every copy of a label drawn twice
+    return out
 
 
 PROTECTED_TYPE = "room:labelled"  # temporary type that keeps refinement from merging a labelled small room
@@ -504,7 +552,8 @@ def protect_labelled_areas(areas: Sequence[Area], texts: Sequence[CadText], min_
                            smallest: float = 1.0) -> Dict[int, str]:
     """Before refinement: areas smaller than ``min_area`` (but at least ``smallest`` m²) that hold a room
     name or number get the temporary type ``PROTECTED_TYPE`` so that the small-area merge keeps them (a
-    labelled WC or store room is a room, however small). Returns {area id: original type} for
+    labelled WC or store room is a room, however small); so do those a room name lies beside, in the
+    wall, outside every area (within ``PROTECT_REACH``). Returns {area id: original type} for
     ``restore_types``."""
     pts = room_name_points(texts, rules)
     if not pts:
@@ -520,7 +569,31 @@ def protect_labelled_areas(areas: Sequence[Area], texts: Sequence[CadText], min_
             if a.id not in saved:
                 saved[a.id] = a.type
                 a.type = PROTECTED_TYPE
+    # a room name whose insertion point falls in the wall (outside every area) within PROTECT_REACH of a
+    # small area labels that area: SIST-F3's 4 m² '储藏室' starts 9 cm inside the wall of its store room,
+    # which the merge then gave to the boiled-water room next door
+    all_polys = [a.polygon for a in areas if a.polygon is not None and not a.polygon.is_empty]
+    any_tree = STRtree(all_polys)
+    for lab in classify_labels(texts, rules):
+        if lab.role != "name":
+            continue
+        for x, y in [(lab.x, lab.y)] + list(lab.alts):
+            if not (math.isfinite(x) and math.isfinite(y)):
+                continue
+            p = Point(x, y)
+            if len(any_tree.query(p, predicate="intersects")):
+                continue
+            near = tree.query(p, predicate="dwithin", distance=PROTECT_REACH).tolist()
+            if not near:
+                continue
+            a = small[min(near, key=lambda i: (small[i].polygon.distance(p), small[i].id))]
+            if a.id not in saved:
+                saved[a.id] = a.type
+                a.type = PROTECTED_TYPE
     return saved
+
+
+PROTECT_REACH = 0.3  # metres: a name this close to a small area, outside every area, labels it (in the wall)
 
 
 def restore_types(saved: Dict[int, str], *area_lists: Sequence[Area]) -> None:
@@ -567,6 +640,7 @@ class TextRecord:
     score: float = 0.0
     match: str = ""  # inside | nearby | "" (outside every area)
     hidden: bool = False  # on a frozen / off layer (CadDrawing.hidden_texts)
+    alts: List[Tuple[float, float]] = field(default_factory=list)  # copies of the label drawn elsewhere
 
 
 @dataclass
@@ -662,6 +736,36 @@ def floor_figures(areas: Sequence[Area], passages: Sequence[Passage], report: Op
     return out
 
 
+def missed_texts(areas: Sequence[Area], report: Optional[NamesReport]) -> List[Dict[str, object]]:
+    """The room-name texts that miss the quality figures, with why: ``outside`` (no area), ``nearby``
+    (beside an area, not in one), ``conflict`` (in an area holding another name), ``not own`` (the area
+    is named after another text). For ``make evaluate-cad --misses``: the list to look at on a new drawing."""
+    if report is None:
+        return []
+    by_id = {a.id: a for a in areas}
+    conflict = {a.id for a in areas if (a.tags or {}).get("label_conflict")}
+    out = []
+    for r in report.texts:
+        if r.role != "name":
+            continue
+        why = []
+        if r.area_id is None:
+            why.append("outside")
+        elif r.match != "inside":
+            why.append("nearby")
+        if r.area_id in conflict:
+            why.append("conflict")
+        elif r.area_id is not None and _key(report.base_names.get(r.area_id, "")) != _key(r.text):
+            why.append("not own")
+        if why:
+            a = by_id.get(r.area_id)
+            out.append({"text": r.text, "x": round(r.x, 2), "y": round(r.y, 2), "layer": r.layer, "why": "+".join(why),
+                        "area": r.area_id, "area_name": a.name if a is not None else "",
+                        "area_m2": round(float(a.polygon.area), 1) if a is not None else None,
+                        "conflict": (a.tags or {}).get("label_conflict", "") if a is not None else ""})
+    return out
+
+
 # ------------------------------------------------------------------------------------------ assign
 _LEVEL_PREFIX = re.compile(r"^(\d{1,2}f|b\d)\s*(?=[\u3400-\u9fff])")
 
@@ -693,7 +797,7 @@ def assign_names(areas: List[Area], texts: Sequence[CadText], level="1", rules=N
     level = str(level).strip() or "1"
     progress.step(0, "classifying texts")
     labs = classify_labels(list(texts or []), rules)
-    records = [TextRecord(l.ids, l.text, l.x, l.y, l.layer, l.role, l.reason) for l in labs]
+    records = [TextRecord(l.ids, l.text, l.x, l.y, l.layer, l.role, l.reason, alts=list(l.alts)) for l in labs]
     report.texts = records
     areas_ok = [a for a in areas if a.polygon is not None and not a.polygon.is_empty and a.polygon.area > 0
                 and a.type != "structure"]
@@ -705,14 +809,21 @@ def assign_names(areas: List[Area], texts: Sequence[CadText], level="1", rules=N
         room = [r for r in records if r.role in ("name", "number")]
         _place_records(room, index, best_by_area, rules, rho_max, d_max, inside_first, progress)
     progress.step(50, "naming areas")
+    _demote_shafts_and_outdoor(best_by_area, records, rules)
     by_id = {a.id: a for a in areas}
     # ---- split areas holding several different names
     if split:
-        for aid in sorted(best_by_area):
-            recs = best_by_area[aid]
+        # a piece still holding two names is split again (a hall with a lift lobby at one end and a round
+        # room opening onto it: the corridor comes off at a doorway, the round room at its wide opening)
+        queue = sorted(best_by_area)
+        rounds: Dict[int, int] = {}
+        while queue:
+            aid = queue.pop(0)
+            recs = best_by_area.get(aid, [])
             names = {_key(r.text): r for r in reversed(_competing(recs))}
-            if len(names) < 2:
+            if len(names) < 2 or rounds.get(aid, 0) >= MAX_SPLIT_ROUNDS:
                 continue
+            rounds[aid] = rounds.get(aid, 0) + 1
             a = by_id[aid]
             if a.type in ("stairs", "elevator"):
                 continue
@@ -732,10 +843,16 @@ def assign_names(areas: List[Area], texts: Sequence[CadText], level="1", rules=N
                 report.new_passages.extend(pieces[0].tags.pop("_new_passages", []))
                 progress.info(f"area {aid} held {len(names)} room names ({', '.join(r.text for r in names.values())}); "
                               f"split along the narrowing between them into areas {[p.id for p in pieces]}")
+                for p in pieces:
+                    rounds.setdefault(p.id, rounds[aid])
+                    if len({_key(r.text) for r in _competing(best_by_area[p.id])}) >= 2:
+                        queue.append(p.id)
+    _demote_zones(best_by_area, rules, progress)
     # ---- texts of frozen / off layers: names for areas that no visible text names
     if hidden_texts:
         hl = [l for l in classify_labels(list(hidden_texts), rules) if l.role in ("name", "number")]
-        report.hidden = [TextRecord(l.ids, l.text, l.x, l.y, l.layer, l.role, l.reason, hidden=True) for l in hl]
+        report.hidden = [TextRecord(l.ids, l.text, l.x, l.y, l.layer, l.role, l.reason, hidden=True, alts=list(l.alts))
+                       for l in hl]
         # scored against every area (a hidden text inside a named room must not drift to its neighbour),
         # kept only where the best area has no visible name or number
         cand = [a for a in areas if a.polygon is not None and not a.polygon.is_empty and a.polygon.area > 0
@@ -851,6 +968,7 @@ def _place_records(room: Sequence["TextRecord"], index, best_by_area: Dict[int, 
     stair), go to ``_place_vertical`` instead (``only_vertical``: its extra eligibility predicate)."""
     areas_ok, polys, tree, cents = index
     deferred = []
+    placed_copies = []
     for n, r in enumerate(room):
         if progress is not None and n % 200 == 0:
             progress.step(15 + 35 * n / max(1, len(room)))
@@ -860,19 +978,21 @@ def _place_records(room: Sequence["TextRecord"], index, best_by_area: Dict[int, 
         if vtype and r.reason == "callout":
             deferred.append((r, vtype))
             continue
-        p = Point(r.x, r.y)
-        best = (0.0, None, "")
-        for i in sorted(tree.query(p, predicate="dwithin", distance=d_max).tolist()):
-            try:
-                s, how = score(r.x, r.y, polys[i], cents[i], rho_max=rho_max, d_max=d_max)
-            except Exception:  # GEOS on an invalid polygon: this area is no candidate
-                continue
-            if inside_first and how == "inside":
-                s += 1000.0  # a text inside an area is that area's (nearby scores only for texts outside)
-            if s > best[0]:
-                best = (s, i, how)
+        # a label drawn twice (``_merge_copies``) is where its best-placed copy is
+        best, best_xy = (0.0, None, ""), (r.x, r.y)
+        copies = []
+        for xy in [(r.x, r.y)] + [q for q in r.alts if math.isfinite(q[0]) and math.isfinite(q[1])]:
+            cand = _best_area(xy[0], xy[1], polys, tree, cents, rho_max, d_max, inside_first)
+            copies.append((cand, xy))
+            if cand[0] > best[0]:
+                best, best_xy = cand, xy
+        if len(copies) > 1:
+            placed_copies.append((r, copies))
+        r.x, r.y = best_xy
         if best[0] > 1000.0:
             best = (best[0] - 1000.0, best[1], best[2])
+        elif best[0] > 500.0 and inside_first:
+            best = (best[0] - 500.0, best[1], best[2])
         if vtype and (best[1] is None or polys[best[1]].area > _max_area(rules, vtype)
                       or areas_ok[best[1]].type == "corridor"
                       or (only is not None and not only(areas_ok[best[1]].id))):
@@ -882,8 +1002,138 @@ def _place_records(room: Sequence["TextRecord"], index, best_by_area: Dict[int, 
             a = areas_ok[best[1]]
             r.area_id, r.score, r.match = a.id, round(best[0], 2), best[2]
             best_by_area.setdefault(a.id, []).append(r)
+    _settle_copies(placed_copies, areas_ok, best_by_area, inside_first, only)
     if deferred:
         _place_vertical(deferred, index, best_by_area, rules, rho_max, d_max, only_vertical or only)
+
+
+def _settle_copies(placed_copies, areas_ok, best_by_area, inside_first: bool, only=None) -> None:
+    """A name drawn twice whose best-placed copy landed in an area another name labels, while another
+    copy lies in (or beside) an area no name labels, names that area: the copies of SIST-F4's '女卫生间'
+    are 1 m apart, one in the corridor-side area of the next room, one in the WC itself."""
+    for r, copies in placed_copies:
+        if r.role != "name" or r.area_id is None:
+            continue
+        cur = r.area_id
+        if not any(o is not r and o.role == "name" and _key(o.text) != _key(r.text) for o in best_by_area.get(cur, [])):
+            continue
+        for (sc, i, how), xy in sorted(copies, key=lambda c: -c[0][0]):
+            if i is None or areas_ok[i].id == cur or (only is not None and not only(areas_ok[i].id)):
+                continue
+            if any(o.role == "name" for o in best_by_area.get(areas_ok[i].id, [])):
+                continue
+            best_by_area[cur].remove(r)
+            if sc > 1000.0:
+                sc -= 1000.0
+            elif sc > 500.0 and inside_first:
+                sc -= 500.0
+            r.area_id, r.score, r.match = areas_ok[i].id, round(sc, 2), how
+            r.x, r.y = xy
+            best_by_area.setdefault(r.area_id, []).append(r)
+            break
+
+
+def _best_area(x, y, polys, tree, cents, rho_max, d_max, inside_first):
+    """(score with the inside bonus, index, how) of the best area for the point (x, y)."""
+    p = Point(x, y)
+    best = (0.0, None, "")
+    for i in sorted(tree.query(p, predicate="dwithin", distance=d_max).tolist()):
+        try:
+            s, how = score(x, y, polys[i], cents[i], rho_max=rho_max, d_max=d_max)
+        except Exception:  # GEOS on an invalid polygon: this area is no candidate
+            continue
+        if how != "inside" and _on_island(polys[i], p):
+            # written on a pillar or a piece of furniture standing free in the room (a small hole of
+            # the area): inside the room, ranked after an area that holds the point itself
+            s, how = _island_score(x, y, polys[i], cents[i], rho_max), "inside"
+            if inside_first:
+                s += 500.0
+        elif inside_first and how == "inside":
+            s += 1000.0  # a text inside an area is that area's (nearby scores only for texts outside)
+        if s > best[0]:
+            best = (s, i, how)
+    return best
+
+
+ISLAND_MAX_M2 = 4.0  # the largest hole of an area a label may sit on and still be in the area (a pillar, a desk)
+
+
+def _on_island(poly, p: Point) -> bool:
+    """p lies in a small hole of ``poly`` (at most ISLAND_MAX_M2): on an obstacle standing free inside it."""
+    if poly.geom_type != "Polygon" or not poly.interiors:
+        return False
+    from shapely.geometry import Polygon
+
+    for ring in poly.interiors:
+        h = Polygon(ring)
+        if h.area <= ISLAND_MAX_M2 and h.covers(p):
+            return True
+    return False
+
+
+def _island_score(px, py, poly, cent, rho_max) -> float:
+    S = math.sqrt(float(poly.area) / math.pi)
+    rho = math.hypot(px - cent.x, py - cent.y) / max(S, 1e-9)
+    s = 100.0 - 50.0 * rho if rho <= rho_max else 50.0 - 25.0 * (rho - rho_max)
+    return max(s, 1.0)
+
+
+def _matches(words: Sequence[str], text: str) -> bool:
+    """A keyword occurs in ``text``; a keyword written '=水' must be the whole text (a one-character shaft
+    label '水' beside the shaft, while '水泵房' is a pump room)."""
+    low = normalize_text(text).casefold()
+    return any((low == w[1:].strip()) if w.startswith("=") else bool(_keyword_regex(w).search(low)) for w in words)
+
+
+def _demote_shafts_and_outdoor(best_by_area: Dict[int, List[TextRecord]], records: Sequence[TextRecord],
+                               rules: NameRules) -> None:
+    """Two kinds of name that name no space of the indoor map where they are written:
+
+    * an MEP shaft label (水井, 风井, 加压, shaft, cavedio) written outside every area, or in (beside) an
+      area that another, non-shaft name labels from inside: the shaft is a closed cavity of the wall,
+      too small to hold its label (library sheets write '加压' in the hall beside the pressurisation
+      shafts, SIST-F1 '水井' in the laboratory beside its shaft) -> ignored, 'shaft label';
+    * an outdoor label (室外庭院, 排水暗沟, lawn) outside every area -> ignored, 'outdoor'.
+
+    A shaft segmentation made an area of, holding its own label, keeps it as its name."""
+    shaft = rules.shaft_keywords
+    outdoor = rules.outdoor_keywords
+    if not shaft and not outdoor:
+        return
+    for r in records:
+        if r.role != "name" or r.hidden:
+            continue
+        if shaft and _matches(shaft, r.text):
+            if r.area_id is None:
+                r.role, r.reason = "ignored", "shaft label"
+                continue
+            others = [o for o in best_by_area.get(r.area_id, []) if o is not r and o.role == "name"
+                      and o.match == "inside" and not _matches(shaft, o.text)]
+            if others:
+                r.role, r.reason = "ignored", "shaft label"
+        elif outdoor and r.match != "inside" and _matches(outdoor, r.text):
+            r.role, r.reason = "ignored", "outdoor"
+
+
+def _demote_zones(best_by_area: Dict[int, List[TextRecord]], rules: NameRules, progress) -> None:
+    """A zone of an open space ('阅览区(随意开放性坐区)', a reading zone with free seating in the atrium
+    gallery of library sheet A-A3-10-04; 'open space', 'zona relax') that shares its area with another
+    room name, and that no narrowing split off, is a part of that space, not a second room: it is
+    reported as ignored ('zone in a named space'), and the space keeps its name without a conflict."""
+    if not rules.zone_keywords:
+        return
+    for aid, recs in best_by_area.items():
+        comp = _competing(recs)
+        if len(comp) < 2:
+            continue
+        zones = [r for r in comp if _matches(rules.zone_keywords, r.text)]
+        if not zones or len(zones) == len(comp):
+            continue
+        keys = {_key(r.text) for r in zones}
+        for r in recs:
+            if r.role == "name" and _key(r.text) in keys:
+                r.role, r.reason = "ignored", "zone in a named space"
+        progress.info(f"area {aid}: {', '.join(sorted(keys))} is a zone of the space, not a room of its own")
 
 
 def _place_vertical(deferred, index, best_by_area, rules, rho_max, d_max, allow=None) -> None:
@@ -1130,7 +1380,7 @@ def _split_area(a: Area, recs: List[TextRecord], names: Dict[str, TextRecord], g
         seeds[k].append((ri, ci))
     min_core_px = 2.0 / (res * res)
     found = None
-    for t in np.arange(0.2, 1.41, 0.1):
+    for t in SPLIT_THRESHOLDS:
         core = clearance > t
         comp, n = ndimage.label(core)
         if n < 2:
@@ -1146,29 +1396,39 @@ def _split_area(a: Area, recs: List[TextRecord], names: Dict[str, TextRecord], g
                     continue
                 if cr is None:
                     cr, cc_ = np.nonzero(core)
+                if not len(cr):
+                    break
                 j = int(np.argmin((cr - pr) ** 2 + (cc_ - pc) ** 2))
                 cs.add(int(comp[cr[j], cc_[j]]))
-            owner[k] = min(cs)
-        if len(set(owner.values())) >= 2:
-            found = (t, comp, n, owner)
-            break
+            if cs:
+                owner[k] = min(cs)
+        if len(set(owner.values())) < 2:
+            continue
+        if t <= DOOR_HALF_WIDTH:
+            # doorway-wide narrowings: every core is a space (a corridor joining two rooms is its own area)
+            sizes = ndimage.sum(np.ones_like(comp), comp, index=np.arange(1, n + 1))
+            keep = {i + 1 for i, sz in enumerate(sizes) if sz >= min_core_px} | set(owner.values())
+        else:
+            # wider openings (an arch, the open front of a round room onto a hall): only the named cores
+            # seed, so that the hall is not cut into the pieces its columns and bays make at this scale
+            keep = set(owner.values())
+        markers = np.where(np.isin(comp, list(keep)), comp, 0).astype(np.int32)
+        # every pixel goes to the core nearest along the floor (a watershed of the clearance leaked: its
+        # ties let a corridor's flood run through the door along every wall of the hall behind it)
+        reg = _geodesic_regions(markers, inside)
+        reg[~inside] = 0
+        present = [k for k in sorted(keep) if (reg == k).any()]
+        if len(present) < 2:
+            continue
+        # the opening must be clearly narrower than every piece; if not, a wider threshold may still
+        # find the narrowing between the names (the first separation can be a bay of one room)
+        if any(2 * t > NARROWING_RATIO * 2.0 * float(clearance[reg == k].max()) for k in present):
+            continue
+        found = (t, reg, present, owner)
+        break
     if found is None:
         return None
-    t, comp, n, owner = found
-    sizes = ndimage.sum(np.ones_like(comp), comp, index=np.arange(1, n + 1))
-    keep = {i + 1 for i, sz in enumerate(sizes) if sz >= min_core_px} | set(owner.values())
-    markers = np.where(np.isin(comp, list(keep)), comp, 0).astype(np.int32)
-    cost = np.full((rows, cols), 65535, np.uint16)
-    cmax = max(float(clearance.max()), 1e-9)
-    cost[inside] = np.round(60000 * (1.0 - clearance[inside] / cmax)).astype(np.uint16)
-    reg = ndimage.watershed_ift(cost, markers)
-    reg[~inside] = 0
-    present = [k for k in sorted(keep) if (reg == k).any()]
-    if len(present) < 2:
-        return None
-    for k in present:  # the opening must be clearly narrower than every piece
-        if 2 * t > NARROWING_RATIO * 2.0 * float(clearance[reg == k].max()):
-            return None
+    t, reg, present, owner = found
     # cells tiling the window: every pixel takes the region of the nearest area pixel
     _, (ir, ic) = ndimage.distance_transform_edt(reg == 0, return_indices=True)
     cells = reg[ir, ic].astype(np.int32)
@@ -1202,6 +1462,27 @@ def _split_area(a: Area, recs: List[TextRecord], names: Dict[str, TextRecord], g
             pieces[j] = (merged, pieces[j][1])
     pieces = _straighten(pieces, res)
     return _finish(a, pieces, areas, passages, labels, grid, recs, t)
+
+
+def _geodesic_regions(markers: np.ndarray, inside: np.ndarray, max_iter: int = 5000) -> np.ndarray:
+    """Each pixel of ``inside`` takes the label of the marker nearest to it along ``inside`` (growth of
+    one pixel per round, ties to the larger label)."""
+    import cv2
+
+    if int(markers.max()) >= 65535:
+        return markers.copy()
+    lab = markers.astype(np.uint16)
+    # cross and square steps alternate: an octagonal metric, close to the Euclidean one
+    kernels = (cv2.getStructuringElement(cv2.MORPH_CROSS, (3, 3)), np.ones((3, 3), np.uint8))
+    todo = inside & (lab == 0)
+    for it in range(max_iter):
+        grown = cv2.dilate(lab, kernels[it % 2])
+        new = todo & (grown > 0)
+        if not new.any():
+            break
+        lab[new] = grown[new]
+        todo &= ~new
+    return lab.astype(np.int32)
 
 
 def _straighten(pieces, res: float):
@@ -1314,4 +1595,4 @@ def _relabel(labels: np.ndarray, grid, old_id: int, pieces: List[Area]) -> None:
 
 __all__ = ["NameRules", "load_name_rules", "default_name_rules", "normalize_text", "strip_xref", "classify_text",
            "classify_labels", "group_lines", "room_name_points", "score", "assign_names", "NamesReport",
-           "TextRecord", "type_of_name", "floor_figures", "protect_labelled_areas", "restore_types", "auto_id", "osm_tags", "for_osm", "LABEL_FIELDS", "RHO_MAX", "D_MAX"]
+           "TextRecord", "type_of_name", "floor_figures", "missed_texts", "protect_labelled_areas", "restore_types", "auto_id", "osm_tags", "for_osm", "LABEL_FIELDS", "RHO_MAX", "D_MAX"]

@@ -7,7 +7,9 @@ room names (conflicts), stairs / lifts found, semantic accuracy (named areas who
 inside them, %) and the ignored texts by reason. Totals over the plans with room text at the end.
 Nothing is written next to the drawings; the figures can be rerun on any folder.
 
-Usage: evaluate_cad.py [--data DIR ...] [--json FILE] [--files NAME ...]
+Usage: evaluate_cad.py [--data DIR ...] [--json FILE] [--files NAME ...] [--misses]
+``--misses`` lists, per plan, the room-name texts that miss and why (outside every area, only nearby, in an
+area holding another name, in an area named after another text): where to look on a new drawing.
 Default data: ../shared/data/dxf/archweb and ../shared/data/dwg (relative to the repository).
 Exit status 0 when every plan converted, 1 otherwise.
 """
@@ -54,7 +56,8 @@ def evaluate_plan(path, **kwargs):
         return {"plan": Path(path).name, "ok": False, "error": f"{type(exc).__name__}: {exc}",
                 "traceback": traceback.format_exc(limit=3), "seconds": time.perf_counter() - t0}
     fig = semantics.floor_figures(floor.refined.areas, floor.refined.passages, floor.names)
-    fig.update({"plan": Path(path).name, "ok": True, "seconds": time.perf_counter() - t0})
+    fig.update({"plan": Path(path).name, "ok": True, "seconds": time.perf_counter() - t0,
+                "missed": semantics.missed_texts(floor.refined.areas, floor.names)})
     if "largest_component_share" in floor.stats:  # wall cavities, ducts and shafts the drawing closes count out
         fig["largest_component_pct"] = 100.0 * floor.stats["largest_component_share"]
         fig["closed_spaces"] = len(floor.stats.get("closed_spaces", []))
@@ -64,6 +67,19 @@ def evaluate_plan(path, **kwargs):
 
 def _pct(v):
     return "   -" if v is None else f"{v:5.1f}"
+
+
+def print_misses(results, out=sys.stdout):
+    """The room-name texts that miss, per plan: outside every area, only nearby, in a conflict, or in an
+    area named after another text (with the area's name, size and conflicting names)."""
+    for r in results:
+        if not r.get("ok") or not r.get("missed"):
+            continue
+        print(f"\n{r['plan']}: {len(r['missed'])} room-name texts miss", file=out)
+        for m in r["missed"]:
+            where = (f"area {m['area']} '{m['area_name']}' {m['area_m2']} m2" if m["area"] is not None else "no area")
+            extra = f", also named: {m['conflict']}" if m["conflict"] else ""
+            print(f"  {m['why']:16s} {m['text'][:32]!r:36s} ({m['x']:.1f}, {m['y']:.1f}) {where}{extra}", file=out)
 
 
 def print_table(results, out=sys.stdout):
@@ -116,6 +132,8 @@ def main(argv=None):
     ap.add_argument("--files", nargs="*", default=None, help="only these file names")
     ap.add_argument("--json", default=None, help="also write the figures as JSON to this file")
     ap.add_argument("--no-names", action="store_true", help="run without the room-name stage")
+    ap.add_argument("--misses", action="store_true",
+                    help="also list, per plan, the room-name texts that miss (outside, nearby, conflict, not own)")
     args = ap.parse_args(argv)
     folders = args.data or [str(p) for p in DEFAULT_DATA]
     paths = drawings(folders)
@@ -130,6 +148,8 @@ def main(argv=None):
         results.append(r)
         print(f"{p.name}: {'ok' if r['ok'] else 'FAILED'} ({r['seconds']:.1f} s)", file=sys.stderr, flush=True)
     tot = print_table(results)
+    if args.misses:
+        print_misses(results)
     if args.json:
         with open(args.json, "w", encoding="utf-8") as fh:
             json.dump({"plans": results, "totals": tot}, fh, indent=1, ensure_ascii=False, default=str)

@@ -78,3 +78,25 @@ def test_archweb_room_names_reach_the_issue_targets(shared_data):
     assert tot["plans_with_text"] == 4 and tot["room_texts"] >= 75
     assert tot["own_area_pct"] >= 90.0 and tot["conflict_pct"] <= 5.0, tot
     assert tot["semantic_accuracy_pct"] > 91.2, tot
+
+
+def test_misses_list_the_texts_that_miss(tmp_path, capsys):
+    from shapely.geometry import box
+
+    from algorithms import semantics as S
+    from algorithms.model import Area, CadText
+
+    def T(text, x, y):
+        return CadText(x=x, y=y, text=text, height=0.3, rotation=0.0, layer="A-ROOM")
+
+    areas = [Area(id=1, polygon=box(0, 0, 12, 5)), Area(id=2, polygon=box(20, 0, 25, 5))]
+    rep = S.assign_names(areas, [T("Office A", 3, 2.5), T("Office B", 9, 2.5), T("Store", 22, -1),
+                                 T("Archive", 50, 50)])
+    missed = {m["text"]: m for m in S.missed_texts(areas, rep)}
+    assert missed["Archive"]["why"] == "outside" and missed["Archive"]["area"] is None
+    assert missed["Store"]["why"] == "nearby" and missed["Store"]["area_name"] == "Store"
+    assert missed["Office A"]["why"] == "conflict" == missed["Office B"]["why"]
+    ev = _module()
+    ev.print_misses([{"plan": "x.dxf", "ok": True, "missed": list(missed.values())}])
+    out = capsys.readouterr().out
+    assert "x.dxf: 4 room-name texts miss" in out and "also named" in out and "no area" in out

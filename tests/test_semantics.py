@@ -372,19 +372,24 @@ def test_archweb_texts_classified_as_read_by_hand(shared_data, plan):
 
 # known defects, reported as expected failures until fixed (the floor stays the target)
 NAMES_KNOWN_BELOW = {
-    "schema-ufficio-1.dxf": "since door swings drawn as one polyline open their doorway (issue 8), the 2.9 m² "
-                            "washroom is one segmentation area with the bar: its door hint does not become a "
-                            "passage there, and the split at the two names finds no narrowing (78.9 -> 73.7 %)",
+    "schema-ufficio-1.dxf": "segmentation, not names (73.7 %, 14 of 19): the 2.9 m² washroom is part of the bar's "
+                            "area before refinement (segmentation area of 179 m²: its door swing opened the doorway "
+                            "and the strip, 1.2 m wide, opens onto the bar over its whole width, so no narrowing "
+                            "splits it off); 'area bar' / 'wine & water bar' name one open bar space and the two "
+                            "general secretaries' desks share one room with no partition: honest conflicts",
 }
 
 
 @pytest.mark.slow
 @pytest.mark.parametrize("plan,floors", [
     # measured figures (make evaluate-cad), kept as floors against regressions; see README for the targets
-    # (2026-12-01: ufficio 100 / 78.9 / 100 / 2, museum 97.0 / 90.9 / 96.7 / 1, Aule 80 / 80 / 100 / 0)
+    # (2026-12-01 session 4: ufficio 100 / 73.7 / 100 / 2, museum 97.0 / 93.9 / 96.8 / 0 since the hall and
+    # the void split at their narrowing, Aule 100 / 100 / 100 / 0, CASONA 100 / 100 / 100 / 0 since a label on a
+    # pillar is inside its room)
     ("schema-ufficio-1.dxf", {"inside_pct": 95, "own_area_pct": 75, "semantic_accuracy_pct": 95, "max_conflicts": 2}),
-    ("historical_museum.dxf", {"inside_pct": 95, "own_area_pct": 85, "semantic_accuracy_pct": 90, "max_conflicts": 2}),
-    ("Aule-scolastiche-pianta-1.dxf", {"inside_pct": 80, "own_area_pct": 75, "semantic_accuracy_pct": 95, "max_conflicts": 0}),
+    ("historical_museum.dxf", {"inside_pct": 95, "own_area_pct": 90, "semantic_accuracy_pct": 95, "max_conflicts": 1}),
+    ("Aule-scolastiche-pianta-1.dxf", {"inside_pct": 95, "own_area_pct": 95, "semantic_accuracy_pct": 95, "max_conflicts": 0}),
+    ("CASONA_DE_YANAHUARA.dxf", {"inside_pct": 95, "own_area_pct": 95, "semantic_accuracy_pct": 95, "max_conflicts": 0}),
 ])
 def test_archweb_names_figures(shared_data, plan, floors, floor_cache):
     floor = floor_cache.process_floor(shared_data / "dxf" / "archweb" / plan)  # pipeline.process_floor, shared
@@ -491,6 +496,41 @@ def test_dwg_stairs_and_lifts_become_typed_areas(shared_data, sheet, floor_cache
         assert sum(1 for a in floor.refined.areas if any("\u4e00" <= ch <= "\u9fff" for ch in a.name)) >= 10
 
 
+# Issue 8/9 figures per DWG sheet (make evaluate-cad): >= 95 % of the room-name texts inside an area and
+# >= 90 % naming an area of their own, per plan. Below it, with the evidence (a picture and the texts):
+DWG_NAMES_KNOWN_BELOW = {
+    "library/A-A3-10-06.dwg": "segmentation, not names: the six '中庭回廊' (atrium gallery) tags lie in the gallery "
+                              "between the two wings, open to the south-west, which the envelope leaves outside: "
+                              "four in no area, two just outside the rooms beside it; 82.9 % (29 of 35)",
+}
+# measured 2026-12-01 (session 4): (inside %, own %, conflicts at most), kept as floors against regressions
+DWG_NAMES_FLOORS = {
+    "library/A-A3-10-04.dwg": (100.0, 100.0, 0), "library/A-A3-10-05.dwg": (100.0, 100.0, 0),
+    "library/A-A3-10-06.dwg": (82.0, 82.0, 0), "sist-original/SIST-F1.dwg": (96.0, 93.0, 3),
+    "sist-original/SIST-F3.dwg": (97.0, 95.0, 2), "sist-original/SIST-F4.dwg": (98.0, 98.0, 1),
+    "sist-original/SIST-F5.dwg": (97.0, 98.0, 0),
+}
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("sheet", sorted(DWG_NAMES_FLOORS) + ["library/A-A3-10-08.dwg"])
+def test_dwg_room_name_figures(shared_data, sheet, floor_cache):
+    _dwg_reader()
+    floor = floor_cache.process_floor(shared_data / "dwg" / sheet)  # pipeline.process_floor, shared
+    fig = S.floor_figures(floor.refined.areas, floor.refined.passages, floor.names)
+    if sheet.endswith("A-A3-10-08.dwg"):  # a roof plan: its labels are roof elements ('卷轴斜墙顶面'), no rooms
+        assert fig["room_texts"] == 0
+        return
+    inside, own, conflicts = DWG_NAMES_FLOORS[sheet]
+    assert fig["inside_pct"] >= inside and fig["own_area_pct"] >= own and fig["conflicts"] <= conflicts, fig
+    assert fig["semantic_accuracy_pct"] >= 95.0, fig
+    if fig["inside_pct"] < 95.0 or fig["own_area_pct"] < 90.0:
+        assert sheet in DWG_NAMES_KNOWN_BELOW, fig
+        pytest.xfail(f"{sheet}: {fig['inside_pct']:.1f} % inside, {fig['own_area_pct']:.1f} % own: "
+                     f"{DWG_NAMES_KNOWN_BELOW[sheet]}")
+    assert sheet not in DWG_NAMES_KNOWN_BELOW, f"{sheet} reaches the targets now: remove it from DWG_NAMES_KNOWN_BELOW"
+
+
 def test_invalid_polygons_do_not_stop_naming():
     bowtie = Polygon([(0, 0), (4, 4), (4, 0), (0, 4)])  # self-intersecting
     areas = [Area(id=1, polygon=bowtie), Area(id=2, polygon=box(10, 0, 14, 4))]
@@ -510,3 +550,174 @@ def test_detail_callouts_name_the_nearest_stair_never_the_corridor():
     assert corridor.name == "走道" and corridor.type == "corridor" and not corridor.ref
     assert far_stair.ref == ""  # 15 m away: the callout is left unassigned (counted outside)
     assert rep.counts()["outside"] == 1
+
+
+# ------------------------------------------------------------------ texts that name no space where they lie
+def test_a_label_drawn_twice_is_one_label():
+    # a room-tag block inserted twice at the same point (library sheets: every tag twice)
+    tag = dict(layer="A-SYMB", entity="ATTRIB", block="ECADI-TAG-ROOM", tag="CHINESENAME", h=0.45)
+    labs = S.classify_labels([T("前室", 3, 2, id=1, **tag), T("前室", 3, 2, id=2, **tag)])
+    assert [(l.text, l.ids) for l in labs] == [("前室", [1, 2])]
+    # the same name copied to a layer for another print scale: shifted by a line, half the height (SIST-F1)
+    labs = S.classify_labels([T("大厅", 10.0, 5.0, layer="I-平面-文字", h=0.6, id=3),
+                              T("大厅", 10.26, 5.95, layer="I-平面-文字(放大1:100)", h=0.3, id=4)])
+    assert [l.ids for l in labs] == [[3, 4]]
+    # two rooms of one name side by side stay two labels; so does one name repeated along a long space
+    labs = S.classify_labels([T("WC", 1, 1, h=0.3, id=5), T("WC", 2.2, 1, h=0.3, id=6),
+                              T("中庭回廊", 0, 0, h=0.45, id=7), T("中庭回廊", 12, 3, h=0.45, id=8)])
+    assert len(labs) == 4
+    # and the figures count the label once: one name, naming its area
+    areas = [Area(id=1, polygon=box(0, 0, 6, 5))]
+    rep = S.assign_names(areas, [T("前室", 3, 2, id=1, **tag), T("前室", 3, 2, id=2, **tag)])
+    fig = S.floor_figures(areas, [], rep)
+    assert fig["room_texts"] == 1 and fig["own_area_pct"] == 100.0 and areas[0].tags["label_texts"] == "1;2"
+
+
+def test_a_label_on_a_pillar_is_inside_its_room():
+    # the name's insertion point falls on a pillar (a small hole of the room): inside the room, not nearby
+    room = box(0, 0, 6, 5).difference(box(2.8, 2.3, 3.3, 2.8))
+    areas = [Area(id=1, polygon=room), Area(id=2, polygon=box(6.2, 0, 9, 5))]
+    rep = S.assign_names(areas, [T("AMBIENTE 15", 3.0, 2.5)])
+    assert areas[0].name == "AMBIENTE 15" and rep.texts[0].match == "inside"
+    assert S.floor_figures(areas, [], rep)["inside_pct"] == 100.0
+    # a courtyard (a large hole) is no pillar: a label in it lies outside the ring around it
+    ring = box(0, 0, 20, 20).difference(box(4, 4, 16, 16))
+    areas = [Area(id=1, polygon=ring)]
+    rep = S.assign_names(areas, [T("Patio", 10, 10)])
+    assert rep.texts[0].match != "inside"
+    # an area standing in the hole keeps its own label
+    areas = [Area(id=1, polygon=box(0, 0, 6, 5).difference(box(2, 2, 3.5, 3.5))),
+             Area(id=2, polygon=box(2, 2, 3.5, 3.5))]
+    S.assign_names(areas, [T("Lift lobby", 2.8, 2.8)])
+    assert areas[1].name == "Lift lobby" and areas[0].name != "Lift lobby"
+
+
+def test_shaft_labels_beside_a_room_are_no_conflict():
+    # '加压' (pressurisation shaft) written in the hall beside its shaft, a closed cavity of the wall
+    areas = [Area(id=1, polygon=box(0, 0, 20, 15)), Area(id=2, polygon=box(0, 15, 4, 19))]
+    texts = [T("媒体实验室", 10, 10, layer="A-ROOM"), T("加压", 9, 2.5, layer="A-ROOM"),
+             T("水井", 30, 30, layer="A-ROOM"), T("Shaft", 2, 17), T("电梯厅", 2, 18)]
+    pr = RecordingProgress()
+    rep = S.assign_names(areas, texts, progress=pr)
+    assert areas[0].name == "媒体实验室" and "label_conflict" not in areas[0].tags and not rep.conflicts
+    reasons = {r.text: (r.role, r.reason) for r in rep.texts}
+    assert reasons["加压"] == ("ignored", "shaft label") and reasons["水井"] == ("ignored", "shaft label")
+    assert rep.counts()["ignored_by_reason"]["shaft label"] == 3
+    assert areas[1].name == "电梯厅"  # the lift lobby's name wins over the shaft beside it
+    # a shaft segmentation made an area of keeps its label
+    areas = [Area(id=1, polygon=box(0, 0, 2, 2)), Area(id=2, polygon=box(2.2, 0, 9, 5))]
+    rep = S.assign_names(areas, [T("风井", 1, 1), T("办公室", 5, 2.5)])
+    assert areas[0].name == "风井" and rep.texts[0].role == "name"
+
+
+def test_outdoor_and_roof_labels_are_no_room_names():
+    areas = [Area(id=1, polygon=box(0, 0, 10, 8))]
+    rep = S.assign_names(areas, [T("室外庭院", 30, 3), T("排水暗沟", 40, 3), T("办公室", 5, 4)])
+    reasons = {r.text: (r.role, r.reason) for r in rep.texts}
+    assert reasons["室外庭院"] == ("ignored", "outdoor") == reasons["排水暗沟"]
+    fig = S.floor_figures(areas, [], rep)
+    assert fig["room_texts"] == 1 and fig["inside_pct"] == 100.0
+    # a courtyard segmentation made an area of keeps its name
+    areas = [Area(id=1, polygon=box(0, 0, 10, 8))]
+    rep = S.assign_names(areas, [T("室外庭院", 5, 4)])
+    assert areas[0].name == "室外庭院" and rep.texts[0].role == "name"
+    # roof plans label building elements, not rooms ('scroll slanted wall, top face', parapet, gutter)
+    tag = dict(layer="A-SYMB", block="ECADI-TAG-ROOM", tag="CHINESENAME")
+    for text in ("卷轴斜墙顶面", "女儿墙", "天沟"):
+        assert S.classify_text(text, **tag) == ("ignored", "note"), text
+
+
+def test_copies_of_a_label_name_the_area_no_other_name_labels():
+    # 'WC' drawn at 0.6 m and copied at 0.3 m one line up on a 1:100 layer; the first copy falls in the
+    # office next door (near its centre), the other in the WC: the WC is named, the office keeps its name
+    areas = [Area(id=1, polygon=box(0, 0, 4, 4)), Area(id=2, polygon=box(4.2, 0, 7, 4))]
+    texts = [T("Office", 2, 2.6, layer="A-ROOM", h=0.6), T("WC", 3.5, 1.9, layer="A-TEXT", h=0.6),
+             T("WC", 4.5, 2.2, layer="A-TEXT-100", h=0.3)]
+    rep = S.assign_names(areas, texts)
+    assert [a.name for a in areas] == ["Office", "WC"] and not rep.conflicts
+    fig = S.floor_figures(areas, [], rep)
+    assert fig["room_texts"] == 2 and fig["own_area_pct"] == 100.0 and fig["inside_pct"] == 100.0
+    # segmentation still gets every copy as evidence of the inside
+    assert len(S.room_name_points(texts)) == 3
+
+
+@pytest.mark.parametrize("text,reason", [("18.750(结构)", "elevation"), ("+19.700（建筑）", "elevation"),
+                                         ("外部参照.\\E-RT-3F .dwg", "cad internals"), ("E-RG-2F.dwg", "cad internals")])
+def test_structural_elevations_and_xref_names_are_ignored(text, reason):
+    assert S.classify_text(text, layer="I-平面-文字", block="ROOMBLOCK") == ("ignored", reason)
+
+
+def test_one_character_shaft_labels():
+    # '水' / '暖' beside the water / heating shaft, in the WC next to it: no name of the WC
+    areas = [Area(id=1, polygon=box(0, 0, 4, 3)), Area(id=2, polygon=box(4.2, 0, 5.2, 1))]
+    rep = S.assign_names(areas, [T("女卫生间", 2, 1.5), T("水", 3.6, 0.4), T("暖", 4.7, 0.5)])
+    assert areas[0].name == "女卫生间" and not rep.conflicts
+    assert {r.text: r.reason for r in rep.texts}["水"] == "shaft label"
+    assert areas[1].name == "暖"  # the heating shaft is an area of its own: its label names it
+    assert S.classify_text("水泵房")[0] == "name"  # a pump room is a room
+
+
+def test_three_names_split_in_rounds_at_a_door_and_at_a_wide_opening():
+    # a 20 x 14 m hall; a 10 x 10 m room opens onto it through a 4.5 m wide opening (wider than any door);
+    # a 2 m corridor is joined to the hall by a 1 m door. Three names: the corridor comes off first (at
+    # the door), the room at its wide opening in a second round
+    hall = box(0, 0, 20, 14)
+    room = box(20.2, 2, 30.2, 12).union(box(19.9, 4.75, 20.3, 9.25))  # 4.5 m opening
+    corridor = box(0, 14.2, 20, 16.2).union(box(9.5, 13.9, 10.5, 14.3))  # 1 m door
+    poly = hall.union(room).union(corridor)
+    areas = [Area(id=1, polygon=poly)]
+    pr = RecordingProgress()
+    rep = S.assign_names(areas, [T("Hall", 10, 7), T("Reading room", 25, 7), T("Corridor", 15, 15.2)],
+                         progress=pr)
+    by_name = {a.name: a for a in areas}
+    assert set(by_name) == {"Hall", "Reading room", "Corridor"} and not rep.conflicts, [a.name for a in areas]
+    assert by_name["Reading room"].polygon.area == pytest.approx(100, rel=0.08)
+    assert by_name["Corridor"].polygon.area == pytest.approx(40, rel=0.08)
+    assert sum(a.polygon.area for a in areas) == pytest.approx(poly.area, rel=1e-6)
+    assert len(rep.splits) == 2
+    # an opening as wide as the room itself is no narrowing: a conflict, not a split
+    areas = [Area(id=1, polygon=box(0, 0, 20, 14).union(box(20, 2, 26, 12)))]
+    rep = S.assign_names(areas, [T("Hall", 10, 7), T("Reading room", 23, 7)])
+    assert not rep.splits and rep.conflicts == [1]
+
+
+def test_a_name_in_the_wall_beside_a_small_room_keeps_the_room():
+    # a 4 m² store room and a 6 m² boiled-water room behind one 0.2 m wall; the store's name starts in
+    # the wall, 9 cm from its room: without it the merge gave the store to its neighbour (SIST-F3)
+    from algorithms import refine
+
+    store, boiler = box(0, 0, 2, 2), box(2.2, 0, 5.2, 2)
+    hall = box(0, 2.2, 20, 10)
+    areas = [Area(id=1, polygon=store), Area(id=2, polygon=boiler), Area(id=3, polygon=hall)]
+    texts = [T("储藏室", -0.09, 1.0), T("开水间", 3.7, 1.0)]
+    saved = S.protect_labelled_areas(areas, texts, min_area=10.0)
+    assert set(saved) == {1, 2}
+    # a name far from any small area protects nothing; a name inside a big area protects nothing else
+    fresh = [Area(id=1, polygon=store), Area(id=3, polygon=hall)]
+    assert S.protect_labelled_areas(fresh, [T("储藏室", -1.0, 1.0), T("大厅", 10, 2.1)], min_area=10.0) == {}
+    # through the merge: both small rooms survive and get their names
+    kept, _, info = refine.merge_small_areas(areas, [], 10.0, keep_types=refine.KEEP_TYPES + (S.PROTECTED_TYPE,))
+    S.restore_types(saved, kept)
+    assert {a.id for a in kept} == {1, 2, 3} and info["merged"] == 0
+    S.assign_names(kept, texts)
+    assert {a.id: a.name for a in kept}[1] == "储藏室" and {a.id: a.name for a in kept}[2] == "开水间"
+
+
+def test_a_zone_of_an_open_space_is_no_second_room():
+    # library A-A3-10-04: the atrium gallery (named seven times) holds '阅览区(随意开放性坐区)', a reading
+    # zone with free seating, with no wall nor narrowing between them: one space, no conflict
+    gallery = box(0, 0, 60, 12)
+    tag = dict(layer="A-SYMB", entity="ATTRIB", block="ECADI-TAG-ROOM", tag="CHINESENAME", h=0.45)
+    texts = [T("中庭回廊", 8, 6, **tag), T("中庭回廊", 30, 6, **tag), T("阅览区(随意开放性坐区)", 52, 6, **tag)]
+    areas = [Area(id=1, polygon=gallery)]
+    rep = S.assign_names(areas, texts)
+    assert areas[0].name == "中庭回廊" and not rep.conflicts and "label_conflict" not in areas[0].tags
+    assert {r.text: r.reason for r in rep.texts}["阅览区(随意开放性坐区)"] == "zone in a named space"
+    assert S.floor_figures(areas, [], rep)["own_area_pct"] == 100.0
+    # a zone walled off as an area of its own keeps its name; two rooms in one area are still a conflict
+    areas = [Area(id=1, polygon=box(0, 0, 10, 8)), Area(id=2, polygon=box(10.2, 0, 20, 8))]
+    S.assign_names(areas, [T("办公区", 5, 4), T("Office", 15, 4)])
+    assert [a.name for a in areas] == ["办公区", "Office"]
+    areas = [Area(id=1, polygon=box(0, 0, 12, 5))]
+    rep = S.assign_names(areas, [T("会议室", 3, 2.5), T("办公室", 9, 2.5)])
+    assert rep.conflicts == [1]
