@@ -215,3 +215,83 @@ def test_sist_f4_and_f5_dwg_connect(shared_data, floor_cache):
         assert hit and hit[0] in roofs, (x, y, hit)
     assert not any(a.id in roofs for a in f5.refined.areas if a.component == 0)
     assert f5.stats["largest_component_share"] >= 0.95
+
+
+# ------------------------------------------------------------------------------------------ a named space between two buildings
+def _two_buildings(tmp_path, name, passage_label=True, field_label=False, gap=7.0):
+    """Two separate buildings ``gap`` m apart -- the main one (30 x 12 m) and a smaller wing (14 x 6 m,
+    like SIST-F1's north wing) -- with a doorway from each into the gap between them (a passage open at
+    both ends, like 通道 between the wings of SIST-F1); each room named, the passage named or not;
+    ``field_label``: a name standing in the open field 30 m off."""
+    doc = _doc()
+    msp = doc.modelspace()
+    top = 12.0 + gap
+    for x0, y0, x1, y1, door_y in ((0, 0, 30, 12, 12), (8, top, 22, top + 6, top)):
+        lines = [((x0, y0), (x1, y0)), ((x1, y0), (x1, y1)), ((x1, y1), (x0, y1)), ((x0, y1), (x0, y0))]
+        for a, b in lines:
+            if a[1] == b[1] == door_y:  # the doorway (x 14-15.2) into the gap
+                lo, hi = sorted((a[0], b[0]))
+                msp.add_line((lo, door_y), (14, door_y), dxfattribs={"layer": "A-WALL"})
+                msp.add_line((15.2, door_y), (hi, door_y), dxfattribs={"layer": "A-WALL"})
+            else:
+                msp.add_line(a, b, dxfattribs={"layer": "A-WALL"})
+    _text(msp, "Aula", 5, 5)
+    _text(msp, "Biblioteca", 10, top + 3)
+    if passage_label:
+        _text(msp, "Passage", 18, 12 + gap / 2)
+    if field_label:
+        _text(msp, "Garden", 15, -30)
+    p = tmp_path / name
+    doc.saveas(p)
+    return str(p)
+
+
+def _outside_raster(shape, rects, res=0.1):
+    """Free raster (True = free) with solid rectangles (x0, y0, x1, y1 in metres, y down) as buildings."""
+    free = np.ones(shape, bool)
+    for x0, y0, x1, y1 in rects:
+        free[int(y0 / res):int(y1 / res), int(x0 / res):int(x1 / res)] = False
+    return free
+
+
+def test_space_between_two_facades_closes_at_its_mouths_never_in_a_field_or_a_corner():
+    res = 0.1
+    # two buildings 12 m apart, 40 m long, the lower one shifted 10 m east: the label between them
+    free = _outside_raster((900, 900), [(10, 10, 50, 30), (20, 42, 60, 62)], res)
+    got = segmentation._claim_between_facades(free, 350, 360, res, 36.0, 24.0, 576.0)
+    assert got is not None
+    area = got.sum() * res * res
+    # bounded by the two facades (x 20-50 overlap) and the chords from each building corner across to the
+    # facade that runs on: 30 x 12 m plus two right triangles' worth of pixels at most
+    assert 0.95 * 30 * 12 <= area <= 30 * 12 + 2 * 0.5 * 12 * 12 * 0.2, area
+    rows, cols = np.nonzero(got)
+    assert rows.min() >= 300 - 2 and rows.max() <= 420 + 2 and cols.min() >= 195 and cols.max() <= 505
+    # a name in an open field, before one facade, in the corner of an L, by a kiosk: nothing claimed
+    assert segmentation._claim_between_facades(np.ones((900, 900), bool), 450, 450, res, 36.0, 24.0, 576.0) is None
+    one = _outside_raster((900, 900), [(10, 10, 80, 30)], res)
+    assert segmentation._claim_between_facades(one, 450, 340, res, 36.0, 24.0, 576.0) is None
+    ell = _outside_raster((900, 900), [(10, 10, 60, 30), (10, 30, 30, 80)], res)
+    assert segmentation._claim_between_facades(ell, 350, 350, res, 36.0, 24.0, 576.0) is None
+    kiosk = _outside_raster((900, 900), [(44, 44, 47, 47)], res)
+    assert segmentation._claim_between_facades(kiosk, 450, 430, res, 36.0, 24.0, 576.0) is None
+    # a space larger than the limit after the chords (a forecourt 40 x 30 m between two blocks) is not claimed
+    wide = _outside_raster((900, 900), [(10, 10, 50, 30), (10, 54, 50, 74)], res)
+    assert segmentation._claim_between_facades(wide, 300, 420, res, 36.0, 24.0, 576.0) is None
+
+
+@pytest.mark.parametrize("gap", [6.0, 8.0])
+def test_named_passage_between_two_buildings_joins_them(tmp_path, gap):
+    named = pipeline.process_floor(_two_buildings(tmp_path, "named.dxf", gap=gap))
+    bare = pipeline.process_floor(_two_buildings(tmp_path, "bare.dxf", passage_label=False, gap=gap))
+    mid = Point(18, 12 + gap / 2)
+    assert named.stats["components"] == 1 and named.stats["largest_component_share"] == 1.0, named.stats
+    passage = [a for a in named.refined.areas if a.polygon.contains(mid)]
+    # the gap under the wing (14 m x gap), closed at the chords of its two mouths, not the open land beside
+    assert len(passage) == 1 and 0.7 * 14 * gap <= passage[0].polygon.area <= 1.5 * 14 * gap, passage
+    assert bare.stats["components"] == 2  # no name, no evidence: the gap is the outside
+    assert not any(a.polygon.contains(mid) for a in bare.refined.areas)
+    field = pipeline.process_floor(_two_buildings(tmp_path, "field.dxf", field_label=True, gap=gap))
+    assert not any(a.polygon.contains(Point(15, -30)) for a in field.refined.areas)  # a name in a field claims nothing
+    assert field.stats["components"] == 1
+    assert abs(sum(a.polygon.area for a in field.refined.areas)
+               - sum(a.polygon.area for a in named.refined.areas)) < 1.0
