@@ -487,7 +487,12 @@ def building_interior(free: np.ndarray, resolution: float, envelope_gap: float =
       interior (a doorway, at least ``MIN_CONTACT_M`` of contact), so that landscape pockets
       bounded only by walls stay outside;
     * ``inside_points`` ((x, y) pixel coordinates, col/row, of room-name texts): the space holding
-      one is inside whatever its facade, at the smallest footprint scale (x1, x2) that encloses it.
+      one is inside whatever its facade, at the smallest footprint scale (x1, x2) that encloses it;
+      a name no scale encloses (the disk enters, or the piece joins the land around) that stands
+      between two facades open at both ends -- a passage or covered walkway between two buildings --
+      is inside up to the chords of its two mouths (``_claim_between_facades``: from each wall end the
+      rays from the name see past, the shortest chord across to the other side; at most
+      ``MOUTH_CHORD`` x the footprint gap long, the space at most (``MOUTH_AREA`` x the gap)^2).
 
     Claimed space enclosed at the footprint scale D is at most (``CLAIM_FACTOR`` x D)^2, at the
     larger scale at most D^2: larger pockets are forecourts, the street or the gap between two

@@ -295,3 +295,31 @@ def test_named_passage_between_two_buildings_joins_them(tmp_path, gap):
     assert field.stats["components"] == 1
     assert abs(sum(a.polygon.area for a in field.refined.areas)
                - sum(a.polygon.area for a in named.refined.areas)) < 1.0
+
+
+def test_dxftoosmag_headless_joins_two_buildings_by_their_named_passage(tmp_path):
+    from algorithms import osmag
+    from tests.qgis_process import run_alg
+
+    out = tmp_path / "passage.osm"
+    run_alg("dxftoosmag", {"INPUT": _two_buildings(tmp_path, "passage.dxf"), "OUTPUT": str(out)})
+    areas, passages, _, _ = osmag.read_osmag(str(out))
+    named = {a.id: a.name for a in areas}
+    pairs = [{named.get(p.from_id), named.get(p.to_id)} for p in passages]
+    assert {"Aula", "Passage"} in pairs and {"Passage", "Biblioteca"} in pairs, pairs
+
+
+@pytest.mark.slow
+def test_sist_f1_dwg_passage_between_the_wings_is_an_area(shared_data, floor_cache):
+    """SIST-F1.dwg: the north wing E2 meets E1 only through the passage 通道 between the two buildings, open
+    at both ends; the name makes it an area closed at the chords of its two mouths, joining the floor."""
+    pytest.importorskip("algorithms.cad_dwg")
+    path = shared_data / "dwg" / "sist-original" / "SIST-F1.dwg"
+    if not path.is_file():
+        pytest.skip("the SIST DWG sheets are not in the shared data")
+    f1 = floor_cache.process_floor(path)
+    hit = [a for a in f1.refined.areas if a.polygon.contains(Point(1337.25, 105.44))]  # the label 通道
+    assert len(hit) == 1 and hit[0].component == 0
+    assert 250 <= hit[0].polygon.area <= 576, hit[0].polygon.area  # the passage, not the land around it
+    assert any(a.component == 0 and "E2-F1" in a.name for a in f1.refined.areas)  # the north wing
+    assert f1.stats["largest_component_share"] >= 0.95
