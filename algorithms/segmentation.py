@@ -1724,6 +1724,10 @@ def segment(grid: OccupancyGrid, door_width: float = DEFAULT_DOOR_WIDTH,
     stats["claimed_open_m2"] = info.get("claimed_px", 0) * res * res
     stats["inside_points"] = float(info.get("inside_points", 0))
     stats["inside_points_outside"] = float(info.get("inside_points_outside", 0))
+    stats["inside_points_between_facades"] = float(info.get("inside_points_between_facades", 0))
+    if info.get("inside_points_between_facades"):
+        progress.info(f"{info['inside_points_between_facades']} room name(s) between two facades open at both ends "
+                      "(a passage between buildings): kept inside up to the chords of the two mouths")
     if info.get("claimed_px"):
         progress.info(f"space open to the outside kept inside on evidence (footprint, doorways, "
                       f"{info.get('inside_points_claimed', 0)} room names): {stats['claimed_open_m2']:.1f} m2")

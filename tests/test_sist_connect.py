@@ -323,3 +323,32 @@ def test_sist_f1_dwg_passage_between_the_wings_is_an_area(shared_data, floor_cac
     assert 250 <= hit[0].polygon.area <= 576, hit[0].polygon.area  # the passage, not the land around it
     assert any(a.component == 0 and "E2-F1" in a.name for a in f1.refined.areas)  # the north wing
     assert f1.stats["largest_component_share"] >= 0.95
+
+
+def test_named_passage_no_disk_encloses_closes_at_its_mouths():
+    """Like SIST-F1's 通道: the gap between two buildings is 13 m wide (the 12 m disk enters it) and opens at its
+    east end into a court between three buildings, so the piece the 24 m disk leaves (gap, court and the 5 m
+    strips beside it) is over the (24 m)^2 limit: only the mouths close the named passage."""
+    res = 0.2
+
+    def build(rects, shape=(500, 650), off=20.0):
+        free = np.ones(shape, bool)
+        for x0, y0, x1, y1 in rects:
+            free[int((y0 + off) / res):int((y1 + off) / res), int((x0 + off) / res):int((x1 + off) / res)] = False
+        return free
+
+    def px(x, y):
+        return int((y + 20) / res), int((x + 20) / res)
+
+    free = build([(0, 0, 40, 12), (10, 25, 90, 37), (45, -5, 90, 20)])
+    named = np.array([[(25 + 20) / res, (18.5 + 20) / res]])
+    info = {}
+    inside, _ = segmentation.building_interior(free, res, 4.0, inside_points=named, info=info, footprint=True)
+    assert info["inside_points_between_facades"] == 1 and info["inside_points_outside"] == 0
+    # the passage from end to end: closed square across from each building corner (x 10 and x 40), not beyond
+    assert inside[px(25, 18.5)] and inside[px(11, 14)] and inside[px(38, 23)] and not inside[px(5, 14)]
+    assert not inside[px(70, 22.5)] and not inside[px(-5, 18)] and not inside[px(25, 45)]  # strip, field, beyond
+    assert 380 <= info["claimed"].sum() * res * res <= 576
+    bare = {}
+    inside, _ = segmentation.building_interior(free, res, 4.0, info=bare, footprint=True)
+    assert not inside[px(25, 18.5)] and bare["claimed_px"] == 0  # no name: nothing claimed
