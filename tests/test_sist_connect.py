@@ -217,7 +217,7 @@ def test_sist_f4_and_f5_dwg_connect(shared_data, floor_cache):
     assert f5.stats["largest_component_share"] >= 0.95
 
 
-# ------------------------------------------------------------------------------------------ a named space between two buildings
+# ------------------------------------------------------------------------------------------ named passages
 def _two_buildings(tmp_path, name, passage_label=True, field_label=False, gap=7.0):
     """Two separate buildings ``gap`` m apart -- the main one (30 x 12 m) and a smaller wing (14 x 6 m,
     like SIST-F1's north wing) -- with a doorway from each into the gap between them (a passage open at
