@@ -318,6 +318,152 @@ def _chord_pockets(claimed: np.ndarray, free_out: np.ndarray, max_chord: float =
     return out.view(bool) & free_out
 
 
+MOUTH_RAYS = 720  # rays cast from a room name still outside to find the facades around it
+MOUTH_JUMP_M = 1.0  # a ray seeing this much (and 20 %) further than its neighbour passes a wall end
+
+
+def _mouth_rays(outside: np.ndarray, c: int, r: int, reach_px: float, n: int = MOUTH_RAYS):
+    """Cast ``n`` rays from pixel (c, r) through ``outside`` (free space still open to the outside).
+    Returns (d, ux, uy): the distance (px) at which each ray first meets anything else (a wall, the
+    enclosed interior), inf when it runs ``reach_px`` or leaves the image first, and the directions."""
+    rows, cols = outside.shape
+    ang = np.arange(n) * (2.0 * math.pi / n)
+    ux, uy = np.cos(ang), np.sin(ang)
+    t = (np.arange(1, int(2 * reach_px) + 1, dtype=np.float32) * 0.5)
+    d = np.full(n, np.inf)
+    for s in range(0, n, 90):  # in chunks: 90 rays x 2 * reach samples
+        x = np.floor(c + 0.5 + ux[s:s + 90, None] * t[None, :]).astype(np.int32)
+        y = np.floor(r + 0.5 + uy[s:s + 90, None] * t[None, :]).astype(np.int32)
+        inside = (x >= 0) & (x < cols) & (y >= 0) & (y < rows)
+        ok = np.zeros(x.shape, bool)
+        ok[inside] = outside[y[inside], x[inside]]
+        blocked = inside & ~ok
+        stop = np.where(blocked.any(1), blocked.argmax(1), len(t))
+        gone = np.where((~inside).any(1), (~inside).argmax(1), len(t))
+        hit = stop < gone
+        d[s:s + 90][hit] = t[stop[hit]]
+    return d, ux, uy
+
+
+def _mouth_chords(d: np.ndarray, ux: np.ndarray, uy: np.ndarray, jump_px: float, max_chord_px: float,
+                  reach_px: float):
+    """The mouths of the space around a ray origin (``_mouth_rays``): from every wall end the rays see past
+    (a ray reaches 20 % and ``jump_px`` further than its neighbour, or nothing; not at the ray's reach),
+    the shortest chord across the window to a point the rays hit on the other side, less than 180
+    degrees on, at most ``max_chord_px`` long, across the rays (at least 30 degrees off the ray to the
+    wall end: no chord along a ray to what lies behind the end) and with every ray between passing
+    beyond it (the chord never cuts the space). A gap between two facades closes corner to corner, or
+    from a building corner square across to the facade that runs on. Returns (ray a, ray b) pairs."""
+    n = len(d)
+    fin = np.isfinite(d)
+    dd = np.where(fin, d, 1e12)
+    near = fin & (d < 0.95 * reach_px)
+    up = near & (np.roll(dd, -1) > 1.2 * dd + jump_px)
+    down = near & (np.roll(dd, 1) > 1.2 * dd + jump_px)
+    px, py = dd * ux, dd * uy
+    k = np.arange(2, n // 2)
+    chords = set()
+    for a0, step in [(a, 1) for a in np.flatnonzero(up)] + [(b, -1) for b in np.flatnonzero(down)]:
+        cand = (a0 + step * k) % n
+        ax, ay = px[a0], py[a0]
+        ex, ey = px[cand] - ax, py[cand] - ay
+        length = np.hypot(ex, ey)
+        ok = fin[cand] & (length <= max_chord_px) & (length > 0)
+        # across the rays: the chord makes at least 30 degrees with the ray to the wall end
+        with np.errstate(divide="ignore", invalid="ignore"):
+            ok &= np.abs(ux[a0] * ey - uy[a0] * ex) >= 0.5 * length
+        if not ok.any():
+            continue
+        # rays strictly between: distance along ray i to the chord line, (A x E) / (u_i x E)
+        cidx = np.flatnonzero(ok)
+        kk = k[cidx]
+        ii = (a0 + step * np.arange(1, kk.max())[None, :]) % n  # rays 1 .. k-1 on
+        between = np.arange(1, kk.max())[None, :] < kk[:, None]
+        exs, eys = ex[cidx, None], ey[cidx, None]
+        with np.errstate(divide="ignore", invalid="ignore"):
+            tt = (ax * eys - ay * exs) / (ux[ii] * eys - uy[ii] * exs)
+        valid = np.all(~between | (dd[ii] >= tt - 2.0), axis=1)
+        if not valid.any():
+            continue
+        best = cidx[valid][np.argmin(length[cidx][valid])]
+        b0 = int(cand[best])
+        chords.add((int(a0), b0) if step == 1 else (b0, int(a0)))
+    return sorted(chords)
+
+
+def _claim_between_facades(outside: np.ndarray, c: int, r: int, resolution: float, reach_m: float,
+                           max_chord_m: float, max_area_m2: float) -> Optional[np.ndarray]:
+    """The space holding a room name that stays open to the outside at every scale (a passage,
+    arcade or covered walkway between two buildings, a courtyard strip between wings): closed at the
+    chords joining the facing wall ends nearest to the name (``_mouth_chords``), not by a disk. Returns
+    the pixels of ``outside`` in it (a bool mask of ``outside``'s shape), or None when the chords do not
+    close it within ``reach_m`` or it stays larger than ``max_area_m2`` (open land, a forecourt, a name
+    in a field or before one facade)."""
+    import cv2
+
+    reach = reach_m / resolution
+    d, ux, uy = _mouth_rays(outside, c, r, reach)
+    if not np.isfinite(d).any():
+        return None
+    chords = _mouth_chords(d, ux, uy, MOUTH_JUMP_M / resolution, max_chord_m / resolution, reach)
+    if not chords:
+        return None
+    # between two facades, open at both ends: two mouths on opposite sides of the name (directions to
+    # their midpoints at least 120 degrees apart); the corner of an L, a bay before one facade or a kiosk
+    # in a field has one mouth or none
+    mid = np.array([[d[a] * ux[a] + d[b] * ux[b], d[a] * uy[a] + d[b] * uy[b]] for a, b in chords])
+    mid /= np.maximum(np.hypot(mid[:, 0], mid[:, 1]), 1e-9)[:, None]
+    if not (mid @ mid.T <= math.cos(math.radians(120.0)) + 1e-9).any():
+        return None
+    rows, cols = outside.shape
+    m = int(math.ceil(reach)) + 4
+    x0, y0, x1, y1 = max(0, c - m), max(0, r - m), min(cols, c + m + 1), min(rows, r + m + 1)
+    win = outside[y0:y1, x0:x1].copy().view(np.uint8)
+    for a, b in chords:
+        # from wall end to wall end, a few pixels into the walls on both sides (no leak past the ends)
+        ex, ey = d[b] * ux[b] - d[a] * ux[a], d[b] * uy[b] - d[a] * uy[a]
+        ln = math.hypot(ex, ey) or 1.0
+        ex, ey = 3.0 * ex / ln, 3.0 * ey / ln
+        pa = (int(round(c + 0.5 + d[a] * ux[a] - ex - x0)), int(round(r + 0.5 + d[a] * uy[a] - ey - y0)))
+        pb = (int(round(c + 0.5 + d[b] * ux[b] + ex - x0)), int(round(r + 0.5 + d[b] * uy[b] + ey - y0)))
+        cv2.line(win, pa, pb, 0, thickness=3)
+    if not win[r - y0, c - x0]:
+        return None
+    _, lab = cv2.connectedComponents(win, connectivity=4, ltype=cv2.CV_32S)
+    piece = lab == lab[r - y0, c - x0]
+    if piece[0, :].any() or piece[-1, :].any() or piece[:, 0].any() or piece[:, -1].any():
+        return None  # not closed within reach (or open to the image edge)
+    if piece.sum() * resolution ** 2 > max_area_m2:
+        return None
+    out = np.zeros(outside.shape, bool)
+    out[y0:y1, x0:x1] = piece
+    return out
+
+
+MOUTH_REACH = 3.0  # x footprint gap: rays from a name look this far for the facades around it
+MOUTH_CHORD = 2.0  # x footprint gap: widest mouth closed (the largest disk scale passes wider ones)
+MOUTH_AREA = 2.0  # (x footprint gap)^2: largest space closed at its mouths (the largest scale's limit)
+
+
+def _claim_names_between_facades(outside: np.ndarray, open_pts, resolution: float, fgap: float, check=None):
+    """``_claim_between_facades`` for every room name no disk scale enclosed (pixel (col, row) points):
+    returns (the names still outside, the pixels claimed)."""
+    got = np.zeros(outside.shape, bool)
+    rest = []
+    for c, r in open_pts:
+        if check is not None:
+            check()
+        if got[r, c]:
+            continue
+        piece = _claim_between_facades(outside & ~got, c, r, resolution, MOUTH_REACH * fgap, MOUTH_CHORD * fgap,
+                                       (MOUTH_AREA * fgap) ** 2)
+        if piece is None:
+            rest.append((c, r))
+        else:
+            got |= piece
+    return rest, got
+
+
 def building_interior(free: np.ndarray, resolution: float, envelope_gap: float = DEFAULT_ENVELOPE_GAP,
                       unknown: Optional[np.ndarray] = None, inside_points=None,
                       footprint_gap: Optional[float] = None, info: Optional[dict] = None,
@@ -341,7 +487,12 @@ def building_interior(free: np.ndarray, resolution: float, envelope_gap: float =
       interior (a doorway, at least ``MIN_CONTACT_M`` of contact), so that landscape pockets
       bounded only by walls stay outside;
     * ``inside_points`` ((x, y) pixel coordinates, col/row, of room-name texts): the space holding
-      one is inside whatever its facade, at the smallest footprint scale (x1, x2) that encloses it.
+      one is inside whatever its facade, at the smallest footprint scale (x1, x2) that encloses it;
+      a name no scale encloses (the disk enters, or the piece joins the land around) that stands
+      between two facades open at both ends -- a passage or covered walkway between two buildings --
+      is inside up to the chords of its two mouths (``_claim_between_facades``: from each wall end the
+      rays from the name see past, the shortest chord across to the other side; at most
+      ``MOUTH_CHORD`` x the footprint gap long, the space at most (``MOUTH_AREA`` x the gap)^2).
 
     Claimed space enclosed at the footprint scale D is at most (``CLAIM_FACTOR`` x D)^2, at the
     larger scale at most D^2: larger pockets are forecourts, the street or the gap between two
@@ -413,24 +564,31 @@ def building_interior(free: np.ndarray, resolution: float, envelope_gap: float =
         elif k == 0:  # footprint: keep what opens onto the enclosed interior and is a space of its own
             keep = _opens_onto(lab, n, lab0, n0, big0, min_contact) & _space_shaped(lab, n, big0[lab0],
                                                                                      free & reach)
-        rest = []
-        for c, r in open_pts:
-            if lab[r, c] > 0:
-                keep[lab[r, c]] = True
-                claimed_pts += 1
-            else:
-                rest.append((c, r))
-        open_pts = rest
-        keep[0] = False
         # a space proven enclosed by a disk of diameter D is believed up to (CLAIM_FACTOR x D)^2:
         # larger ones are the gaps between drawings on a sheet, forecourts, the street
         size = np.bincount(lab.ravel(), minlength=n)
-        keep &= size <= ((CLAIM_FACTOR if k == 0 else 1.0) * 2.0 * rc) ** 2
+        small = size <= ((CLAIM_FACTOR if k == 0 else 1.0) * 2.0 * rc) ** 2
+        rest = []
+        for c, r in open_pts:
+            if lab[r, c] > 0 and small[lab[r, c]]:
+                keep[lab[r, c]] = True
+                claimed_pts += 1
+            else:  # not enclosed at this scale (or too large): the next scale, then the mouths, may
+                rest.append((c, r))
+        open_pts = rest
+        keep[0] = False
+        keep &= small
         if not keep.any():
             continue
         got = keep[lab]
         got |= _chord_pockets(got, free & reach0 & ~claimed & ~got)
         claimed |= got
+    if open_pts and len(scales) > 1:  # names no disk encloses: a space between two facades closes at its mouths
+        before = len(open_pts)
+        open_pts, got = _claim_names_between_facades(free & reach0 & ~claimed, open_pts, resolution, fgap, check)
+        claimed |= got
+        info["inside_points_between_facades"] = before - len(open_pts)
+        claimed_pts += before - len(open_pts)
     info["inside_points_claimed"] = claimed_pts
     info["inside_points_outside"] = len(open_pts)
     info["claimed_px"] = int(claimed.sum())
@@ -1744,6 +1902,10 @@ def segment(grid: OccupancyGrid, door_width: float = DEFAULT_DOOR_WIDTH,
     stats["claimed_open_m2"] = info.get("claimed_px", 0) * res * res
     stats["inside_points"] = float(info.get("inside_points", 0))
     stats["inside_points_outside"] = float(info.get("inside_points_outside", 0))
+    stats["inside_points_between_facades"] = float(info.get("inside_points_between_facades", 0))
+    if info.get("inside_points_between_facades"):
+        progress.info(f"{info['inside_points_between_facades']} room name(s) between two facades open at both ends "
+                      "(a passage between buildings): kept inside up to the chords of the two mouths")
     if info.get("claimed_px"):
         progress.info(f"space open to the outside kept inside on evidence (footprint, doorways, "
                       f"{info.get('inside_points_claimed', 0)} room names): {stats['claimed_open_m2']:.1f} m2")

@@ -215,3 +215,140 @@ def test_sist_f4_and_f5_dwg_connect(shared_data, floor_cache):
         assert hit and hit[0] in roofs, (x, y, hit)
     assert not any(a.id in roofs for a in f5.refined.areas if a.component == 0)
     assert f5.stats["largest_component_share"] >= 0.95
+
+
+# ------------------------------------------------------------------------------------------ named passages
+def _two_buildings(tmp_path, name, passage_label=True, field_label=False, gap=7.0):
+    """Two separate buildings ``gap`` m apart -- the main one (30 x 12 m) and a smaller wing (14 x 6 m,
+    like SIST-F1's north wing) -- with a doorway from each into the gap between them (a passage open at
+    both ends, like 通道 between the wings of SIST-F1); each room named, the passage named or not;
+    ``field_label``: a name standing in the open field 30 m off."""
+    doc = _doc()
+    msp = doc.modelspace()
+    top = 12.0 + gap
+    for x0, y0, x1, y1, door_y in ((0, 0, 30, 12, 12), (8, top, 22, top + 6, top)):
+        lines = [((x0, y0), (x1, y0)), ((x1, y0), (x1, y1)), ((x1, y1), (x0, y1)), ((x0, y1), (x0, y0))]
+        for a, b in lines:
+            if a[1] == b[1] == door_y:  # the doorway (x 14-15.2) into the gap
+                lo, hi = sorted((a[0], b[0]))
+                msp.add_line((lo, door_y), (14, door_y), dxfattribs={"layer": "A-WALL"})
+                msp.add_line((15.2, door_y), (hi, door_y), dxfattribs={"layer": "A-WALL"})
+            else:
+                msp.add_line(a, b, dxfattribs={"layer": "A-WALL"})
+    _text(msp, "Aula", 5, 5)
+    _text(msp, "Biblioteca", 10, top + 3)
+    if passage_label:
+        _text(msp, "Passage", 18, 12 + gap / 2)
+    if field_label:
+        _text(msp, "Garden", 15, -30)
+    p = tmp_path / name
+    doc.saveas(p)
+    return str(p)
+
+
+def _outside_raster(shape, rects, res=0.1):
+    """Free raster (True = free) with solid rectangles (x0, y0, x1, y1 in metres, y down) as buildings."""
+    free = np.ones(shape, bool)
+    for x0, y0, x1, y1 in rects:
+        free[int(y0 / res):int(y1 / res), int(x0 / res):int(x1 / res)] = False
+    return free
+
+
+def test_space_between_two_facades_closes_at_its_mouths_never_in_a_field_or_a_corner():
+    res = 0.1
+    # two buildings 12 m apart, 40 m long, the lower one shifted 10 m east: the label between them
+    free = _outside_raster((900, 900), [(10, 10, 50, 30), (20, 42, 60, 62)], res)
+    got = segmentation._claim_between_facades(free, 350, 360, res, 36.0, 24.0, 576.0)
+    assert got is not None
+    area = got.sum() * res * res
+    # bounded by the two facades (x 20-50 overlap) and the chords from each building corner across to the
+    # facade that runs on: 30 x 12 m plus two right triangles' worth of pixels at most
+    assert 0.95 * 30 * 12 <= area <= 30 * 12 + 2 * 0.5 * 12 * 12 * 0.2, area
+    rows, cols = np.nonzero(got)
+    assert rows.min() >= 300 - 2 and rows.max() <= 420 + 2 and cols.min() >= 195 and cols.max() <= 505
+    # a name in an open field, before one facade, in the corner of an L, by a kiosk: nothing claimed
+    assert segmentation._claim_between_facades(np.ones((900, 900), bool), 450, 450, res, 36.0, 24.0, 576.0) is None
+    one = _outside_raster((900, 900), [(10, 10, 80, 30)], res)
+    assert segmentation._claim_between_facades(one, 450, 340, res, 36.0, 24.0, 576.0) is None
+    ell = _outside_raster((900, 900), [(10, 10, 60, 30), (10, 30, 30, 80)], res)
+    assert segmentation._claim_between_facades(ell, 350, 350, res, 36.0, 24.0, 576.0) is None
+    kiosk = _outside_raster((900, 900), [(44, 44, 47, 47)], res)
+    assert segmentation._claim_between_facades(kiosk, 450, 430, res, 36.0, 24.0, 576.0) is None
+    # a space larger than the limit after the chords (a forecourt 40 x 30 m between two blocks) is not claimed
+    wide = _outside_raster((900, 900), [(10, 10, 50, 30), (10, 54, 50, 74)], res)
+    assert segmentation._claim_between_facades(wide, 300, 420, res, 36.0, 24.0, 576.0) is None
+
+
+@pytest.mark.parametrize("gap", [6.0, 8.0])
+def test_named_passage_between_two_buildings_joins_them(tmp_path, gap):
+    named = pipeline.process_floor(_two_buildings(tmp_path, "named.dxf", gap=gap))
+    bare = pipeline.process_floor(_two_buildings(tmp_path, "bare.dxf", passage_label=False, gap=gap))
+    mid = Point(18, 12 + gap / 2)
+    assert named.stats["components"] == 1 and named.stats["largest_component_share"] == 1.0, named.stats
+    passage = [a for a in named.refined.areas if a.polygon.contains(mid)]
+    # the gap under the wing (14 m x gap), closed at the chords of its two mouths, not the open land beside
+    assert len(passage) == 1 and 0.7 * 14 * gap <= passage[0].polygon.area <= 1.5 * 14 * gap, passage
+    assert bare.stats["components"] == 2  # no name, no evidence: the gap is the outside
+    assert not any(a.polygon.contains(mid) for a in bare.refined.areas)
+    field = pipeline.process_floor(_two_buildings(tmp_path, "field.dxf", field_label=True, gap=gap))
+    assert not any(a.polygon.contains(Point(15, -30)) for a in field.refined.areas)  # a name in a field claims nothing
+    assert field.stats["components"] == 1
+    assert abs(sum(a.polygon.area for a in field.refined.areas)
+               - sum(a.polygon.area for a in named.refined.areas)) < 1.0
+
+
+def test_dxftoosmag_headless_joins_two_buildings_by_their_named_passage(tmp_path):
+    from algorithms import osmag
+    from tests.qgis_process import run_alg
+
+    out = tmp_path / "passage.osm"
+    run_alg("dxftoosmag", {"INPUT": _two_buildings(tmp_path, "passage.dxf"), "OUTPUT": str(out)})
+    areas, passages, _, _ = osmag.read_osmag(str(out))
+    named = {a.id: a.name for a in areas}
+    pairs = [{named.get(p.from_id), named.get(p.to_id)} for p in passages]
+    assert {"Aula", "Passage"} in pairs and {"Passage", "Biblioteca"} in pairs, pairs
+
+
+@pytest.mark.slow
+def test_sist_f1_dwg_passage_between_the_wings_is_an_area(shared_data, floor_cache):
+    """SIST-F1.dwg: the north wing E2 meets E1 only through the passage 通道 between the two buildings, open
+    at both ends; the name makes it an area closed at the chords of its two mouths, joining the floor."""
+    pytest.importorskip("algorithms.cad_dwg")
+    path = shared_data / "dwg" / "sist-original" / "SIST-F1.dwg"
+    if not path.is_file():
+        pytest.skip("the SIST DWG sheets are not in the shared data")
+    f1 = floor_cache.process_floor(path)
+    hit = [a for a in f1.refined.areas if a.polygon.contains(Point(1337.25, 105.44))]  # the label 通道
+    assert len(hit) == 1 and hit[0].component == 0
+    assert 250 <= hit[0].polygon.area <= 576, hit[0].polygon.area  # the passage, not the land around it
+    assert any(a.component == 0 and "E2-F1" in a.name for a in f1.refined.areas)  # the north wing
+    assert f1.stats["largest_component_share"] >= 0.95
+
+
+def test_named_passage_no_disk_encloses_closes_at_its_mouths():
+    """Like SIST-F1's 通道: the gap between two buildings is 13 m wide (the 12 m disk enters it) and opens at its
+    east end into a court between three buildings, so the piece the 24 m disk leaves (gap, court and the 5 m
+    strips beside it) is over the (24 m)^2 limit: only the mouths close the named passage."""
+    res = 0.2
+
+    def build(rects, shape=(500, 650), off=20.0):
+        free = np.ones(shape, bool)
+        for x0, y0, x1, y1 in rects:
+            free[int((y0 + off) / res):int((y1 + off) / res), int((x0 + off) / res):int((x1 + off) / res)] = False
+        return free
+
+    def px(x, y):
+        return int((y + 20) / res), int((x + 20) / res)
+
+    free = build([(0, 0, 40, 12), (10, 25, 90, 37), (45, -5, 90, 20)])
+    named = np.array([[(25 + 20) / res, (18.5 + 20) / res]])
+    info = {}
+    inside, _ = segmentation.building_interior(free, res, 4.0, inside_points=named, info=info, footprint=True)
+    assert info["inside_points_between_facades"] == 1 and info["inside_points_outside"] == 0
+    # the passage from end to end: closed square across from each building corner (x 10 and x 40), not beyond
+    assert inside[px(25, 18.5)] and inside[px(11, 14)] and inside[px(38, 23)] and not inside[px(5, 14)]
+    assert not inside[px(70, 22.5)] and not inside[px(-5, 18)] and not inside[px(25, 45)]  # strip, field, beyond
+    assert 380 <= info["claimed"].sum() * res * res <= 576
+    bare = {}
+    inside, _ = segmentation.building_interior(free, res, 4.0, info=bare, footprint=True)
+    assert not inside[px(25, 18.5)] and bare["claimed_px"] == 0  # no name: nothing claimed
