@@ -477,3 +477,29 @@ def _line(g: CadGeometry):
 
     c = g.coords[np.isfinite(g.coords).all(axis=1)]
     return LineString(c) if len(c) >= 2 else Point(c[0])
+
+
+# ------------------------------------------------------------------------------------------ dashed lines on kept layers
+PROJECTION_KINDS = ("wall", "reference")  # kinds whose dashed lines are projections, not walls
+PROJECTION_TYPES = ("LINE", "LWPOLYLINE", "POLYLINE", "ARC", "SPLINE", "ELLIPSE")
+
+
+def is_projection_line(g: CadGeometry, dashed: bool) -> bool:
+    """A line drawn with a broken linetype (dashed / dash-dot / hidden, by name or by its pattern's gaps) on a
+    wall (or reference) layer: what lies above or beyond the cut plane (a vault, a beam, a roof truss, a
+    collapsed vault's outline, a canopy), never a wall. Such lines cut rooms into pieces and, drawn across a
+    doorway (a vault's springing line), close it. They are kept as boundary evidence (kind "boundary")."""
+    return bool(dashed) and g.kind in PROJECTION_KINDS and g.entity in PROJECTION_TYPES and not g.filled
+
+
+def split_projection_lines(geoms: List[CadGeometry]) -> Tuple[List[CadGeometry], List[CadGeometry]]:
+    """(geometries without the projection lines, the projection lines as boundary evidence): the ones
+    ``is_projection_line`` marked with kind "boundary" at import (and that classification left as they were)."""
+    keep, proj = [], []
+    for g in geoms:
+        if g.kind == "boundary":
+            g.cls = "boundary"
+            proj.append(g)
+        else:
+            keep.append(g)
+    return keep, proj

@@ -403,3 +403,69 @@ def test_dxftoosmag_headless_corridor_closed_by_a_projection_line(tmp_path):
     corridor = [a for a in areas if a.name == "Corridoio distribuzione"]
     assert len(corridor) == 1
     assert len([p for p in passages if corridor[0].id in (p.from_id, p.to_id)]) >= 3
+
+
+# ------------------------------------------------------------------ dashed projections on wall layers
+def _vaulted_rooms(tmp_path, how="entity", name="v.dxf"):
+    """Two 6 x 6 m rooms joined by a 1 m doorway (partition at x = 6, opening 2.5-3.5); the left room is
+    crossed by a line at x = 4 on the WALL layer (a vault's springing line, a beam overhead), drawn as
+    ``how``: "entity" (a linetype whose name says nothing, 'RAYITAS', but whose pattern has gaps), "layer"
+    (the wall layer's own linetype is such a pattern: an arc of the vault drawn BYLAYER on a layer of
+    projections that a rule maps to walls), or "continuous" (a real wall: the control)."""
+    doc = ezdxf.new("R2010", setup=False)
+    doc.header["$INSUNITS"] = 6
+    doc.linetypes.add("RAYITAS", pattern=[0.375, 0.25, -0.125], description="_ _ _ _ _")
+    doc.layers.add("MUROS")
+    doc.layers.add("MUROS-BOVEDA", linetype="RAYITAS")
+    msp = doc.modelspace()
+    wall = {"layer": "MUROS"}
+    msp.add_lwpolyline([(0, 0), (12, 0), (12, 6), (0, 6)], close=True, dxfattribs=wall)
+    msp.add_line((6, 0), (6, 2.5), dxfattribs=wall)
+    msp.add_line((6, 3.5), (6, 6), dxfattribs=wall)
+    if how == "entity":
+        msp.add_line((4, 0), (4, 6), dxfattribs={"layer": "MUROS", "linetype": "RAYITAS"})
+    elif how == "layer":
+        msp.add_arc((4, 3), 3.0, -90, 90, dxfattribs={"layer": "MUROS-BOVEDA"})  # a half vault, ends on the walls
+    else:
+        msp.add_line((4, 0), (4, 6), dxfattribs=wall)
+    for x, t in ((2.0, "AMBIENTE 1"), (9.0, "AMBIENTE 2")):
+        msp.add_text(t, dxfattribs={"layer": "TEXTOS", "height": 0.25, "insert": (x, 1.0)})
+    return _save(doc, tmp_path, name)
+
+
+def test_linetype_pattern_with_gaps_is_dashed_whatever_its_name():
+    from algorithms.cad_explode import linetype_has_gaps
+
+    doc = ezdxf.new("R2010", setup=False)
+    doc.linetypes.add("RAYITAS", pattern=[0.375, 0.25, -0.125])
+    doc.linetypes.add("LINEA_SOLIDA", pattern=[0.0])
+    assert linetype_has_gaps(doc, "RAYITAS")
+    assert not linetype_has_gaps(doc, "LINEA_SOLIDA")
+    assert not linetype_has_gaps(doc, "Continuous")
+    assert not linetype_has_gaps(doc, "NO_SUCH_LINETYPE")
+
+
+@pytest.mark.parametrize("how", ["entity", "layer"])
+def test_a_dashed_line_on_a_wall_layer_is_a_projection_not_a_wall(tmp_path, how):
+    """CASONA_DE_YANAHUARA.dxf: vaults drawn as dashed arcs on a kept layer cut every room in two and left
+    its doorway opening into the sliver beyond the arc (46 % of the floor connected). A line drawn broken
+    (dashed linetype by entity or by layer, by name or by pattern) on a wall layer is boundary evidence."""
+    path = _vaulted_rooms(tmp_path, how)
+    d = import_dxf(path)
+    assert d.classes.get("projection") == 1, d.classes
+    assert [g.kind for g in d.boundary] == ["boundary"]
+    assert all(g.kind != "boundary" for g in d.geometries)
+    floor = pipeline.process_floor(path)
+    rooms = [a for a in floor.refined.areas if a.polygon.area > 10]
+    assert len(rooms) == 2, [round(a.polygon.area, 1) for a in floor.refined.areas]
+    assert all(a.polygon.area > 30 for a in rooms)  # each room whole (6 x 6 m less the walls)
+    assert floor.stats["components"] == 1 and floor.stats["largest_component_share"] == 1.0
+
+
+def test_a_continuous_line_on_a_wall_layer_still_divides(tmp_path):
+    """The control: the same line drawn continuous is a wall; the left room's west part is closed."""
+    path = _vaulted_rooms(tmp_path, "continuous")
+    d = import_dxf(path)
+    assert "projection" not in d.classes and not d.boundary
+    floor = pipeline.process_floor(path)
+    assert floor.stats["components"] == 2
