@@ -332,6 +332,8 @@ def classify_entities(geoms: Sequence[CadGeometry], chains: Sequence[str], rules
         end = len(geoms) if aux_from is None else aux_from
         main_cls = cls[:end]
         _free_furniture(geoms[:end], main_cls, weak)
+        floor_markings(geoms[:end], main_cls, weak)
+        hints.extend(lined_doorways(geoms[:end], main_cls, weak, hints))
         cls[:end] = main_cls
     keep = np.array([c in ("", "window") or (c == "door" and include_doors) for c in cls], dtype=bool)
     if aux_from is not None:
@@ -492,6 +494,54 @@ def is_projection_line(g: CadGeometry, dashed: bool) -> bool:
     return bool(dashed) and g.kind in PROJECTION_KINDS and g.entity in PROJECTION_TYPES and not g.filled
 
 
+# a floor opening (a void over the floor below, an atrium, a double-height space) is outlined dashed too, and its
+# edge is a drop: those lines stay walls
+VOID_WORDS = ("void", "vuoto", "vacio", "vacío", "hueco", "luftraum", "vide", "open to below", "double height",
+              "doppia altezza", "doble altura", "挑空", "中空", "上空", "空洞")
+
+
+def keep_void_edges(geoms: Sequence[CadGeometry], texts, was: Dict[int, str]) -> int:
+    """Dashed lines (``was``: index -> kind before ``is_projection_line`` made them "boundary") that outline a
+    floor opening stay what their layer says: a group of touching dashed lines whose bounding box holds a
+    text naming a void (VOID_WORDS: 'void', 'vuoto', 'Luftraum', '挑空'...). Returns how many were restored."""
+    if not was:
+        return 0
+    pts = [(t.x, t.y) for t in texts if any(w in (t.text or "").lower() for w in VOID_WORDS)]
+    if not pts:
+        return 0
+    from shapely import STRtree
+    from shapely.geometry import LineString
+
+    idx = [i for i in was if len(geoms[i].coords) >= 2 and np.isfinite(geoms[i].coords).all()]
+    lines = [LineString(geoms[i].coords) for i in idx]
+    if not lines:
+        return 0
+    parent = list(range(len(idx)))
+
+    def find(a):
+        while parent[a] != a:
+            parent[a] = parent[parent[a]]
+            a = parent[a]
+        return a
+
+    a_idx, b_idx = STRtree(lines).query([ln.buffer(TOUCH, 2) for ln in lines], predicate="intersects")
+    for a, b in zip(a_idx.tolist(), b_idx.tolist()):
+        parent[find(a)] = find(b)
+    groups: Dict[int, List[int]] = {}
+    for k in range(len(idx)):
+        groups.setdefault(find(k), []).append(k)
+    P = np.asarray(pts, dtype=float)
+    n = 0
+    for ks in groups.values():
+        b = np.array([lines[k].bounds for k in ks])
+        x0, y0, x1, y1 = b[:, 0].min(), b[:, 1].min(), b[:, 2].max(), b[:, 3].max()
+        if np.any((P[:, 0] > x0) & (P[:, 0] < x1) & (P[:, 1] > y0) & (P[:, 1] < y1)):
+            for k in ks:
+                geoms[idx[k]].kind = was[idx[k]]
+                n += 1
+    return n
+
+
 def split_projection_lines(geoms: List[CadGeometry]) -> Tuple[List[CadGeometry], List[CadGeometry]]:
     """(geometries without the projection lines, the projection lines as boundary evidence): the ones
     ``is_projection_line`` marked with kind "boundary" at import (and that classification left as they were)."""
@@ -503,3 +553,228 @@ def split_projection_lines(geoms: List[CadGeometry]) -> Tuple[List[CadGeometry],
         else:
             keep.append(g)
     return keep, proj
+
+
+# ------------------------------------------------------------------------------------------ floor markings
+MARKING_MIN_SPAN = FURNITURE_MAX  # metres: a free-standing group larger than any furniture
+WALL_PAIR = (0.04, 0.6)  # metres: two parallel lines this far apart are the two faces of a wall
+MARKING_TYPES = ("LINE", "LWPOLYLINE", "POLYLINE", "ARC", "CIRCLE", "ELLIPSE", "SPLINE")
+
+
+def _segments(c: np.ndarray, closed: bool = False) -> np.ndarray:
+    c = c[np.isfinite(c).all(axis=1)]
+    if closed and len(c) >= 3 and not np.allclose(c[0], c[-1]):
+        c = np.vstack([c, c[:1]])
+    return np.stack([c[:-1], c[1:]], axis=1) if len(c) >= 2 else np.zeros((0, 2, 2))
+
+
+def _has_wall_pair(segs: np.ndarray, others: Optional[np.ndarray] = None, min_overlap: float = 0.5) -> bool:
+    """A straight segment of ``segs`` and another one (of ``segs`` or ``others``), parallel (within 3
+    degrees), WALL_PAIR apart and overlapping by ``min_overlap`` m along their direction: two faces of a wall."""
+    def _clean(x):
+        d = x[:, 1] - x[:, 0]
+        length = np.hypot(d[:, 0], d[:, 1])
+        ok = length >= min_overlap
+        return x[ok], d[ok] / np.maximum(length[ok, None], 1e-12), length[ok]
+
+    segs, u, length = _clean(segs)
+    every = segs if others is None or not len(others) else np.concatenate([segs, _clean(others)[0]])
+    if len(segs) < 1 or len(every) < 2:
+        return False
+    ue = (every[:, 1] - every[:, 0]) / np.maximum(np.hypot(*(every[:, 1] - every[:, 0]).T)[:, None], 1e-12)
+    for i in range(len(segs)):
+        cross = np.abs(u[i, 0] * ue[:, 1] - u[i, 1] * ue[:, 0])
+        par = cross < math.sin(math.radians(3.0))
+        par[i] = False
+        if not par.any():
+            continue
+        rel = every[par, 0] - segs[i, 0]
+        off = np.abs(rel[:, 0] * u[i, 1] - rel[:, 1] * u[i, 0])
+        near = (off >= WALL_PAIR[0]) & (off <= WALL_PAIR[1])
+        if not near.any():
+            continue
+        a0 = (every[par][near] - segs[i, 0]) @ u[i]  # (k, 2) positions of the other's ends along i
+        lo, hi = a0.min(axis=1), a0.max(axis=1)
+        if np.any(np.minimum(hi, length[i]) - np.maximum(lo, 0.0) >= min_overlap):
+            return True
+    return False
+
+
+def floor_markings(geoms: Sequence[CadGeometry], cls: List[str], weak: set) -> int:
+    """Markings drawn on the floor (a sports court's lines, circles and arcs; a painted play area) on the
+    same layer as the walls ("0", fallback layers): a group of lines on ``weak`` layers that touches no other
+    geometry (it closes no space with the walls), is larger than furniture (MARKING_MIN_SPAN), lies inside
+    the extent of the drawing's largest group, and has no two lines at a wall's thickness apart (single
+    lines only: no wall). Marked class "marking" in ``cls`` (left out like furniture). Returns how many."""
+    from shapely import STRtree
+    from shapely.geometry import LineString
+
+    idx, lines = [], []
+    for i, g in enumerate(geoms):
+        if cls[i] or g.filled or g.kind in ("column", "stair", "elevator", "boundary", AUX_KIND):
+            continue
+        c = g.coords[np.isfinite(g.coords).all(axis=1)]
+        if len(c) >= 2:
+            idx.append(i)
+            lines.append(LineString(c))
+    if len(idx) < 4:
+        return 0
+    tree = STRtree(lines)
+    parent = list(range(len(idx)))
+
+    def find(a):
+        while parent[a] != a:
+            parent[a] = parent[parent[a]]
+            a = parent[a]
+        return a
+
+    a_idx, b_idx = tree.query([ln.buffer(TOUCH, 2) for ln in lines], predicate="intersects")
+    for a, b in zip(a_idx.tolist(), b_idx.tolist()):
+        ra, rb = find(a), find(b)
+        if ra != rb:
+            parent[ra] = rb
+    groups: Dict[int, List[int]] = {}
+    for k in range(len(idx)):
+        groups.setdefault(find(k), []).append(k)
+    if len(groups) < 2:
+        return 0
+    glen = {r: sum(lines[k].length for k in ks) for r, ks in groups.items()}
+    main = max(glen, key=glen.get)
+    mb = np.array([lines[k].bounds for k in groups[main]])
+    box = (mb[:, 0].min(), mb[:, 1].min(), mb[:, 2].max(), mb[:, 3].max())
+    n = 0
+    for r, ks in groups.items():
+        if r == main or len(ks) < 3:
+            continue
+        members = [idx[k] for k in ks]
+        if any(geoms[i].layer not in weak or geoms[i].entity not in MARKING_TYPES for i in members):
+            continue
+        b = np.array([lines[k].bounds for k in ks])
+        x0, y0, x1, y1 = b[:, 0].min(), b[:, 1].min(), b[:, 2].max(), b[:, 3].max()
+        if max(x1 - x0, y1 - y0) < MARKING_MIN_SPAN:
+            continue
+        if x0 < box[0] or y0 < box[1] or x1 > box[2] or y1 > box[3]:
+            continue
+        straight = [geoms[i] for i in members if geoms[i].entity in ("LINE", "LWPOLYLINE", "POLYLINE")]
+        segs = np.concatenate([_segments(g.coords, g.closed) for g in straight]) if straight else np.zeros((0, 2, 2))
+        if len(segs):
+            # the other face of a wall may be a line of another group (two closed outlines that never touch)
+            mine = set(members)
+            near = {idx[k] for k in tree.query([lines[k].buffer(WALL_PAIR[1], 2) for k in ks],
+                                               predicate="intersects")[1].tolist()} - mine
+            others = [_segments(geoms[j].coords, geoms[j].closed) for j in near
+                      if geoms[j].entity in ("LINE", "LWPOLYLINE", "POLYLINE")]
+            others = np.concatenate(others) if others else None
+            if _has_wall_pair(segs, others):
+                continue
+        for i in members:
+            cls[i] = "marking"
+        n += len(members)
+    return n
+
+
+# ------------------------------------------------------------------------------------------ lined doorways
+JAMB_LENGTH = (0.05, 0.6)  # metres: a jamb cap joins the two faces of a wall across its thickness
+OPENING_WIDTH = (0.7, 2.5)  # metres: a doorway between two jamb caps
+LINING_GAP = 0.6  # metres: a line this close in front of a doorway, parallel to its wall, runs across it
+
+
+def lined_doorways(geoms: Sequence[CadGeometry], cls: List[str], weak: set,
+                   known: Sequence[DoorHint] = ()) -> List[DoorHint]:
+    """Doorways drawn without a door (an opening in a two-line wall, both jambs capped, nothing inside)
+    across which a single line parallel to the wall runs within LINING_GAP: the lining of a sports hall's
+    walls, a skirting or floor-finish edge drawn on the wall layer. The line would close the doorway in the
+    raster; a DoorHint keeps it open (``rasterize`` clears the opening and goes on through the thin strip
+    and the line behind it, ``deepen_openings``). Only on ``weak`` layers (walls, linings and windows share
+    the layer there, so an empty opening is no window left on another layer)."""
+    from scipy.spatial import cKDTree
+    from shapely import STRtree
+    from shapely.geometry import LineString, Polygon
+
+    caps, seg_lines, seg_owner = [], [], []
+    for i, g in enumerate(geoms):
+        if cls[i] or g.layer not in weak or g.filled or g.kind in ("column", "stair", "elevator", "boundary", AUX_KIND):
+            continue
+        for s in _segments(g.coords, g.closed):
+            L = float(np.hypot(*(s[1] - s[0])))
+            if L < 0.02:
+                continue
+            seg_lines.append(LineString(s))
+            seg_owner.append(i)
+            if JAMB_LENGTH[0] <= L <= JAMB_LENGTH[1] and len(g.coords) == 2:
+                caps.append((i, s, L))
+    if len(caps) < 2:
+        return []
+    tree = STRtree(seg_lines)
+    mids = np.array([(s[0] + s[1]) / 2 for _, s, _ in caps])
+    ends = np.concatenate([np.stack([ln.coords[0], ln.coords[-1]]) for ln in seg_lines])
+    end_owner = np.repeat(np.arange(len(seg_lines)), 2)
+    etree = cKDTree(ends)
+    ktree = cKDTree(np.array([((d.x0 + d.x1) / 2, (d.y0 + d.y1) / 2) for d in known])) if known else None
+    ctree = cKDTree(mids)
+    hints: List[DoorHint] = []
+    used = set()
+    for a, b in sorted(ctree.query_pairs(OPENING_WIDTH[1])):
+        if a in used or b in used:
+            continue
+        ia, sa, La = caps[a]
+        ib, sb, Lb = caps[b]
+        if abs(La - Lb) > 0.03:
+            continue
+        v = (sa[1] - sa[0]) / La
+        vb = (sb[1] - sb[0]) / Lb
+        if abs(v[0] * vb[1] - v[1] * vb[0]) > math.sin(math.radians(3.0)):
+            continue
+        w = mids[b] - mids[a]
+        if abs(float(w @ v)) > 0.03:  # not side by side across the wall
+            continue
+        width = float(np.hypot(*w))
+        if not (OPENING_WIDTH[0] <= width <= OPENING_WIDTH[1]):
+            continue
+        u = w / width
+        # each cap joins two faces that run away from the opening
+        ok = True
+        for cap, sign in ((sa, -1.0), (sb, 1.0)):
+            for p in cap:
+                near = [end_owner[k] for k in etree.query_ball_point(p, 0.02)]
+                face = False
+                for k in near:
+                    c = np.asarray(seg_lines[k].coords)
+                    d = c[1] - c[0]
+                    Ld = float(np.hypot(*d))
+                    far = c[1] if np.hypot(*(c[0] - p)) < np.hypot(*(c[1] - p)) else c[0]
+                    if Ld > 0.2 and abs(float(d @ v)) < 0.05 * Ld and float((far - p) @ u) * sign > 0.1:
+                        face = True
+                        break
+                ok = ok and face
+        if not ok:
+            continue
+        # nothing inside the opening
+        c0, c1 = sa[0] + 0.1 * (sa[1] - sa[0]), sa[1] - 0.1 * (sa[1] - sa[0])  # the faces and a line on them stay out
+        inner = Polygon([c0 + 0.02 * u, c1 + 0.02 * u, c1 + (width - 0.02) * u, c0 + (width - 0.02) * u])
+        if not inner.is_valid or any(seg_lines[k].length >= 0.05 for k in tree.query(inner, predicate="intersects")):
+            continue
+        # a line in front of it, parallel to the wall, running across the whole opening
+        lo, hi = min(float(sa[0] @ v), float(sa[1] @ v)), max(float(sa[0] @ v), float(sa[1] @ v))
+        front = []
+        for side in (-1.0, 1.0):
+            edge = hi if side > 0 else lo
+            box = Polygon([p for p in (
+                mids[a] + (edge - mids[a] @ v) * v + 0.05 * u, mids[a] + (edge - mids[a] @ v + side * LINING_GAP) * v + 0.05 * u,
+                mids[b] + (edge - mids[b] @ v + side * LINING_GAP) * v - 0.05 * u, mids[b] + (edge - mids[b] @ v) * v - 0.05 * u)])
+            for k in tree.query(box, predicate="intersects"):
+                c = np.asarray(seg_lines[k].coords)
+                d = c[1] - c[0]
+                Ld = float(np.hypot(*d))
+                if Ld < width + 0.2 or abs(float(d @ v)) > 0.05 * Ld:
+                    continue
+                t = (c - mids[a]) @ u
+                if t.min() <= 0.0 and t.max() >= width:
+                    front.append(k)
+        if not front:
+            continue
+        if ktree is not None and ktree.query_ball_point((mids[a] + mids[b]) / 2, 0.5):
+            continue
+        used.update((a, b))
+        hints.append(DoorHint(float(mids[a][0]), float(mids[a][1]), float(mids[b][0]), float(mids[b][1]), "lined"))
+    return hints

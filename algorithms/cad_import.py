@@ -41,7 +41,7 @@ from typing import Dict, List, Optional, Sequence, Tuple
 import numpy as np
 
 from .cad_classify import (AUX_KIND, DOOR_RADIUS, DOOR_SWEEP, _circle_from_3, boundary_evidence,  # noqa: F401
-                           classify_entities, is_projection_line, split_projection_lines,
+                           classify_entities, is_projection_line, keep_void_edges, split_projection_lines,
                            find_door_swings, swing_candidates)
 from .cad_sheet import describe_plans, find_plans, parse_plan
 from .cad_explode import (MAX_SEGMENTS_PER_TURN, SKIP_TYPES, TEXT_TYPES, _arc_points, _boundary_rings,  # noqa: F401
@@ -317,6 +317,7 @@ def _import(path, rules, layers, units, include_doors, fallback_walls, drop_door
     geoms = []
     chains = []
     nonfinite = 0
+    dashed_was: Dict[int, str] = {}  # dashed lines on wall layers (projections) -> their layer's kind
     for i in idx:
         c = p.coords[i]
         if len(c) < 2 and not p.filled[i]:
@@ -332,6 +333,7 @@ def _import(path, rules, layers, units, include_doors, fallback_walls, drop_door
                                  entity=p.etype[i], block=innermost_block(p.block[i])))
         chains.append(p.block[i])
         if is_projection_line(geoms[-1], p.dashed[i] if i < len(p.dashed) else False):
+            dashed_was[len(geoms) - 1] = geoms[-1].kind
             geoms[-1].kind = "boundary"  # dashed on a wall layer: a projection, never a wall (swings still found)
     if nonfinite:
         msg = (f"left out {nonfinite} entities with coordinates that are not finite numbers (NaN or infinite, "
@@ -344,6 +346,7 @@ def _import(path, rules, layers, units, include_doors, fallback_walls, drop_door
     texts = [CadText(x=t[0] * scale, y=t[1] * scale, text=t[2], height=t[3] * scale, rotation=t[4],
                      layer=t[5], entity=t[6], block=innermost_block(t[7]), tag=t[8])
              for t in p.texts if math.isfinite(t[0] * scale) and math.isfinite(t[1] * scale)]
+    keep_void_edges(geoms, texts, dashed_was)  # a dashed outline around 'void' is the edge of a floor opening
     doors: List[DoorHint] = []
     classes: Dict[str, int] = {}
     t1 = time.perf_counter()

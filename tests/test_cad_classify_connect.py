@@ -469,3 +469,109 @@ def test_a_continuous_line_on_a_wall_layer_still_divides(tmp_path):
     assert "projection" not in d.classes and not d.boundary
     floor = pipeline.process_floor(path)
     assert floor.stats["components"] == 2
+
+
+# ------------------------------------------------------------------ floor markings and linings on layer "0"
+def _layer0_hall(tmp_path, court=True, tied=False, core=True, name="h.dxf"):
+    """Everything on layer "0": a 30 x 12 m hall whose outer wall is two outlines 0.2 m apart that never
+    touch; in it a sports court drawn in single lines (a 14 x 8 m rectangle, its centre line and centre
+    circle) and a free-standing 6 x 6 m core of two-line walls. ``tied``: one court line runs on to the wall."""
+    doc = _doc()
+    msp = doc.modelspace()
+    z = "0"
+    _rect(msp, 0, 0, 30, 12, z)
+    _rect(msp, 0.2, 0.2, 29.8, 11.8, z)
+    for a, b in (((30, 4), (34, 4)), ((34, 4), (34, 8)), ((34, 8), (30, 8))):  # an annex: no sheet frame
+        msp.add_line(a, b, dxfattribs={"layer": z})
+    if court:
+        _rect(msp, 2, 2, 16, 10, z)
+        msp.add_line((9, 2), (9, 10), dxfattribs={"layer": z})
+        msp.add_circle((9, 6), 1.8, dxfattribs={"layer": z})
+        if tied:
+            msp.add_line((2, 6), (0.2, 6), dxfattribs={"layer": z})
+    if core:
+        _rect(msp, 20, 3, 26, 9, z)
+        _rect(msp, 20.2, 3.2, 25.8, 8.8, z)
+    return _save(doc, tmp_path, name)
+
+
+def test_court_markings_inside_a_hall_are_left_out(tmp_path):
+    """kindergarten-1.dxf: a sports hall cut into pieces by its court markings drawn on the wall layer. Single
+    lines standing free inside the walls, larger than furniture, with no second line at a wall's thickness are
+    markings; the free-standing core (two-line walls) and the hall's inner wall face stay walls."""
+    path = _layer0_hall(tmp_path)
+    d = import_dxf(path)
+    assert d.classes.get("marking") == 6, d.classes  # 4 court sides, the centre line, the circle
+    floor = pipeline.process_floor(path, names=False)
+    from shapely.geometry import Point
+
+    court = [a for a in floor.refined.areas if a.polygon.contains(Point(9, 6))]
+    assert len(court) == 1, [round(a.polygon.area, 1) for a in floor.refined.areas]
+    # inside the court, its centre circle and the strip between court and walls are one space
+    assert all(court[0].polygon.contains(Point(*p)) for p in ((3, 3), (15, 9), (1, 1), (9, 7.5), (17, 11)))
+    # the core's inside (5.6 x 5.6 m) is still a space of its own: its walls were kept
+    core = [a for a in floor.refined.areas if a.polygon.contains(Point(23, 6))]
+    assert core and core[0].id != court[0].id and 25 < core[0].polygon.area < 35
+
+
+def test_court_markings_tied_to_a_wall_are_walls(tmp_path):
+    """The control: the same court with one line running on to the wall is part of the walls (closes spaces)."""
+    d = import_dxf(_layer0_hall(tmp_path, tied=True))
+    assert "marking" not in d.classes
+
+
+def _lined_hall(tmp_path, lining=True, name="l.dxf"):
+    """Everything on layer "0": a hall (10 x 8 m) north of a 3 m corridor; the wall between them is two lines
+    0.2 m apart with a 1.2 m doorway, both jambs capped; ``lining``: a closed outline 0.3 m inside the hall's
+    walls (a sports hall's wall lining) runs across the doorway."""
+    doc = _doc()
+    msp = doc.modelspace()
+    z = {"layer": "0"}
+    _rect(msp, 0, -3, 10, 8, "0")
+    for y in (0.0, 0.2):
+        msp.add_line((0, y), (4.0, y), dxfattribs=z)
+        msp.add_line((5.2, y), (10, y), dxfattribs=z)
+    msp.add_line((4.0, 0.0), (4.0, 0.2), dxfattribs=z)  # jamb caps
+    msp.add_line((5.2, 0.0), (5.2, 0.2), dxfattribs=z)
+    if lining:
+        msp.add_lwpolyline([(0.3, 0.5), (9.7, 0.5), (9.7, 7.7), (0.3, 7.7)], close=True, dxfattribs=z)
+    return _save(doc, tmp_path, name)
+
+
+def test_a_lining_across_a_doorway_does_not_close_it(tmp_path):
+    path = _lined_hall(tmp_path)
+    d = import_dxf(path)
+    lined = [h for h in d.doors if h.source == "lined"]
+    assert len(lined) == 1
+    h = lined[0]
+    assert sorted((round(h.x0, 2), round(h.x1, 2))) == [4.0, 5.2] and abs(h.y0 - 0.1) < 1e-6
+    floor = pipeline.process_floor(path, names=False)
+    big = [a for a in floor.refined.areas if a.polygon.area > 20]
+    assert len(big) == 2, [round(a.polygon.area, 1) for a in floor.refined.areas]
+    assert len({a.component for a in big}) == 1
+
+
+def test_an_open_doorway_without_a_lining_needs_no_hint(tmp_path):
+    """The control: the doorway alone is open anyway; no hint is added for it."""
+    d = import_dxf(_lined_hall(tmp_path, lining=False))
+    assert not [h for h in d.doors if h.source == "lined"]
+
+
+@pytest.mark.parametrize("label,kept", [("VOID", True), ("Luftraum", True), ("挑空", True), ("Sala", False)])
+def test_a_dashed_outline_around_a_void_stays_a_wall(tmp_path, label, kept):
+    """A floor opening (void, atrium, double height) is outlined dashed too, and its edge is a drop for a
+    robot: dashed lines whose group holds a text naming a void stay walls; around any other text they are
+    projections."""
+    doc = ezdxf.new("R2010", setup=False)
+    doc.header["$INSUNITS"] = 6
+    doc.linetypes.add("RAYITAS", pattern=[0.375, 0.25, -0.125])
+    msp = doc.modelspace()
+    msp.add_lwpolyline([(0, 0), (20, 0), (20, 10), (0, 10)], close=True, dxfattribs={"layer": "MUROS"})
+    msp.add_line((0, 5), (20, 5), dxfattribs={"layer": "MUROS"})
+    for a, b in (((6, 6), (14, 6)), ((14, 6), (14, 9)), ((14, 9), (6, 9)), ((6, 9), (6, 6))):
+        msp.add_line(a, b, dxfattribs={"layer": "MUROS", "linetype": "RAYITAS"})
+    msp.add_text(label, dxfattribs={"layer": "TEXTOS", "height": 0.3, "insert": (9, 7.5)})
+    d = import_dxf(_save(doc, tmp_path))
+    dashed = [g for g in d.geometries if g.coords[:, 1].min() >= 5.9 and g.coords[:, 1].max() <= 9.1]
+    assert len(dashed) == (4 if kept else 0)
+    assert d.classes.get("projection", 0) == (0 if kept else 4)
