@@ -516,20 +516,7 @@ def keep_void_edges(geoms: Sequence[CadGeometry], texts, was: Dict[int, str]) ->
     lines = [LineString(geoms[i].coords) for i in idx]
     if not lines:
         return 0
-    parent = list(range(len(idx)))
-
-    def find(a):
-        while parent[a] != a:
-            parent[a] = parent[parent[a]]
-            a = parent[a]
-        return a
-
-    a_idx, b_idx = STRtree(lines).query([ln.buffer(TOUCH, 2) for ln in lines], predicate="intersects")
-    for a, b in zip(a_idx.tolist(), b_idx.tolist()):
-        parent[find(a)] = find(b)
-    groups: Dict[int, List[int]] = {}
-    for k in range(len(idx)):
-        groups.setdefault(find(k), []).append(k)
+    groups = _touching_groups(lines, STRtree(lines))
     P = np.asarray(pts, dtype=float)
     n = 0
     for ks in groups.values():
@@ -600,6 +587,20 @@ def _has_wall_pair(segs: np.ndarray, others: Optional[np.ndarray] = None, min_ov
     return False
 
 
+def _touching_groups(lines, tree) -> Dict[int, List[int]]:
+    """Groups of ``lines`` (indices) that touch each other within TOUCH (connected components)."""
+    from scipy.sparse import coo_matrix
+    from scipy.sparse.csgraph import connected_components
+
+    a_idx, b_idx = tree.query(lines, predicate="dwithin", distance=TOUCH)
+    n = len(lines)
+    _, lab = connected_components(coo_matrix((np.ones(len(a_idx)), (a_idx, b_idx)), shape=(n, n)), directed=False)
+    groups: Dict[int, List[int]] = {}
+    for k, r in enumerate(lab.tolist()):
+        groups.setdefault(r, []).append(k)
+    return groups
+
+
 def floor_markings(geoms: Sequence[CadGeometry], cls: List[str], weak: set) -> int:
     """Markings drawn on the floor (a sports court's lines, circles and arcs; a painted play area) on the
     same layer as the walls ("0", fallback layers): a group of lines on ``weak`` layers that touches no other
@@ -620,22 +621,7 @@ def floor_markings(geoms: Sequence[CadGeometry], cls: List[str], weak: set) -> i
     if len(idx) < 4:
         return 0
     tree = STRtree(lines)
-    parent = list(range(len(idx)))
-
-    def find(a):
-        while parent[a] != a:
-            parent[a] = parent[parent[a]]
-            a = parent[a]
-        return a
-
-    a_idx, b_idx = tree.query([ln.buffer(TOUCH, 2) for ln in lines], predicate="intersects")
-    for a, b in zip(a_idx.tolist(), b_idx.tolist()):
-        ra, rb = find(a), find(b)
-        if ra != rb:
-            parent[ra] = rb
-    groups: Dict[int, List[int]] = {}
-    for k in range(len(idx)):
-        groups.setdefault(find(k), []).append(k)
+    groups = _touching_groups(lines, tree)
     if len(groups) < 2:
         return 0
     glen = {r: sum(lines[k].length for k in ks) for r, ks in groups.items()}
@@ -660,8 +646,8 @@ def floor_markings(geoms: Sequence[CadGeometry], cls: List[str], weak: set) -> i
         if len(segs):
             # the other face of a wall may be a line of another group (two closed outlines that never touch)
             mine = set(members)
-            near = {idx[k] for k in tree.query([lines[k].buffer(WALL_PAIR[1], 2) for k in ks],
-                                               predicate="intersects")[1].tolist()} - mine
+            near = {idx[k] for k in tree.query([lines[k] for k in ks], predicate="dwithin",
+                                               distance=WALL_PAIR[1])[1].tolist()} - mine
             others = [_segments(geoms[j].coords, geoms[j].closed) for j in near
                       if geoms[j].entity in ("LINE", "LWPOLYLINE", "POLYLINE")]
             others = np.concatenate(others) if others else None
@@ -689,48 +675,59 @@ def lined_doorways(geoms: Sequence[CadGeometry], cls: List[str], weak: set,
     the layer there, so an empty opening is no window left on another layer)."""
     from scipy.spatial import cKDTree
     from shapely import STRtree
-    from shapely.geometry import LineString, Polygon
+    from shapely.geometry import Polygon
 
-    caps, seg_lines, seg_owner = [], [], []
+    import shapely
+
+    parts, two = [], []
     for i, g in enumerate(geoms):
         if cls[i] or g.layer not in weak or g.filled or g.kind in ("column", "stair", "elevator", "boundary", AUX_KIND):
             continue
-        for s in _segments(g.coords, g.closed):
-            L = float(np.hypot(*(s[1] - s[0])))
-            if L < 0.02:
-                continue
-            seg_lines.append(LineString(s))
-            seg_owner.append(i)
-            if JAMB_LENGTH[0] <= L <= JAMB_LENGTH[1] and len(g.coords) == 2:
-                caps.append((i, s, L))
-    if len(caps) < 2:
+        sg = _segments(g.coords, g.closed)
+        if len(sg):
+            parts.append(sg)
+            two.append(np.full(len(sg), len(g.coords) == 2))
+    if not parts:
         return []
+    segs = np.concatenate(parts)
+    is_two = np.concatenate(two)
+    seg_len = np.hypot(*(segs[:, 1] - segs[:, 0]).T)
+    ok = seg_len >= 0.02
+    segs, is_two, seg_len = segs[ok], is_two[ok], seg_len[ok]
+    cap_k = np.flatnonzero(is_two & (seg_len >= JAMB_LENGTH[0]) & (seg_len <= JAMB_LENGTH[1]))
+    if len(cap_k) < 2:
+        return []
+    mids = (segs[cap_k, 0] + segs[cap_k, 1]) / 2
+    pairs = cKDTree(mids).query_pairs(OPENING_WIDTH[1], output_type="ndarray")
+    if not len(pairs):
+        return []
+    # vectorised prefilter: equal lengths, parallel, side by side along the wall, a doorway's width apart
+    la, lb = seg_len[cap_k[pairs[:, 0]]], seg_len[cap_k[pairs[:, 1]]]
+    va = (segs[cap_k[pairs[:, 0]], 1] - segs[cap_k[pairs[:, 0]], 0]) / la[:, None]
+    vb = (segs[cap_k[pairs[:, 1]], 1] - segs[cap_k[pairs[:, 1]], 0]) / lb[:, None]
+    w = mids[pairs[:, 1]] - mids[pairs[:, 0]]
+    wl = np.hypot(w[:, 0], w[:, 1])
+    keep = ((np.abs(la - lb) <= 0.03) & (np.abs(va[:, 0] * vb[:, 1] - va[:, 1] * vb[:, 0]) <= math.sin(math.radians(3.0)))
+            & (np.abs((w * va).sum(axis=1)) <= 0.03) & (wl >= OPENING_WIDTH[0]) & (wl <= OPENING_WIDTH[1]))
+    pairs = pairs[keep]
+    if not len(pairs):
+        return []
+    seg_lines = shapely.linestrings(segs)
     tree = STRtree(seg_lines)
-    mids = np.array([(s[0] + s[1]) / 2 for _, s, _ in caps])
-    ends = np.concatenate([np.stack([ln.coords[0], ln.coords[-1]]) for ln in seg_lines])
-    end_owner = np.repeat(np.arange(len(seg_lines)), 2)
+    ends = segs.reshape(-1, 2)
+    end_owner = np.repeat(np.arange(len(segs)), 2)
     etree = cKDTree(ends)
     ktree = cKDTree(np.array([((d.x0 + d.x1) / 2, (d.y0 + d.y1) / 2) for d in known])) if known else None
-    ctree = cKDTree(mids)
     hints: List[DoorHint] = []
     used = set()
-    for a, b in sorted(ctree.query_pairs(OPENING_WIDTH[1])):
+    for a, b in sorted(map(tuple, pairs.tolist())):
         if a in used or b in used:
             continue
-        ia, sa, La = caps[a]
-        ib, sb, Lb = caps[b]
-        if abs(La - Lb) > 0.03:
-            continue
+        sa, sb = segs[cap_k[a]], segs[cap_k[b]]
+        La = float(seg_len[cap_k[a]])
         v = (sa[1] - sa[0]) / La
-        vb = (sb[1] - sb[0]) / Lb
-        if abs(v[0] * vb[1] - v[1] * vb[0]) > math.sin(math.radians(3.0)):
-            continue
         w = mids[b] - mids[a]
-        if abs(float(w @ v)) > 0.03:  # not side by side across the wall
-            continue
         width = float(np.hypot(*w))
-        if not (OPENING_WIDTH[0] <= width <= OPENING_WIDTH[1]):
-            continue
         u = w / width
         # each cap joins two faces that run away from the opening
         ok = True
@@ -739,7 +736,7 @@ def lined_doorways(geoms: Sequence[CadGeometry], cls: List[str], weak: set,
                 near = [end_owner[k] for k in etree.query_ball_point(p, 0.02)]
                 face = False
                 for k in near:
-                    c = np.asarray(seg_lines[k].coords)
+                    c = segs[k]
                     d = c[1] - c[0]
                     Ld = float(np.hypot(*d))
                     far = c[1] if np.hypot(*(c[0] - p)) < np.hypot(*(c[1] - p)) else c[0]
@@ -752,7 +749,7 @@ def lined_doorways(geoms: Sequence[CadGeometry], cls: List[str], weak: set,
         # nothing inside the opening
         c0, c1 = sa[0] + 0.1 * (sa[1] - sa[0]), sa[1] - 0.1 * (sa[1] - sa[0])  # the faces and a line on them stay out
         inner = Polygon([c0 + 0.02 * u, c1 + 0.02 * u, c1 + (width - 0.02) * u, c0 + (width - 0.02) * u])
-        if not inner.is_valid or any(seg_lines[k].length >= 0.05 for k in tree.query(inner, predicate="intersects")):
+        if not inner.is_valid or any(seg_len[k] >= 0.05 for k in tree.query(inner, predicate="intersects")):
             continue
         # a line in front of it, parallel to the wall, running across the whole opening
         lo, hi = min(float(sa[0] @ v), float(sa[1] @ v)), max(float(sa[0] @ v), float(sa[1] @ v))
@@ -763,7 +760,7 @@ def lined_doorways(geoms: Sequence[CadGeometry], cls: List[str], weak: set,
                 mids[a] + (edge - mids[a] @ v) * v + 0.05 * u, mids[a] + (edge - mids[a] @ v + side * LINING_GAP) * v + 0.05 * u,
                 mids[b] + (edge - mids[b] @ v + side * LINING_GAP) * v - 0.05 * u, mids[b] + (edge - mids[b] @ v) * v - 0.05 * u)])
             for k in tree.query(box, predicate="intersects"):
-                c = np.asarray(seg_lines[k].coords)
+                c = segs[k]
                 d = c[1] - c[0]
                 Ld = float(np.hypot(*d))
                 if Ld < width + 0.2 or abs(float(d @ v)) > 0.05 * Ld:

@@ -575,3 +575,44 @@ def test_a_dashed_outline_around_a_void_stays_a_wall(tmp_path, label, kept):
     dashed = [g for g in d.geometries if g.coords[:, 1].min() >= 5.9 and g.coords[:, 1].max() <= 9.1]
     assert len(dashed) == (4 if kept else 0)
     assert d.classes.get("projection", 0) == (0 if kept else 4)
+
+
+@pytest.mark.qgis_process
+def test_dxftoosmag_headless_vaulted_rooms_and_lined_hall(tmp_path):
+    """Headless: the two vaulted rooms (dashed springing line on the wall layer) are two named areas joined
+    by a passage; the lined hall opens onto its corridor through its doorway."""
+    from algorithms import osmag
+    from tests.qgis_process import run_alg
+
+    out = tmp_path / "vaults.osm"
+    run_alg("dxftoosmag", {"INPUT": _vaulted_rooms(tmp_path, "entity"), "OUTPUT": str(out)})
+    areas, passages, _, _ = osmag.read_osmag(str(out))
+    named = {a.name: a for a in areas if a.name.startswith("AMBIENTE")}
+    assert set(named) == {"AMBIENTE 1", "AMBIENTE 2"}
+    ids = {named["AMBIENTE 1"].id, named["AMBIENTE 2"].id}
+    assert any({p.from_id, p.to_id} == ids for p in passages)
+    out2 = tmp_path / "hall.osm"
+    run_alg("dxftoosmag", {"INPUT": _lined_hall(tmp_path), "OUTPUT": str(out2)})
+    areas, passages, _, _ = osmag.read_osmag(str(out2))
+    big = [a for a in areas if a.polygon.area > 20]
+    assert len(big) == 2 and any({p.from_id, p.to_id} == {big[0].id, big[1].id} for p in passages)
+
+
+@pytest.mark.slow
+def test_real_plans_projections_and_lined_doorways(shared_data):
+    """CASONA_DE_YANAHUARA.dxf: its vault lines (linetype 'RAYITAS', a pattern with gaps, on kept layers) are
+    projections; kindergarten-1.dxf: the sports hall's lining runs across jamb-capped doorways that get
+    'lined' door hints (its court markings are dashed: projections too)."""
+    casona = shared_data / "dxf" / "archweb" / "CASONA_DE_YANAHUARA.dxf"
+    kg = shared_data / "dxf" / "archweb" / "kindergarten-1.dxf"
+    if not casona.exists() or not kg.exists():
+        pytest.skip("shared ArchWeb plans missing")
+    d = import_dxf(str(casona))
+    assert d.classes.get("projection", 0) >= 15
+    assert not any(g.layer == "Rotulos" for g in d.geometries)  # every line of that layer is dashed
+    d = import_dxf(str(kg))
+    lined = [h for h in d.doors if h.source == "lined"]
+    assert len(lined) >= 4
+    # two of them are the hall's doorways in its west wall (x = 156.7, 1 m wide)
+    west = [h for h in lined if abs(h.x0 - 156.725) < 0.05 and abs(abs(h.y1 - h.y0) - 1.01) < 0.05]
+    assert len(west) == 2
