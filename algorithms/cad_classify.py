@@ -506,27 +506,58 @@ def keep_void_edges(geoms: Sequence[CadGeometry], texts, was: Dict[int, str]) ->
     text naming a void (VOID_WORDS: 'void', 'vuoto', 'Luftraum', '挑空'...). Returns how many were restored."""
     if not was:
         return 0
-    pts = [(t.x, t.y) for t in texts if any(w in (t.text or "").lower() for w in VOID_WORDS)]
-    if not pts:
-        return 0
     from shapely import STRtree
-    from shapely.geometry import LineString
+    from shapely.geometry import LineString, Point
 
     idx = [i for i in was if len(geoms[i].coords) >= 2 and np.isfinite(geoms[i].coords).all()]
     lines = [LineString(geoms[i].coords) for i in idx]
     if not lines:
         return 0
     groups = _touching_groups(lines, STRtree(lines))
-    P = np.asarray(pts, dtype=float)
+    void = np.asarray([(t.x, t.y) for t in texts if any(w in (t.text or "").lower() for w in VOID_WORDS)],
+                      dtype=float).reshape(-1, 2)
+    named = [Point(t.x, t.y) for t in texts if sum(ch.isalpha() for ch in (t.text or "")) >= 3]
+    walls = None
     n = 0
     for ks in groups.values():
         b = np.array([lines[k].bounds for k in ks])
         x0, y0, x1, y1 = b[:, 0].min(), b[:, 1].min(), b[:, 2].max(), b[:, 3].max()
-        if np.any((P[:, 0] > x0) & (P[:, 0] < x1) & (P[:, 1] > y0) & (P[:, 1] < y1)):
+        keep = bool(np.any((void[:, 0] > x0) & (void[:, 0] < x1) & (void[:, 1] > y0) & (void[:, 1] < y1)))
+        if not keep and named and len(ks) >= 2:
+            if walls is None:
+                walls = [LineString(g.coords) for g in geoms if g.kind in PROJECTION_KINDS and len(g.coords) >= 2
+                         and np.isfinite(g.coords).all()]
+                walls = STRtree(walls) if walls else False
+            keep = _zone_outline([lines[k] for k in ks], named, walls)
+        if keep:
             for k in ks:
                 geoms[idx[k]].kind = was[idx[k]]
                 n += 1
     return n
+
+
+ZONE_HUG = 0.6  # metres: an outline this close to walls runs along them (a vault or roof over the room)
+
+
+def _zone_outline(lines, named, walls) -> bool:
+    """The dashed lines close a polygon of their own that holds a name (a cinema corner, a reception zone
+    marked on the floor) and run mostly free of the walls (less than half of the outline within ZONE_HUG of a
+    wall: a vault's or roof's outline follows the room's walls and is a projection)."""
+    from shapely.ops import polygonize, unary_union
+
+    for poly in polygonize(unary_union(lines)):
+        if poly.area < 2.0 or not any(poly.contains(p) for p in named):
+            continue
+        ring = poly.exterior
+        if walls is False:
+            return True
+        near = [walls.geometries[k] for k in walls.query(ring, predicate="dwithin", distance=ZONE_HUG)]
+        if not near:
+            return True
+        hug = ring.intersection(unary_union([w.buffer(ZONE_HUG, 2) for w in near])).length
+        if hug < 0.5 * ring.length:
+            return True
+    return False
 
 
 def split_projection_lines(geoms: List[CadGeometry]) -> Tuple[List[CadGeometry], List[CadGeometry]]:

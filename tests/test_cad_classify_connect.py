@@ -570,7 +570,9 @@ def test_a_dashed_outline_around_a_void_stays_a_wall(tmp_path, label, kept):
     msp.add_line((0, 5), (20, 5), dxfattribs={"layer": "MUROS"})
     for a, b in (((6, 6), (14, 6)), ((14, 6), (14, 9)), ((14, 9), (6, 9)), ((6, 9), (6, 6))):
         msp.add_line(a, b, dxfattribs={"layer": "MUROS", "linetype": "RAYITAS"})
-    msp.add_text(label, dxfattribs={"layer": "TEXTOS", "height": 0.3, "insert": (9, 7.5)})
+    # a void names the opening inside its outline; any other text lies outside the outline here (a named
+    # zone inside its own outline stays too: see the next test)
+    msp.add_text(label, dxfattribs={"layer": "TEXTOS", "height": 0.3, "insert": (9, 7.5) if kept else (2, 2)})
     d = import_dxf(_save(doc, tmp_path))
     dashed = [g for g in d.geometries if g.coords[:, 1].min() >= 5.9 and g.coords[:, 1].max() <= 9.1]
     assert len(dashed) == (4 if kept else 0)
@@ -617,3 +619,34 @@ def test_real_plans_projections_and_lined_doorways(shared_data):
     # two of them are the hall's doorways in its west wall (x = 156.7, 1 m wide)
     west = [h for h in lined if abs(h.x0 - 156.725) < 0.05 and abs(abs(h.y1 - h.y0) - 1.01) < 0.05]
     assert len(west) == 2
+
+
+@pytest.mark.parametrize("shape,label,kept", [
+    ("cone", "cinema", True),     # a zone marked by its own dashed outline, free in the hall, holding a name
+    ("cone", None, False),        # the same outline with no name in it: a projection
+    ("vault", "AMBIENTE 1", False),  # an outline that follows the room's walls (a vault, a roof): a projection
+])
+def test_a_named_dashed_zone_free_in_a_hall_stays_but_a_vault_outline_goes(tmp_path, shape, label, kept):
+    """historical_museum.dxf: a dashed triangle (a projector's cone) around 'cinema' in the exposition hall
+    is the zone the name belongs to; CASONA's dashed outline of a collapsed vault 0.3 m inside the walls of
+    AMBIENTE 1 is a projection (the room's door opens between it and the walls)."""
+    doc = ezdxf.new("R2010", setup=False)
+    doc.header["$INSUNITS"] = 6
+    doc.linetypes.add("RAYITAS", pattern=[0.375, 0.25, -0.125])
+    msp = doc.modelspace()
+    msp.add_lwpolyline([(0, 0), (30, 0), (30, 16), (0, 16)], close=True, dxfattribs={"layer": "MUROS"})
+    msp.add_line((20, 0), (20, 7), dxfattribs={"layer": "MUROS"})
+    msp.add_line((20, 8.5), (20, 16), dxfattribs={"layer": "MUROS"})
+    dash = {"layer": "MUROS", "linetype": "RAYITAS"}
+    if shape == "cone":
+        pts = [(4, 8), (14, 10), (14, 6)]
+        at = (11, 8)
+    else:
+        pts = [(20.3, 0.3), (29.7, 0.3), (29.7, 15.7), (20.3, 15.7)]
+        at = (24, 8)
+    for a, b in zip(pts, pts[1:] + pts[:1]):
+        msp.add_line(a, b, dxfattribs=dash)
+    if label:
+        msp.add_text(label, dxfattribs={"layer": "TEXTOS", "height": 0.3, "insert": at})
+    d = import_dxf(_save(doc, tmp_path))
+    assert d.classes.get("projection", 0) == (0 if kept else len(pts))
