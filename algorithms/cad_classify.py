@@ -806,3 +806,29 @@ def lined_doorways(geoms: Sequence[CadGeometry], cls: List[str], weak: set,
         used.update((a, b))
         hints.append(DoorHint(float(mids[a][0]), float(mids[a][1]), float(mids[b][0]), float(mids[b][1]), "lined"))
     return hints
+
+
+# ------------------------------------------------------------------------------------------ level marks
+# block names of spot-level symbols (a circle with a hatched quadrant and a leader line under the level
+# value): Spanish NPT / N.P.T. (nivel de piso terminado), FFL / NFL, German OKFF, Italian quota, 标高
+LEVEL_MARK_BLOCKS = ("npt", "n.p.t", "ffl", "nfl", "okff", "quota", "cota", "标高")
+
+
+def level_marks(geoms: Sequence[CadGeometry]) -> List[bool]:
+    """Which geometries belong to a spot-level symbol block (LEVEL_MARK_BLOCKS, by the innermost block name)
+    on a wall or reference layer: a level mark's leader line drawn across a small room cuts it in two. They
+    are annotation, never walls. Applied after the plans are found (the sheet's grouping is unchanged)."""
+    from .layer_rules import keyword_in
+
+    hit: Dict[str, bool] = {}
+    out = []
+    for g in geoms:
+        b = g.block
+        if not b or g.kind not in PROJECTION_KINDS:
+            out.append(False)
+            continue
+        if b not in hit:
+            low = b.lower()
+            hit[b] = any(keyword_in(w, low) for w in LEVEL_MARK_BLOCKS)
+        out.append(hit[b])
+    return out

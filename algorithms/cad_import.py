@@ -41,7 +41,7 @@ from typing import Dict, List, Optional, Sequence, Tuple
 import numpy as np
 
 from .cad_classify import (AUX_KIND, DOOR_RADIUS, DOOR_SWEEP, _circle_from_3, boundary_evidence,  # noqa: F401
-                           classify_entities, is_projection_line, keep_void_edges, split_projection_lines,
+                           classify_entities, is_projection_line, keep_void_edges, level_marks, split_projection_lines,
                            find_door_swings, swing_candidates)
 from .cad_sheet import describe_plans, find_plans, parse_plan
 from .cad_explode import (MAX_SEGMENTS_PER_TURN, SKIP_TYPES, TEXT_TYPES, _arc_points, _boundary_rings,  # noqa: F401
@@ -386,6 +386,10 @@ def _import(path, rules, layers, units, include_doors, fallback_walls, drop_door
                + ". " + describe_plans(plans) + " Give PLAN=<index> or an extent to take another")
         progress.info(msg)
     geoms = [g for g, k in zip(geoms, gkeep) if k]
+    marks = level_marks(geoms)
+    if any(marks):  # spot-level symbols (NPT, FFL, 标高 blocks): annotation, never walls
+        classes["level mark"] = int(sum(marks))
+        geoms = [g for g, m in zip(geoms, marks) if not m]
     texts = [t for t, k in zip(texts, tkeep) if k]
     for k, t in enumerate(texts):
         t.id = k

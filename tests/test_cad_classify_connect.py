@@ -650,3 +650,28 @@ def test_a_named_dashed_zone_free_in_a_hall_stays_but_a_vault_outline_goes(tmp_p
         msp.add_text(label, dxfattribs={"layer": "TEXTOS", "height": 0.3, "insert": at})
     d = import_dxf(_save(doc, tmp_path))
     assert d.classes.get("projection", 0) == (0 if kept else len(pts))
+
+
+def test_a_level_mark_block_is_annotation_not_a_wall(tmp_path):
+    """CASONA_DE_YANAHUARA.dxf: every room holds a spot-level symbol (block 'NPT': a circle, a hatched
+    quadrant, a cross and a 2 m leader line under 'NPT + 0.20') on a wall layer; in a 2 m wide room the
+    leader cut the room in two. Level-mark blocks (NPT, FFL, OKFF, quota, 标高) are left out after the
+    plans are found; a block of another name with the same lines stays."""
+    def plan(block_name):
+        doc = _doc()
+        blk = doc.blocks.new(block_name)
+        blk.add_circle((0, 0), 0.08)
+        blk.add_line((-0.15, 0), (1.9, 0))
+        blk.add_line((0, -0.15), (0, 0.3))
+        msp = doc.modelspace()
+        msp.add_lwpolyline([(0, 0), (8, 0), (8, 3), (0, 3)], close=True, dxfattribs={"layer": "MUROS"})
+        msp.add_line((2, 0), (2, 1.2), dxfattribs={"layer": "MUROS"})  # a 2 m room, doorway 1.2-2.2
+        msp.add_line((2, 2.2), (2, 3), dxfattribs={"layer": "MUROS"})
+        msp.add_blockref(block_name, (0.1, 1.5), dxfattribs={"layer": "MUROS"})
+        return import_dxf(_save(doc, tmp_path, f"{block_name}.dxf"))
+
+    d = plan("NPT")
+    assert d.classes.get("level mark") == 3
+    assert not any(g.block == "NPT" for g in d.geometries)
+    d = plan("PILAR")
+    assert "level mark" not in d.classes and sum(g.block == "PILAR" for g in d.geometries) == 3
