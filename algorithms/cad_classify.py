@@ -332,6 +332,8 @@ def classify_entities(geoms: Sequence[CadGeometry], chains: Sequence[str], rules
         end = len(geoms) if aux_from is None else aux_from
         main_cls = cls[:end]
         _free_furniture(geoms[:end], main_cls, weak)
+        floor_markings(geoms[:end], main_cls, weak)
+        hints.extend(lined_doorways(geoms[:end], main_cls, weak, hints))
         cls[:end] = main_cls
     keep = np.array([c in ("", "window") or (c == "door" and include_doors) for c in cls], dtype=bool)
     if aux_from is not None:
@@ -594,4 +596,355 @@ def _unblocked_gaps(geoms, gaps, rails) -> List[DoorHint]:
         if any(math.hypot(m[0] - (h.x0 + h.x1) / 2.0, m[1] - (h.y0 + h.y1) / 2.0) < 0.5 for h in out):
             continue
         out.append(DoorHint(float(p[0]), float(p[1]), float(q[0]), float(q[1]), "curtain_wall"))
+
+# ------------------------------------------------------------------------------------------ dashed lines on kept layers
+PROJECTION_KINDS = ("wall", "reference")  # kinds whose dashed lines are projections, not walls
+PROJECTION_TYPES = ("LINE", "LWPOLYLINE", "POLYLINE", "ARC", "SPLINE", "ELLIPSE")
+
+
+def is_projection_line(g: CadGeometry, dashed: bool) -> bool:
+    """A line drawn with a broken linetype (dashed / dash-dot / hidden, by name or by its pattern's gaps) on a
+    wall (or reference) layer: what lies above or beyond the cut plane (a vault, a beam, a roof truss, a
+    collapsed vault's outline, a canopy), never a wall. Such lines cut rooms into pieces and, drawn across a
+    doorway (a vault's springing line), close it. They are kept as boundary evidence (kind "boundary")."""
+    return bool(dashed) and g.kind in PROJECTION_KINDS and g.entity in PROJECTION_TYPES and not g.filled
+
+
+# a floor opening (a void over the floor below, an atrium, a double-height space) is outlined dashed too, and its
+# edge is a drop: those lines stay walls
+VOID_WORDS = ("void", "vuoto", "vacio", "vacío", "hueco", "luftraum", "vide", "open to below", "double height",
+              "doppia altezza", "doble altura", "挑空", "中空", "上空", "空洞")
+
+
+def keep_void_edges(geoms: Sequence[CadGeometry], texts, was: Dict[int, str]) -> int:
+    """Dashed lines (``was``: index -> kind before ``is_projection_line`` made them "boundary") that outline a
+    floor opening stay what their layer says: a group of touching dashed lines whose bounding box holds a
+    text naming a void (VOID_WORDS: 'void', 'vuoto', 'Luftraum', '挑空'...). Returns how many were restored."""
+    if not was:
+        return 0
+    from shapely import STRtree
+    from shapely.geometry import LineString, Point
+
+    idx = [i for i in was if len(geoms[i].coords) >= 2 and np.isfinite(geoms[i].coords).all()]
+    lines = [LineString(geoms[i].coords) for i in idx]
+    if not lines:
+        return 0
+    groups = _touching_groups(lines, STRtree(lines))
+    void = np.asarray([(t.x, t.y) for t in texts if any(w in (t.text or "").lower() for w in VOID_WORDS)],
+                      dtype=float).reshape(-1, 2)
+    named = [Point(t.x, t.y) for t in texts if sum(ch.isalpha() for ch in (t.text or "")) >= 3]
+    walls = None
+    n = 0
+    for ks in groups.values():
+        b = np.array([lines[k].bounds for k in ks])
+        x0, y0, x1, y1 = b[:, 0].min(), b[:, 1].min(), b[:, 2].max(), b[:, 3].max()
+        keep = bool(np.any((void[:, 0] > x0) & (void[:, 0] < x1) & (void[:, 1] > y0) & (void[:, 1] < y1)))
+        if not keep and named and len(ks) >= 2:
+            if walls is None:
+                walls = [LineString(g.coords) for g in geoms if g.kind in PROJECTION_KINDS and len(g.coords) >= 2
+                         and np.isfinite(g.coords).all()]
+                walls = STRtree(walls) if walls else False
+            keep = _zone_outline([lines[k] for k in ks], named, walls)
+        if keep:
+            for k in ks:
+                geoms[idx[k]].kind = was[idx[k]]
+                n += 1
+    return n
+
+
+ZONE_HUG = 0.6  # metres: an outline this close to walls runs along them (a vault or roof over the room)
+
+
+def _zone_outline(lines, named, walls) -> bool:
+    """The dashed lines close a polygon of their own that holds a name (a cinema corner, a reception zone
+    marked on the floor) and run mostly free of the walls (less than half of the outline within ZONE_HUG of a
+    wall: a vault's or roof's outline follows the room's walls and is a projection)."""
+    from shapely.ops import polygonize, unary_union
+
+    for poly in polygonize(unary_union(lines)):
+        if poly.area < 2.0 or not any(poly.contains(p) for p in named):
+            continue
+        ring = poly.exterior
+        if walls is False:
+            return True
+        near = [walls.geometries[k] for k in walls.query(ring, predicate="dwithin", distance=ZONE_HUG)]
+        if not near:
+            return True
+        hug = ring.intersection(unary_union([w.buffer(ZONE_HUG, 2) for w in near])).length
+        if hug < 0.5 * ring.length:
+            return True
+    return False
+
+
+def split_projection_lines(geoms: List[CadGeometry]) -> Tuple[List[CadGeometry], List[CadGeometry]]:
+    """(geometries without the projection lines, the projection lines as boundary evidence): the ones
+    ``is_projection_line`` marked with kind "boundary" at import (and that classification left as they were)."""
+    keep, proj = [], []
+    for g in geoms:
+        if g.kind == "boundary":
+            g.cls = "boundary"
+            proj.append(g)
+        else:
+            keep.append(g)
+    return keep, proj
+
+
+# ------------------------------------------------------------------------------------------ floor markings
+MARKING_MIN_SPAN = FURNITURE_MAX  # metres: a free-standing group larger than any furniture
+WALL_PAIR = (0.04, 0.6)  # metres: two parallel lines this far apart are the two faces of a wall
+MARKING_TYPES = ("LINE", "LWPOLYLINE", "POLYLINE", "ARC", "CIRCLE", "ELLIPSE", "SPLINE")
+
+
+def _segments(c: np.ndarray, closed: bool = False) -> np.ndarray:
+    c = c[np.isfinite(c).all(axis=1)]
+    if closed and len(c) >= 3 and not np.allclose(c[0], c[-1]):
+        c = np.vstack([c, c[:1]])
+    return np.stack([c[:-1], c[1:]], axis=1) if len(c) >= 2 else np.zeros((0, 2, 2))
+
+
+def _has_wall_pair(segs: np.ndarray, others: Optional[np.ndarray] = None, min_overlap: float = 0.5) -> bool:
+    """A straight segment of ``segs`` and another one (of ``segs`` or ``others``), parallel (within 3
+    degrees), WALL_PAIR apart and overlapping by ``min_overlap`` m along their direction: two faces of a wall."""
+    def _clean(x):
+        d = x[:, 1] - x[:, 0]
+        length = np.hypot(d[:, 0], d[:, 1])
+        ok = length >= min_overlap
+        return x[ok], d[ok] / np.maximum(length[ok, None], 1e-12), length[ok]
+
+    segs, u, length = _clean(segs)
+    every = segs if others is None or not len(others) else np.concatenate([segs, _clean(others)[0]])
+    if len(segs) < 1 or len(every) < 2:
+        return False
+    ue = (every[:, 1] - every[:, 0]) / np.maximum(np.hypot(*(every[:, 1] - every[:, 0]).T)[:, None], 1e-12)
+    for i in range(len(segs)):
+        cross = np.abs(u[i, 0] * ue[:, 1] - u[i, 1] * ue[:, 0])
+        par = cross < math.sin(math.radians(3.0))
+        par[i] = False
+        if not par.any():
+            continue
+        rel = every[par, 0] - segs[i, 0]
+        off = np.abs(rel[:, 0] * u[i, 1] - rel[:, 1] * u[i, 0])
+        near = (off >= WALL_PAIR[0]) & (off <= WALL_PAIR[1])
+        if not near.any():
+            continue
+        a0 = (every[par][near] - segs[i, 0]) @ u[i]  # (k, 2) positions of the other's ends along i
+        lo, hi = a0.min(axis=1), a0.max(axis=1)
+        if np.any(np.minimum(hi, length[i]) - np.maximum(lo, 0.0) >= min_overlap):
+            return True
+    return False
+
+
+def _touching_groups(lines, tree) -> Dict[int, List[int]]:
+    """Groups of ``lines`` (indices) that touch each other within TOUCH (connected components)."""
+    from scipy.sparse import coo_matrix
+    from scipy.sparse.csgraph import connected_components
+
+    a_idx, b_idx = tree.query(lines, predicate="dwithin", distance=TOUCH)
+    n = len(lines)
+    _, lab = connected_components(coo_matrix((np.ones(len(a_idx)), (a_idx, b_idx)), shape=(n, n)), directed=False)
+    groups: Dict[int, List[int]] = {}
+    for k, r in enumerate(lab.tolist()):
+        groups.setdefault(r, []).append(k)
+    return groups
+
+
+def floor_markings(geoms: Sequence[CadGeometry], cls: List[str], weak: set) -> int:
+    """Markings drawn on the floor (a sports court's lines, circles and arcs; a painted play area) on the
+    same layer as the walls ("0", fallback layers): a group of lines on ``weak`` layers that touches no other
+    geometry (it closes no space with the walls), is larger than furniture (MARKING_MIN_SPAN), lies inside
+    the extent of the drawing's largest group, and has no two lines at a wall's thickness apart (single
+    lines only: no wall). Marked class "marking" in ``cls`` (left out like furniture). Returns how many."""
+    from shapely import STRtree
+    from shapely.geometry import LineString
+
+    idx, lines = [], []
+    for i, g in enumerate(geoms):
+        if cls[i] or g.filled or g.kind in ("column", "stair", "elevator", "boundary", AUX_KIND):
+            continue
+        c = g.coords[np.isfinite(g.coords).all(axis=1)]
+        if len(c) >= 2:
+            idx.append(i)
+            lines.append(LineString(c))
+    if len(idx) < 4:
+        return 0
+    tree = STRtree(lines)
+    groups = _touching_groups(lines, tree)
+    if len(groups) < 2:
+        return 0
+    glen = {r: sum(lines[k].length for k in ks) for r, ks in groups.items()}
+    main = max(glen, key=glen.get)
+    mb = np.array([lines[k].bounds for k in groups[main]])
+    box = (mb[:, 0].min(), mb[:, 1].min(), mb[:, 2].max(), mb[:, 3].max())
+    n = 0
+    for r, ks in groups.items():
+        if r == main or len(ks) < 3:
+            continue
+        members = [idx[k] for k in ks]
+        if any(geoms[i].layer not in weak or geoms[i].entity not in MARKING_TYPES for i in members):
+            continue
+        b = np.array([lines[k].bounds for k in ks])
+        x0, y0, x1, y1 = b[:, 0].min(), b[:, 1].min(), b[:, 2].max(), b[:, 3].max()
+        if max(x1 - x0, y1 - y0) < MARKING_MIN_SPAN:
+            continue
+        if x0 < box[0] or y0 < box[1] or x1 > box[2] or y1 > box[3]:
+            continue
+        straight = [geoms[i] for i in members if geoms[i].entity in ("LINE", "LWPOLYLINE", "POLYLINE")]
+        segs = np.concatenate([_segments(g.coords, g.closed) for g in straight]) if straight else np.zeros((0, 2, 2))
+        if len(segs):
+            # the other face of a wall may be a line of another group (two closed outlines that never touch)
+            mine = set(members)
+            near = {idx[k] for k in tree.query([lines[k] for k in ks], predicate="dwithin",
+                                               distance=WALL_PAIR[1])[1].tolist()} - mine
+            others = [_segments(geoms[j].coords, geoms[j].closed) for j in near
+                      if geoms[j].entity in ("LINE", "LWPOLYLINE", "POLYLINE")]
+            others = np.concatenate(others) if others else None
+            if _has_wall_pair(segs, others):
+                continue
+        for i in members:
+            cls[i] = "marking"
+        n += len(members)
+    return n
+
+
+# ------------------------------------------------------------------------------------------ lined doorways
+JAMB_LENGTH = (0.05, 0.6)  # metres: a jamb cap joins the two faces of a wall across its thickness
+OPENING_WIDTH = (0.7, 2.5)  # metres: a doorway between two jamb caps
+LINING_GAP = 0.6  # metres: a line this close in front of a doorway, parallel to its wall, runs across it
+
+
+def lined_doorways(geoms: Sequence[CadGeometry], cls: List[str], weak: set,
+                   known: Sequence[DoorHint] = ()) -> List[DoorHint]:
+    """Doorways drawn without a door (an opening in a two-line wall, both jambs capped, nothing inside)
+    across which a single line parallel to the wall runs within LINING_GAP: the lining of a sports hall's
+    walls, a skirting or floor-finish edge drawn on the wall layer. The line would close the doorway in the
+    raster; a DoorHint keeps it open (``rasterize`` clears the opening and goes on through the thin strip
+    and the line behind it, ``deepen_openings``). Only on ``weak`` layers (walls, linings and windows share
+    the layer there, so an empty opening is no window left on another layer)."""
+    from scipy.spatial import cKDTree
+    from shapely import STRtree
+    from shapely.geometry import Polygon
+
+    import shapely
+
+    parts, two = [], []
+    for i, g in enumerate(geoms):
+        if cls[i] or g.layer not in weak or g.filled or g.kind in ("column", "stair", "elevator", "boundary", AUX_KIND):
+            continue
+        sg = _segments(g.coords, g.closed)
+        if len(sg):
+            parts.append(sg)
+            two.append(np.full(len(sg), len(g.coords) == 2))
+    if not parts:
+        return []
+    segs = np.concatenate(parts)
+    is_two = np.concatenate(two)
+    seg_len = np.hypot(*(segs[:, 1] - segs[:, 0]).T)
+    ok = seg_len >= 0.02
+    segs, is_two, seg_len = segs[ok], is_two[ok], seg_len[ok]
+    cap_k = np.flatnonzero(is_two & (seg_len >= JAMB_LENGTH[0]) & (seg_len <= JAMB_LENGTH[1]))
+    if len(cap_k) < 2:
+        return []
+    mids = (segs[cap_k, 0] + segs[cap_k, 1]) / 2
+    pairs = cKDTree(mids).query_pairs(OPENING_WIDTH[1], output_type="ndarray")
+    if not len(pairs):
+        return []
+    # vectorised prefilter: equal lengths, parallel, side by side along the wall, a doorway's width apart
+    la, lb = seg_len[cap_k[pairs[:, 0]]], seg_len[cap_k[pairs[:, 1]]]
+    va = (segs[cap_k[pairs[:, 0]], 1] - segs[cap_k[pairs[:, 0]], 0]) / la[:, None]
+    vb = (segs[cap_k[pairs[:, 1]], 1] - segs[cap_k[pairs[:, 1]], 0]) / lb[:, None]
+    w = mids[pairs[:, 1]] - mids[pairs[:, 0]]
+    wl = np.hypot(w[:, 0], w[:, 1])
+    keep = ((np.abs(la - lb) <= 0.03) & (np.abs(va[:, 0] * vb[:, 1] - va[:, 1] * vb[:, 0]) <= math.sin(math.radians(3.0)))
+            & (np.abs((w * va).sum(axis=1)) <= 0.03) & (wl >= OPENING_WIDTH[0]) & (wl <= OPENING_WIDTH[1]))
+    pairs = pairs[keep]
+    if not len(pairs):
+        return []
+    seg_lines = shapely.linestrings(segs)
+    tree = STRtree(seg_lines)
+    ends = segs.reshape(-1, 2)
+    end_owner = np.repeat(np.arange(len(segs)), 2)
+    etree = cKDTree(ends)
+    ktree = cKDTree(np.array([((d.x0 + d.x1) / 2, (d.y0 + d.y1) / 2) for d in known])) if known else None
+    hints: List[DoorHint] = []
+    used = set()
+    for a, b in sorted(map(tuple, pairs.tolist())):
+        if a in used or b in used:
+            continue
+        sa, sb = segs[cap_k[a]], segs[cap_k[b]]
+        La = float(seg_len[cap_k[a]])
+        v = (sa[1] - sa[0]) / La
+        w = mids[b] - mids[a]
+        width = float(np.hypot(*w))
+        u = w / width
+        # each cap joins two faces that run away from the opening
+        ok = True
+        for cap, sign in ((sa, -1.0), (sb, 1.0)):
+            for p in cap:
+                near = [end_owner[k] for k in etree.query_ball_point(p, 0.02)]
+                face = False
+                for k in near:
+                    c = segs[k]
+                    d = c[1] - c[0]
+                    Ld = float(np.hypot(*d))
+                    far = c[1] if np.hypot(*(c[0] - p)) < np.hypot(*(c[1] - p)) else c[0]
+                    if Ld > 0.2 and abs(float(d @ v)) < 0.05 * Ld and float((far - p) @ u) * sign > 0.1:
+                        face = True
+                        break
+                ok = ok and face
+        if not ok:
+            continue
+        # nothing inside the opening
+        c0, c1 = sa[0] + 0.1 * (sa[1] - sa[0]), sa[1] - 0.1 * (sa[1] - sa[0])  # the faces and a line on them stay out
+        inner = Polygon([c0 + 0.02 * u, c1 + 0.02 * u, c1 + (width - 0.02) * u, c0 + (width - 0.02) * u])
+        if not inner.is_valid or any(seg_len[k] >= 0.05 for k in tree.query(inner, predicate="intersects")):
+            continue
+        # a line in front of it, parallel to the wall, running across the whole opening
+        lo, hi = min(float(sa[0] @ v), float(sa[1] @ v)), max(float(sa[0] @ v), float(sa[1] @ v))
+        front = []
+        for side in (-1.0, 1.0):
+            edge = hi if side > 0 else lo
+            box = Polygon([p for p in (
+                mids[a] + (edge - mids[a] @ v) * v + 0.05 * u, mids[a] + (edge - mids[a] @ v + side * LINING_GAP) * v + 0.05 * u,
+                mids[b] + (edge - mids[b] @ v + side * LINING_GAP) * v - 0.05 * u, mids[b] + (edge - mids[b] @ v) * v - 0.05 * u)])
+            for k in tree.query(box, predicate="intersects"):
+                c = segs[k]
+                d = c[1] - c[0]
+                Ld = float(np.hypot(*d))
+                if Ld < width + 0.2 or abs(float(d @ v)) > 0.05 * Ld:
+                    continue
+                t = (c - mids[a]) @ u
+                if t.min() <= 0.0 and t.max() >= width:
+                    front.append(k)
+        if not front:
+            continue
+        if ktree is not None and ktree.query_ball_point((mids[a] + mids[b]) / 2, 0.5):
+            continue
+        used.update((a, b))
+        hints.append(DoorHint(float(mids[a][0]), float(mids[a][1]), float(mids[b][0]), float(mids[b][1]), "lined"))
+    return hints
+
+
+# ------------------------------------------------------------------------------------------ level marks
+# block names of spot-level symbols (a circle with a hatched quadrant and a leader line under the level
+# value): Spanish NPT / N.P.T. (nivel de piso terminado), FFL / NFL, German OKFF, Italian quota, 标高
+LEVEL_MARK_BLOCKS = ("npt", "n.p.t", "ffl", "nfl", "okff", "quota", "cota", "标高")
+
+
+def level_marks(geoms: Sequence[CadGeometry]) -> List[bool]:
+    """Which geometries belong to a spot-level symbol block (LEVEL_MARK_BLOCKS, by the innermost block name)
+    on a wall or reference layer: a level mark's leader line drawn across a small room cuts it in two. They
+    are annotation, never walls. Applied after the plans are found (the sheet's grouping is unchanged)."""
+    from .layer_rules import keyword_in
+
+    hit: Dict[str, bool] = {}
+    out = []
+    for g in geoms:
+        b = g.block
+        if not b or g.kind not in PROJECTION_KINDS:
+            out.append(False)
+            continue
+        if b not in hit:
+            low = b.lower()
+            hit[b] = any(keyword_in(w, low) for w in LEVEL_MARK_BLOCKS)
+        out.append(hit[b])
     return out

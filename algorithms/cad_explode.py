@@ -228,6 +228,17 @@ def is_dashed_linetype(name: str) -> bool:
     return any(w in low for w in DASHED_LINETYPE_WORDS)
 
 
+def linetype_has_gaps(doc, name: str) -> bool:
+    """The linetype table entry ``name`` of ``doc`` has a pattern with gaps (a dashed line whatever its name);
+    False when the table or the entry is missing (DWG documents without a linetype table)."""
+    try:
+        lt = doc.linetypes.get(name)
+        pattern = lt.simplified_line_pattern() if lt is not None else ()
+    except Exception:
+        return False
+    return len(pattern) >= 2 and any(float(v) > 1e-9 for v in pattern[1::2])
+
+
 def _chain_name(name: str, inner: str) -> str:
     return f"{name}{BLOCK_SEP}{inner}" if inner else name
 
@@ -366,6 +377,7 @@ class _Exploder:
         self._warned = set()
         self.produced = 0  # entities added by exploding INSERTs (see MAX_EXPLODED)
         self._layer_lt: Dict[str, str] = {}  # layer -> its linetype name (``_dashed``)
+        self._lt_broken: Dict[str, bool] = {}  # linetype name -> its pattern has gaps (``_broken_pattern``)
 
     def _warn_once(self, key, msg):
         if key not in self._warned:
@@ -449,9 +461,19 @@ class _Exploder:
                     except Exception:
                         cache[layer] = ""
                 lt = cache[layer]
-            return is_dashed_linetype(lt)
+            return is_dashed_linetype(lt) or self._broken_pattern(lt)
         except Exception:
             return False
+
+    def _broken_pattern(self, lt: str) -> bool:
+        """A linetype whose name says nothing ('RAYITAS', 'LINEA2') but whose pattern has gaps is broken too."""
+        key = (lt or "").strip().lower()
+        if not key or key in ("continuous", "bylayer", "byblock", "solid"):
+            return False
+        cache = self._lt_broken
+        if key not in cache:
+            cache[key] = linetype_has_gaps(self.doc, lt)
+        return cache[key]
 
     def _entity(self, e, et: str, layer: str, out: _Pieces) -> None:
         tol = self.tol

@@ -41,7 +41,7 @@ from typing import Dict, List, Optional, Sequence, Tuple
 import numpy as np
 
 from .cad_classify import (AUX_KIND, DOOR_RADIUS, DOOR_SWEEP, _circle_from_3, boundary_evidence,  # noqa: F401
-                           classify_entities,
+                           classify_entities, is_projection_line, keep_void_edges, level_marks, split_projection_lines,
                            find_door_swings, swing_candidates)
 from .cad_sheet import describe_plans, find_plans, parse_plan
 from .cad_explode import (MAX_SEGMENTS_PER_TURN, SKIP_TYPES, TEXT_TYPES, _arc_points, _boundary_rings,  # noqa: F401
@@ -317,6 +317,7 @@ def _import(path, rules, layers, units, include_doors, fallback_walls, drop_door
     geoms = []
     chains = []
     nonfinite = 0
+    dashed_was: Dict[int, str] = {}  # dashed lines on wall layers (projections) -> their layer's kind
     for i in idx:
         c = p.coords[i]
         if len(c) < 2 and not p.filled[i]:
@@ -331,6 +332,9 @@ def _import(path, rules, layers, units, include_doors, fallback_walls, drop_door
                                  closed=p.closed[i], filled=p.filled[i], width=p.width[i] * scale,
                                  entity=p.etype[i], block=innermost_block(p.block[i])))
         chains.append(p.block[i])
+        if is_projection_line(geoms[-1], p.dashed[i] if i < len(p.dashed) else False):
+            dashed_was[len(geoms) - 1] = geoms[-1].kind
+            geoms[-1].kind = "boundary"  # dashed on a wall layer: a projection, never a wall (swings still found)
     if nonfinite:
         msg = (f"left out {nonfinite} entities with coordinates that are not finite numbers (NaN or infinite, "
                "a damaged file or a broken block scale); check the drawing with AUDIT in CAD")
@@ -342,6 +346,7 @@ def _import(path, rules, layers, units, include_doors, fallback_walls, drop_door
     texts = [CadText(x=t[0] * scale, y=t[1] * scale, text=t[2], height=t[3] * scale, rotation=t[4],
                      layer=t[5], entity=t[6], block=innermost_block(t[7]), tag=t[8])
              for t in p.texts if math.isfinite(t[0] * scale) and math.isfinite(t[1] * scale)]
+    keep_void_edges(geoms, texts, dashed_was)  # a dashed outline around 'void' is the edge of a floor opening
     doors: List[DoorHint] = []
     classes: Dict[str, int] = {}
     t1 = time.perf_counter()
@@ -362,6 +367,10 @@ def _import(path, rules, layers, units, include_doors, fallback_walls, drop_door
     if not include_doors and drop_door_swings and not classify:
         swings = set(find_door_swings(geoms))
         geoms = [g for k, g in enumerate(geoms) if k not in swings]
+    geoms, projections = split_projection_lines(geoms)
+    classes.pop("boundary", None)
+    if projections:
+        classes["projection"] = len(projections)
     timings["classify"] = time.perf_counter() - t1
     t1 = time.perf_counter()
     progress.step(93, "finding the plan(s) on the sheet")
@@ -377,6 +386,10 @@ def _import(path, rules, layers, units, include_doors, fallback_walls, drop_door
                + ". " + describe_plans(plans) + " Give PLAN=<index> or an extent to take another")
         progress.info(msg)
     geoms = [g for g, k in zip(geoms, gkeep) if k]
+    marks = level_marks(geoms)
+    if any(marks):  # spot-level symbols (NPT, FFL, 标高 blocks): annotation, never walls
+        classes["level mark"] = int(sum(marks))
+        geoms = [g for g, m in zip(geoms, marks) if not m]
     texts = [t for t, k in zip(texts, tkeep) if k]
     for k, t in enumerate(texts):
         t.id = k
@@ -385,7 +398,7 @@ def _import(path, rules, layers, units, include_doors, fallback_walls, drop_door
     if sel is not None:
         x0, y0, x1, y1 = sel.extent
         doors = [d for d in doors if x0 - 1 <= (d.x0 + d.x1) / 2 <= x1 + 1 and y0 - 1 <= (d.y0 + d.y1) / 2 <= y1 + 1]
-    boundary = boundary_evidence(p, infos, scale) if selected is None else []
+    boundary = (boundary_evidence(p, infos, scale) if selected is None else []) + projections
     if sel is not None and boundary:
         m = 4.0  # metres (rasterize.BOUNDARY_REACH): a corridor closed by a projection line lies beyond the walls
         x0, y0, x1, y1 = sel.extent

@@ -403,3 +403,275 @@ def test_dxftoosmag_headless_corridor_closed_by_a_projection_line(tmp_path):
     corridor = [a for a in areas if a.name == "Corridoio distribuzione"]
     assert len(corridor) == 1
     assert len([p for p in passages if corridor[0].id in (p.from_id, p.to_id)]) >= 3
+
+
+# ------------------------------------------------------------------ dashed projections on wall layers
+def _vaulted_rooms(tmp_path, how="entity", name="v.dxf"):
+    """Two 6 x 6 m rooms joined by a 1 m doorway (partition at x = 6, opening 2.5-3.5); the left room is
+    crossed by a line at x = 4 on the WALL layer (a vault's springing line, a beam overhead), drawn as
+    ``how``: "entity" (a linetype whose name says nothing, 'RAYITAS', but whose pattern has gaps), "layer"
+    (the wall layer's own linetype is such a pattern: an arc of the vault drawn BYLAYER on a layer of
+    projections that a rule maps to walls), or "continuous" (a real wall: the control)."""
+    doc = ezdxf.new("R2010", setup=False)
+    doc.header["$INSUNITS"] = 6
+    doc.linetypes.add("RAYITAS", pattern=[0.375, 0.25, -0.125], description="_ _ _ _ _")
+    doc.layers.add("MUROS")
+    doc.layers.add("MUROS-BOVEDA", linetype="RAYITAS")
+    msp = doc.modelspace()
+    wall = {"layer": "MUROS"}
+    msp.add_lwpolyline([(0, 0), (12, 0), (12, 6), (0, 6)], close=True, dxfattribs=wall)
+    msp.add_line((6, 0), (6, 2.5), dxfattribs=wall)
+    msp.add_line((6, 3.5), (6, 6), dxfattribs=wall)
+    if how == "entity":
+        msp.add_line((4, 0), (4, 6), dxfattribs={"layer": "MUROS", "linetype": "RAYITAS"})
+    elif how == "layer":
+        msp.add_arc((4, 3), 3.0, -90, 90, dxfattribs={"layer": "MUROS-BOVEDA"})  # a half vault, ends on the walls
+    else:
+        msp.add_line((4, 0), (4, 6), dxfattribs=wall)
+    for x, t in ((2.0, "AMBIENTE 1"), (9.0, "AMBIENTE 2")):
+        msp.add_text(t, dxfattribs={"layer": "TEXTOS", "height": 0.25, "insert": (x, 1.0)})
+    return _save(doc, tmp_path, name)
+
+
+def test_linetype_pattern_with_gaps_is_dashed_whatever_its_name():
+    from algorithms.cad_explode import linetype_has_gaps
+
+    doc = ezdxf.new("R2010", setup=False)
+    doc.linetypes.add("RAYITAS", pattern=[0.375, 0.25, -0.125])
+    doc.linetypes.add("LINEA_SOLIDA", pattern=[0.0])
+    assert linetype_has_gaps(doc, "RAYITAS")
+    assert not linetype_has_gaps(doc, "LINEA_SOLIDA")
+    assert not linetype_has_gaps(doc, "Continuous")
+    assert not linetype_has_gaps(doc, "NO_SUCH_LINETYPE")
+
+
+@pytest.mark.parametrize("how", ["entity", "layer"])
+def test_a_dashed_line_on_a_wall_layer_is_a_projection_not_a_wall(tmp_path, how):
+    """CASONA_DE_YANAHUARA.dxf: vaults drawn as dashed arcs on a kept layer cut every room in two and left
+    its doorway opening into the sliver beyond the arc (46 % of the floor connected). A line drawn broken
+    (dashed linetype by entity or by layer, by name or by pattern) on a wall layer is boundary evidence."""
+    path = _vaulted_rooms(tmp_path, how)
+    d = import_dxf(path)
+    assert d.classes.get("projection") == 1, d.classes
+    assert [g.kind for g in d.boundary] == ["boundary"]
+    assert all(g.kind != "boundary" for g in d.geometries)
+    floor = pipeline.process_floor(path)
+    rooms = [a for a in floor.refined.areas if a.polygon.area > 10]
+    assert len(rooms) == 2, [round(a.polygon.area, 1) for a in floor.refined.areas]
+    assert all(a.polygon.area > 30 for a in rooms)  # each room whole (6 x 6 m less the walls)
+    assert floor.stats["components"] == 1 and floor.stats["largest_component_share"] == 1.0
+
+
+def test_a_continuous_line_on_a_wall_layer_still_divides(tmp_path):
+    """The control: the same line drawn continuous is a wall; the left room's west part is closed."""
+    path = _vaulted_rooms(tmp_path, "continuous")
+    d = import_dxf(path)
+    assert "projection" not in d.classes and not d.boundary
+    floor = pipeline.process_floor(path)
+    assert floor.stats["components"] == 2
+
+
+# ------------------------------------------------------------------ floor markings and linings on layer "0"
+def _layer0_hall(tmp_path, court=True, tied=False, core=True, name="h.dxf"):
+    """Everything on layer "0": a 30 x 12 m hall whose outer wall is two outlines 0.2 m apart that never
+    touch; in it a sports court drawn in single lines (a 14 x 8 m rectangle, its centre line and centre
+    circle) and a free-standing 6 x 6 m core of two-line walls. ``tied``: one court line runs on to the wall."""
+    doc = _doc()
+    msp = doc.modelspace()
+    z = "0"
+    _rect(msp, 0, 0, 30, 12, z)
+    _rect(msp, 0.2, 0.2, 29.8, 11.8, z)
+    for a, b in (((30, 4), (34, 4)), ((34, 4), (34, 8)), ((34, 8), (30, 8))):  # an annex: no sheet frame
+        msp.add_line(a, b, dxfattribs={"layer": z})
+    if court:
+        _rect(msp, 2, 2, 16, 10, z)
+        msp.add_line((9, 2), (9, 10), dxfattribs={"layer": z})
+        msp.add_circle((9, 6), 1.8, dxfattribs={"layer": z})
+        if tied:
+            msp.add_line((2, 6), (0.2, 6), dxfattribs={"layer": z})
+    if core:
+        _rect(msp, 20, 3, 26, 9, z)
+        _rect(msp, 20.2, 3.2, 25.8, 8.8, z)
+    return _save(doc, tmp_path, name)
+
+
+def test_court_markings_inside_a_hall_are_left_out(tmp_path):
+    """kindergarten-1.dxf: a sports hall cut into pieces by its court markings drawn on the wall layer. Single
+    lines standing free inside the walls, larger than furniture, with no second line at a wall's thickness are
+    markings; the free-standing core (two-line walls) and the hall's inner wall face stay walls."""
+    path = _layer0_hall(tmp_path)
+    d = import_dxf(path)
+    assert d.classes.get("marking") == 6, d.classes  # 4 court sides, the centre line, the circle
+    floor = pipeline.process_floor(path, names=False)
+    from shapely.geometry import Point
+
+    court = [a for a in floor.refined.areas if a.polygon.contains(Point(9, 6))]
+    assert len(court) == 1, [round(a.polygon.area, 1) for a in floor.refined.areas]
+    # inside the court, its centre circle and the strip between court and walls are one space
+    assert all(court[0].polygon.contains(Point(*p)) for p in ((3, 3), (15, 9), (1, 1), (9, 7.5), (17, 11)))
+    # the core's inside (5.6 x 5.6 m) is still a space of its own: its walls were kept
+    core = [a for a in floor.refined.areas if a.polygon.contains(Point(23, 6))]
+    assert core and core[0].id != court[0].id and 25 < core[0].polygon.area < 35
+
+
+def test_court_markings_tied_to_a_wall_are_walls(tmp_path):
+    """The control: the same court with one line running on to the wall is part of the walls (closes spaces)."""
+    d = import_dxf(_layer0_hall(tmp_path, tied=True))
+    assert "marking" not in d.classes
+
+
+def _lined_hall(tmp_path, lining=True, name="l.dxf"):
+    """Everything on layer "0": a hall (10 x 8 m) north of a 3 m corridor; the wall between them is two lines
+    0.2 m apart with a 1.2 m doorway, both jambs capped; ``lining``: a closed outline 0.3 m inside the hall's
+    walls (a sports hall's wall lining) runs across the doorway."""
+    doc = _doc()
+    msp = doc.modelspace()
+    z = {"layer": "0"}
+    _rect(msp, 0, -3, 10, 8, "0")
+    for y in (0.0, 0.2):
+        msp.add_line((0, y), (4.0, y), dxfattribs=z)
+        msp.add_line((5.2, y), (10, y), dxfattribs=z)
+    msp.add_line((4.0, 0.0), (4.0, 0.2), dxfattribs=z)  # jamb caps
+    msp.add_line((5.2, 0.0), (5.2, 0.2), dxfattribs=z)
+    if lining:
+        msp.add_lwpolyline([(0.3, 0.5), (9.7, 0.5), (9.7, 7.7), (0.3, 7.7)], close=True, dxfattribs=z)
+    return _save(doc, tmp_path, name)
+
+
+def test_a_lining_across_a_doorway_does_not_close_it(tmp_path):
+    path = _lined_hall(tmp_path)
+    d = import_dxf(path)
+    lined = [h for h in d.doors if h.source == "lined"]
+    assert len(lined) == 1
+    h = lined[0]
+    assert sorted((round(h.x0, 2), round(h.x1, 2))) == [4.0, 5.2] and abs(h.y0 - 0.1) < 1e-6
+    floor = pipeline.process_floor(path, names=False)
+    big = [a for a in floor.refined.areas if a.polygon.area > 20]
+    assert len(big) == 2, [round(a.polygon.area, 1) for a in floor.refined.areas]
+    assert len({a.component for a in big}) == 1
+
+
+def test_an_open_doorway_without_a_lining_needs_no_hint(tmp_path):
+    """The control: the doorway alone is open anyway; no hint is added for it."""
+    d = import_dxf(_lined_hall(tmp_path, lining=False))
+    assert not [h for h in d.doors if h.source == "lined"]
+
+
+@pytest.mark.parametrize("label,kept", [("VOID", True), ("Luftraum", True), ("挑空", True), ("Sala", False)])
+def test_a_dashed_outline_around_a_void_stays_a_wall(tmp_path, label, kept):
+    """A floor opening (void, atrium, double height) is outlined dashed too, and its edge is a drop for a
+    robot: dashed lines whose group holds a text naming a void stay walls; around any other text they are
+    projections."""
+    doc = ezdxf.new("R2010", setup=False)
+    doc.header["$INSUNITS"] = 6
+    doc.linetypes.add("RAYITAS", pattern=[0.375, 0.25, -0.125])
+    msp = doc.modelspace()
+    msp.add_lwpolyline([(0, 0), (20, 0), (20, 10), (0, 10)], close=True, dxfattribs={"layer": "MUROS"})
+    msp.add_line((0, 5), (20, 5), dxfattribs={"layer": "MUROS"})
+    for a, b in (((6, 6), (14, 6)), ((14, 6), (14, 9)), ((14, 9), (6, 9)), ((6, 9), (6, 6))):
+        msp.add_line(a, b, dxfattribs={"layer": "MUROS", "linetype": "RAYITAS"})
+    # a void names the opening inside its outline; any other text lies outside the outline here (a named
+    # zone inside its own outline stays too: see the next test)
+    msp.add_text(label, dxfattribs={"layer": "TEXTOS", "height": 0.3, "insert": (9, 7.5) if kept else (2, 2)})
+    d = import_dxf(_save(doc, tmp_path))
+    dashed = [g for g in d.geometries if g.coords[:, 1].min() >= 5.9 and g.coords[:, 1].max() <= 9.1]
+    assert len(dashed) == (4 if kept else 0)
+    assert d.classes.get("projection", 0) == (0 if kept else 4)
+
+
+@pytest.mark.qgis_process
+def test_dxftoosmag_headless_vaulted_rooms_and_lined_hall(tmp_path):
+    """Headless: the two vaulted rooms (dashed springing line on the wall layer) are two named areas joined
+    by a passage; the lined hall opens onto its corridor through its doorway."""
+    from algorithms import osmag
+    from tests.qgis_process import run_alg
+
+    out = tmp_path / "vaults.osm"
+    run_alg("dxftoosmag", {"INPUT": _vaulted_rooms(tmp_path, "entity"), "OUTPUT": str(out)})
+    areas, passages, _, _ = osmag.read_osmag(str(out))
+    named = {a.name: a for a in areas if a.name.startswith("AMBIENTE")}
+    assert set(named) == {"AMBIENTE 1", "AMBIENTE 2"}
+    ids = {named["AMBIENTE 1"].id, named["AMBIENTE 2"].id}
+    assert any({p.from_id, p.to_id} == ids for p in passages)
+    out2 = tmp_path / "hall.osm"
+    run_alg("dxftoosmag", {"INPUT": _lined_hall(tmp_path), "OUTPUT": str(out2)})
+    areas, passages, _, _ = osmag.read_osmag(str(out2))
+    rooms = [a for a in areas if a.type != "structure"]
+    big = sorted(rooms, key=lambda a: a.polygon.area, reverse=True)[:2]  # hall and corridor (any unit)
+    assert len(big) == 2 and any({p.from_id, p.to_id} == {big[0].id, big[1].id} for p in passages)
+
+
+@pytest.mark.slow
+def test_real_plans_projections_and_lined_doorways(shared_data):
+    """CASONA_DE_YANAHUARA.dxf: its vault lines (linetype 'RAYITAS', a pattern with gaps, on kept layers) are
+    projections; kindergarten-1.dxf: the sports hall's lining runs across jamb-capped doorways that get
+    'lined' door hints (its court markings are dashed: projections too)."""
+    casona = shared_data / "dxf" / "archweb" / "CASONA_DE_YANAHUARA.dxf"
+    kg = shared_data / "dxf" / "archweb" / "kindergarten-1.dxf"
+    if not casona.exists() or not kg.exists():
+        pytest.skip("shared ArchWeb plans missing")
+    d = import_dxf(str(casona))
+    assert d.classes.get("projection", 0) >= 15
+    assert not any(g.layer == "Rotulos" for g in d.geometries)  # every line of that layer is dashed
+    d = import_dxf(str(kg))
+    lined = [h for h in d.doors if h.source == "lined"]
+    assert len(lined) >= 4
+    # two of them are the hall's doorways in its west wall (x = 156.7, 1 m wide)
+    west = [h for h in lined if abs(h.x0 - 156.725) < 0.05 and abs(abs(h.y1 - h.y0) - 1.01) < 0.05]
+    assert len(west) == 2
+
+
+@pytest.mark.parametrize("shape,label,kept", [
+    ("cone", "cinema", True),     # a zone marked by its own dashed outline, free in the hall, holding a name
+    ("cone", None, False),        # the same outline with no name in it: a projection
+    ("vault", "AMBIENTE 1", False),  # an outline that follows the room's walls (a vault, a roof): a projection
+])
+def test_a_named_dashed_zone_free_in_a_hall_stays_but_a_vault_outline_goes(tmp_path, shape, label, kept):
+    """historical_museum.dxf: a dashed triangle (a projector's cone) around 'cinema' in the exposition hall
+    is the zone the name belongs to; CASONA's dashed outline of a collapsed vault 0.3 m inside the walls of
+    AMBIENTE 1 is a projection (the room's door opens between it and the walls)."""
+    doc = ezdxf.new("R2010", setup=False)
+    doc.header["$INSUNITS"] = 6
+    doc.linetypes.add("RAYITAS", pattern=[0.375, 0.25, -0.125])
+    msp = doc.modelspace()
+    msp.add_lwpolyline([(0, 0), (30, 0), (30, 16), (0, 16)], close=True, dxfattribs={"layer": "MUROS"})
+    msp.add_line((20, 0), (20, 7), dxfattribs={"layer": "MUROS"})
+    msp.add_line((20, 8.5), (20, 16), dxfattribs={"layer": "MUROS"})
+    dash = {"layer": "MUROS", "linetype": "RAYITAS"}
+    if shape == "cone":
+        pts = [(4, 8), (14, 10), (14, 6)]
+        at = (11, 8)
+    else:
+        pts = [(20.3, 0.3), (29.7, 0.3), (29.7, 15.7), (20.3, 15.7)]
+        at = (24, 8)
+    for a, b in zip(pts, pts[1:] + pts[:1]):
+        msp.add_line(a, b, dxfattribs=dash)
+    if label:
+        msp.add_text(label, dxfattribs={"layer": "TEXTOS", "height": 0.3, "insert": at})
+    d = import_dxf(_save(doc, tmp_path))
+    assert d.classes.get("projection", 0) == (0 if kept else len(pts))
+
+
+def test_a_level_mark_block_is_annotation_not_a_wall(tmp_path):
+    """CASONA_DE_YANAHUARA.dxf: every room holds a spot-level symbol (block 'NPT': a circle, a hatched
+    quadrant, a cross and a 2 m leader line under 'NPT + 0.20') on a wall layer; in a 2 m wide room the
+    leader cut the room in two. Level-mark blocks (NPT, FFL, OKFF, quota, 标高) are left out after the
+    plans are found; a block of another name with the same lines stays."""
+    def plan(block_name):
+        doc = _doc()
+        blk = doc.blocks.new(block_name)
+        blk.add_circle((0, 0), 0.08)
+        blk.add_line((-0.15, 0), (1.9, 0))
+        blk.add_line((0, -0.15), (0, 0.3))
+        msp = doc.modelspace()
+        msp.add_lwpolyline([(0, 0), (8, 0), (8, 3), (0, 3)], close=True, dxfattribs={"layer": "MUROS"})
+        msp.add_line((2, 0), (2, 1.2), dxfattribs={"layer": "MUROS"})  # a 2 m room, doorway 1.2-2.2
+        msp.add_line((2, 2.2), (2, 3), dxfattribs={"layer": "MUROS"})
+        msp.add_blockref(block_name, (0.1, 1.5), dxfattribs={"layer": "MUROS"})
+        return import_dxf(_save(doc, tmp_path, f"{block_name}.dxf"))
+
+    d = plan("NPT")
+    assert d.classes.get("level mark") == 3
+    assert not any(g.block == "NPT" for g in d.geometries)
+    d = plan("PILAR")
+    assert "level mark" not in d.classes and sum(g.block == "PILAR" for g in d.geometries) == 3
