@@ -503,10 +503,12 @@ DWG_NAMES_KNOWN_BELOW = {
                               "between the two wings, open to the south-west, which the envelope leaves outside: "
                               "four in no area, two just outside the rooms beside it; 82.9 % (29 of 35)",
 }
-# measured 2026-12-01 (session 4): (inside %, own %, conflicts at most), kept as floors against regressions
+# measured 2026-12-01 (session 4): (inside %, own %, conflicts at most), kept as floors against regressions;
+# SIST-F1: the passage 通道 between the wings is an area since the named-passage rule, holding two labels (通道,
+# 残疾人出入口): inside 96.4 -> 98.2 %, own 93.6 -> 92.7 %, conflicts 3 -> 4
 DWG_NAMES_FLOORS = {
     "library/A-A3-10-04.dwg": (100.0, 100.0, 0), "library/A-A3-10-05.dwg": (100.0, 100.0, 0),
-    "library/A-A3-10-06.dwg": (82.0, 82.0, 0), "sist-original/SIST-F1.dwg": (96.0, 93.0, 3),
+    "library/A-A3-10-06.dwg": (82.0, 82.0, 0), "sist-original/SIST-F1.dwg": (98.0, 92.0, 4),
     "sist-original/SIST-F3.dwg": (97.0, 95.0, 2), "sist-original/SIST-F4.dwg": (98.0, 98.0, 1),
     "sist-original/SIST-F5.dwg": (97.0, 98.0, 0),
 }
