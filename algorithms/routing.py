@@ -65,7 +65,9 @@ MIN_RADIUS = 0.01  # walls are grown by at least 1 cm so that a zero radius stil
 OPENING_TOL = 0.05  # a wall within 5 cm of a passage segment is part of the opening
 QUAD_SEGS = 2  # 45 degree chords on the rounded corners of grown walls (sagitta 7.6 % of r)
 AVOIDABLE = ("stairs", "elevator")
-LANDMARKS = 12  # ALT heuristic landmarks
+LANDMARKS = 12  # ALT heuristic landmarks (maps too large for the node distance table)
+MAX_TABLE_NODES = 4000  # node-to-node distance table (n^2 x 12 bytes: 190 MB at 4000) up to this size
+MAX_TABLES = 4  # tables kept per map and radius (vertical cost x avoid set)
 _FAR = 1e15  # landmark distance standing for "unreachable"
 KIND_CODES_INV = ("room", "corridor", "stairs", "elevator", "other")
 KIND_CODES = {k: i for i, k in enumerate(KIND_CODES_INV)}
@@ -232,6 +234,8 @@ def _crossing_from(px: float, py: float, bx, by, E, parts=None) -> np.ndarray:
     return hit.any(axis=1)
 
 
+_BATCH = 8  # lazy visibility: segments tested together
+VP_FROM = 2000  # pieces with edges x vertices above this keep their vertices' visibility polygons
 _SPARSE_FROM = 4000  # targets x edges above which the visibility from a point culls edges by angle first
 
 
@@ -331,6 +335,105 @@ class _Piece:
             ok[idx] = shapely.intersects_xy(self.tol_poly, mx, my)
         return ok
 
+    # ---------------------------------------------------------------- visibility polygons of the corners
+    def build_visibility(self):
+        """The visibility polygon of every vertex (corners and entry points), for the queries: seen from
+        vertex o, the directions towards all the piece's vertices cut the plane into wedges; inside a wedge no
+        vertex lies, so the edges crossing it keep their order, and the nearest one (found on the wedge's
+        middle ray) bounds what o sees in the whole wedge. A point p strictly inside the piece sees o iff p is
+        not beyond that edge: one binary search (p's wedge) and one side test per vertex, all vertices at
+        once, instead of a test against every edge. Edges through o never block (as in :func:`_crossing`).
+        Stored flat: per vertex k its sorted wedge bounds (keys ``8 k + angle + pi``) and the nearest edge
+        per wedge (-1: none)."""
+        V, E = self.V, self.edges
+        n, m = len(V), len(E)
+        if n == 0 or m == 0:
+            self._vp = None
+            return
+        cx, cy, dx, dy, ex, ey = self.edge_parts
+        elen = np.hypot(ex, ey) + 1e-300
+        two_pi = 2 * np.pi
+        keys, near = np.zeros((n, m)), np.zeros((n, m), np.int64)
+        chunk = max(1, 400_000 // m)  # origins per batch: a few MB of arrays
+        for k0 in range(0, n, chunk):
+            ks = np.arange(k0, min(n, k0 + chunk))
+            B = len(ks)
+            ox, oy = V[ks, 0][:, None], V[ks, 1][:, None]
+            a_c = np.arctan2(cy - oy, cx - ox)  # (B, m): every vertex is the start of one edge
+            a_d = np.arctan2(dy - oy, dx - ox)
+            # the wedge bounds: the directions of all vertices, sorted (o itself, at angle 0, and repeated
+            # directions only add empty or split wedges: harmless)
+            ang = np.sort(a_c, axis=1)
+            mid = 0.5 * (ang + np.concatenate([ang[:, 1:], ang[:, :1] + two_pi], axis=1))
+            mid = np.where(mid > np.pi, mid - two_pi, mid)
+            order = np.argsort(mid, axis=1)
+            ux, uy = np.cos(mid).ravel(), np.sin(mid).ravel()  # the wedges' middle rays
+            row = np.arange(B)[:, None]
+            ms = mid[row, order]
+            # the rows side by side in one sorted array (each row doubled for the wrap-around), and the
+            # global wedge index (origin x m + wedge) of every entry
+            ext = np.concatenate([ms, ms + two_pi], axis=1) + 16.0 * row
+            gidx = (np.concatenate([order, order], axis=1) + m * row).ravel()
+            d = np.mod(a_d - a_c + np.pi, two_pi) - np.pi
+            s = np.where(d >= 0, a_c, a_d) + 16.0 * row
+            side = (ex * (oy - cy) - ey * (ox - cx)).ravel()  # cross(c - o, e)
+            w = np.where(np.abs(side) <= 1e-9 * np.tile(elen, B), 0.0, np.abs(d).ravel())  # edges through o never block
+            flat = ext.ravel()
+            lo = np.searchsorted(flat, s.ravel(), "right")
+            hi = np.searchsorted(flat, s.ravel() + w, "left")
+            cnt = np.maximum(hi - lo, 0)
+            tot = int(cnt.sum())
+            best = np.full(B * m, -1, np.int64)
+            if tot:
+                pe = np.repeat(np.arange(B * m), cnt)  # (origin, edge) of every (edge, wedge) pair
+                pos = np.arange(tot) + np.repeat(lo - (np.cumsum(cnt) - cnt), cnt)
+                gw = gidx[pos]
+                e_i = pe % m
+                den = ux[gw] * ey[e_i] - uy[gw] * ex[e_i]
+                with np.errstate(divide="ignore", invalid="ignore"):
+                    t = side[pe] / den  # distance along the wedge's middle ray to the edge
+                tmin = np.full(B * m, np.inf)
+                np.fmin.at(tmin, gw, t)
+                hit = t <= tmin[gw]
+                best[gw[hit]] = e_i[hit]
+            keys[ks] = 8.0 * ks[:, None] + ang + np.pi
+            near[ks] = best.reshape(B, m)
+        self._vp = (keys.ravel(), near.ravel(), np.arange(n + 1, dtype=np.int64) * m)
+
+    def visible_vertices(self, px: float, py: float, cand: np.ndarray) -> np.ndarray:
+        """(K,) bool: does the point p (strictly inside the piece) see the vertices ``cand``? By the
+        vertices' visibility polygons (:meth:`build_visibility`); the rare points within a hair of a wedge
+        bound or of the bounding edge's line get the exact segment test."""
+        keys, near, start = self._vp
+        vx, vy = self.V[cand, 0], self.V[cand, 1]
+        th = np.arctan2(py - vy, px - vx) + np.pi
+        q = 8.0 * cand + th
+        pos = np.searchsorted(keys, q)
+        s0, s1 = start[cand], start[cand + 1]
+        nw = s1 - s0
+        if not len(cand) or (nw == 0).any():
+            return self.visible_from((px, py), self.V[cand], interior=True)
+        j = pos - 1
+        j = np.where(j < s0, s1 - 1, j)  # below the first bound: the wedge that wraps around
+        lo_b = keys[np.minimum(pos - 1, len(keys) - 1).clip(0)]
+        hi_b = keys[np.minimum(pos, len(keys) - 1)]
+        gap = np.minimum(np.abs(q - lo_b), np.abs(hi_b - q))
+        gap = np.minimum(gap, np.minimum(np.abs(q - keys[s0] - 2 * np.pi), np.abs(q - keys[s1 - 1] + 2 * np.pi)))
+        e = near[j]
+        cx, cy, dx, dy, ex, ey = self.edge_parts
+        ee = np.maximum(e, 0)
+        ecx, ecy, eex, eey = cx[ee], cy[ee], ex[ee], ey[ee]
+        o3 = eex * (vy - ecy) - eey * (vx - ecx)
+        o4 = eex * (py - ecy) - eey * (px - ecx)
+        seen = ~(o3 * o4 < -_EPS2)
+        seen &= e >= 0  # no edge: only the outside of the piece (p is inside), treat as hidden
+        unsure = (gap < 1e-9) | (np.abs(o3 * o4) < 1e-8) | (e < 0)
+        if unsure.any():
+            u = np.flatnonzero(unsure)
+            seen[u] = self.visible_from((px, py), self.V[cand[u]], interior=True)
+        return seen
+
+
     def solve(self):
         from scipy.sparse import coo_matrix
         from scipy.sparse.csgraph import shortest_path
@@ -414,6 +517,157 @@ class _Piece:
         return tot[best, np.arange(n)], idx[best]
 
 
+
+    # ---------------------------------------------------------------- lazy visibility (queries)
+    def _candidates(self, px: float, py: float):
+        """Corners the line from p grazes (the only possible first bends of a shortest path from p) and
+        their distances from p."""
+        qt = getattr(self, "_qt", None)
+        if qt is None or len(qt[0]) != len(self.V):
+            qt = self._query_tables()
+        vx, vy, (a1, b1, c1), (a2, b2, c2), ent, Dent = qt
+        s1 = a1 + px * b1 + py * c1
+        s2 = a2 + px * b2 + py * c2
+        cand = np.flatnonzero(~(s1 * s2 < -1e-12))  # NaN (points that are not corners) passes
+        return cand, np.hypot(vx[cand] - px, vy[cand] - py), qt
+
+    def _test(self, p, interior, cand, state, rows, score):
+        """Test the visibility from p of the candidates ``rows`` (indices into ``cand``) not tested yet,
+        padded with the untested ones of smallest ``score`` up to ``_BATCH`` (a batch costs about what one
+        segment costs); fills ``state`` (1 seen, -1 hidden)."""
+        unk = rows[state[rows] == 0]
+        if not len(unk):
+            return
+        if len(unk) < _BATCH:
+            sc = np.where(state == 0, score, np.inf)
+            sc[unk] = np.inf
+            more = np.argpartition(sc, _BATCH)[:_BATCH] if len(sc) > _BATCH else np.arange(len(sc))
+            more = more[np.isfinite(sc[more])]
+            unk = np.concatenate([unk, more[np.argsort(sc[more])][:_BATCH - len(unk)]])
+        vis = self.visible_from(p, self.V[cand[unk]], interior=interior)
+        state[unk] = np.where(vis, 1, -1)
+
+    def entry_costs(self, p, interior: Optional[bool] = None):
+        """Shortest distances from point p (inside the piece) to the entry vertices (the passage nodes),
+        and the first vertex of each path: (dist (n,), via (n,)), inf / -1 off the entries.
+
+        Same result as :meth:`point_costs` with ``entries_only`` but the visibility is tested lazily: per
+        entry the best candidate corner (distance from p + shortest path on) is taken, and only those
+        are tested, in batches; a hidden one drops out and the next best is taken. Far fewer segments are
+        tested than the piece has corners (a large hall: ~10 of ~90 candidates)."""
+        n = len(self.V)
+        px, py = float(p[0]), float(p[1])
+        cand, d0, qt = self._candidates(px, py)
+        ent, Dent = qt[4], qt[5]
+        dist, via = np.full(n, np.inf), np.full(n, -1)
+        if not len(cand) or Dent is None:
+            return dist, via
+        if interior is None:
+            interior = self._inside_xy(px, py)
+        if interior and getattr(self, "_vp", None) is not None:
+            seen = self.visible_vertices(px, py, cand)
+            cand, T = cand[seen], d0[seen, None] + Dent[cand[seen]]
+            if not len(cand):
+                return dist, via
+            best = T.argmin(axis=0)
+            val = T[best, np.arange(len(ent))]
+            ok = np.isfinite(val)
+            dist[ent[ok]] = val[ok]
+            via[ent[ok]] = cand[best[ok]]
+            return dist, via
+        T = d0[:, None] + Dent[cand]
+        state = np.zeros(len(cand), np.int8)
+        cols = np.arange(len(ent))
+        while True:
+            best = T.argmin(axis=0)
+            val = T[best, cols]
+            rows = np.unique(best[np.isfinite(val)])
+            if not len(rows) or (state[rows] == 1).all():
+                break
+            self._test(p, interior, cand, state, rows, T.min(axis=1))
+            T[state == -1] = np.inf
+        ok = np.isfinite(val)
+        dist[ent[ok]] = val[ok]
+        via[ent[ok]] = cand[best[ok]]
+        return dist, via
+
+    def pair_cost(self, sp, tp, s_int: Optional[bool] = None, t_int: Optional[bool] = None):
+        """Shortest path inside the piece between two of its points: (cost, first corner, last corner);
+        (inf, -1, -1) when the piece links them only through other areas. The caller has already found
+        the straight segment blocked. Lazy like :meth:`entry_costs`: the best pair of candidate corners
+        (one seen from each end) is tested, a hidden one drops out."""
+        if not len(self.V):
+            return math.inf, -1, -1
+        cs, ds, _ = self._candidates(float(sp[0]), float(sp[1]))
+        ct, dt, _ = self._candidates(float(tp[0]), float(tp[1]))
+        if not len(cs) or not len(ct):
+            return math.inf, -1, -1
+        if s_int is None:
+            s_int = self._inside_xy(float(sp[0]), float(sp[1]))
+        if t_int is None:
+            t_int = self._inside_xy(float(tp[0]), float(tp[1]))
+        if getattr(self, "_vp", None) is not None and (s_int or t_int):
+            if s_int:
+                keep = self.visible_vertices(float(sp[0]), float(sp[1]), cs)
+                cs, ds = cs[keep], ds[keep]
+            if t_int:
+                keep = self.visible_vertices(float(tp[0]), float(tp[1]), ct)
+                ct, dt = ct[keep], dt[keep]
+            if not len(cs) or not len(ct):
+                return math.inf, -1, -1
+        M = ds[:, None] + self.D[np.ix_(cs, ct)] + dt[None, :]
+        ss = np.zeros(len(cs), np.int8)
+        st = np.zeros(len(ct), np.int8)
+        if getattr(self, "_vp", None) is not None:
+            ss[:] = 1 if s_int else 0
+            st[:] = 1 if t_int else 0
+        st = np.zeros(len(ct), np.int8)
+        while True:
+            k = int(M.argmin())
+            i, j = divmod(k, M.shape[1])
+            c = float(M[i, j])
+            if not math.isfinite(c):
+                return math.inf, -1, -1
+            if ss[i] == 1 and st[j] == 1:
+                return c, int(cs[i]), int(ct[j])
+            if ss[i] == 0:
+                self._test(sp, s_int, cs, ss, np.array([i]), M.min(axis=1))
+                M[ss == -1, :] = np.inf
+            if st[j] == 0:
+                self._test(tp, t_int, ct, st, np.array([j]), M.min(axis=0))
+                M[:, st == -1] = np.inf
+
+
+def _avoid_mask(avoid) -> Optional[np.ndarray]:
+    """Per area-type code: is it avoided? (None when nothing is.)"""
+    return np.array([k in avoid for k in KIND_CODES_INV]) if avoid else None
+
+
+def _edge_between(csr, a: int, b: int, vc: float, amask) -> int:
+    """Index (into the flat adjacency) of the cheapest usable edge a -> b (parallel edges: a door pair
+    joined through the room and through the corridor)."""
+    lo, hi = int(csr["indptr"][a]), int(csr["indptr"][a + 1])
+    w = csr["cost"][lo:hi] + vc * csr["span"][lo:hi]
+    w = np.where(csr["nbr"][lo:hi] == b, w, np.inf)
+    if amask is not None:
+        w = np.where(amask[csr["kcode"][lo:hi]], np.inf, w)
+    return lo + int(np.argmin(w))
+
+
+def _min_matrix(rows, cols, w, n):
+    """Sparse n x n matrix keeping the cheapest of parallel edges (scipy would add them up)."""
+    from scipy.sparse import csr_matrix
+
+    rows, cols, w = np.asarray(rows, np.int64), np.asarray(cols, np.int64), np.asarray(w, float)
+    if len(w):
+        order = np.lexsort((w, cols, rows))
+        rows, cols, w = rows[order], cols[order], w[order]
+        first = np.ones(len(w), bool)
+        first[1:] = (rows[1:] != rows[:-1]) | (cols[1:] != cols[:-1])
+        rows, cols, w = rows[first], cols[first], w[first]
+    return csr_matrix((w, (rows, cols)), shape=(n, n))
+
+
 # =========================================================================== the graph
 class _Graph:
     """The routing graph of a map for one robot radius."""
@@ -430,6 +684,7 @@ class _Graph:
         self.free: Dict[str, object] = {}  # level -> free space polygon
         self.build_s = 0.0
         self.alt: Dict[tuple, np.ndarray] = {}
+        self.tables: Dict[tuple, tuple] = {}
         self._pos = None
         self._rank = None
         self._csr = None
@@ -721,6 +976,8 @@ class RouteMap:
             if m % 16 == 0:
                 progress.step(80.0 + 20.0 * m / npc)
             pc.solve()
+            if len(pc.edges) * len(pc.V) > VP_FROM:
+                pc.build_visibility()
             kind = self.types[pc.area_index]
             for x in range(len(pc.entries)):
                 nx, vx, dx = pc.entries[x]
@@ -812,6 +1069,10 @@ class RouteMap:
 
     def locate(self, xy, level=None, robot_radius: float = DEFAULT_ROBOT_RADIUS, what: str = "start"):
         """(piece, snapped point, snap distance) for a point; snaps up to SNAP metres, else InputError."""
+        return self._locate(xy, level, robot_radius, what)[:3]
+
+    def _locate(self, xy, level=None, robot_radius: float = DEFAULT_ROBOT_RADIUS, what: str = "start"):
+        """:meth:`locate` plus whether the point lies strictly inside its piece (None: not known yet)."""
         from shapely.geometry import Point
 
         lev = self._check_level(level, what)
@@ -830,7 +1091,7 @@ class RouteMap:
         hits = [pc for pc in hits if lev is None or pc.level == lev]
         if hits and (lev is not None or len({pc.level for pc in hits}) == 1):
             pc = hits[0] if len(hits) == 1 else min(hits, key=lambda p: self._area_size(p.area_index))
-            return pc, np.array([x, y]), 0.0
+            return pc, np.array([x, y]), 0.0, None
         if self._tree is None:
             import shapely
 
@@ -847,7 +1108,7 @@ class RouteMap:
         for k in order:  # inside an area: its pieces first
             for pc in g.pieces_by_area.get(k, []):
                 if pc.tol_poly.covers(pt):
-                    return pc, np.array([x, y]), 0.0
+                    return pc, np.array([x, y]), 0.0, None
         best = None
         for k in order + [k for k in cands if k not in inside]:
             if self.areas[k].polygon.distance(pt) > SNAP:
@@ -871,8 +1132,7 @@ class RouteMap:
 
         d, pc = best
         q = nearest_points(pc.poly, pt)[0]
-        # step a hair inside so that the visibility test sees the point as in the piece
-        return pc, np.array([q.x, q.y]), float(d)
+        return pc, np.array([q.x, q.y]), float(d), False
 
     def _area_size(self, k: int) -> float:
         sizes = getattr(self, "_sizes", None)
@@ -904,8 +1164,9 @@ class RouteMap:
                 k = self.find_area(p, lev)
                 p = self.area_point(k, robot_radius)
                 lev = self.levels[k]
-            ends.append(self.locate(p, lev, robot_radius, what))
-        self._landmarks(g, vc)  # once per map and vertical cost, not part of the query
+            ends.append(self._locate(p, lev, robot_radius, what))
+        if self._table(g, vc, avoid_set) is None:  # once per map, vertical cost (and avoid set)
+            self._landmarks(g, vc)
         t0 = time.perf_counter()
         res = self._search(g, ends[0], ends[1], vc, avoid_set, robot_radius)
         res.query_ms = (time.perf_counter() - t0) * 1000.0
@@ -915,26 +1176,70 @@ class RouteMap:
 
     # ------------------------------------------------------------------ A*
     def _search(self, g: _Graph, s_end, t_end, vc: float, avoid: set, robot_radius: float) -> RouteResult:
-        """A* from the start point to the goal point over the passage nodes (see the module docstring)."""
-        spc, sp, ssnap = s_end
-        tpc, tp, tsnap = t_end
-        sd, svia = spc.point_costs(sp, entries_only=spc is not tpc)
-        td, tvia = tpc.point_costs(tp, entries_only=spc is not tpc)
+        """The route from the start point to the goal point over the passage nodes (see the module docstring).
+
+        ``s_end``/``t_end``: :meth:`_locate` results (piece, point, snap distance, strictly inside or None).
+        A start and goal that see each other are joined straight (nothing can be shorter). Otherwise both
+        are joined to their piece's entry nodes; on maps of up to ``MAX_TABLE_NODES`` nodes the node-to-node
+        distance table (once per map, vertical cost and avoid set) gives the best pair of entry nodes at
+        once, and its predecessors the chain of nodes (A* with the exact cost-to-go as its heuristic
+        would expand exactly that chain); on larger maps A* runs with the landmark bounds."""
+        spc, sp, ssnap = s_end[:3]
+        tpc, tp, tsnap = t_end[:3]
+        s_int = s_end[3] if len(s_end) > 3 else None
+        t_int = t_end[3] if len(t_end) > 3 else None
+        csr = g.csr()
+        inf = math.inf
+        ub, came_t = inf, None  # best complete route so far: cost, (last node or None, detail)
+        if spc is tpc:
+            if s_int is None:
+                s_int = spc._inside_xy(float(sp[0]), float(sp[1]))
+            if s_int:
+                direct = spc.visible_from(sp, tp[None, :], interior=True)[0]
+            else:
+                if t_int is None:
+                    t_int = spc._inside_xy(float(tp[0]), float(tp[1]))
+                direct = spc.visible_from(tp, sp[None, :], interior=t_int)[0]
+            if direct:  # the straight segment: no route can be shorter
+                return self._rebuild(g, csr, [], {}, {}, (None, None), spc, sp, None, tpc, tp, None, ssnap, tsnap,
+                                     float(np.hypot(*(tp - sp))), 0)
+            c, i, j = spc.pair_cost(sp, tp, s_int, t_int)
+            if c < ub:
+                ub, came_t = c, (None, (i, j))
+        sd, svia = spc.entry_costs(sp, s_int)
+        td, tvia = tpc.entry_costs(tp, t_int)
         s_edges = [(n, float(sd[vi]) + d, vi) for (n, vi, d) in spc.entries if math.isfinite(sd[vi])]
         t_in: Dict[int, Tuple[float, int]] = {}
         for (n, vi, d) in tpc.entries:
             if math.isfinite(td[vi]) and (n not in t_in or td[vi] + d < t_in[n][0]):
                 t_in[n] = (float(td[vi]) + d, vi)
-        inf = math.inf
-        ub, came_t = inf, None  # best complete route so far: cost, (last node or None, detail)
-        if spc is tpc:
-            if spc.visible_from(sp, tp[None, :])[0]:
-                ub, came_t = float(np.hypot(*(tp - sp))), (None, None)
-            if len(spc.V):
-                tot = sd + td
-                v = int(np.argmin(tot))
-                if tot[v] < ub - 1e-12:
-                    ub, came_t = float(tot[v]), (None, v)
+        table = self._table(g, vc, avoid)
+        if table is not None:
+            nodes, came_e, s_vi = [], {}, {}
+            if s_edges and t_in:
+                dist, pred = table
+                sn = np.fromiter((e[0] for e in s_edges), np.int64, len(s_edges))
+                sc = np.fromiter((e[1] for e in s_edges), float, len(s_edges))
+                tn = np.fromiter(t_in.keys(), np.int64, len(t_in))
+                tc = np.fromiter((v[0] for v in t_in.values()), float, len(t_in))
+                M = sc[:, None] + dist[np.ix_(sn, tn)] + tc[None, :]
+                i, j = divmod(int(M.argmin()), len(tn))
+                if M[i, j] < ub - 1e-12:
+                    ub = float(M[i, j])
+                    s0, t0 = int(sn[i]), int(tn[j])
+                    nodes = [t0]
+                    while nodes[-1] != s0:
+                        nodes.append(int(pred[s0, nodes[-1]]))
+                    nodes.reverse()
+                    amask = _avoid_mask(avoid)
+                    for x, y in zip(nodes, nodes[1:]):
+                        came_e[y] = _edge_between(csr, x, y, vc, amask)
+                    s_vi = {s0: s_edges[i][2]}
+                    came_t = (t0, t_in[t0][1])
+            if came_t is None:
+                raise self._no_route(g, spc, tpc, avoid, robot_radius)
+            return self._rebuild(g, csr, nodes, came_e, s_vi, came_t, spc, sp, svia, tpc, tp, tvia, ssnap, tsnap,
+                                 ub, len(nodes))
         csr = g.csr()
         n_nodes = len(g.pos)
         h = self._heuristic(g, tp, self.level_rank[tpc.level], t_in, vc, avoid)
@@ -959,7 +1264,7 @@ class RouteMap:
                 s_vi[m] = vi
                 heapq.heappush(heap, (c + h[m], c, m))
         indptr, nbr, cost, span, kcode = csr["indptr"], csr["nbr"], csr["cost"], csr["span"], csr["kcode"]
-        amask = np.array([KIND_CODES_INV[i] in avoid for i in range(len(KIND_CODES_INV))]) if avoid else None
+        amask = _avoid_mask(avoid)
         expanded = 0
         while heap:
             f, c, n = heapq.heappop(heap)
@@ -1001,6 +1306,39 @@ class RouteMap:
         return self._rebuild(g, csr, nodes, came_e, s_vi, came_t, spc, sp, svia, tpc, tp, tvia, ssnap, tsnap,
                              ub, expanded)
 
+    def _matrix(self, g: _Graph, vc: float, avoid: set):
+        """The node graph as a sparse matrix: planar cost + vc x levels crossed, avoided area types left
+        out, the cheapest of parallel edges."""
+        csr = g.csr()
+        n = len(g.pos)
+        w = csr["cost"] + vc * csr["span"] + 1e-12
+        rows = np.repeat(np.arange(n), np.diff(csr["indptr"]))
+        keep = np.ones(len(w), bool)
+        amask = _avoid_mask(avoid)
+        if amask is not None:
+            keep = ~amask[csr["kcode"]]
+        return _min_matrix(rows[keep], csr["nbr"][keep], w[keep], n)
+
+    def _table(self, g: _Graph, vc: float, avoid: set):
+        """(dist, pred): shortest costs and predecessors between all pairs of nodes, for this vertical cost
+        and avoid set (once; the last ``MAX_TABLES`` kept), or None on maps of more than
+        ``MAX_TABLE_NODES`` nodes (A* with landmarks then)."""
+        n = len(g.pos)
+        if n == 0 or n > MAX_TABLE_NODES:
+            return None
+        key = (round(vc, 6), tuple(sorted(avoid)))
+        got = g.tables.get(key)
+        if got is None:
+            from scipy.sparse.csgraph import shortest_path
+
+            dist, pred = shortest_path(self._matrix(g, vc, avoid), method="D", directed=True,
+                                       return_predecessors=True)
+            got = (dist, pred.astype(np.int32))
+            while len(g.tables) >= MAX_TABLES:
+                g.tables.pop(next(iter(g.tables)))
+            g.tables[key] = got
+        return got
+
     def _landmarks(self, g: _Graph, vc: float) -> np.ndarray:
         """Shortest distances from a few landmark nodes to every node (ALT heuristic), cached per vertical
         cost. (K, n) array, inf where unreachable. Computed on the whole graph, avoided areas included: the
@@ -1011,20 +1349,13 @@ class RouteMap:
         got = g.alt.get(key)
         if got is not None:
             return got
-        from scipy.sparse import coo_matrix
         from scipy.sparse.csgraph import dijkstra
 
         n = len(g.pos)
         if n == 0:
             g.alt[key] = np.zeros((0, 0))
             return g.alt[key]
-        rows, cols, w = [], [], []
-        for a, lst in enumerate(g.adj):
-            for (m, c, kind, data, span) in lst:
-                rows.append(a)
-                cols.append(m)
-                w.append(c + vc * span + 1e-12)
-        mat = coo_matrix((w, (rows, cols)), shape=(n, n)).tocsr()
+        mat = self._matrix(g, vc, set())
         k = min(LANDMARKS, n)
         chosen = [0]
         dist = [dijkstra(mat, directed=True, indices=0)]
@@ -1091,10 +1422,8 @@ class RouteMap:
         add(sp, spc.level)
         add_area(spc.area_index)
         if not nodes:  # start and goal in one piece
-            v = came_t[1]
-            if v is not None:
-                piece_path(spc, int(svia[v]), v)
-                piece_path(tpc, v, int(tvia[v]))
+            if came_t[1] is not None:
+                piece_path(spc, *came_t[1])
         else:
             vi = s_vi[nodes[0]]
             piece_path(spc, int(svia[vi]), vi)
