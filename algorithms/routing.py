@@ -235,7 +235,9 @@ def _crossing_from(px: float, py: float, bx, by, E, parts=None) -> np.ndarray:
 
 
 _BATCH = 8  # lazy visibility: segments tested together
-VP_FROM = 2000  # pieces with edges x vertices above this keep their vertices' visibility polygons
+_DENSE_UP_TO = 6000  # candidates x edges up to which all candidates are tested at once
+VP_FROM = 2000  # pieces with edges x vertices above this get their vertices' visibility polygons ...
+VP_AFTER = 3  # ... by RouteMap.prepare, or once that many queries started or ended in them
 _SPARSE_FROM = 4000  # targets x edges above which the visibility from a point culls edges by angle first
 
 
@@ -299,6 +301,12 @@ class _Piece:
         self.entries: List[Tuple[int, int, float]] = []  # (graph node, vertex index, snap distance)
         self.D = None
         self.pred = None
+        self.queries = 0
+        self._vp = None
+
+    def large(self) -> bool:
+        """Worth visibility polygons: testing a point against all corners and edges would be slow."""
+        return len(self.edges) * len(self.V) > VP_FROM
 
     def add_point(self, xy) -> int:
         self.V = np.vstack([self.V, np.asarray(xy, float)[None, :]])
@@ -343,8 +351,8 @@ class _Piece:
         middle ray) bounds what o sees in the whole wedge. A point p strictly inside the piece sees o iff p is
         not beyond that edge: one binary search (p's wedge) and one side test per vertex, all vertices at
         once, instead of a test against every edge. Edges through o never block (as in :func:`_crossing`).
-        Stored flat: per vertex k its sorted wedge bounds (keys ``8 k + angle + pi``) and the nearest edge
-        per wedge (-1: none)."""
+        Stored flat: per vertex k its sorted wedge bounds (keys ``32 k + 16 + angle``, with the wrap-around
+        wedge at both ends), the nearest edge per wedge (-1: none) and the side of k from that edge's line."""
         V, E = self.V, self.edges
         n, m = len(V), len(E)
         if n == 0 or m == 0:
@@ -353,7 +361,7 @@ class _Piece:
         cx, cy, dx, dy, ex, ey = self.edge_parts
         elen = np.hypot(ex, ey) + 1e-300
         two_pi = 2 * np.pi
-        keys, near = np.zeros((n, m)), np.zeros((n, m), np.int64)
+        keys, near = np.zeros((n, m + 2)), np.zeros((n, m + 2), np.int64)
         chunk = max(1, 400_000 // m)  # origins per batch: a few MB of arrays
         for k0 in range(0, n, chunk):
             ks = np.arange(k0, min(n, k0 + chunk))
@@ -396,43 +404,37 @@ class _Piece:
                 np.fmin.at(tmin, gw, t)
                 hit = t <= tmin[gw]
                 best[gw[hit]] = e_i[hit]
-            keys[ks] = 8.0 * ks[:, None] + ang + np.pi
-            near[ks] = best.reshape(B, m)
-        self._vp = (keys.ravel(), near.ravel(), np.arange(n + 1, dtype=np.int64) * m)
+            # per origin m + 2 bounds: the last one - 2 pi, the m sorted ones, the first one + 2 pi; between
+            # them m + 1 intervals (the wrap-around wedge at both ends), padded to m + 2
+            kb = np.concatenate([ang[:, -1:] - two_pi, ang, ang[:, :1] + two_pi], axis=1)
+            keys[ks] = 32.0 * ks[:, None] + 16.0 + kb
+            best = best.reshape(B, m)
+            near[ks] = np.concatenate([best[:, -1:], best, np.full((B, 1), -1)], axis=1)
+        e = near.ravel()
+        ok = e >= 0
+        ee = np.where(ok, e, 0)
+        o3 = ex[ee] * (np.repeat(V[:, 1], m + 2) - cy[ee]) - ey[ee] * (np.repeat(V[:, 0], m + 2) - cx[ee])
+        o3 = np.where(ok, o3, np.nan).astype(np.float32)  # NaN: no edge (only the outside there): test exactly
+        self._vp = (keys.ravel(), e.astype(np.int32), o3)
 
     def visible_vertices(self, px: float, py: float, cand: np.ndarray) -> np.ndarray:
         """(K,) bool: does the point p (strictly inside the piece) see the vertices ``cand``? By the
         vertices' visibility polygons (:meth:`build_visibility`); the rare points within a hair of a wedge
         bound or of the bounding edge's line get the exact segment test."""
-        keys, near, start = self._vp
+        keys, near, o3 = self._vp
         vx, vy = self.V[cand, 0], self.V[cand, 1]
-        th = np.arctan2(py - vy, px - vx) + np.pi
-        q = 8.0 * cand + th
-        pos = np.searchsorted(keys, q)
-        s0, s1 = start[cand], start[cand + 1]
-        nw = s1 - s0
-        if not len(cand) or (nw == 0).any():
-            return self.visible_from((px, py), self.V[cand], interior=True)
-        j = pos - 1
-        j = np.where(j < s0, s1 - 1, j)  # below the first bound: the wedge that wraps around
-        lo_b = keys[np.minimum(pos - 1, len(keys) - 1).clip(0)]
-        hi_b = keys[np.minimum(pos, len(keys) - 1)]
-        gap = np.minimum(np.abs(q - lo_b), np.abs(hi_b - q))
-        gap = np.minimum(gap, np.minimum(np.abs(q - keys[s0] - 2 * np.pi), np.abs(q - keys[s1 - 1] + 2 * np.pi)))
-        e = near[j]
+        q = np.arctan2(py - vy, px - vx) + (32.0 * cand + 16.0)
+        i = np.searchsorted(keys, q, "right") - 1
+        gap = np.minimum(q - keys[i], keys[i + 1] - q)
+        e = near[i]
         cx, cy, dx, dy, ex, ey = self.edge_parts
-        ee = np.maximum(e, 0)
-        ecx, ecy, eex, eey = cx[ee], cy[ee], ex[ee], ey[ee]
-        o3 = eex * (vy - ecy) - eey * (vx - ecx)
-        o4 = eex * (py - ecy) - eey * (px - ecx)
-        seen = ~(o3 * o4 < -_EPS2)
-        seen &= e >= 0  # no edge: only the outside of the piece (p is inside), treat as hidden
-        unsure = (gap < 1e-9) | (np.abs(o3 * o4) < 1e-8) | (e < 0)
+        prod = o3[i] * (ex[e] * (py - cy[e]) - ey[e] * (px - cx[e]))
+        seen = prod >= -_EPS2
+        unsure = (gap < 1e-9) | ~(np.abs(prod) >= 1e-8)
         if unsure.any():
             u = np.flatnonzero(unsure)
             seen[u] = self.visible_from((px, py), self.V[cand[u]], interior=True)
         return seen
-
 
     def solve(self):
         from scipy.sparse import coo_matrix
@@ -482,6 +484,10 @@ class _Piece:
         ent = np.unique(np.array([vi for _, vi, _ in self.entries], np.int64)) if self.entries else \
             np.zeros(0, np.int64)
         self._qt = (vx, vy, t[0], t[1], ent, self.D[:, ent] if self.D is not None and len(ent) else None)
+        # the entries as arrays: graph node, vertex, snap distance
+        self.e_node = np.array([nd for nd, _, _ in self.entries], np.int64)
+        self.e_vi = np.array([vi for _, vi, _ in self.entries], np.int64)
+        self.e_d = np.array([d for _, _, d in self.entries], float)
         return self._qt
 
     def point_costs(self, p, entries_only: bool = False):
@@ -564,8 +570,9 @@ class _Piece:
             return dist, via
         if interior is None:
             interior = self._inside_xy(px, py)
-        if interior and getattr(self, "_vp", None) is not None:
-            seen = self.visible_vertices(px, py, cand)
+        vp = interior and self._vp is not None
+        if vp or len(cand) * len(self.edges) <= _DENSE_UP_TO:  # all candidates at once
+            seen = self.visible_vertices(px, py, cand) if vp else self.visible_from(p, self.V[cand], interior)
             cand, T = cand[seen], d0[seen, None] + Dent[cand[seen]]
             if not len(cand):
                 return dist, via
@@ -606,7 +613,7 @@ class _Piece:
             s_int = self._inside_xy(float(sp[0]), float(sp[1]))
         if t_int is None:
             t_int = self._inside_xy(float(tp[0]), float(tp[1]))
-        if getattr(self, "_vp", None) is not None and (s_int or t_int):
+        if self._vp is not None and (s_int or t_int):
             if s_int:
                 keep = self.visible_vertices(float(sp[0]), float(sp[1]), cs)
                 cs, ds = cs[keep], ds[keep]
@@ -618,7 +625,7 @@ class _Piece:
         M = ds[:, None] + self.D[np.ix_(cs, ct)] + dt[None, :]
         ss = np.zeros(len(cs), np.int8)
         st = np.zeros(len(ct), np.int8)
-        if getattr(self, "_vp", None) is not None:
+        if self._vp is not None:
             ss[:] = 1 if s_int else 0
             st[:] = 1 if t_int else 0
         st = np.zeros(len(ct), np.int8)
@@ -668,6 +675,53 @@ def _min_matrix(rows, cols, w, n):
     return csr_matrix((w, (rows, cols)), shape=(n, n))
 
 
+
+GRID_CELL = 0.15  # metres: the point-location grid's cells (coarser on large maps)
+GRID_MAX_CELLS = 2_000_000
+
+
+def _point_grid(g, lev):
+    """Point location by a grid over the level's pieces (``lev`` None: all levels): a cell holds the piece
+    it lies wholly and strictly inside of, else -1 (near a border, outside, or in pieces that overlap,
+    e.g. floors above one another): (x0, y0, cell, labels, pieces), or None without pieces. Cells are
+    filled by their centres and every border is drawn 3 cells wide, so a labelled cell has no border
+    within it: a point in it needs no further test."""
+    import cv2
+
+    pcs = [pc for pc in g.pieces.values() if lev is None or pc.level == lev]
+    if not pcs:
+        return None
+    b = np.array([pc.tol_poly.bounds for pc in pcs])
+    x0, y0, x1, y1 = b[:, 0].min(), b[:, 1].min(), b[:, 2].max(), b[:, 3].max()
+    h = max(GRID_CELL, math.sqrt((x1 - x0) * (y1 - y0) / GRID_MAX_CELLS))
+    x0, y0 = x0 - 2 * h, y0 - 2 * h
+    nx, ny = int((x1 - x0) / h) + 3, int((y1 - y0) / h) + 3
+    count = np.zeros((ny, nx), np.uint8)
+    lab = np.full((ny, nx), -1, np.int32)
+    border = np.zeros((ny, nx), np.uint8)
+    shift = 4  # sub-cell precision of the drawing
+    for k, pc in enumerate(pcs):
+        bx0, by0, bx1, by1 = pc.tol_poly.bounds
+        c0, r0 = max(0, int((bx0 - x0) / h) - 2), max(0, int((by0 - y0) / h) - 2)
+        c1, r1 = min(nx, int((bx1 - x0) / h) + 3), min(ny, int((by1 - y0) / h) + 3)
+        rings = []
+        poly = pc.poly
+        for ring in [poly.exterior] + list(poly.interiors):
+            xy = np.asarray(ring.coords)[:, :2]
+            # cell (r, c) has its centre at x0 + (c + 0.5) h: pixel coordinates in the window
+            px = (xy[:, 0] - x0) / h - 0.5 - c0
+            py = (xy[:, 1] - y0) / h - 0.5 - r0
+            rings.append(np.round(np.column_stack([px, py]) * (1 << shift)).astype(np.int32))
+        mask = np.zeros((r1 - r0, c1 - c0), np.uint8)
+        cv2.fillPoly(mask, rings, 1, lineType=cv2.LINE_8, shift=shift)
+        cv2.polylines(border[r0:r1, c0:c1], rings, True, 1, thickness=3, lineType=cv2.LINE_8, shift=shift)
+        count[r0:r1, c0:c1] += mask
+        sub = lab[r0:r1, c0:c1]
+        sub[mask > 0] = k
+    lab[(count != 1) | (border > 0)] = -1
+    return (float(x0), float(y0), float(h), lab, pcs)
+
+
 # =========================================================================== the graph
 class _Graph:
     """The routing graph of a map for one robot radius."""
@@ -685,6 +739,7 @@ class _Graph:
         self.build_s = 0.0
         self.alt: Dict[tuple, np.ndarray] = {}
         self.tables: Dict[tuple, tuple] = {}
+        self.grids: Dict[object, object] = {}
         self._pos = None
         self._rank = None
         self._csr = None
@@ -873,6 +928,29 @@ class RouteMap:
             self._graphs[key] = g
         return g
 
+    def prepare(self, robot_radius: float = DEFAULT_ROBOT_RADIUS, vertical_cost: float = DEFAULT_VERTICAL_COST,
+                avoid: Sequence[str] = (), progress=None) -> _Graph:
+        """Everything queries use, built now rather than on the first queries: the graph, the node distance
+        table (or landmarks) for this vertical cost and avoid set, the point-location grids and the
+        visibility polygons of the large pieces' corners. For many queries on one map (a robot's planner,
+        the benchmark); a single query does not need it (QGIS's route tool does not call it)."""
+        progress = ensure(progress)
+        g = self.graph(robot_radius, progress=progress.sub(0, 50))
+        avoid_set = self._avoid_set(avoid)
+        vc = float(vertical_cost)
+        if self._table(g, vc, avoid_set) is None:
+            self._landmarks(g, vc)
+        for lev in [None] + list(self.level_list):
+            if lev not in g.grids:
+                g.grids[lev] = _point_grid(g, lev)
+        big = [pc for pc in g.pieces.values() if pc._vp is None and pc.large()]
+        for m, pc in enumerate(big):
+            if m % 8 == 0:
+                progress.step(50 + 50.0 * m / max(1, len(big)), "visibility polygons of the large areas")
+            pc.build_visibility()
+        progress.step(100)
+        return g
+
     def _build(self, r: float, progress) -> _Graph:
         import shapely
         from shapely.geometry import LineString, Polygon
@@ -976,8 +1054,6 @@ class RouteMap:
             if m % 16 == 0:
                 progress.step(80.0 + 20.0 * m / npc)
             pc.solve()
-            if len(pc.edges) * len(pc.V) > VP_FROM:
-                pc.build_visibility()
             kind = self.types[pc.area_index]
             for x in range(len(pc.entries)):
                 nx, vx, dx = pc.entries[x]
@@ -1080,6 +1156,14 @@ class RouteMap:
         x, y = float(xy[0]), float(xy[1])
         if not (math.isfinite(x) and math.isfinite(y)):
             raise InputError(f"{what}: the point ({xy[0]}, {xy[1]}) is not a valid coordinate")
+        grid = g.grids.get(lev)
+        if grid is None:
+            grid = g.grids[lev] = _point_grid(g, lev)
+        if grid is not None:  # the commonest case: well inside one piece, by a cell lookup
+            x0, y0, h, lab, pcs = grid
+            c, r = int((x - x0) / h), int((y - y0) / h)
+            if 0 <= r < lab.shape[0] and 0 <= c < lab.shape[1] and lab[r, c] >= 0 and x >= x0 and y >= y0:
+                return pcs[lab[r, c]], np.array([x, y]), 0.0, True
         pt = Point(x, y)
         # the common case first: the point lies in a piece of the robot's free space
         if g.piece_tree is None:
@@ -1148,15 +1232,7 @@ class RouteMap:
         if not (math.isfinite(float(vertical_cost)) and float(vertical_cost) >= 0):
             raise InputError(f"VERTICAL_COST must be a non-negative number of metres, got {vertical_cost}")
         vc = float(vertical_cost)
-        avoid_set = set()
-        for a in avoid or ():
-            a = str(a).strip().lower()
-            if not a or a == "none":
-                continue
-            a = {"stair": "stairs", "lift": "elevator", "lifts": "elevator", "elevators": "elevator"}.get(a, a)
-            if a not in AVOIDABLE:
-                raise InputError(f"AVOID: unknown area type '{a}'; use one of {', '.join(AVOIDABLE)}")
-            avoid_set.add(a)
+        avoid_set = self._avoid_set(avoid)
         g = self.graph(robot_radius, progress=progress.sub(0, 90))
         ends = []
         for what, p, lev in (("start", start, start_level), ("goal", goal, goal_level)):
@@ -1173,6 +1249,19 @@ class RouteMap:
         progress.step(100, f"route: {res.length:.2f} m, {res.level_changes} level changes, "
                            f"{len(res.areas)} areas, {len(res.passages)} passages ({res.query_ms:.2f} ms)")
         return res
+
+    @staticmethod
+    def _avoid_set(avoid) -> set:
+        out = set()
+        for a in avoid or ():
+            a = str(a).strip().lower()
+            if not a or a == "none":
+                continue
+            a = {"stair": "stairs", "lift": "elevator", "lifts": "elevator", "elevators": "elevator"}.get(a, a)
+            if a not in AVOIDABLE:
+                raise InputError(f"AVOID: unknown area type '{a}'; use one of {', '.join(AVOIDABLE)}")
+            out.add(a)
+        return out
 
     # ------------------------------------------------------------------ A*
     def _search(self, g: _Graph, s_end, t_end, vc: float, avoid: set, robot_radius: float) -> RouteResult:
@@ -1206,22 +1295,24 @@ class RouteMap:
             c, i, j = spc.pair_cost(sp, tp, s_int, t_int)
             if c < ub:
                 ub, came_t = c, (None, (i, j))
+        for pc in (spc, tpc) if spc is not tpc else (spc,):
+            pc.queries += 1
+            if pc.queries == VP_AFTER and pc._vp is None and pc.large():
+                pc.build_visibility()  # a hall queried again and again: its corners' visibility polygons
         sd, svia = spc.entry_costs(sp, s_int)
         td, tvia = tpc.entry_costs(tp, t_int)
-        s_edges = [(n, float(sd[vi]) + d, vi) for (n, vi, d) in spc.entries if math.isfinite(sd[vi])]
-        t_in: Dict[int, Tuple[float, int]] = {}
-        for (n, vi, d) in tpc.entries:
-            if math.isfinite(td[vi]) and (n not in t_in or td[vi] + d < t_in[n][0]):
-                t_in[n] = (float(td[vi]) + d, vi)
+        # start -> entry nodes of its piece, entry nodes of the goal's piece -> goal: (node, cost, vertex)
+        sc = sd[spc.e_vi] + spc.e_d
+        ok = np.isfinite(sc)
+        sn, sc, svi = spc.e_node[ok], sc[ok], spc.e_vi[ok]
+        tc = td[tpc.e_vi] + tpc.e_d
+        ok = np.isfinite(tc)
+        tn, tc, tvi = tpc.e_node[ok], tc[ok], tpc.e_vi[ok]
         table = self._table(g, vc, avoid)
         if table is not None:
             nodes, came_e, s_vi = [], {}, {}
-            if s_edges and t_in:
+            if len(sn) and len(tn):
                 dist, pred = table
-                sn = np.fromiter((e[0] for e in s_edges), np.int64, len(s_edges))
-                sc = np.fromiter((e[1] for e in s_edges), float, len(s_edges))
-                tn = np.fromiter(t_in.keys(), np.int64, len(t_in))
-                tc = np.fromiter((v[0] for v in t_in.values()), float, len(t_in))
                 M = sc[:, None] + dist[np.ix_(sn, tn)] + tc[None, :]
                 i, j = divmod(int(M.argmin()), len(tn))
                 if M[i, j] < ub - 1e-12:
@@ -1234,13 +1325,17 @@ class RouteMap:
                     amask = _avoid_mask(avoid)
                     for x, y in zip(nodes, nodes[1:]):
                         came_e[y] = _edge_between(csr, x, y, vc, amask)
-                    s_vi = {s0: s_edges[i][2]}
-                    came_t = (t0, t_in[t0][1])
+                    s_vi = {s0: int(svi[i])}
+                    came_t = (t0, int(tvi[j]))
             if came_t is None:
                 raise self._no_route(g, spc, tpc, avoid, robot_radius)
             return self._rebuild(g, csr, nodes, came_e, s_vi, came_t, spc, sp, svia, tpc, tp, tvia, ssnap, tsnap,
                                  ub, len(nodes))
-        csr = g.csr()
+        s_edges = list(zip(sn.tolist(), sc.tolist(), svi.tolist()))
+        t_in: Dict[int, Tuple[float, int]] = {}
+        for n, c, vi in zip(tn.tolist(), tc.tolist(), tvi.tolist()):
+            if n not in t_in or c < t_in[n][0]:
+                t_in[n] = (c, vi)
         n_nodes = len(g.pos)
         h = self._heuristic(g, tp, self.level_rank[tpc.level], t_in, vc, avoid)
         # a first upper bound through the best landmark: prunes nodes that cannot beat it
@@ -1394,17 +1489,11 @@ class RouteMap:
 
     def _rebuild(self, g, csr, nodes, came_e, s_vi, came_t, spc, sp, svia, tpc, tp, tvia, ssnap, tsnap, cost,
                  expanded):
-        pts: List[Tuple[float, float]] = []
-        lvls: List[str] = []
+        chunks: List[np.ndarray] = []  # the polyline in pieces, each on one level
+        clev: List[str] = []
         area_seq: List[int] = []
         pass_seq: List[int] = []
-
-        def add(xy, lev):
-            xy = (float(xy[0]), float(xy[1]))
-            if pts and lvls[-1] == lev and abs(pts[-1][0] - xy[0]) < 1e-9 and abs(pts[-1][1] - xy[1]) < 1e-9:
-                return
-            pts.append(xy)
-            lvls.append(lev)
+        gpos = g.pos_array()
 
         def add_area(k):
             if not area_seq or area_seq[-1] != k:
@@ -1416,10 +1505,15 @@ class RouteMap:
                 pass_seq.append(i)
 
         def piece_path(pc, a, b):
-            for v in pc.vertex_path(a, b):
-                add(pc.V[v], pc.level)
+            chunks.append(pc.V[pc.vertex_path(a, b)])
+            clev.append(pc.level)
 
-        add(sp, spc.level)
+        def node(n):
+            chunks.append(gpos[n:n + 1])
+            clev.append(g.level[n])
+
+        chunks.append(np.asarray(sp, float).reshape(1, 2))
+        clev.append(spc.level)
         add_area(spc.area_index)
         if not nodes:  # start and goal in one piece
             if came_t[1] is not None:
@@ -1427,30 +1521,36 @@ class RouteMap:
         else:
             vi = s_vi[nodes[0]]
             piece_path(spc, int(svia[vi]), vi)
-            add(g.pos[nodes[0]], g.level[nodes[0]])
+            node(nodes[0])
             add_passage(nodes[0])
+            eid = csr["eid"]
             for n in nodes[1:]:
-                data = g.edata[int(csr["eid"][came_e[n]])]
-                if data[0] == "V":
-                    add(g.pos[n], g.level[n])
-                else:
+                data = g.edata[int(eid[came_e[n]])]
+                if data[0] != "V":
                     key, vx, vy = data
                     pc = g.pieces[key]
                     add_area(pc.area_index)
                     piece_path(pc, vx, vy)
-                    add(g.pos[n], g.level[n])
+                node(n)
                 add_passage(n)
             add_area(tpc.area_index)
             vi = came_t[1]
             piece_path(tpc, vi, int(tvia[vi]))
-        add(tp, tpc.level)
-        if len(pts) == 1:
-            pts.append(pts[0])
-            lvls.append(lvls[0])
-        P = np.asarray(pts, float)
+        chunks.append(np.asarray(tp, float).reshape(1, 2))
+        clev.append(tpc.level)
+        P = np.concatenate(chunks)
+        lv = np.repeat(np.arange(len(chunks)), [len(c) for c in chunks])
+        lcode = np.array([self.level_rank[x] for x in clev])[lv]
+        keep = np.ones(len(P), bool)  # drop repeated points (a level change repeats the position)
+        keep[1:] = (np.abs(np.diff(P, axis=0)) >= 1e-9).any(axis=1) | (lcode[1:] != lcode[:-1])
+        P, lv = P[keep], lv[keep]
+        if len(P) == 1:
+            P, lv = np.vstack([P, P]), np.concatenate([lv, lv])
+        lvls = [clev[i] for i in lv.tolist()]
         length = float(np.hypot(*np.diff(P, axis=0).T).sum())
         changes = sum(1 for a, b in zip(lvls, lvls[1:]) if a != b)
-        z = np.array([self._elevation(lv) for lv in lvls])
+        elev = {x: self._elevation(x) for x in set(clev)}
+        z = np.array([elev[x] for x in lvls])
         return RouteResult(points=P, levels=lvls, z=z, length=length, cost=float(cost), level_changes=changes,
                            areas=[self.areas[k].name for k in area_seq], area_ids=[self.areas[k].id for k in area_seq],
                            passages=[self._passage_name(i) for i in pass_seq],
