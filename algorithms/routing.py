@@ -1539,18 +1539,29 @@ class RouteMap:
         chunks.append(np.asarray(tp, float).reshape(1, 2))
         clev.append(tpc.level)
         P = np.concatenate(chunks)
-        lv = np.repeat(np.arange(len(chunks)), [len(c) for c in chunks])
-        lcode = np.array([self.level_rank[x] for x in clev])[lv]
+        d = np.diff(P, axis=0)
         keep = np.ones(len(P), bool)  # drop repeated points (a level change repeats the position)
-        keep[1:] = (np.abs(np.diff(P, axis=0)) >= 1e-9).any(axis=1) | (lcode[1:] != lcode[:-1])
-        P, lv = P[keep], lv[keep]
-        if len(P) == 1:
-            P, lv = np.vstack([P, P]), np.concatenate([lv, lv])
-        lvls = [clev[i] for i in lv.tolist()]
+        keep[1:] = (np.abs(d) >= 1e-9).any(axis=1)
+        one_level = clev.count(clev[0]) == len(clev)
+        if one_level:
+            P = P[keep]
+            if len(P) == 1:
+                P = np.vstack([P, P])
+            lvls = [clev[0]] * len(P)
+            z = np.full(len(P), self._elevation(clev[0]))
+            changes = 0
+        else:
+            lv = np.repeat(np.arange(len(chunks)), [len(c) for c in chunks])
+            lcode = np.array([self.level_rank[x] for x in clev])[lv]
+            keep[1:] |= lcode[1:] != lcode[:-1]
+            P, lv = P[keep], lv[keep]
+            if len(P) == 1:
+                P, lv = np.vstack([P, P]), np.concatenate([lv, lv])
+            lvls = [clev[i] for i in lv.tolist()]
+            changes = sum(1 for a, b in zip(lvls, lvls[1:]) if a != b)
+            elev = {x: self._elevation(x) for x in set(clev)}
+            z = np.array([elev[x] for x in lvls])
         length = float(np.hypot(*np.diff(P, axis=0).T).sum())
-        changes = sum(1 for a, b in zip(lvls, lvls[1:]) if a != b)
-        elev = {x: self._elevation(x) for x in set(clev)}
-        z = np.array([elev[x] for x in lvls])
         return RouteResult(points=P, levels=lvls, z=z, length=length, cost=float(cost), level_changes=changes,
                            areas=[self.areas[k].name for k in area_seq], area_ids=[self.areas[k].id for k in area_seq],
                            passages=[self._passage_name(i) for i in pass_seq],
