@@ -24,9 +24,17 @@ radius ``r`` is planned for in its configuration space, built once per map and r
   lifts are recognised by ``osmAG:areatype`` or, in maps that type everything ``room``, by their names
   (``ST-03``, ``stair``, ``楼梯``; ``P3``, ``lift``, ``elevator``, ``电梯``).
 * **A query** joins start and goal to the nodes of their area piece the same way (visibility from the
-  point, then the precomputed shortest paths) and runs A* with the heuristic "planar straight-line
-  distance + ``vertical_cost`` × levels still to cross", admissible because every vertical link costs at
-  least that and every planar edge is at least the straight distance between its ends.
+  point, then the precomputed shortest paths); a start and goal that see each other are joined straight.
+  On maps of up to ``MAX_TABLE_NODES`` nodes the node-to-node distance table (once per map, vertical cost
+  and avoid set) picks the best pair of entry nodes and its predecessors give the chain of nodes: A* with
+  the exact cost-to-go as heuristic, which expands exactly that chain. Larger maps run A* with the larger
+  of "planar straight-line distance + ``vertical_cost`` × levels still to cross" (admissible because every
+  vertical link costs at least that and every planar edge is at least the straight distance between its
+  ends) and landmark (ALT) bounds.
+* **Query speed.** A point is located by a grid of cells wholly inside one piece; in large pieces (halls)
+  the corners a point sees come from the corners' visibility polygons (one binary search and one side
+  test per corner, :meth:`_Piece.build_visibility`), elsewhere from a segment test against the piece's
+  edges. :meth:`RouteMap.prepare` builds all of it up front for many queries.
 * ``avoid`` drops area types from the search: ``("stairs",)`` for wheelchairs and wheeled robots (lifts
   only), ``("elevator",)`` for evacuation routes.
 
@@ -34,6 +42,7 @@ Coordinates are metres in the map's frame (osmAG files: the local frame of the r
 y north). The result keeps the level of every vertex. :class:`RouteMap` is the entry point::
 
     rm = RouteMap.from_osmag("building.osm")
+    rm.prepare(0.3)  # optional: tables, grids and visibility polygons now rather than on the first queries
     res = rm.route((x0, y0), (x1, y1), start_level="1", goal_level="3", robot_radius=0.3,
                    avoid=("stairs",))
     res.points, res.levels, res.length, res.areas, res.passages
@@ -557,10 +566,11 @@ class _Piece:
         """Shortest distances from point p (inside the piece) to the entry vertices (the passage nodes),
         and the first vertex of each path: (dist (n,), via (n,)), inf / -1 off the entries.
 
-        Same result as :meth:`point_costs` with ``entries_only`` but the visibility is tested lazily: per
-        entry the best candidate corner (distance from p + shortest path on) is taken, and only those
-        are tested, in batches; a hidden one drops out and the next best is taken. Far fewer segments are
-        tested than the piece has corners (a large hall: ~10 of ~90 candidates)."""
+        Same result as :meth:`point_costs` with ``entries_only``, cheaper: with visibility polygons (a
+        strictly interior point of a large piece) or few candidates x edges, all candidates are tested at
+        once; otherwise lazily: per entry the best candidate corner (distance from p + shortest path on)
+        is taken and only those are tested, in batches; a hidden one drops out and the next best is taken
+        (a large hall: ~10 of ~90 candidates tested)."""
         n = len(self.V)
         px, py = float(p[0]), float(p[1])
         cand, d0, qt = self._candidates(px, py)

@@ -351,7 +351,11 @@ def cross_floor(fl1, fl2, n_pairs, rng, log):
 # =========================================================================== a fused building (osmAG file)
 def level_raster(rm, lev, res=0.05):
     """The floor raster of one level of an osmAG map: free inside its areas, walls (1 px) along every area
-    border except the passage openings (flat, 5 cm each side, as the route map opens them)."""
+    border, and at every passage a 1 m deep opening as wide as the passage (converted maps keep the wall's
+    thickness between two rooms; the route map joins a passage to areas up to 1 m away): returns the grid
+    and the shapes the grid planner may use (the areas and the openings)."""
+    from types import SimpleNamespace
+
     import cv2
 
     from algorithms.model import OCCUPIED, OccupancyGrid
@@ -375,14 +379,17 @@ def level_raster(rm, lev, res=0.05):
             cv2.fillPoly(free, rings, 1, lineType=cv2.LINE_8, shift=shift)
             cv2.polylines(walls, rings, True, 1, thickness=1, lineType=cv2.LINE_8, shift=shift)
     vset = set(rm.vertical)
+    openings = []
     for i, p in enumerate(rm.passages):
         if i in vset or rm.levels[rm.index[p.from_id]] != lev or p.line.length < 1e-6:
             continue
-        op = p.line.buffer(0.05, cap_style="flat")
+        op = p.line.buffer(0.5, cap_style="flat")
         for part in getattr(op, "geoms", [op]):
             cv2.fillPoly(walls, [px(part.exterior.coords)], 0, lineType=cv2.LINE_8, shift=shift)
+            cv2.fillPoly(free, [px(part.exterior.coords)], 1, lineType=cv2.LINE_8, shift=shift)
+            openings.append(SimpleNamespace(polygon=part))
     grid.data[(free > 0) & (walls == 0)] = FREE
-    return grid, [rm.areas[k] for k in ks]
+    return grid, [rm.areas[k] for k in ks] + openings
 
 
 def lift_links(rm, g):

@@ -599,3 +599,52 @@ def test_bench_cross_building_on_a_small_fused_file(tmp_path):
     s = bench.stats(res["rows"])
     assert s["within"] == 4 and s["rel_min"] > -0.05  # never much shorter than the grid: not through walls
     assert s["q_cpu_best_med"] < 50
+
+
+@pytest.mark.slow
+def test_campus_map_fast_paths_give_the_reference_answers(shared_data, monkeypatch):
+    """On the other tools' two-level campus map: the node table and A* with landmarks give the same costs,
+    the visibility polygons of its large halls the same visibility as the segment test, and prepare()
+    changes no route."""
+    from algorithms import routing
+
+    rm = RouteMap.from_osmag(str(shared_data / "osmag" / "fix_id_ShanghaiTech_merge_2.osm"))
+    big = rm.components(0.3)[0]
+    rng = np.random.default_rng(4)
+    ks = [int(k) for k in rng.choice(big, 16, replace=False)]
+    pairs = [(ks[i], ks[i + 1]) for i in range(0, 16, 2)]
+
+    def routes(m):
+        out = []
+        for a, b in pairs:
+            for av in ((), ("stairs",)):
+                try:
+                    out.append(m.route(m.area_point(a), m.area_point(b), m.levels[a], m.levels[b],
+                                       robot_radius=0.3, avoid=av).cost)
+                except RouteError:  # without stairs some parts of this map are cut off
+                    out.append(math.inf)
+        return out
+
+    plain = routes(rm)
+    assert sum(map(math.isfinite, plain)) >= 10
+    g = rm.prepare(0.3)
+    prepared = routes(rm)
+    for x, y in zip(plain, prepared):
+        assert x == pytest.approx(y, abs=1e-9)
+    halls = [pc for pc in g.pieces.values() if pc._vp is not None]
+    assert halls
+    n = 0
+    for pc in sorted(halls, key=lambda p: -len(p.V))[:3]:
+        x0, y0, x1, y1 = pc.poly.bounds
+        for x, y in zip(rng.uniform(x0, x1, 300), rng.uniform(y0, y1, 300)):
+            if not pc._inside_xy(x, y):
+                continue
+            n += 1
+            cand = np.arange(len(pc.V))
+            exact = ~routing._crossing_from(x, y, pc.V[:, 0], pc.V[:, 1], pc.edges, pc.edge_parts)
+            assert (pc.visible_vertices(x, y, cand) == exact).all()
+    assert n > 100
+    monkeypatch.setattr(routing, "MAX_TABLE_NODES", 0)
+    rm2 = RouteMap.from_osmag(str(shared_data / "osmag" / "fix_id_ShanghaiTech_merge_2.osm"))
+    for x, y in zip(plain, routes(rm2)):
+        assert x == pytest.approx(y, abs=1e-6)
