@@ -531,6 +531,9 @@ def sist_building(cache, log):
 
 # =========================================================================== report
 def stats(rows):
+    lost = sum(1 for r in rows if not math.isfinite(r["ours"]))  # the map has no route where the raster has one
+    n_all = len(rows)
+    rows = [r for r in rows if math.isfinite(r["ours"])] or rows
     rel = [(r["ours"] - r["grid_any"]) / r["grid_any"] for r in rows]
     rel8 = [(r["ours"] - r["grid8"]) / r["grid8"] for r in rows]
     within = sum(1 for x in rel if x <= 0.02)
@@ -542,7 +545,7 @@ def stats(rows):
     below = sum(1 for r in rows if r["ours"] < r["euclid"] - 1e-6)
     clear = [r["clear"] for r in rows if "clear" in r]
     return {"clear_med": statistics.median(clear) if clear else None, "clear_min": min(clear) if clear else None,
-            "n": len(rows), "within": within, "rel_med": statistics.median(rel), "rel_max": max(rel),
+            "n": n_all, "lost": lost, "within": within, "rel_med": statistics.median(rel), "rel_max": max(rel),
             "rel_min": min(rel), "rel8_med": statistics.median(rel8), "q_med": statistics.median(qw),
             "q_cpu_med": statistics.median(qc), "q_cpu_best_med": statistics.median(qb), "q_max": max(qw), "g_med": statistics.median(gw),
             "speed_med": statistics.median(speed), "speed_min": min(speed), "below_euclid": below}
@@ -557,7 +560,8 @@ def table(results, cross):
     crosses = cross if isinstance(cross, list) else [cross]
     for res in results + [c for c in crosses if c and c.get("rows")]:
         s = stats(res["rows"])
-        lines.append(f"| {res['label']} | {s['n']} | {s['within']}/{s['n']} | {s['rel_med'] * 100:+.2f} % / "
+        lost = f" ({s['lost']} without osmAG route)" if s["lost"] else ""
+        lines.append(f"| {res['label']} | {s['n']} | {s['within']}/{s['n']}{lost} | {s['rel_med'] * 100:+.2f} % / "
                      f"{s['rel_max'] * 100:+.2f} % | {s['rel8_med'] * 100:+.2f} % | {s['q_med']:.2f} ms "
                      f"({s['q_max']:.2f}) | {s['q_cpu_med']:.2f} ms | {s['q_cpu_best_med']:.2f} ms | "
                      f"{s['g_med']:.2f} s | {s['speed_med']:,.0f}x ({s['speed_min']:,.0f}x) | {res['build']:.2f} s "
