@@ -661,7 +661,7 @@ def main():
         s = cb["summary"]
         extra.append(f"- {cb['label']}: {cb['areas']} areas, {cb['passages']} passages on levels "
                      f"{', '.join(s['levels'])}, {s['vertical_passages']} vertical passages ({cb['lifts']} lift links "
-                     f"counted both ways per level pair once); routing graph {s['nodes']} nodes, {s['edges']} edges, "
+                     f"between adjacent levels); routing graph {s['nodes']} nodes, {s['edges']} edges, "
                      f"{s['pieces']} area pieces; pairs on two adjacent levels, the grid reference is the best over "
                      "the lifts between them (tried in the order of their straight-line bound, stopped when that "
                      "bound cannot win), on rasters of the levels drawn from the map (0.05 m/px, area borders as "
