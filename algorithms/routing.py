@@ -660,17 +660,6 @@ def _avoid_mask(avoid) -> Optional[np.ndarray]:
     return np.array([k in avoid for k in KIND_CODES_INV]) if avoid else None
 
 
-def _edge_between(csr, a: int, b: int, vc: float, amask) -> int:
-    """Index (into the flat adjacency) of the cheapest usable edge a -> b (parallel edges: a door pair
-    joined through the room and through the corridor)."""
-    lo, hi = int(csr["indptr"][a]), int(csr["indptr"][a + 1])
-    w = csr["cost"][lo:hi] + vc * csr["span"][lo:hi]
-    w = np.where(csr["nbr"][lo:hi] == b, w, np.inf)
-    if amask is not None:
-        w = np.where(amask[csr["kcode"][lo:hi]], np.inf, w)
-    return lo + int(np.argmin(w))
-
-
 def _min_matrix(rows, cols, w, n):
     """Sparse n x n matrix keeping the cheapest of parallel edges (scipy would add them up)."""
     from scipy.sparse import csr_matrix
@@ -1322,7 +1311,7 @@ class RouteMap:
         if table is not None:
             nodes, came_e, s_vi = [], {}, {}
             if len(sn) and len(tn):
-                dist, pred = table
+                dist, pred, edge = table
                 M = sc[:, None] + dist[np.ix_(sn, tn)] + tc[None, :]
                 i, j = divmod(int(M.argmin()), len(tn))
                 if M[i, j] < ub - 1e-12:
@@ -1332,9 +1321,8 @@ class RouteMap:
                     while nodes[-1] != s0:
                         nodes.append(int(pred[s0, nodes[-1]]))
                     nodes.reverse()
-                    amask = _avoid_mask(avoid)
                     for x, y in zip(nodes, nodes[1:]):
-                        came_e[y] = _edge_between(csr, x, y, vc, amask)
+                        came_e[y] = edge[(x, y)]
                     s_vi = {s0: int(svi[i])}
                     came_t = (t0, int(tvi[j]))
             if came_t is None:
@@ -1425,7 +1413,8 @@ class RouteMap:
         return _min_matrix(rows[keep], csr["nbr"][keep], w[keep], n)
 
     def _table(self, g: _Graph, vc: float, avoid: set):
-        """(dist, pred): shortest costs and predecessors between all pairs of nodes, for this vertical cost
+        """(dist, pred, edge): shortest costs and predecessors between all pairs of nodes, and the cheapest
+        usable edge between two neighbours, for this vertical cost
         and avoid set (once; the last ``MAX_TABLES`` kept), or None on maps of more than
         ``MAX_TABLE_NODES`` nodes (A* with landmarks then)."""
         n = len(g.pos)
@@ -1438,7 +1427,19 @@ class RouteMap:
 
             dist, pred = shortest_path(self._matrix(g, vc, avoid), method="D", directed=True,
                                        return_predecessors=True)
-            got = (dist, pred.astype(np.int32))
+            # the cheapest usable edge between two nodes, for rebuilding the chain: (a, b) -> edge index
+            csr = g.csr()
+            w = csr["cost"] + vc * csr["span"]
+            amask = _avoid_mask(avoid)
+            if amask is not None:
+                w = np.where(amask[csr["kcode"]], np.inf, w)
+            rows = np.repeat(np.arange(len(g.pos)), np.diff(csr["indptr"]))
+            order = np.lexsort((w, csr["nbr"], rows))
+            first = np.ones(len(order), bool)
+            first[1:] = (rows[order][1:] != rows[order][:-1]) | (csr["nbr"][order][1:] != csr["nbr"][order][:-1])
+            sel = order[first & np.isfinite(w[order])]
+            edge = dict(zip(zip(rows[sel].tolist(), csr["nbr"][sel].tolist()), sel.tolist()))
+            got = (dist, pred.astype(np.int32), edge)
             while len(g.tables) >= MAX_TABLES:
                 g.tables.pop(next(iter(g.tables)))
             g.tables[key] = got
