@@ -24,9 +24,17 @@ radius ``r`` is planned for in its configuration space, built once per map and r
   lifts are recognised by ``osmAG:areatype`` or, in maps that type everything ``room``, by their names
   (``ST-03``, ``stair``, ``楼梯``; ``P3``, ``lift``, ``elevator``, ``电梯``).
 * **A query** joins start and goal to the nodes of their area piece the same way (visibility from the
-  point, then the precomputed shortest paths) and runs A* with the heuristic "planar straight-line
-  distance + ``vertical_cost`` × levels still to cross", admissible because every vertical link costs at
-  least that and every planar edge is at least the straight distance between its ends.
+  point, then the precomputed shortest paths); a start and goal that see each other are joined straight.
+  On maps of up to ``MAX_TABLE_NODES`` nodes the node-to-node distance table (once per map, vertical cost
+  and avoid set) picks the best pair of entry nodes and its predecessors give the chain of nodes: A* with
+  the exact cost-to-go as heuristic, which expands exactly that chain. Larger maps run A* with the larger
+  of "planar straight-line distance + ``vertical_cost`` × levels still to cross" (admissible because every
+  vertical link costs at least that and every planar edge is at least the straight distance between its
+  ends) and landmark (ALT) bounds.
+* **Query speed.** A point is located by a grid of cells wholly inside one piece; in large pieces (halls)
+  the corners a point sees come from the corners' visibility polygons (one binary search and one side
+  test per corner, :meth:`_Piece.build_visibility`), elsewhere from a segment test against the piece's
+  edges. :meth:`RouteMap.prepare` builds all of it up front for many queries.
 * ``avoid`` drops area types from the search: ``("stairs",)`` for wheelchairs and wheeled robots (lifts
   only), ``("elevator",)`` for evacuation routes.
 
@@ -34,6 +42,7 @@ Coordinates are metres in the map's frame (osmAG files: the local frame of the r
 y north). The result keeps the level of every vertex. :class:`RouteMap` is the entry point::
 
     rm = RouteMap.from_osmag("building.osm")
+    rm.prepare(0.3)  # optional: tables, grids and visibility polygons now rather than on the first queries
     res = rm.route((x0, y0), (x1, y1), start_level="1", goal_level="3", robot_radius=0.3,
                    avoid=("stairs",))
     res.points, res.levels, res.length, res.areas, res.passages
@@ -65,7 +74,9 @@ MIN_RADIUS = 0.01  # walls are grown by at least 1 cm so that a zero radius stil
 OPENING_TOL = 0.05  # a wall within 5 cm of a passage segment is part of the opening
 QUAD_SEGS = 2  # 45 degree chords on the rounded corners of grown walls (sagitta 7.6 % of r)
 AVOIDABLE = ("stairs", "elevator")
-LANDMARKS = 12  # ALT heuristic landmarks
+LANDMARKS = 12  # ALT heuristic landmarks (maps too large for the node distance table)
+MAX_TABLE_NODES = 4000  # node-to-node distance table (n^2 x 12 bytes: 190 MB at 4000) up to this size
+MAX_TABLES = 4  # tables kept per map and radius (vertical cost x avoid set)
 _FAR = 1e15  # landmark distance standing for "unreachable"
 KIND_CODES_INV = ("room", "corridor", "stairs", "elevator", "other")
 KIND_CODES = {k: i for i, k in enumerate(KIND_CODES_INV)}
@@ -232,6 +243,10 @@ def _crossing_from(px: float, py: float, bx, by, E, parts=None) -> np.ndarray:
     return hit.any(axis=1)
 
 
+_BATCH = 8  # lazy visibility: segments tested together
+_DENSE_UP_TO = 6000  # candidates x edges up to which all candidates are tested at once
+VP_FROM = 2000  # pieces with edges x vertices above this get their vertices' visibility polygons ...
+VP_AFTER = 3  # ... by RouteMap.prepare, or once that many queries started or ended in them
 _SPARSE_FROM = 4000  # targets x edges above which the visibility from a point culls edges by angle first
 
 
@@ -295,6 +310,12 @@ class _Piece:
         self.entries: List[Tuple[int, int, float]] = []  # (graph node, vertex index, snap distance)
         self.D = None
         self.pred = None
+        self.queries = 0
+        self._vp = None
+
+    def large(self) -> bool:
+        """Worth visibility polygons: testing a point against all corners and edges would be slow."""
+        return len(self.edges) * len(self.V) > VP_FROM
 
     def add_point(self, xy) -> int:
         self.V = np.vstack([self.V, np.asarray(xy, float)[None, :]])
@@ -330,6 +351,99 @@ class _Piece:
             my = ay[idx] + t * (by[idx] - ay[idx])
             ok[idx] = shapely.intersects_xy(self.tol_poly, mx, my)
         return ok
+
+    # ---------------------------------------------------------------- visibility polygons of the corners
+    def build_visibility(self):
+        """The visibility polygon of every vertex (corners and entry points), for the queries: seen from
+        vertex o, the directions towards all the piece's vertices cut the plane into wedges; inside a wedge no
+        vertex lies, so the edges crossing it keep their order, and the nearest one (found on the wedge's
+        middle ray) bounds what o sees in the whole wedge. A point p strictly inside the piece sees o iff p is
+        not beyond that edge: one binary search (p's wedge) and one side test per vertex, all vertices at
+        once, instead of a test against every edge. Edges through o never block (as in :func:`_crossing`).
+        Stored flat: per vertex k its sorted wedge bounds (keys ``32 k + 16 + angle``, with the wrap-around
+        wedge at both ends), the nearest edge per wedge (-1: none) and the side of k from that edge's line."""
+        V, E = self.V, self.edges
+        n, m = len(V), len(E)
+        if n == 0 or m == 0:
+            self._vp = None
+            return
+        cx, cy, dx, dy, ex, ey = self.edge_parts
+        elen = np.hypot(ex, ey) + 1e-300
+        two_pi = 2 * np.pi
+        keys, near = np.zeros((n, m + 2)), np.zeros((n, m + 2), np.int64)
+        chunk = max(1, 400_000 // m)  # origins per batch: a few MB of arrays
+        for k0 in range(0, n, chunk):
+            ks = np.arange(k0, min(n, k0 + chunk))
+            B = len(ks)
+            ox, oy = V[ks, 0][:, None], V[ks, 1][:, None]
+            a_c = np.arctan2(cy - oy, cx - ox)  # (B, m): every vertex is the start of one edge
+            a_d = np.arctan2(dy - oy, dx - ox)
+            # the wedge bounds: the directions of all vertices, sorted (o itself, at angle 0, and repeated
+            # directions only add empty or split wedges: harmless)
+            ang = np.sort(a_c, axis=1)
+            mid = 0.5 * (ang + np.concatenate([ang[:, 1:], ang[:, :1] + two_pi], axis=1))
+            mid = np.where(mid > np.pi, mid - two_pi, mid)
+            order = np.argsort(mid, axis=1)
+            ux, uy = np.cos(mid).ravel(), np.sin(mid).ravel()  # the wedges' middle rays
+            row = np.arange(B)[:, None]
+            ms = mid[row, order]
+            # the rows side by side in one sorted array (each row doubled for the wrap-around), and the
+            # global wedge index (origin x m + wedge) of every entry
+            ext = np.concatenate([ms, ms + two_pi], axis=1) + 16.0 * row
+            gidx = (np.concatenate([order, order], axis=1) + m * row).ravel()
+            d = np.mod(a_d - a_c + np.pi, two_pi) - np.pi
+            s = np.where(d >= 0, a_c, a_d) + 16.0 * row
+            side = (ex * (oy - cy) - ey * (ox - cx)).ravel()  # cross(c - o, e)
+            w = np.where(np.abs(side) <= 1e-9 * np.tile(elen, B), 0.0, np.abs(d).ravel())  # edges through o never block
+            flat = ext.ravel()
+            lo = np.searchsorted(flat, s.ravel(), "right")
+            hi = np.searchsorted(flat, s.ravel() + w, "left")
+            cnt = np.maximum(hi - lo, 0)
+            tot = int(cnt.sum())
+            best = np.full(B * m, -1, np.int64)
+            if tot:
+                pe = np.repeat(np.arange(B * m), cnt)  # (origin, edge) of every (edge, wedge) pair
+                pos = np.arange(tot) + np.repeat(lo - (np.cumsum(cnt) - cnt), cnt)
+                gw = gidx[pos]
+                e_i = pe % m
+                den = ux[gw] * ey[e_i] - uy[gw] * ex[e_i]
+                with np.errstate(divide="ignore", invalid="ignore"):
+                    t = side[pe] / den  # distance along the wedge's middle ray to the edge
+                tmin = np.full(B * m, np.inf)
+                np.fmin.at(tmin, gw, t)
+                hit = t <= tmin[gw]
+                best[gw[hit]] = e_i[hit]
+            # per origin m + 2 bounds: the last one - 2 pi, the m sorted ones, the first one + 2 pi; between
+            # them m + 1 intervals (the wrap-around wedge at both ends), padded to m + 2
+            kb = np.concatenate([ang[:, -1:] - two_pi, ang, ang[:, :1] + two_pi], axis=1)
+            keys[ks] = 32.0 * ks[:, None] + 16.0 + kb
+            best = best.reshape(B, m)
+            near[ks] = np.concatenate([best[:, -1:], best, np.full((B, 1), -1)], axis=1)
+        e = near.ravel()
+        ok = e >= 0
+        ee = np.where(ok, e, 0)
+        o3 = ex[ee] * (np.repeat(V[:, 1], m + 2) - cy[ee]) - ey[ee] * (np.repeat(V[:, 0], m + 2) - cx[ee])
+        o3 = np.where(ok, o3, np.nan).astype(np.float32)  # NaN: no edge (only the outside there): test exactly
+        self._vp = (keys.ravel(), e.astype(np.int32), o3)
+
+    def visible_vertices(self, px: float, py: float, cand: np.ndarray) -> np.ndarray:
+        """(K,) bool: does the point p (strictly inside the piece) see the vertices ``cand``? By the
+        vertices' visibility polygons (:meth:`build_visibility`); the rare points within a hair of a wedge
+        bound or of the bounding edge's line get the exact segment test."""
+        keys, near, o3 = self._vp
+        vx, vy = self.V[cand, 0], self.V[cand, 1]
+        q = np.arctan2(py - vy, px - vx) + (32.0 * cand + 16.0)
+        i = np.searchsorted(keys, q, "right") - 1
+        gap = np.minimum(q - keys[i], keys[i + 1] - q)
+        e = near[i]
+        cx, cy, dx, dy, ex, ey = self.edge_parts
+        prod = o3[i] * (ex[e] * (py - cy[e]) - ey[e] * (px - cx[e]))
+        seen = prod >= -_EPS2
+        unsure = (gap < 1e-9) | ~(np.abs(prod) >= 1e-8)
+        if unsure.any():
+            u = np.flatnonzero(unsure)
+            seen[u] = self.visible_from((px, py), self.V[cand[u]], interior=True)
+        return seen
 
     def solve(self):
         from scipy.sparse import coo_matrix
@@ -379,6 +493,10 @@ class _Piece:
         ent = np.unique(np.array([vi for _, vi, _ in self.entries], np.int64)) if self.entries else \
             np.zeros(0, np.int64)
         self._qt = (vx, vy, t[0], t[1], ent, self.D[:, ent] if self.D is not None and len(ent) else None)
+        # the entries as arrays: graph node, vertex, snap distance
+        self.e_node = np.array([nd for nd, _, _ in self.entries], np.int64)
+        self.e_vi = np.array([vi for _, vi, _ in self.entries], np.int64)
+        self.e_d = np.array([d for _, _, d in self.entries], float)
         return self._qt
 
     def point_costs(self, p, entries_only: bool = False):
@@ -414,6 +532,195 @@ class _Piece:
         return tot[best, np.arange(n)], idx[best]
 
 
+
+    # ---------------------------------------------------------------- lazy visibility (queries)
+    def _candidates(self, px: float, py: float):
+        """Corners the line from p grazes (the only possible first bends of a shortest path from p) and
+        their distances from p."""
+        qt = getattr(self, "_qt", None)
+        if qt is None or len(qt[0]) != len(self.V):
+            qt = self._query_tables()
+        vx, vy, (a1, b1, c1), (a2, b2, c2), ent, Dent = qt
+        s1 = a1 + px * b1 + py * c1
+        s2 = a2 + px * b2 + py * c2
+        cand = np.flatnonzero(~(s1 * s2 < -1e-12))  # NaN (points that are not corners) passes
+        return cand, np.hypot(vx[cand] - px, vy[cand] - py), qt
+
+    def _test(self, p, interior, cand, state, rows, score):
+        """Test the visibility from p of the candidates ``rows`` (indices into ``cand``) not tested yet,
+        padded with the untested ones of smallest ``score`` up to ``_BATCH`` (a batch costs about what one
+        segment costs); fills ``state`` (1 seen, -1 hidden)."""
+        unk = rows[state[rows] == 0]
+        if not len(unk):
+            return
+        if len(unk) < _BATCH:
+            sc = np.where(state == 0, score, np.inf)
+            sc[unk] = np.inf
+            more = np.argpartition(sc, _BATCH)[:_BATCH] if len(sc) > _BATCH else np.arange(len(sc))
+            more = more[np.isfinite(sc[more])]
+            unk = np.concatenate([unk, more[np.argsort(sc[more])][:_BATCH - len(unk)]])
+        vis = self.visible_from(p, self.V[cand[unk]], interior=interior)
+        state[unk] = np.where(vis, 1, -1)
+
+    def entry_costs(self, p, interior: Optional[bool] = None):
+        """Shortest distances from point p (inside the piece) to the entry vertices (the passage nodes),
+        and the first vertex of each path: (dist (n,), via (n,)), inf / -1 off the entries.
+
+        Same result as :meth:`point_costs` with ``entries_only``, cheaper: with visibility polygons (a
+        strictly interior point of a large piece) or few candidates x edges, all candidates are tested at
+        once; otherwise lazily: per entry the best candidate corner (distance from p + shortest path on)
+        is taken and only those are tested, in batches; a hidden one drops out and the next best is taken
+        (a large hall: ~10 of ~90 candidates tested)."""
+        n = len(self.V)
+        px, py = float(p[0]), float(p[1])
+        cand, d0, qt = self._candidates(px, py)
+        ent, Dent = qt[4], qt[5]
+        dist, via = np.full(n, np.inf), np.full(n, -1)
+        if not len(cand) or Dent is None:
+            return dist, via
+        if interior is None:
+            interior = self._inside_xy(px, py)
+        vp = interior and self._vp is not None
+        if vp or len(cand) * len(self.edges) <= _DENSE_UP_TO:  # all candidates at once
+            seen = self.visible_vertices(px, py, cand) if vp else self.visible_from(p, self.V[cand], interior)
+            cand, T = cand[seen], d0[seen, None] + Dent[cand[seen]]
+            if not len(cand):
+                return dist, via
+            best = T.argmin(axis=0)
+            val = T[best, np.arange(len(ent))]
+            ok = np.isfinite(val)
+            dist[ent[ok]] = val[ok]
+            via[ent[ok]] = cand[best[ok]]
+            return dist, via
+        T = d0[:, None] + Dent[cand]
+        state = np.zeros(len(cand), np.int8)
+        cols = np.arange(len(ent))
+        while True:
+            best = T.argmin(axis=0)
+            val = T[best, cols]
+            rows = np.unique(best[np.isfinite(val)])
+            if not len(rows) or (state[rows] == 1).all():
+                break
+            self._test(p, interior, cand, state, rows, T.min(axis=1))
+            T[state == -1] = np.inf
+        ok = np.isfinite(val)
+        dist[ent[ok]] = val[ok]
+        via[ent[ok]] = cand[best[ok]]
+        return dist, via
+
+    def pair_cost(self, sp, tp, s_int: Optional[bool] = None, t_int: Optional[bool] = None):
+        """Shortest path inside the piece between two of its points: (cost, first corner, last corner);
+        (inf, -1, -1) when the piece links them only through other areas. The caller has already found
+        the straight segment blocked. Lazy like :meth:`entry_costs`: the best pair of candidate corners
+        (one seen from each end) is tested, a hidden one drops out."""
+        if not len(self.V):
+            return math.inf, -1, -1
+        cs, ds, _ = self._candidates(float(sp[0]), float(sp[1]))
+        ct, dt, _ = self._candidates(float(tp[0]), float(tp[1]))
+        if not len(cs) or not len(ct):
+            return math.inf, -1, -1
+        if s_int is None:
+            s_int = self._inside_xy(float(sp[0]), float(sp[1]))
+        if t_int is None:
+            t_int = self._inside_xy(float(tp[0]), float(tp[1]))
+        if self._vp is not None and (s_int or t_int):
+            if s_int:
+                keep = self.visible_vertices(float(sp[0]), float(sp[1]), cs)
+                cs, ds = cs[keep], ds[keep]
+            if t_int:
+                keep = self.visible_vertices(float(tp[0]), float(tp[1]), ct)
+                ct, dt = ct[keep], dt[keep]
+            if not len(cs) or not len(ct):
+                return math.inf, -1, -1
+        M = ds[:, None] + self.D[np.ix_(cs, ct)] + dt[None, :]
+        ss = np.zeros(len(cs), np.int8)
+        st = np.zeros(len(ct), np.int8)
+        if self._vp is not None:
+            ss[:] = 1 if s_int else 0
+            st[:] = 1 if t_int else 0
+        st = np.zeros(len(ct), np.int8)
+        while True:
+            k = int(M.argmin())
+            i, j = divmod(k, M.shape[1])
+            c = float(M[i, j])
+            if not math.isfinite(c):
+                return math.inf, -1, -1
+            if ss[i] == 1 and st[j] == 1:
+                return c, int(cs[i]), int(ct[j])
+            if ss[i] == 0:
+                self._test(sp, s_int, cs, ss, np.array([i]), M.min(axis=1))
+                M[ss == -1, :] = np.inf
+            if st[j] == 0:
+                self._test(tp, t_int, ct, st, np.array([j]), M.min(axis=0))
+                M[:, st == -1] = np.inf
+
+
+def _avoid_mask(avoid) -> Optional[np.ndarray]:
+    """Per area-type code: is it avoided? (None when nothing is.)"""
+    return np.array([k in avoid for k in KIND_CODES_INV]) if avoid else None
+
+
+def _min_matrix(rows, cols, w, n):
+    """Sparse n x n matrix keeping the cheapest of parallel edges (scipy would add them up)."""
+    from scipy.sparse import csr_matrix
+
+    rows, cols, w = np.asarray(rows, np.int64), np.asarray(cols, np.int64), np.asarray(w, float)
+    if len(w):
+        order = np.lexsort((w, cols, rows))
+        rows, cols, w = rows[order], cols[order], w[order]
+        first = np.ones(len(w), bool)
+        first[1:] = (rows[1:] != rows[:-1]) | (cols[1:] != cols[:-1])
+        rows, cols, w = rows[first], cols[first], w[first]
+    return csr_matrix((w, (rows, cols)), shape=(n, n))
+
+
+
+GRID_CELL = 0.15  # metres: the point-location grid's cells (coarser on large maps)
+GRID_MAX_CELLS = 2_000_000
+
+
+def _point_grid(g, lev):
+    """Point location by a grid over the level's pieces (``lev`` None: all levels): a cell holds the piece
+    it lies wholly and strictly inside of, else -1 (near a border, outside, or in pieces that overlap,
+    e.g. floors above one another): (x0, y0, cell, labels, pieces), or None without pieces. Cells are
+    filled by their centres and every border is drawn 3 cells wide, so a labelled cell has no border
+    within it: a point in it needs no further test."""
+    import cv2
+
+    pcs = [pc for pc in g.pieces.values() if lev is None or pc.level == lev]
+    if not pcs:
+        return None
+    b = np.array([pc.tol_poly.bounds for pc in pcs])
+    x0, y0, x1, y1 = b[:, 0].min(), b[:, 1].min(), b[:, 2].max(), b[:, 3].max()
+    h = max(GRID_CELL, math.sqrt((x1 - x0) * (y1 - y0) / GRID_MAX_CELLS))
+    x0, y0 = x0 - 2 * h, y0 - 2 * h
+    nx, ny = int((x1 - x0) / h) + 3, int((y1 - y0) / h) + 3
+    count = np.zeros((ny, nx), np.uint8)
+    lab = np.full((ny, nx), -1, np.int32)
+    border = np.zeros((ny, nx), np.uint8)
+    shift = 4  # sub-cell precision of the drawing
+    for k, pc in enumerate(pcs):
+        bx0, by0, bx1, by1 = pc.tol_poly.bounds
+        c0, r0 = max(0, int((bx0 - x0) / h) - 2), max(0, int((by0 - y0) / h) - 2)
+        c1, r1 = min(nx, int((bx1 - x0) / h) + 3), min(ny, int((by1 - y0) / h) + 3)
+        rings = []
+        poly = pc.poly
+        for ring in [poly.exterior] + list(poly.interiors):
+            xy = np.asarray(ring.coords)[:, :2]
+            # cell (r, c) has its centre at x0 + (c + 0.5) h: pixel coordinates in the window
+            px = (xy[:, 0] - x0) / h - 0.5 - c0
+            py = (xy[:, 1] - y0) / h - 0.5 - r0
+            rings.append(np.round(np.column_stack([px, py]) * (1 << shift)).astype(np.int32))
+        mask = np.zeros((r1 - r0, c1 - c0), np.uint8)
+        cv2.fillPoly(mask, rings, 1, lineType=cv2.LINE_8, shift=shift)
+        cv2.polylines(border[r0:r1, c0:c1], rings, True, 1, thickness=3, lineType=cv2.LINE_8, shift=shift)
+        count[r0:r1, c0:c1] += mask
+        sub = lab[r0:r1, c0:c1]
+        sub[mask > 0] = k
+    lab[(count != 1) | (border > 0)] = -1
+    return (float(x0), float(y0), float(h), lab, pcs)
+
+
 # =========================================================================== the graph
 class _Graph:
     """The routing graph of a map for one robot radius."""
@@ -430,6 +737,8 @@ class _Graph:
         self.free: Dict[str, object] = {}  # level -> free space polygon
         self.build_s = 0.0
         self.alt: Dict[tuple, np.ndarray] = {}
+        self.tables: Dict[tuple, tuple] = {}
+        self.grids: Dict[object, object] = {}
         self._pos = None
         self._rank = None
         self._csr = None
@@ -616,6 +925,29 @@ class RouteMap:
         if g is None:
             g = self._build(max(r, MIN_RADIUS), ensure(progress))
             self._graphs[key] = g
+        return g
+
+    def prepare(self, robot_radius: float = DEFAULT_ROBOT_RADIUS, vertical_cost: float = DEFAULT_VERTICAL_COST,
+                avoid: Sequence[str] = (), progress=None) -> _Graph:
+        """Everything queries use, built now rather than on the first queries: the graph, the node distance
+        table (or landmarks) for this vertical cost and avoid set, the point-location grids and the
+        visibility polygons of the large pieces' corners. For many queries on one map (a robot's planner,
+        the benchmark); a single query does not need it (QGIS's route tool does not call it)."""
+        progress = ensure(progress)
+        g = self.graph(robot_radius, progress=progress.sub(0, 50))
+        avoid_set = self._avoid_set(avoid)
+        vc = float(vertical_cost)
+        if self._table(g, vc, avoid_set) is None:
+            self._landmarks(g, vc)
+        for lev in [None] + list(self.level_list):
+            if lev not in g.grids:
+                g.grids[lev] = _point_grid(g, lev)
+        big = [pc for pc in g.pieces.values() if pc._vp is None and pc.large()]
+        for m, pc in enumerate(big):
+            if m % 8 == 0:
+                progress.step(50 + 50.0 * m / max(1, len(big)), "visibility polygons of the large areas")
+            pc.build_visibility()
+        progress.step(100)
         return g
 
     def _build(self, r: float, progress) -> _Graph:
@@ -812,6 +1144,10 @@ class RouteMap:
 
     def locate(self, xy, level=None, robot_radius: float = DEFAULT_ROBOT_RADIUS, what: str = "start"):
         """(piece, snapped point, snap distance) for a point; snaps up to SNAP metres, else InputError."""
+        return self._locate(xy, level, robot_radius, what)[:3]
+
+    def _locate(self, xy, level=None, robot_radius: float = DEFAULT_ROBOT_RADIUS, what: str = "start"):
+        """:meth:`locate` plus whether the point lies strictly inside its piece (None: not known yet)."""
         from shapely.geometry import Point
 
         lev = self._check_level(level, what)
@@ -819,6 +1155,14 @@ class RouteMap:
         x, y = float(xy[0]), float(xy[1])
         if not (math.isfinite(x) and math.isfinite(y)):
             raise InputError(f"{what}: the point ({xy[0]}, {xy[1]}) is not a valid coordinate")
+        grid = g.grids.get(lev)
+        if grid is None:
+            grid = g.grids[lev] = _point_grid(g, lev)
+        if grid is not None:  # the commonest case: well inside one piece, by a cell lookup
+            x0, y0, h, lab, pcs = grid
+            c, r = int((x - x0) / h), int((y - y0) / h)
+            if 0 <= r < lab.shape[0] and 0 <= c < lab.shape[1] and lab[r, c] >= 0 and x >= x0 and y >= y0:
+                return pcs[lab[r, c]], np.array([x, y]), 0.0, True
         pt = Point(x, y)
         # the common case first: the point lies in a piece of the robot's free space
         if g.piece_tree is None:
@@ -830,7 +1174,7 @@ class RouteMap:
         hits = [pc for pc in hits if lev is None or pc.level == lev]
         if hits and (lev is not None or len({pc.level for pc in hits}) == 1):
             pc = hits[0] if len(hits) == 1 else min(hits, key=lambda p: self._area_size(p.area_index))
-            return pc, np.array([x, y]), 0.0
+            return pc, np.array([x, y]), 0.0, None
         if self._tree is None:
             import shapely
 
@@ -847,7 +1191,7 @@ class RouteMap:
         for k in order:  # inside an area: its pieces first
             for pc in g.pieces_by_area.get(k, []):
                 if pc.tol_poly.covers(pt):
-                    return pc, np.array([x, y]), 0.0
+                    return pc, np.array([x, y]), 0.0, None
         best = None
         for k in order + [k for k in cands if k not in inside]:
             if self.areas[k].polygon.distance(pt) > SNAP:
@@ -871,8 +1215,7 @@ class RouteMap:
 
         d, pc = best
         q = nearest_points(pc.poly, pt)[0]
-        # step a hair inside so that the visibility test sees the point as in the piece
-        return pc, np.array([q.x, q.y]), float(d)
+        return pc, np.array([q.x, q.y]), float(d), False
 
     def _area_size(self, k: int) -> float:
         sizes = getattr(self, "_sizes", None)
@@ -888,15 +1231,7 @@ class RouteMap:
         if not (math.isfinite(float(vertical_cost)) and float(vertical_cost) >= 0):
             raise InputError(f"VERTICAL_COST must be a non-negative number of metres, got {vertical_cost}")
         vc = float(vertical_cost)
-        avoid_set = set()
-        for a in avoid or ():
-            a = str(a).strip().lower()
-            if not a or a == "none":
-                continue
-            a = {"stair": "stairs", "lift": "elevator", "lifts": "elevator", "elevators": "elevator"}.get(a, a)
-            if a not in AVOIDABLE:
-                raise InputError(f"AVOID: unknown area type '{a}'; use one of {', '.join(AVOIDABLE)}")
-            avoid_set.add(a)
+        avoid_set = self._avoid_set(avoid)
         g = self.graph(robot_radius, progress=progress.sub(0, 90))
         ends = []
         for what, p, lev in (("start", start, start_level), ("goal", goal, goal_level)):
@@ -904,8 +1239,9 @@ class RouteMap:
                 k = self.find_area(p, lev)
                 p = self.area_point(k, robot_radius)
                 lev = self.levels[k]
-            ends.append(self.locate(p, lev, robot_radius, what))
-        self._landmarks(g, vc)  # once per map and vertical cost, not part of the query
+            ends.append(self._locate(p, lev, robot_radius, what))
+        if self._table(g, vc, avoid_set) is None:  # once per map, vertical cost (and avoid set)
+            self._landmarks(g, vc)
         t0 = time.perf_counter()
         res = self._search(g, ends[0], ends[1], vc, avoid_set, robot_radius)
         res.query_ms = (time.perf_counter() - t0) * 1000.0
@@ -913,29 +1249,91 @@ class RouteMap:
                            f"{len(res.areas)} areas, {len(res.passages)} passages ({res.query_ms:.2f} ms)")
         return res
 
+    @staticmethod
+    def _avoid_set(avoid) -> set:
+        out = set()
+        for a in avoid or ():
+            a = str(a).strip().lower()
+            if not a or a == "none":
+                continue
+            a = {"stair": "stairs", "lift": "elevator", "lifts": "elevator", "elevators": "elevator"}.get(a, a)
+            if a not in AVOIDABLE:
+                raise InputError(f"AVOID: unknown area type '{a}'; use one of {', '.join(AVOIDABLE)}")
+            out.add(a)
+        return out
+
     # ------------------------------------------------------------------ A*
     def _search(self, g: _Graph, s_end, t_end, vc: float, avoid: set, robot_radius: float) -> RouteResult:
-        """A* from the start point to the goal point over the passage nodes (see the module docstring)."""
-        spc, sp, ssnap = s_end
-        tpc, tp, tsnap = t_end
-        sd, svia = spc.point_costs(sp, entries_only=spc is not tpc)
-        td, tvia = tpc.point_costs(tp, entries_only=spc is not tpc)
-        s_edges = [(n, float(sd[vi]) + d, vi) for (n, vi, d) in spc.entries if math.isfinite(sd[vi])]
-        t_in: Dict[int, Tuple[float, int]] = {}
-        for (n, vi, d) in tpc.entries:
-            if math.isfinite(td[vi]) and (n not in t_in or td[vi] + d < t_in[n][0]):
-                t_in[n] = (float(td[vi]) + d, vi)
+        """The route from the start point to the goal point over the passage nodes (see the module docstring).
+
+        ``s_end``/``t_end``: :meth:`_locate` results (piece, point, snap distance, strictly inside or None).
+        A start and goal that see each other are joined straight (nothing can be shorter). Otherwise both
+        are joined to their piece's entry nodes; on maps of up to ``MAX_TABLE_NODES`` nodes the node-to-node
+        distance table (once per map, vertical cost and avoid set) gives the best pair of entry nodes at
+        once, and its predecessors the chain of nodes (A* with the exact cost-to-go as its heuristic
+        would expand exactly that chain); on larger maps A* runs with the landmark bounds."""
+        spc, sp, ssnap = s_end[:3]
+        tpc, tp, tsnap = t_end[:3]
+        s_int = s_end[3] if len(s_end) > 3 else None
+        t_int = t_end[3] if len(t_end) > 3 else None
+        csr = g.csr()
         inf = math.inf
         ub, came_t = inf, None  # best complete route so far: cost, (last node or None, detail)
         if spc is tpc:
-            if spc.visible_from(sp, tp[None, :])[0]:
-                ub, came_t = float(np.hypot(*(tp - sp))), (None, None)
-            if len(spc.V):
-                tot = sd + td
-                v = int(np.argmin(tot))
-                if tot[v] < ub - 1e-12:
-                    ub, came_t = float(tot[v]), (None, v)
-        csr = g.csr()
+            if s_int is None:
+                s_int = spc._inside_xy(float(sp[0]), float(sp[1]))
+            if s_int:
+                direct = spc.visible_from(sp, tp[None, :], interior=True)[0]
+            else:
+                if t_int is None:
+                    t_int = spc._inside_xy(float(tp[0]), float(tp[1]))
+                direct = spc.visible_from(tp, sp[None, :], interior=t_int)[0]
+            if direct:  # the straight segment: no route can be shorter
+                return self._rebuild(g, csr, [], {}, {}, (None, None), spc, sp, None, tpc, tp, None, ssnap, tsnap,
+                                     float(np.hypot(*(tp - sp))), 0)
+            c, i, j = spc.pair_cost(sp, tp, s_int, t_int)
+            if c < ub:
+                ub, came_t = c, (None, (i, j))
+        for pc in (spc, tpc) if spc is not tpc else (spc,):
+            pc.queries += 1
+            if pc.queries == VP_AFTER and pc._vp is None and pc.large():
+                pc.build_visibility()  # a hall queried again and again: its corners' visibility polygons
+        sd, svia = spc.entry_costs(sp, s_int)
+        td, tvia = tpc.entry_costs(tp, t_int)
+        # start -> entry nodes of its piece, entry nodes of the goal's piece -> goal: (node, cost, vertex)
+        sc = sd[spc.e_vi] + spc.e_d
+        ok = np.isfinite(sc)
+        sn, sc, svi = spc.e_node[ok], sc[ok], spc.e_vi[ok]
+        tc = td[tpc.e_vi] + tpc.e_d
+        ok = np.isfinite(tc)
+        tn, tc, tvi = tpc.e_node[ok], tc[ok], tpc.e_vi[ok]
+        table = self._table(g, vc, avoid)
+        if table is not None:
+            nodes, came_e, s_vi = [], {}, {}
+            if len(sn) and len(tn):
+                dist, pred, edge = table
+                M = sc[:, None] + dist[np.ix_(sn, tn)] + tc[None, :]
+                i, j = divmod(int(M.argmin()), len(tn))
+                if M[i, j] < ub - 1e-12:
+                    ub = float(M[i, j])
+                    s0, t0 = int(sn[i]), int(tn[j])
+                    nodes = [t0]
+                    while nodes[-1] != s0:
+                        nodes.append(int(pred[s0, nodes[-1]]))
+                    nodes.reverse()
+                    for x, y in zip(nodes, nodes[1:]):
+                        came_e[y] = edge[(x, y)]
+                    s_vi = {s0: int(svi[i])}
+                    came_t = (t0, int(tvi[j]))
+            if came_t is None:
+                raise self._no_route(g, spc, tpc, avoid, robot_radius)
+            return self._rebuild(g, csr, nodes, came_e, s_vi, came_t, spc, sp, svia, tpc, tp, tvia, ssnap, tsnap,
+                                 ub, len(nodes))
+        s_edges = list(zip(sn.tolist(), sc.tolist(), svi.tolist()))
+        t_in: Dict[int, Tuple[float, int]] = {}
+        for n, c, vi in zip(tn.tolist(), tc.tolist(), tvi.tolist()):
+            if n not in t_in or c < t_in[n][0]:
+                t_in[n] = (c, vi)
         n_nodes = len(g.pos)
         h = self._heuristic(g, tp, self.level_rank[tpc.level], t_in, vc, avoid)
         # a first upper bound through the best landmark: prunes nodes that cannot beat it
@@ -959,7 +1357,7 @@ class RouteMap:
                 s_vi[m] = vi
                 heapq.heappush(heap, (c + h[m], c, m))
         indptr, nbr, cost, span, kcode = csr["indptr"], csr["nbr"], csr["cost"], csr["span"], csr["kcode"]
-        amask = np.array([KIND_CODES_INV[i] in avoid for i in range(len(KIND_CODES_INV))]) if avoid else None
+        amask = _avoid_mask(avoid)
         expanded = 0
         while heap:
             f, c, n = heapq.heappop(heap)
@@ -1001,6 +1399,52 @@ class RouteMap:
         return self._rebuild(g, csr, nodes, came_e, s_vi, came_t, spc, sp, svia, tpc, tp, tvia, ssnap, tsnap,
                              ub, expanded)
 
+    def _matrix(self, g: _Graph, vc: float, avoid: set):
+        """The node graph as a sparse matrix: planar cost + vc x levels crossed, avoided area types left
+        out, the cheapest of parallel edges."""
+        csr = g.csr()
+        n = len(g.pos)
+        w = csr["cost"] + vc * csr["span"] + 1e-12
+        rows = np.repeat(np.arange(n), np.diff(csr["indptr"]))
+        keep = np.ones(len(w), bool)
+        amask = _avoid_mask(avoid)
+        if amask is not None:
+            keep = ~amask[csr["kcode"]]
+        return _min_matrix(rows[keep], csr["nbr"][keep], w[keep], n)
+
+    def _table(self, g: _Graph, vc: float, avoid: set):
+        """(dist, pred, edge): shortest costs and predecessors between all pairs of nodes, and the cheapest
+        usable edge between two neighbours, for this vertical cost
+        and avoid set (once; the last ``MAX_TABLES`` kept), or None on maps of more than
+        ``MAX_TABLE_NODES`` nodes (A* with landmarks then)."""
+        n = len(g.pos)
+        if n == 0 or n > MAX_TABLE_NODES:
+            return None
+        key = (round(vc, 6), tuple(sorted(avoid)))
+        got = g.tables.get(key)
+        if got is None:
+            from scipy.sparse.csgraph import shortest_path
+
+            dist, pred = shortest_path(self._matrix(g, vc, avoid), method="D", directed=True,
+                                       return_predecessors=True)
+            # the cheapest usable edge between two nodes, for rebuilding the chain: (a, b) -> edge index
+            csr = g.csr()
+            w = csr["cost"] + vc * csr["span"]
+            amask = _avoid_mask(avoid)
+            if amask is not None:
+                w = np.where(amask[csr["kcode"]], np.inf, w)
+            rows = np.repeat(np.arange(len(g.pos)), np.diff(csr["indptr"]))
+            order = np.lexsort((w, csr["nbr"], rows))
+            first = np.ones(len(order), bool)
+            first[1:] = (rows[order][1:] != rows[order][:-1]) | (csr["nbr"][order][1:] != csr["nbr"][order][:-1])
+            sel = order[first & np.isfinite(w[order])]
+            edge = dict(zip(zip(rows[sel].tolist(), csr["nbr"][sel].tolist()), sel.tolist()))
+            got = (dist, pred.astype(np.int32), edge)
+            while len(g.tables) >= MAX_TABLES:
+                g.tables.pop(next(iter(g.tables)))
+            g.tables[key] = got
+        return got
+
     def _landmarks(self, g: _Graph, vc: float) -> np.ndarray:
         """Shortest distances from a few landmark nodes to every node (ALT heuristic), cached per vertical
         cost. (K, n) array, inf where unreachable. Computed on the whole graph, avoided areas included: the
@@ -1011,20 +1455,13 @@ class RouteMap:
         got = g.alt.get(key)
         if got is not None:
             return got
-        from scipy.sparse import coo_matrix
         from scipy.sparse.csgraph import dijkstra
 
         n = len(g.pos)
         if n == 0:
             g.alt[key] = np.zeros((0, 0))
             return g.alt[key]
-        rows, cols, w = [], [], []
-        for a, lst in enumerate(g.adj):
-            for (m, c, kind, data, span) in lst:
-                rows.append(a)
-                cols.append(m)
-                w.append(c + vc * span + 1e-12)
-        mat = coo_matrix((w, (rows, cols)), shape=(n, n)).tocsr()
+        mat = self._matrix(g, vc, set())
         k = min(LANDMARKS, n)
         chosen = [0]
         dist = [dijkstra(mat, directed=True, indices=0)]
@@ -1063,17 +1500,11 @@ class RouteMap:
 
     def _rebuild(self, g, csr, nodes, came_e, s_vi, came_t, spc, sp, svia, tpc, tp, tvia, ssnap, tsnap, cost,
                  expanded):
-        pts: List[Tuple[float, float]] = []
-        lvls: List[str] = []
+        chunks: List[np.ndarray] = []  # the polyline in pieces, each on one level
+        clev: List[str] = []
         area_seq: List[int] = []
         pass_seq: List[int] = []
-
-        def add(xy, lev):
-            xy = (float(xy[0]), float(xy[1]))
-            if pts and lvls[-1] == lev and abs(pts[-1][0] - xy[0]) < 1e-9 and abs(pts[-1][1] - xy[1]) < 1e-9:
-                return
-            pts.append(xy)
-            lvls.append(lev)
+        gpos = g.pos_array()
 
         def add_area(k):
             if not area_seq or area_seq[-1] != k:
@@ -1085,43 +1516,63 @@ class RouteMap:
                 pass_seq.append(i)
 
         def piece_path(pc, a, b):
-            for v in pc.vertex_path(a, b):
-                add(pc.V[v], pc.level)
+            chunks.append(pc.V[pc.vertex_path(a, b)])
+            clev.append(pc.level)
 
-        add(sp, spc.level)
+        def node(n):
+            chunks.append(gpos[n:n + 1])
+            clev.append(g.level[n])
+
+        chunks.append(np.asarray(sp, float).reshape(1, 2))
+        clev.append(spc.level)
         add_area(spc.area_index)
         if not nodes:  # start and goal in one piece
-            v = came_t[1]
-            if v is not None:
-                piece_path(spc, int(svia[v]), v)
-                piece_path(tpc, v, int(tvia[v]))
+            if came_t[1] is not None:
+                piece_path(spc, *came_t[1])
         else:
             vi = s_vi[nodes[0]]
             piece_path(spc, int(svia[vi]), vi)
-            add(g.pos[nodes[0]], g.level[nodes[0]])
+            node(nodes[0])
             add_passage(nodes[0])
+            eid = csr["eid"]
             for n in nodes[1:]:
-                data = g.edata[int(csr["eid"][came_e[n]])]
-                if data[0] == "V":
-                    add(g.pos[n], g.level[n])
-                else:
+                data = g.edata[int(eid[came_e[n]])]
+                if data[0] != "V":
                     key, vx, vy = data
                     pc = g.pieces[key]
                     add_area(pc.area_index)
                     piece_path(pc, vx, vy)
-                    add(g.pos[n], g.level[n])
+                node(n)
                 add_passage(n)
             add_area(tpc.area_index)
             vi = came_t[1]
             piece_path(tpc, vi, int(tvia[vi]))
-        add(tp, tpc.level)
-        if len(pts) == 1:
-            pts.append(pts[0])
-            lvls.append(lvls[0])
-        P = np.asarray(pts, float)
+        chunks.append(np.asarray(tp, float).reshape(1, 2))
+        clev.append(tpc.level)
+        P = np.concatenate(chunks)
+        d = np.diff(P, axis=0)
+        keep = np.ones(len(P), bool)  # drop repeated points (a level change repeats the position)
+        keep[1:] = (np.abs(d) >= 1e-9).any(axis=1)
+        one_level = clev.count(clev[0]) == len(clev)
+        if one_level:
+            P = P[keep]
+            if len(P) == 1:
+                P = np.vstack([P, P])
+            lvls = [clev[0]] * len(P)
+            z = np.full(len(P), self._elevation(clev[0]))
+            changes = 0
+        else:
+            lv = np.repeat(np.arange(len(chunks)), [len(c) for c in chunks])
+            lcode = np.array([self.level_rank[x] for x in clev])[lv]
+            keep[1:] |= lcode[1:] != lcode[:-1]
+            P, lv = P[keep], lv[keep]
+            if len(P) == 1:
+                P, lv = np.vstack([P, P]), np.concatenate([lv, lv])
+            lvls = [clev[i] for i in lv.tolist()]
+            changes = sum(1 for a, b in zip(lvls, lvls[1:]) if a != b)
+            elev = {x: self._elevation(x) for x in set(clev)}
+            z = np.array([elev[x] for x in lvls])
         length = float(np.hypot(*np.diff(P, axis=0).T).sum())
-        changes = sum(1 for a, b in zip(lvls, lvls[1:]) if a != b)
-        z = np.array([self._elevation(lv) for lv in lvls])
         return RouteResult(points=P, levels=lvls, z=z, length=length, cost=float(cost), level_changes=changes,
                            areas=[self.areas[k].name for k in area_seq], area_ids=[self.areas[k].id for k in area_seq],
                            passages=[self._passage_name(i) for i in pass_seq],

@@ -165,7 +165,7 @@ def check_astar_matches_dijkstra(rm, r, vc=15.0, avoid=(), pairs=20, seed=0):
             continue
         s = rm.locate(rm.area_point(a, r), rm.levels[a], r)
         t = rm.locate(rm.area_point(b, r), rm.levels[b], r)
-        sd, _ = s[0].point_costs(s[1])
+        sd, _ = s[0].point_costs(s[1])  # the dense reference: every corner tested
         td, _ = t[0].point_costs(t[1])
         R, C, W = list(rows), list(cols), list(w)
         for (m, vi, d) in s[0].entries:
@@ -174,6 +174,10 @@ def check_astar_matches_dijkstra(rm, r, vc=15.0, avoid=(), pairs=20, seed=0):
         for (m, vi, d) in t[0].entries:
             if math.isfinite(td[vi]):
                 R.append(m), C.append(n + 1), W.append(td[vi] + d + 1e-12)
+        cheapest = {}  # parallel edges (two doors joined through the room and the corridor): the cheaper
+        for x, y, c in zip(R, C, W):
+            cheapest[(x, y)] = min(c, cheapest.get((x, y), math.inf))
+        (R, C), W = zip(*cheapest.keys()), list(cheapest.values())
         mat = coo_matrix((W, (R, C)), shape=(n + 2, n + 2)).tocsr()
         ref = dijkstra(mat, directed=True, indices=n)[n + 1]
         if s[0] is t[0]:
@@ -383,3 +387,264 @@ def test_visibility_from_a_point_culled_by_angle_equals_the_dense_test():
         assert (dense == sparse).all()
         assert 0 < dense.sum() < len(V)  # some corners hidden, some seen
     assert n > 100
+
+
+# --------------------------------------------------------------------------- query speed-ups: same answers
+def comb_hall():
+    """A hall with 20 teeth on its north side and two pillars: many reflex corners, targets all around."""
+    from shapely.geometry import Polygon
+    from shapely.ops import unary_union
+
+    teeth = [box(2 * k, 10, 2 * k + 1, 14) for k in range(20)]
+    poly = unary_union([box(0, 0, 40, 10)] + teeth)
+    return Polygon(poly.exterior).difference(box(10, 3, 12, 5)).difference(box(25, 4, 26, 8))
+
+
+def test_visibility_polygons_equal_the_segment_test():
+    """A point sees a corner iff it lies in the corner's visibility polygon (routing._Piece.build_visibility):
+    the same answer as the segment-against-every-edge test, also for points lined up exactly with two
+    corners (on a wedge bound) and points on the line of a bounding edge."""
+    from algorithms import routing
+
+    pc = routing._Piece((0, 0), 0, comb_hall(), "1")
+    pc.add_point((20.0, 0.0))  # an entry point on the border, not a corner
+    pc.solve()
+    pc.build_visibility()
+    V = pc.V
+    rng = np.random.default_rng(7)
+    pts = [tuple(rng.uniform((0, 0), (40, 14))) for _ in range(400)]
+    for _ in range(200):  # lined up with two vertices: the wedge bounds
+        i, j = rng.choice(len(V), 2, replace=False)
+        pts.append(tuple(V[i] + rng.uniform(0.1, 2.0) * (V[j] - V[i])))
+    pts += [(3.0, 5.0), (11.0, 2.0), (12.0, 4.0), (26.0, 9.0), (2.0, 9.0)]  # on edge lines
+    n = 0
+    for x, y in pts:
+        if not pc.core.contains(routing._point(x, y)):
+            continue
+        n += 1
+        cand = np.arange(len(V))
+        fast = pc.visible_vertices(x, y, cand)
+        exact = ~routing._crossing_from(x, y, V[:, 0], V[:, 1], pc.edges, pc.edge_parts)
+        assert (fast == exact).all(), (x, y, np.flatnonzero(fast != exact))
+    assert n > 250
+
+
+def _hall_map():
+    """The comb hall with four doors to four rooms, and a corridor: large pieces with many entries."""
+    hall = comb_hall()
+    areas = [area(1, hall, "Hall", atype="corridor")]
+    passages = []
+    for k, x in enumerate((5.0, 15.0, 30.0, 36.0)):
+        areas.append(area(10 + k, box(x - 2, -4, x + 2, 0), f"Room {k}"))
+        passages.append(passage(20 + k, 10 + k, 1, (x - 0.5, 0), (x + 0.5, 0), f"D{k}"))
+    areas.append(area(30, box(40, 2, 50, 5), "Corridor", atype="corridor"))
+    passages.append(passage(40, 1, 30, (40, 2.5), (40, 4.5), "East"))
+    # a second door from room 0 into the corridor too: two doors join the same pair of areas
+    areas[1] = area(10, box(3, -4, 7, 0).union(box(7, -4, 44, -2)).union(box(42, -2, 44, 2)), "Room 0")
+    passages.append(passage(41, 10, 30, (42.5, 2), (43.5, 2), "D0b"))
+    return areas, passages
+
+
+def test_lazy_entry_costs_equal_the_dense_ones():
+    """entry_costs (visibility polygons, lazy batches, or all candidates at once) gives the dense
+    point_costs' distances at every entry."""
+    from algorithms import routing
+
+    areas, passages = _hall_map()
+    rm = RouteMap.from_areas(areas, passages)
+    g = rm.graph(0.3)
+    hall = g.pieces_by_area[0][0]
+    assert hall.large() and len(hall.entries) >= 8
+    rng = np.random.default_rng(3)
+    pts = [p for p in (tuple(rng.uniform((0, 0), (40, 14))) for _ in range(150))
+           if hall.core.contains(routing._point(*p))]
+    for mode in ("lazy", "vp"):
+        if mode == "vp":
+            hall.build_visibility()
+        for p in pts:
+            p = np.asarray(p)
+            d1, v1 = hall.entry_costs(p, True)
+            d2, v2 = hall.point_costs(p, entries_only=True)
+            ent = np.unique(hall.e_vi)
+            assert np.allclose(d1[ent], d2[ent], rtol=0, atol=1e-9, equal_nan=True)
+    assert hall._vp is not None
+
+
+def test_node_table_equals_astar_and_parallel_edges_keep_the_cheaper(monkeypatch):
+    """The node-to-node table (maps up to MAX_TABLE_NODES nodes) and A* with landmarks (larger maps) give the
+    same costs; two doors between one room and one corridor join their nodes through both areas (parallel
+    edges): the cheaper one counts (scipy's sparse matrices would add them up)."""
+    from algorithms import routing
+
+    areas, passages = _hall_map()
+    rm = RouteMap.from_areas(areas, passages)
+    g = rm.graph(0.3)
+    mat = rm._matrix(g, 15.0, set()).tocoo()
+    csr = g.csr()
+    cheapest = {}
+    for n in range(len(g.pos)):
+        for e in range(csr["indptr"][n], csr["indptr"][n + 1]):
+            key = (n, int(csr["nbr"][e]))
+            cheapest[key] = min(cheapest.get(key, math.inf), float(csr["cost"][e]))
+    assert len(cheapest) < csr["nbr"].size  # there are parallel edges
+    for r, c, w in zip(mat.row, mat.col, mat.data):
+        assert w == pytest.approx(cheapest[(int(r), int(c))], abs=1e-9)
+    pairs = [("Room 0", "Corridor"), ("Room 1", "Room 3"), ("Room 2", "Corridor"), ((3.0, 12.0), (39.0, 12.0)),
+             ((1.0, 1.0), "Room 0")]
+    table = [rm.route(a, b, robot_radius=0.3) for a, b in pairs]
+    check_astar_matches_dijkstra(rm, 0.3)
+    monkeypatch.setattr(routing, "MAX_TABLE_NODES", 0)
+    rm2 = RouteMap.from_areas(areas, passages)
+    astar = [rm2.route(a, b, robot_radius=0.3) for a, b in pairs]
+    assert rm2._table(rm2.graph(0.3), 15.0, set()) is None
+    for t, a in zip(table, astar):
+        assert t.cost == pytest.approx(a.cost, abs=1e-9)
+        assert t.length == pytest.approx(a.length, abs=1e-9)
+    check_astar_matches_dijkstra(rm2, 0.3)
+    # two floors, stairs avoided: a table per avoid set
+    areas, passages = two_floors()
+    monkeypatch.setattr(routing, "MAX_TABLE_NODES", 4000)
+    rm3 = RouteMap.from_areas(areas, passages)
+    wheel = rm3.route("Office 1", "Office 2", robot_radius=0.3, vertical_cost=10, avoid=["stairs"])
+    walk = rm3.route("Office 1", "Office 2", robot_radius=0.3, vertical_cost=10)
+    assert "Lift 1-2" in wheel.passages and "Stair 1-2" in walk.passages
+    assert len(rm3.graph(0.3).tables) == 2
+
+
+def test_point_grid_locates_like_the_polygons():
+    """Point location by the cell grid (cells wholly inside one piece) gives the piece the polygon test
+    gives; where floors lie above one another no cell answers without a level."""
+    import shapely
+
+    from algorithms import routing
+
+    areas, passages = two_floors()
+    rm = RouteMap.from_areas(areas, passages)
+    g = rm.prepare(0.3)
+    rng = np.random.default_rng(11)
+    hits = {None: 0, "1": 0}
+    for lev in (None, "1"):
+        x0, y0, h, lab, pcs = g.grids[lev]
+        for _ in range(3000):
+            x, y = rng.uniform(-1, 41), rng.uniform(-1, 9)
+            r, c = int((y - y0) / h), int((x - x0) / h)
+            if not (0 <= r < lab.shape[0] and 0 <= c < lab.shape[1]) or lab[r, c] < 0:
+                continue
+            k = lab[r, c]
+            if k < 0:
+                continue
+            hits[lev] += 1
+            inside = [pc for pc in g.pieces.values() if (lev is None or pc.level == lev)
+                      and shapely.intersects_xy(pc.tol_poly, x, y)]
+            assert inside == [pcs[k]] and pcs[k]._inside_xy(x, y)
+    assert hits[None] == 0  # both floors cover every point: the level decides
+    assert hits["1"] > 500
+    with pytest.raises(InputError, match="give its level"):
+        rm.route((20, 1.5), (11, 5), goal_level="2")
+    res = rm.route((20, 1.5), (11, 5), start_level="1", goal_level="2")
+    assert res.level_changes == 1
+    assert routing._point_grid(g, "7") is None
+
+
+def test_straight_segment_skips_the_search_and_prepare_changes_nothing():
+    areas, passages = _hall_map()
+    rm = RouteMap.from_areas(areas, passages)
+    res = rm.route((1.0, 1.0), (39.0, 1.5), robot_radius=0.3)
+    assert len(res.points) == 2 and res.length == pytest.approx(math.hypot(38, 0.5))
+    assert res.passages == [] and res.expanded == 0
+    rng = np.random.default_rng(5)
+    pts = [tuple(rng.uniform((0.5, 0.5), (39.5, 13.5))) for _ in range(40)]
+    pts = [p for p in pts if comb_hall().buffer(-0.35).contains(_pt(p))]
+    before = [rm.route(pts[k], pts[k + 1], robot_radius=0.3).length for k in range(len(pts) - 1)]
+    rm.prepare(0.3)
+    assert rm.graph(0.3).pieces_by_area[0][0]._vp is not None
+    after = [rm.route(pts[k], pts[k + 1], robot_radius=0.3).length for k in range(len(pts) - 1)]
+    assert np.allclose(before, after, rtol=0, atol=1e-9)
+    assert len(pts) > 20
+
+
+def _pt(p):
+    from shapely.geometry import Point
+
+    return Point(p)
+
+
+def test_bench_cross_building_on_a_small_fused_file(tmp_path):
+    """The benchmark's fused-building row (scripts/bench_route.cross_building) on two synthetic floors written
+    as one osmAG file: lift-only routes within 2 % of the best grid A* via the lift."""
+    import importlib.util
+
+    from algorithms.georef import LocalFrame
+    from algorithms.osmag import write_osmag
+    from tests.conftest import REPO
+
+    spec = importlib.util.spec_from_file_location("bench_route", REPO / "scripts" / "bench_route.py")
+    bench = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(bench)
+    from algorithms.building import merge_floor_files
+
+    areas, passages = two_floors()
+    paths = []
+    for lv in ("1", "2"):  # two floor files, fused as mergefloors does: vertical passages at the shafts
+        fa = [a for a in areas if a.tags["level"] == lv]
+        ids = {a.id for a in fa}
+        fp = [p for p in passages if p.from_id in ids and p.to_id in ids]
+        paths.append(str(tmp_path / f"two-F{lv}.osm"))
+        write_osmag(paths[-1], fa, fp, frame=LocalFrame(121.59, 31.18), level=lv, variant="fix-id")
+    path = tmp_path / "two.osm"
+    merge_floor_files(paths, str(path), building_name="B")
+    bench.ROUNDS = 2
+    res = bench.cross_building(path, 4, np.random.default_rng(2), lambda m: None, "two floors")
+    assert res["lifts"] == 1 and len(res["rows"]) == 4
+    s = bench.stats(res["rows"])
+    assert s["within"] == 4 and s["rel_min"] > -0.05  # never much shorter than the grid: not through walls
+    assert s["q_cpu_best_med"] < 50
+
+
+@pytest.mark.slow
+def test_campus_map_fast_paths_give_the_reference_answers(shared_data, monkeypatch):
+    """On the other tools' two-level campus map: the node table and A* with landmarks give the same costs,
+    the visibility polygons of its large halls the same visibility as the segment test, and prepare()
+    changes no route."""
+    from algorithms import routing
+
+    rm = RouteMap.from_osmag(str(shared_data / "osmag" / "fix_id_ShanghaiTech_merge_2.osm"))
+    big = rm.components(0.3)[0]
+    rng = np.random.default_rng(4)
+    ks = [int(k) for k in rng.choice(big, 16, replace=False)]
+    pairs = [(ks[i], ks[i + 1]) for i in range(0, 16, 2)]
+
+    def routes(m):
+        out = []
+        for a, b in pairs:
+            for av in ((), ("stairs",)):
+                try:
+                    out.append(m.route(m.area_point(a), m.area_point(b), m.levels[a], m.levels[b],
+                                       robot_radius=0.3, avoid=av).cost)
+                except RouteError:  # without stairs some parts of this map are cut off
+                    out.append(math.inf)
+        return out
+
+    plain = routes(rm)
+    assert sum(map(math.isfinite, plain)) >= 10
+    g = rm.prepare(0.3)
+    prepared = routes(rm)
+    for x, y in zip(plain, prepared):
+        assert x == pytest.approx(y, abs=1e-9)
+    halls = [pc for pc in g.pieces.values() if pc._vp is not None]
+    assert halls
+    n = 0
+    for pc in sorted(halls, key=lambda p: -len(p.V))[:3]:
+        x0, y0, x1, y1 = pc.poly.bounds
+        for x, y in zip(rng.uniform(x0, x1, 300), rng.uniform(y0, y1, 300)):
+            if not pc._inside_xy(x, y):
+                continue
+            n += 1
+            cand = np.arange(len(pc.V))
+            exact = ~routing._crossing_from(x, y, pc.V[:, 0], pc.V[:, 1], pc.edges, pc.edge_parts)
+            assert (pc.visible_vertices(x, y, cand) == exact).all()
+    assert n > 100
+    monkeypatch.setattr(routing, "MAX_TABLE_NODES", 0)
+    rm2 = RouteMap.from_osmag(str(shared_data / "osmag" / "fix_id_ShanghaiTech_merge_2.osm"))
+    for x, y in zip(plain, routes(rm2)):
+        assert x == pytest.approx(y, abs=1e-6)
