@@ -556,13 +556,8 @@ def core_shift(moved, partner) -> np.ndarray:
     u = u / nu
     v = np.array([-u[1], u[0]])
 
-    def extents(g):
-        pts = np.vstack([np.asarray(p.exterior.coords, float) for p in getattr(g, "geoms", [g])
-                         if p.geom_type == "Polygon"])
-        return (pts @ u).min(), (pts @ u).max(), (pts @ v).min(), (pts @ v).max()
-
     try:
-        m, p = extents(moved), extents(partner)
+        m, p = _wall_extents(moved, u, v), _wall_extents(partner, u, v)
     except ValueError:  # no polygon part
         return np.zeros(2)
     out = np.zeros(2)
@@ -571,6 +566,37 @@ def core_shift(moved, partner) -> np.ndarray:
         d = 0.0 if d_lo * d_hi <= 0 else (d_lo if abs(d_lo) <= abs(d_hi) else d_hi)
         out += d * axis
     return out
+
+
+def _wall_extents(g, u: np.ndarray, v: np.ndarray, share: float = 0.3, band: float = 0.05):
+    """(u_lo, u_hi, v_lo, v_hi) of an outline: per side, the outermost *wall* of it, i.e. the outermost
+    position where boundary edges parallel to that side (within 10°) carry ≥ ``share`` of the outline's
+    extent along the side (within ``band`` m of each other); a notch or a door jamb sticking out of a core's
+    wall by 0.3 m over 1 m does not move the wall. The raw extent where no wall qualifies (a curved side)."""
+    rings = [np.asarray(p.exterior.coords, float) for p in getattr(g, "geoms", [g]) if p.geom_type == "Polygon"]
+    pts = np.vstack(rings)
+    out = []
+    cos_tol = math.cos(math.radians(10.0))
+    for axis, along in ((u, v), (v, u)):
+        proj = pts @ axis
+        raw_lo, raw_hi = float(proj.min()), float(proj.max())
+        extent = float((pts @ along).max() - (pts @ along).min())
+        pos, length = [], []
+        for r in rings:
+            d = np.diff(r, axis=0)
+            L = np.hypot(d[:, 0], d[:, 1])
+            ok = L > 1e-9
+            par = np.zeros(len(d), bool)
+            par[ok] = np.abs(d[ok] @ along) / L[ok] >= cos_tol
+            mid = (r[:-1] + r[1:]) / 2 @ axis
+            pos.extend(mid[par])
+            length.extend(L[par])
+        pos, length = np.asarray(pos, float), np.asarray(length, float)
+        walls = [x for x in pos if length[np.abs(pos - x) <= band].sum() >= share * extent]
+        lo = min(walls) if walls else raw_lo
+        hi = max(walls) if walls else raw_hi
+        out += [lo, hi] if lo < hi else [raw_lo, raw_hi]
+    return tuple(out)
 
 
 def shaft_residual(moved, partner) -> float:

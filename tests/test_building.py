@@ -586,3 +586,19 @@ def test_fusion_residual_of_a_core_cut_longer_on_one_floor_is_zero(tmp_path):
     assert res["E1-ST-01"] < 0.05 and res["E2-ST-01"] < 0.12, res
     assert res["E1-P2"] == pytest.approx(0.3, abs=0.05), res
     assert res["E1-ST-02"] < 0.05 and res["E1-P1"] < 0.05, res
+
+
+def test_shaft_residual_ignores_a_notch_in_a_core_wall():
+    """SIST E1-ST-03 kind: F1 draws the core's top wall with a 0.3 m notch over its first metre (a door
+    jamb), F3 cuts the core 0.6 m deeper at the bottom; the top and right walls coincide: residual ~0 (the
+    raw extents said 0.3 m, the centroids 0.36 m). The same notched core drawn 0.3 m off still reads 0.3 m."""
+    from shapely.geometry import Polygon
+
+    f1 = Polygon([(0, 0), (7.5, 0), (7.5, 4), (1.2, 4), (1.2, 4.3), (0, 4.3)])
+    f3 = box(-0.3, -0.6, 7.5, 4)
+    for rot in (0.0, 12.0):
+        a, b = (affinity.rotate(g, rot, origin=(0, 0)) for g in (f1, f3))
+        assert building.shaft_residual(b, a) < 0.02 and building.shaft_residual(a, b) < 0.02
+        off = affinity.translate(a, 0.0, 0.3) if rot == 0 else affinity.rotate(affinity.translate(f1, 0, 0.3), rot,
+                                                                              origin=(0, 0))
+        assert building.shaft_residual(off, a) == pytest.approx(0.3, abs=0.01)
