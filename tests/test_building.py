@@ -527,3 +527,78 @@ def test_registration_residual_counts_misplacement_not_different_cuts_of_a_shaft
     # 2 links per shaft pair of levels, codes joined to themselves
     assert len(st["vertical"]) == 12
     assert all(v[2].split(" (")[0] == v[3].split(" (")[0] for v in st["vertical"])
+
+
+@pytest.mark.parametrize("rot", [0.0, 12.0, 90.0])
+def test_shaft_residual_is_judged_on_the_walls_both_cuts_share(rot):
+    """SIST E2-ST-01 / E1-ST-03 kind: one floor cuts a stair core 1.5 m longer along its flight (and its
+    bottom wall 0.1 m lower); the walls both cuts share coincide, so the residual is ~0, where the outline
+    fit slid it along the core by ~1 m. Two cores drawn alike 0.3 m apart (along or across): 0.3 m. A
+    residual never exceeds the distance of the two centroids."""
+    from shapely.geometry import Polygon
+
+    def r(g):
+        return affinity.rotate(g, rot, origin=(0, 0))
+
+    core = r(box(0, 0, 6, 3))
+    longer = r(Polygon([(-1.5, -0.1), (6, -0.1), (6, 3), (-1.5, 3), (-1.5, 2.2), (-1.7, 2.2), (-1.7, 0.5),
+                        (-1.5, 0.5)]))
+    assert building.shaft_residual(core, longer) < 0.02
+    assert building.shaft_residual(longer, core) < 0.02
+    # a core cut longer at both ends (a landing on each side): the shorter cut nests in it, no error
+    assert building.shaft_residual(core, r(box(-1, 0, 7, 3))) < 0.02
+    for dx, dy in ((0.3, 0.0), (0.0, 0.3), (0.3, -0.3)):
+        off = affinity.rotate(box(dx, dy, 6 + dx, 3 + dy), rot, origin=(0, 0))
+        assert building.shaft_residual(off, core) == pytest.approx(math.hypot(dx, dy), abs=0.01)
+    # longer AND misplaced 0.3 m across the core: the across offset is the error
+    moved = r(box(-1.5, 0.3, 6, 3.3))
+    assert building.shaft_residual(moved, core) == pytest.approx(0.3, abs=0.01)
+    assert building.shaft_residual(moved, core) <= moved.centroid.distance(core.centroid) + 1e-9
+
+
+def test_fusion_residual_of_a_core_cut_longer_on_one_floor_is_zero(tmp_path):
+    """Two floors kilometres apart; level 3 cuts both stair cores 1.5 m longer (flight end included), one
+    with its far wall 0.1 m lower: the floor is registered exactly and each core's residual is ~0; a lift
+    drawn 0.3 m off on level 3 reports 0.3 m."""
+    from shapely.geometry import Polygon
+
+    base = {"E1-ST-01": box(2, 0, 8, 3), "E2-ST-01": box(20, 8, 26, 11), "E1-ST-02": box(34, 0, 37, 6),
+            "E1-P1": box(12, 0, 14, 2), "E1-P2": box(44, 9, 46, 11)}
+    floors = []
+    for lv, (dx, dy) in (("1", (0.0, 0.0)), ("3", (1480.0, 10.7))):
+        shafts = dict(base)
+        if lv == "3":
+            shafts["E1-ST-01"] = box(0.5, 0, 8, 3)
+            shafts["E2-ST-01"] = Polygon([(18.5, 7.9), (26, 7.9), (26, 11), (18.5, 11)])
+            shafts["E1-P2"] = box(44, 9.3, 46, 11.3)
+        hall = box(0, 0, 50, 14)
+        areas = []
+        for k, (code, poly) in enumerate(shafts.items(), 2):
+            hall = hall.difference(poly)
+            areas.append(Area(id=k, polygon=poly, name=code, type="elevator" if "-P" in code else "stairs"))
+        areas.insert(0, Area(id=1, polygon=hall, type="corridor", name=f"hall {lv}"))
+        for a in areas:
+            a.polygon = affinity.translate(a.polygon, dx, dy)
+        floors.append(FloorData(source=f"F{lv}.osm", areas=areas, passages=[], level=lv))
+    st = fuse_floors(floors, str(tmp_path / "b.osm"), LocalFrame(0.0, 0.0), variant="fix-id")
+    lv_moved = [lv for lv, t in st["transforms"].items() if t[3] != "reference"][0]
+    res = {a.split(" (")[0]: d for a, _, d in st["residuals"][lv_moved]}
+    assert res["E1-ST-01"] < 0.05 and res["E2-ST-01"] < 0.12, res
+    assert res["E1-P2"] == pytest.approx(0.3, abs=0.05), res
+    assert res["E1-ST-02"] < 0.05 and res["E1-P1"] < 0.05, res
+
+
+def test_shaft_residual_ignores_a_notch_in_a_core_wall():
+    """SIST E1-ST-03 kind: F1 draws the core's top wall with a 0.3 m notch over its first metre (a door
+    jamb), F3 cuts the core 0.6 m deeper at the bottom; the top and right walls coincide: residual ~0 (the
+    raw extents said 0.3 m, the centroids 0.36 m). The same notched core drawn 0.3 m off still reads 0.3 m."""
+    from shapely.geometry import Polygon
+
+    f1 = Polygon([(0, 0), (7.5, 0), (7.5, 4), (1.2, 4), (1.2, 4.3), (0, 4.3)])
+    f3 = box(-0.3, -0.6, 7.5, 4)
+    for rot in (0.0, 12.0):
+        a, b = (affinity.rotate(g, rot, origin=(0, 0)) for g in (f1, f3))
+        assert building.shaft_residual(b, a) < 0.02 and building.shaft_residual(a, b) < 0.02
+        off = affinity.translate(a, 0.0, 0.3) if rot == 0 else affinity.rotate(affinity.translate(f1, 0, 0.3), rot,
+                                                                              origin=(0, 0))
+        assert building.shaft_residual(off, a) == pytest.approx(0.3, abs=0.01)
