@@ -440,7 +440,8 @@ DWG_VERTICAL = {
 }
 
 
-TYPED_AT_LEAST = {"sist-original/SIST-F4.dwg": 9}  # codes that name a stair/lift area (measured 2026-12-01)
+TYPED_AT_LEAST = {"sist-original/SIST-F4.dwg": 13, "sist-original/SIST-F1.dwg": 20, "sist-original/SIST-F3.dwg": 19,
+                  "library/A-A3-10-06.dwg": 7}  # codes that name a stair/lift area (measured 2026-12-02)
 
 
 def _dwg_reader():
@@ -486,8 +487,9 @@ def test_dwg_stairs_and_lifts_become_typed_areas(shared_data, sheet, floor_cache
     assert plan or not (want_st | want_el), "no stair or lift of the sheet named an area"
     for code in plan:
         assert typed[code] <= ({"stairs"} if code in want_st else {"elevator"}), (code, typed[code])
-    # measured: on SIST-F4 9 of the 18 codes name a stair/lift area (6 of 14 stairs, 3 of 4 lift groups);
-    # the rest are open stairs in atria or outdoors and shafts merged into a corridor (segmentation)
+    # measured: on SIST-F4 13 of the 18 codes name a stair/lift area (9 before stairs and lifts swallowed by a
+    # larger area were carved out, anchors.carve_anchors); the rest (E1-ST-01, -05, -07, E2-ST-02, E1-P2) are
+    # open stairs outdoors or shafts the segmentation merged beyond the carve's reach
     print(sheet, "codes naming a stair/lift area:", len(plan), sorted(plan))
     assert len(plan) >= TYPED_AT_LEAST.get(sheet, 0), sorted(plan)
     for a in floor.refined.areas:  # a code never makes an atrium a stair
