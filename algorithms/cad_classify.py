@@ -596,6 +596,8 @@ def _unblocked_gaps(geoms, gaps, rails) -> List[DoorHint]:
         if any(math.hypot(m[0] - (h.x0 + h.x1) / 2.0, m[1] - (h.y0 + h.y1) / 2.0) < 0.5 for h in out):
             continue
         out.append(DoorHint(float(p[0]), float(p[1]), float(q[0]), float(q[1]), "curtain_wall"))
+    return out
+
 
 # ------------------------------------------------------------------------------------------ dashed lines on kept layers
 PROJECTION_KINDS = ("wall", "reference")  # kinds whose dashed lines are projections, not walls
