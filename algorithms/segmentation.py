@@ -1809,6 +1809,8 @@ def roof_spaces(areas: List[Area], passages: List[Passage], texts=(), closed_ids
 # building: beyond the outline of the floor's main (largest) component. A doorless room inside the facade is
 # inside that outline and stays an orphan; a named space is never exterior.
 OUTDOOR_SHARE = 0.5  # share of an orphaned component's area outside the main component's outline that makes it exterior
+OUTDOOR_NAMES = 3  # room names the main component must hold: only a drawing that names its rooms says by silence
+# that a space is none (a cleaned file with no names keeps its unnamed wings as orphans, never exterior)
 
 
 def outdoor_spaces(areas: List[Area], passages: List[Passage], name_points=(), closed_ids=()) -> List[int]:
@@ -1817,7 +1819,9 @@ def outdoor_spaces(areas: List[Area], passages: List[Passage], name_points=(), c
     whose areas holds a room name or number (``name_points``: (x, y, text) of the names, see
     ``semantics.room_names_only``) and at least ``OUTDOOR_SHARE`` of whose area lies outside the outline of
     the main component (the convex hull of its areas: the facade and the space the building's wings enclose
-    count as inside). ``closed_ids``: areas already counted out (closed spaces, roofs), never listed again.
+    count as inside). Only on a drawing that names its rooms: the main component holds at least
+    ``OUTDOOR_NAMES`` of the names (on a drawing without names, an unnamed wing is no evidence of anything
+    and stays an orphan). ``closed_ids``: areas already counted out (closed spaces, roofs), never listed again.
     They stay areas; the connectivity figure counts them out."""
     from shapely import STRtree
     from shapely.geometry import Point
@@ -1833,6 +1837,13 @@ def outdoor_spaces(areas: List[Area], passages: List[Passage], name_points=(), c
     hull = unary_union([p.convex_hull for p in main]).convex_hull
     pts = [Point(float(x), float(y)) for x, y, _t in name_points if np.isfinite(x) and np.isfinite(y)]
     tree = STRtree(pts) if pts else None
+    if tree is None:
+        return []
+    in_main = set()
+    for p in main:
+        in_main.update(int(i) for i in tree.query(p, predicate="intersects"))
+    if len(in_main) < OUTDOOR_NAMES:
+        return []
     total: Dict[int, float] = {}
     outside: Dict[int, float] = {}
     named = set()
@@ -1841,7 +1852,7 @@ def outdoor_spaces(areas: List[Area], passages: List[Passage], name_points=(), c
         c = a.component
         members.setdefault(c, []).append(a.id)
         total[c] = total.get(c, 0.0) + a.polygon.area
-        if tree is not None and len(tree.query(a.polygon, predicate="intersects")):
+        if len(tree.query(a.polygon, predicate="intersects")):
             named.add(c)
         try:
             out_area = a.polygon.difference(hull).area

@@ -361,15 +361,17 @@ def test_outdoor_spaces_outside_the_main_outline_never_named_nor_inside():
              _area(5, 24, -8, 36, 0, 2),  # a terrace holding a name (a café): kept
              _area(6, 16, 2, 20, 6, 3),  # a doorless room inside the facade: kept, an orphan
              _area(7, 36, 5, 40, 13, 4)]  # a room straddling the outline: 37.5 % outside, under half
-    names = [(30, -4, "Café"), (18, 4, "")]
-    out = segmentation.outdoor_spaces(areas, [], [(30, -4, "Café")])
+    floor = [(5, 5, "Aula 1"), (15, 5, "Aula 2"), (30, 5, "Biblioteca")]  # the drawing names its rooms
+    out = segmentation.outdoor_spaces(areas, [], floor + [(30, -4, "Café")])
     assert out == [3, 4]
-    assert segmentation.outdoor_spaces(areas, [], names) == [3, 4]  # a name inside the floor changes nothing
-    assert segmentation.outdoor_spaces(areas, [], [(14, -4, "Terrazza bar")]) == [5]  # a name keeps its component
-    assert segmentation.outdoor_spaces(areas, [], [], closed_ids=[3, 4]) == [5]  # already counted out: not again
+    assert segmentation.outdoor_spaces(areas, [], floor + [(14, -4, "Terrazza bar")]) == [5]  # a name keeps it
+    assert segmentation.outdoor_spaces(areas, [], floor, closed_ids=[3, 4]) == [5]  # counted out: not again
+    # a drawing without room names (a cleaned file) says nothing by silence: an unnamed wing stays an orphan
+    assert segmentation.outdoor_spaces(areas, [], []) == []
+    assert segmentation.outdoor_spaces(areas, [], floor[:2]) == []
     share = segmentation.connected_share(areas, out)
     assert abs(share - 400 / (400 + 96 + 16 + 32)) < 1e-9
-    assert segmentation.outdoor_spaces(areas[:1] + areas[5:6], [], []) == []  # nothing outside: nothing counted out
+    assert segmentation.outdoor_spaces(areas[:1] + areas[5:6], [], floor) == []  # nothing outside: nothing out
 
 
 def _terrace_plan(tmp_path, terrace_name=None):
@@ -391,6 +393,7 @@ def _terrace_plan(tmp_path, terrace_name=None):
     _rect(msp, 18, 7, 22, 11)  # the room with no door
     _text(msp, "Hall", 6.0, 4.0)
     _text(msp, "Office", 15.0, 4.0)
+    _text(msp, "Archive", 15.0, 9.0)
     p = tmp_path / f"terrace{'_named' if terrace_name else ''}.dxf"
     doc.saveas(p)
     return str(p)
