@@ -130,7 +130,7 @@ def process_floor(dxf_path: str, *, rules=None, layers=None, units=None, include
              "texts": len(drawing.texts), "geometries": len(drawing.geometries), "unit": drawing.unit_name,
              "raster_shape": grid.shape, "areas": len(refined.areas), "passages": len(refined.passages),
              "components": rstats.get("components", 1), "largest_component_share": share, "closed_spaces": closed,
-             "roof_spaces": rstats.get("roof_spaces", [])}
+             "roof_spaces": rstats.get("roof_spaces", []), "outdoor_spaces": rstats.get("outdoor_spaces", [])}
     if names_report is not None:
         stats["names"] = names_report.counts()
     progress.info(f"floor {level}: {len(refined.areas)} areas, {len(refined.passages)} passages "
@@ -165,7 +165,8 @@ def _closed_spaces(refined: AreaGraph, drawing: CadDrawing, name_rules, rstats, 
         progress.info(f"{len(closed)} closed space(s) no passage reaches and no room name labels (wall cavities, "
                       f"ducts, shafts: areas {', '.join(map(str, closed[:20]))}) are counted out of the connectivity")
     roofs = _roof_spaces(refined, drawing, closed, rstats, progress)
-    return closed, segmentation.connected_share(refined.areas, list(closed) + roofs)
+    outdoor = _outdoor_spaces(refined, drawing, name_rules, list(closed) + roofs, rstats, progress)
+    return closed, segmentation.connected_share(refined.areas, list(closed) + roofs + outdoor)
 
 
 def _roof_spaces(refined: AreaGraph, drawing: CadDrawing, closed, rstats, progress):
@@ -180,6 +181,25 @@ def _roof_spaces(refined: AreaGraph, drawing: CadDrawing, closed, rstats, progre
         progress.info(f"{len(roofs)} area(s) of roofs below this floor that no passage reaches (areas "
                       f"{', '.join(map(str, roofs[:20]))}) are counted out of the connectivity")
     return roofs
+
+
+def _outdoor_spaces(refined: AreaGraph, drawing: CadDrawing, name_rules, counted_out, rstats, progress):
+    """Terraces and landscape outside the facade no passage reaches and no room name labels
+    (``segmentation.outdoor_spaces``): tagged ``cad2osmag:outdoor=yes``, listed in ``rstats['outdoor_spaces']``
+    and counted out of the share, like roofs."""
+    names = [(x, y, lab.text) for lab in semantics.classify_labels(drawing.texts, name_rules)
+             if lab.role in ("name", "number") for x, y in [(lab.x, lab.y)] + list(lab.alts)]
+    outdoor = segmentation.outdoor_spaces(refined.areas, refined.passages, names, counted_out)
+    rstats["outdoor_spaces"] = outdoor
+    for a in refined.areas:
+        if a.id in outdoor:
+            a.tags["cad2osmag:outdoor"] = "yes"
+    if outdoor:
+        m2 = sum(a.area for a in refined.areas if a.id in outdoor)
+        progress.info(f"{len(outdoor)} area(s) of exterior ground outside the facade ({m2:.0f} m2: terraces, "
+                      f"landscape) that no passage reaches and no room name labels (areas "
+                      f"{', '.join(map(str, outdoor[:20]))}) are counted out of the connectivity")
+    return outdoor
 
 
 def convert_dxf(dxf_path: str, out_osm: str, *, preview_png: Optional[str] = None,

@@ -1803,6 +1803,71 @@ def roof_spaces(areas: List[Area], passages: List[Passage], texts=(), closed_ids
     return sorted(out)
 
 
+# Exterior ground closed by the drawing (issue 8, item 6): terraces and landscape outside the facade, cut into
+# pieces by planters, low walls and paving edges drawn on kept layers. They hold no room name (at most the codes
+# of the windows drawn outside the facade, a note), no door of the floor leads there, and they lie outside the
+# building: beyond the outline of the floor's main (largest) component. A doorless room inside the facade is
+# inside that outline and stays an orphan; a named space is never exterior.
+OUTDOOR_SHARE = 0.5  # share of an orphaned component's area outside the main component's outline that makes it exterior
+OUTDOOR_NAMES = 3  # room names the main component must hold: only a drawing that names its rooms says by silence
+# that a space is none (a cleaned file with no names keeps its unnamed wings as orphans, never exterior)
+
+
+def outdoor_spaces(areas: List[Area], passages: List[Passage], name_points=(), closed_ids=()) -> List[int]:
+    """Ids of the areas of orphaned components that are exterior ground (terraces, landscape between planters)
+    rather than floor: a component other than the largest (no passage reaches it from the main one), none of
+    whose areas holds a room name or number (``name_points``: (x, y, text) of the names, see
+    ``semantics.room_names_only``) and at least ``OUTDOOR_SHARE`` of whose area lies outside the outline of
+    the main component (the convex hull of its areas: the facade and the space the building's wings enclose
+    count as inside). Only on a drawing that names its rooms: the main component holds at least
+    ``OUTDOOR_NAMES`` of the names (on a drawing without names, an unnamed wing is no evidence of anything
+    and stays an orphan). ``closed_ids``: areas already counted out (closed spaces, roofs), never listed again.
+    They stay areas; the connectivity figure counts them out."""
+    from shapely import STRtree
+    from shapely.geometry import Point
+    from shapely.ops import unary_union
+
+    closed = set(closed_ids)
+    main = [a.polygon for a in areas if a.component == 0 and a.polygon is not None and not a.polygon.is_empty
+            and a.type != "structure"]
+    cand = [a for a in areas if a.component != 0 and a.id not in closed and a.polygon is not None
+            and not a.polygon.is_empty and a.type != "structure"]
+    if not main or not cand:
+        return []
+    hull = unary_union([p.convex_hull for p in main]).convex_hull
+    pts = [Point(float(x), float(y)) for x, y, _t in name_points if np.isfinite(x) and np.isfinite(y)]
+    tree = STRtree(pts) if pts else None
+    if tree is None:
+        return []
+    in_main = set()
+    for p in main:
+        in_main.update(int(i) for i in tree.query(p, predicate="intersects"))
+    if len(in_main) < OUTDOOR_NAMES:
+        return []
+    total: Dict[int, float] = {}
+    outside: Dict[int, float] = {}
+    named = set()
+    members: Dict[int, List[int]] = {}
+    for a in cand:
+        c = a.component
+        members.setdefault(c, []).append(a.id)
+        total[c] = total.get(c, 0.0) + a.polygon.area
+        if len(tree.query(a.polygon, predicate="intersects")):
+            named.add(c)
+        try:
+            out_area = a.polygon.difference(hull).area
+        except Exception:  # a GEOS topology error on a degenerate piece: measure on the repaired polygon
+            from shapely.validation import make_valid
+
+            out_area = make_valid(a.polygon).buffer(0).difference(hull).area
+        outside[c] = outside.get(c, 0.0) + out_area
+    out = []
+    for c, ids in members.items():
+        if c not in named and total[c] > 0 and outside[c] >= OUTDOOR_SHARE * total[c]:
+            out.extend(ids)
+    return sorted(out)
+
+
 def connected_share(areas: List[Area], closed_ids=()) -> float:
     """The largest component's share of the floor area, counting out ``closed_ids`` (``closed_spaces``)."""
     closed = set(closed_ids)

@@ -62,6 +62,7 @@ def evaluate_plan(path, **kwargs):
         fig["largest_component_pct"] = 100.0 * floor.stats["largest_component_share"]
         fig["closed_spaces"] = len(floor.stats.get("closed_spaces", []))
         fig["roof_spaces"] = len(floor.stats.get("roof_spaces", []))  # roofs below the floor count out too
+        fig["outdoor_spaces"] = len(floor.stats.get("outdoor_spaces", []))  # terraces outside the facade too
     return fig
 
 

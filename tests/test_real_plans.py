@@ -43,16 +43,13 @@ KNOWN_BELOW = {
 # A-A3-10-04 0.9498, -05 0.916, -06 0.585); each floor's other components are listed in the
 # log and the 'component' field. Remove an entry when its sheet reaches the target.
 KNOWN_BELOW_DWG = {
-    "A-A3-10-04": "94.98 %: the landscape south of the building (terrace pieces between planters drawn on kept "
-                  "layers, 143 m2, and one titled by a window note '(固定乙级窗)', 71 m2) are areas no passage "
-                  "reaches (the shaft 通风井 and an 11 m2 cavity count out as closed spaces)",
-    "A-A3-10-05": "91.6 %: outside the curtain wall, south and south-west of the building, three terrace pieces "
-                  "between planters (144 m2) and one (72 m2) hold only window codes (C1010, C1515: the tags "
-                  "drawn outside a facade) and a fire-window note: exterior, not rooms; six 22-26 m2 bays "
-                  "along the west facade hold only level texts (+14.200, +9.450) and reach no door (not diagnosed "
-                  "further)",
     "A-A3-10-08": "a roof plan (top view): one roof area, nothing to connect",
-    # SIST-F4 (98.1 % since curtain-wall doors), SIST-F5 (95.0 % since roofs below the floor count out) and SIST-F1
+    # A-A3-10-04 (94.98 -> 100 %) and -05 (91.6 -> 99.4 %) reach it since exterior ground outside the facade counts
+    # out (segmentation.outdoor_spaces): the terrace pieces between the planters south of the curtain wall (one
+    # labelled 不上人平屋面, a flat roof no one walks on) hold only window codes, falls and a fire-window note, and
+    # five of the six bays outside -05's west facade hold only level texts; the sixth (22 m2) stays an orphan.
+    # SIST-F4 (98.1 % since curtain-wall doors), SIST-F5 (95.0 % since roofs below the floor count out, 97.8 % since the 129 m2 strip outside
+    # its south curtain wall, holding only window codes, and a louvre screen 金属百叶 among the roofs count out as exterior) and SIST-F1
     # (99.7 % since the named passage 通道 between the two buildings closes at its two mouths) reach it, and so does
     # A-A3-10-06 (58.5 -> 100 %: the atrium gallery 中庭回廊 between its two wings, around the voids 下空, is named, and
     # each of its six tags carries the level +18.950 of this floor's wings: a walkway on this floor, not below it)

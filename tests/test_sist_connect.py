@@ -352,3 +352,102 @@ def test_named_passage_no_disk_encloses_closes_at_its_mouths():
     bare = {}
     inside, _ = segmentation.building_interior(free, res, 4.0, info=bare, footprint=True)
     assert not inside[px(25, 18.5)] and bare["claimed_px"] == 0  # no name: nothing claimed
+
+
+# ------------------------------------------------------------------------------------------ terraces outside the facade
+def test_outdoor_spaces_outside_the_main_outline_never_named_nor_inside():
+    areas = [_area(1, 0, 0, 20, 10, 0), _area(2, 20, 0, 40, 10, 0),  # the floor: two rooms joined by a door
+             _area(3, 0, -8, 12, 0, 1), _area(4, 12, -8, 20, 0, 1),  # a terrace cut by a planter, south of it
+             _area(5, 24, -8, 36, 0, 2),  # a terrace holding a name (a café): kept
+             _area(6, 16, 2, 20, 6, 3),  # a doorless room inside the facade: kept, an orphan
+             _area(7, 36, 5, 40, 13, 4)]  # a room straddling the outline: 37.5 % outside, under half
+    floor = [(5, 5, "Aula 1"), (15, 5, "Aula 2"), (30, 5, "Biblioteca")]  # the drawing names its rooms
+    out = segmentation.outdoor_spaces(areas, [], floor + [(30, -4, "Café")])
+    assert out == [3, 4]
+    assert segmentation.outdoor_spaces(areas, [], floor + [(14, -4, "Terrazza bar")]) == [5]  # a name keeps it
+    assert segmentation.outdoor_spaces(areas, [], floor, closed_ids=[3, 4]) == [5]  # counted out: not again
+    # a drawing without room names (a cleaned file) says nothing by silence: an unnamed wing stays an orphan
+    assert segmentation.outdoor_spaces(areas, [], []) == []
+    assert segmentation.outdoor_spaces(areas, [], floor[:2]) == []
+    share = segmentation.connected_share(areas, out)
+    assert abs(share - 400 / (400 + 96 + 16 + 32)) < 1e-9
+    assert segmentation.outdoor_spaces(areas[:1] + areas[5:6], [], floor) == []  # nothing outside: nothing out
+
+
+def _terrace_plan(tmp_path, terrace_name=None):
+    """A floor (hall + office joined by a doorway, 24 x 12 m) whose south facade is a window line; south of it
+    a terrace (24 x 6 m) closed by planters drawn on the wall layer, cut in two by a planter, holding only the
+    window codes drawn outside the facade; inside, a room whose door the drawing forgot."""
+    doc = _doc()
+    msp = doc.modelspace()
+    _rect(msp, 0, 0, 24, 12)
+    msp.add_line((12, 0), (12, 5.0), dxfattribs={"layer": "A-WALL"})
+    msp.add_line((12, 6.0), (12, 12), dxfattribs={"layer": "A-WALL"})
+    _rect(msp, 0, -6, 24, 0)  # the planters around the terrace
+    msp.add_line((10, -6), (10, 0), dxfattribs={"layer": "A-WALL"})  # a planter across it
+    _text(msp, "C1515", 4, -1.0)
+    _text(msp, "C1010", 16, -1.0)
+    if terrace_name:
+        _text(msp, terrace_name, 17, -3)
+        _text(msp, terrace_name, 5, -3)
+    _rect(msp, 18, 7, 22, 11)  # the room with no door
+    _text(msp, "Hall", 6.0, 4.0)
+    _text(msp, "Office", 15.0, 4.0)
+    _text(msp, "Archive", 15.0, 9.0)
+    p = tmp_path / f"terrace{'_named' if terrace_name else ''}.dxf"
+    doc.saveas(p)
+    return str(p)
+
+
+def test_terrace_outside_the_facade_counts_out_but_named_terrace_and_doorless_room_do_not(tmp_path):
+    floor = pipeline.process_floor(_terrace_plan(tmp_path))
+    areas = {a.id: a for a in floor.refined.areas}
+    outdoor = floor.stats["outdoor_spaces"]
+    terrace = {a.id for a in areas.values() if a.polygon.intersects(box(0.5, -5.5, 23.5, -0.5))
+               and a.polygon.intersection(box(0, -6, 24, 0)).area > 0.5 * a.polygon.area}
+    assert terrace and set(outdoor) == terrace, (outdoor, terrace)
+    assert all(areas[i].tags.get("cad2osmag:outdoor") == "yes" for i in outdoor)
+    room = [a for a in areas.values() if a.polygon.contains(Point(20, 9))][0]
+    assert room.id not in outdoor and room.component != 0 and "cad2osmag:outdoor" not in room.tags
+    assert abs(sum(areas[i].area for i in outdoor) - 144) < 15  # the terrace, 24 x 6 m
+    main = sum(a.area for a in areas.values() if a.component == 0)
+    counted = sum(a.area for i, a in areas.items() if a.type != "structure" and i not in outdoor
+                  and i not in floor.stats["closed_spaces"] and i not in floor.stats["roof_spaces"])
+    assert abs(floor.stats["largest_component_share"] - main / counted) < 1e-6
+    assert 0.8 < floor.stats["largest_component_share"] < 1.0  # the doorless room (16 m2 of ~290) still counts
+    named = pipeline.process_floor(_terrace_plan(tmp_path, terrace_name="Terrazza"))
+    assert named.stats["outdoor_spaces"] == []
+    assert named.stats["largest_component_share"] < floor.stats["largest_component_share"]
+
+
+def test_dxftoosmag_headless_tags_the_terrace_outdoor(tmp_path):
+    from algorithms import osmag
+    from tests.qgis_process import run_alg
+
+    out = tmp_path / "terrace.osm"
+    _, res, log = run_alg("dxftoosmag", {"INPUT": _terrace_plan(tmp_path), "OUTPUT": str(out)})
+    assert "exterior ground outside the facade" in log
+    areas, _, _, _ = osmag.read_osmag(str(out))
+    outdoor = [a for a in areas if (a.tags or {}).get("cad2osmag:outdoor") == "yes"]
+    assert len(outdoor) == 2  # the two terrace pieces either side of the planter (lon/lat: no m2 here)
+    south = min(a.polygon.centroid.y for a in areas if a.name in ("Hall", "Office"))
+    assert all(a.polygon.centroid.y < south for a in outdoor)  # south of the facade only
+    assert any(a.name == "Office" for a in areas) and not any(a.name == "Office" for a in outdoor)
+
+
+@pytest.mark.slow
+def test_library_terraces_outside_the_curtain_wall_count_out(shared_data, floor_cache):
+    """A-A3-10-04/-05.dwg: the terrace pieces between the planters south of the curtain wall hold only window
+    codes (C1010, C1515) and a fire-window note, and the bays outside the west facade only level texts: exterior
+    ground, counted out; both floors reach the 95 % target."""
+    pytest.importorskip("algorithms.cad_dwg")
+    folder = shared_data / "dwg" / "library"
+    if not (folder / "A-A3-10-05.dwg").is_file():
+        pytest.skip("the library DWG sheets are not in the shared data")
+    for sheet, m2 in (("A-A3-10-04.dwg", 200), ("A-A3-10-05.dwg", 300)):
+        f = floor_cache.process_floor(folder / sheet)
+        out = set(f.stats["outdoor_spaces"])
+        areas = [a for a in f.refined.areas if a.id in out]
+        assert sum(a.area for a in areas) >= m2, (sheet, [(a.id, a.area) for a in areas])
+        assert all(a.tags.get("cad2osmag:outdoor") == "yes" and a.component != 0 for a in areas)
+        assert f.stats["largest_component_share"] >= 0.95, (sheet, f.stats["largest_component_share"])
