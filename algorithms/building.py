@@ -40,7 +40,7 @@ from typing import Dict, List, Optional, Sequence, Tuple
 import numpy as np
 
 from .errors import InputError
-from .model import Area, Passage
+from .model import Area, Passage, valid_polygon
 from .progress import ensure
 
 ANCHOR_TYPES = ("stairs", "elevator")
@@ -167,17 +167,6 @@ class FloorData:
         return os.path.basename(self.source) or self.source
 
 
-def _valid_polygon(poly):
-    """A ring that touches itself after the round trip through lon/lat (7 decimals, ~1 cm) is repaired:
-    ``buffer(0)``, keeping the largest part if it splits (the slivers are below a few cm²)."""
-    if poly is None or poly.is_empty or poly.is_valid:
-        return poly
-    fixed = poly.buffer(0)
-    if fixed.geom_type == "MultiPolygon":
-        fixed = max(fixed.geoms, key=lambda g: g.area)
-    return fixed if fixed.geom_type == "Polygon" and not fixed.is_empty else poly
-
-
 def read_floor(path: str, frame, progress=None) -> FloorData:
     """An osmAG floor file -> :class:`FloorData` in ``frame`` (a LocalFrame; None = the file's root)."""
     from . import osmag
@@ -187,7 +176,7 @@ def read_floor(path: str, frame, progress=None) -> FloorData:
         frame = osmag.frame_from_root(root)
     areas, passages = osmag.to_frame(areas, passages, frame)
     for a in areas:
-        a.polygon = _valid_polygon(a.polygon)
+        a.polygon = valid_polygon(a.polygon)
     dropped = [(wid, f"{key}='{val}' names no area of the file") for wid, key, val in report["dangling_refs"]
                if key in ("osmAG:from", "osmAG:to")]
     dropped += [(wid, f"missing nodes {miss[:3]}") for wid, miss in report["dangling_nodes"].items()

@@ -203,3 +203,15 @@ class AreaGraph:
 
     def area_by_id(self) -> Dict[int, Area]:
         return {a.id: a for a in self.areas}
+
+
+def valid_polygon(poly):
+    """A polygon that touches or crosses itself (a ring pinched after a coordinate round trip, e.g. through
+    lon/lat at 7 decimals, ~1 cm, or a pixel outline meeting itself) is repaired with ``buffer(0)``, keeping
+    the largest part if it splits (the slivers are below a few cm²). Anything else is returned as given."""
+    if poly is None or getattr(poly, "geom_type", "") != "Polygon" or poly.is_empty or poly.is_valid:
+        return poly
+    fixed = poly.buffer(0)
+    if fixed.geom_type == "MultiPolygon":
+        fixed = max(fixed.geoms, key=lambda g: g.area)
+    return fixed if fixed.geom_type == "Polygon" and not fixed.is_empty else poly

@@ -16,6 +16,7 @@ from qgis.PyQt.QtCore import QCoreApplication
 from qgis.PyQt.QtGui import QIcon
 
 from ..algorithms.errors import Canceled, InputError
+from ..algorithms.model import valid_polygon
 from ..algorithms.progress import Progress
 
 ICON_PATH = os.path.join(os.path.dirname(os.path.dirname(__file__)), "icons", "icon.svg")
@@ -128,7 +129,9 @@ def make_fields(*specs):
 
 
 def to_qgs(geom):
-    """shapely geometry -> QgsGeometry"""
+    """shapely geometry -> QgsGeometry; a self-touching polygon is repaired on the way (every stage's
+    output layer is valid: ``model.valid_polygon``)"""
+    geom = valid_polygon(geom)
     out = QgsGeometry()
     out.fromWkb(geom.wkb)
     return out
