@@ -284,7 +284,8 @@ def boundary_evidence(pieces, infos, scale: float) -> List[CadGeometry]:
 
 
 def classify_entities(geoms: Sequence[CadGeometry], chains: Sequence[str], rules, include_doors: bool = False,
-                      weak_layers: Iterable[str] = (), drop_door_swings: bool = True, aux_from: Optional[int] = None):
+                      weak_layers: Iterable[str] = (), drop_door_swings: bool = True, aux_from: Optional[int] = None,
+                      progress=None):
     """Classify the imported geometry by what the drawing says, for drawings whose layers do not.
 
     * block names (rules ``blocks``): door / window / furniture, the innermost matching block decides;
@@ -315,32 +316,41 @@ def classify_entities(geoms: Sequence[CadGeometry], chains: Sequence[str], rules
         elif not cls[i] and g.entity == "HATCH" and not g.filled and _thickness(g.coords) >= HATCH_THICK:
             cls[i] = "hatch"
     hints: List[DoorHint] = []
+    check = progress.check if progress is not None else (lambda: None)  # cancel between the searches
+    check()
     door_idx = [i for i in range(n) if cls[i] == "door"]
     if door_idx:
         _, h = door_swings(geoms, door_idx, leaf_required=True)
         for d in h:
             d.source = "block"
         hints.extend(h)
+    check()
     if drop_door_swings and not include_doors:
         rest = [i for i in range(n) if not cls[i]]
         drop, h = door_swings(geoms, rest)
         for i in drop:
             cls[i] = "door"
         hints.extend(h)
+    check()
     weak = set(weak_layers)
     if weak:
         end = len(geoms) if aux_from is None else aux_from
         main_cls = cls[:end]
         _free_furniture(geoms[:end], main_cls, weak)
+        check()
         floor_markings(geoms[:end], main_cls, weak)
+        check()
         hints.extend(lined_doorways(geoms[:end], main_cls, weak, hints))
         cls[:end] = main_cls
     keep = np.array([c in ("", "window") or (c == "door" and include_doors) for c in cls], dtype=bool)
     if aux_from is not None:
         keep[aux_from:] = False
+    check()
     free_stair_treads(geoms, keep)
+    check()
     if drop_door_swings and not include_doors:
         hints.extend(curtain_wall_doors(geoms, keep))
+    check()
     for i, g in enumerate(geoms):
         g.cls = cls[i] or ("wall" if g.kind in ("wall", "reference") else g.kind)
     classes: Dict[str, int] = {}

@@ -355,7 +355,7 @@ def _import(path, rules, layers, units, include_doors, fallback_walls, drop_door
         weak = {name for name, info in infos.items()
                 if info.kind is not None and (info.rule.startswith("fallback") or info.rule.startswith("preserve"))}
         keep, classes, doors = classify_entities(geoms, chains, rules, include_doors, weak, drop_door_swings,
-                                                 aux_from=n_main)
+                                                 aux_from=n_main, progress=progress)
         gone = len(geoms) - int(keep.sum())
         geoms = [g for g, k in zip(geoms, keep) if k]
         if gone:

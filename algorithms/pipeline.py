@@ -158,12 +158,8 @@ def _closed_spaces(refined: AreaGraph, drawing: CadDrawing, name_rules, rstats, 
         return [], rstats.get("largest_component_share", 1.0)
     pts = semantics.room_name_points(drawing.texts, name_rules)
     closed = segmentation.closed_spaces(refined.areas, refined.passages, pts)
-    for a in refined.areas:
-        if a.id in closed:
-            a.tags["cad2osmag:closed"] = "yes"
-    if closed:
-        progress.info(f"{len(closed)} closed space(s) no passage reaches and no room name labels (wall cavities, "
-                      f"ducts, shafts: areas {', '.join(map(str, closed[:20]))}) are counted out of the connectivity")
+    _count_out(refined, closed, "cad2osmag:closed", "closed space(s) no passage reaches and no room name labels "
+               "(wall cavities, ducts, shafts", progress)
     roofs = _roof_spaces(refined, drawing, closed, rstats, progress)
     outdoor = _outdoor_spaces(refined, drawing, name_rules, list(closed) + roofs, rstats, progress)
     return closed, segmentation.connected_share(refined.areas, list(closed) + roofs + outdoor)
@@ -174,13 +170,20 @@ def _roof_spaces(refined: AreaGraph, drawing: CadDrawing, closed, rstats, progre
     tagged ``cad2osmag:roof=yes``, listed in ``rstats['roof_spaces']`` and counted out of the share."""
     roofs = segmentation.roof_spaces(refined.areas, refined.passages, drawing.texts, closed)
     rstats["roof_spaces"] = roofs
-    for a in refined.areas:
-        if a.id in roofs:
-            a.tags["cad2osmag:roof"] = "yes"
-    if roofs:
-        progress.info(f"{len(roofs)} area(s) of roofs below this floor that no passage reaches (areas "
-                      f"{', '.join(map(str, roofs[:20]))}) are counted out of the connectivity")
+    _count_out(refined, roofs, "cad2osmag:roof", "area(s) of roofs below this floor that no passage reaches (",
+               progress)
     return roofs
+
+
+def _count_out(refined: AreaGraph, ids, tag: str, what: str, progress) -> None:
+    """Tag the areas ``ids`` (``tag=yes``) and log them as counted out of the connectivity figure."""
+    for a in refined.areas:
+        if a.id in ids:
+            a.tags[tag] = "yes"
+    if ids:
+        m2 = sum(a.area for a in refined.areas if a.id in ids)
+        progress.info(f"{len(ids)} {what}, {m2:.0f} m2: areas {', '.join(map(str, list(ids)[:20]))}) are counted "
+                      "out of the connectivity")
 
 
 def _outdoor_spaces(refined: AreaGraph, drawing: CadDrawing, name_rules, counted_out, rstats, progress):
@@ -191,14 +194,8 @@ def _outdoor_spaces(refined: AreaGraph, drawing: CadDrawing, name_rules, counted
              if lab.role in ("name", "number") for x, y in [(lab.x, lab.y)] + list(lab.alts)]
     outdoor = segmentation.outdoor_spaces(refined.areas, refined.passages, names, counted_out)
     rstats["outdoor_spaces"] = outdoor
-    for a in refined.areas:
-        if a.id in outdoor:
-            a.tags["cad2osmag:outdoor"] = "yes"
-    if outdoor:
-        m2 = sum(a.area for a in refined.areas if a.id in outdoor)
-        progress.info(f"{len(outdoor)} area(s) of exterior ground outside the facade ({m2:.0f} m2: terraces, "
-                      f"landscape) that no passage reaches and no room name labels (areas "
-                      f"{', '.join(map(str, outdoor[:20]))}) are counted out of the connectivity")
+    _count_out(refined, outdoor, "cad2osmag:outdoor", "area(s) of exterior ground outside the facade that no "
+               "passage reaches and no room name labels (terraces, landscape", progress)
     return outdoor
 
 
