@@ -480,6 +480,20 @@ def test_links_join_the_same_shaft_code_and_never_two_different_codes(tmp_path):
     assert len(st["vertical"]) == 3
 
 
+def _shaft_floor(lv, shafts, dx, dy, rot=0.0):
+    """A floor of a 50 x 14 m hall holding ``shafts`` ({code: polygon}; '-P' codes are lifts, the rest
+    stairs), rotated by ``rot`` degrees about the origin and moved by (dx, dy) into its own frame."""
+    hall = box(0, 0, 50, 14)
+    areas = []
+    for k, (code, poly) in enumerate(shafts.items(), 2):
+        hall = hall.difference(poly)
+        areas.append(Area(id=k, polygon=poly, name=code, type="elevator" if "-P" in code else "stairs"))
+    areas.insert(0, Area(id=1, polygon=hall, type="corridor", name=f"hall {lv}"))
+    for a in areas:
+        a.polygon = affinity.translate(affinity.rotate(a.polygon, rot, origin=(0, 0)), dx, dy)
+    return FloorData(source=f"F{lv}.osm", areas=areas, passages=[], level=lv)
+
+
 def test_registration_residual_counts_misplacement_not_different_cuts_of_a_shaft(tmp_path):
     """Three floors in different frames (kilometres apart, one rotated 9°). Six shafts; per floor the
     segmentation cuts some differently: level 2 draws E1-ST-01 with its 2 m landing, level 3 cuts E1-ST-02's
@@ -498,15 +512,7 @@ def test_registration_residual_counts_misplacement_not_different_cuts_of_a_shaft
             shafts["E1-P2"] = box(37, 9, 39, 11)  # drawn 1 m off
         if lv == "3":
             shafts["E1-ST-02"] = box(14, 1, 17, 6)  # flight cut shorter
-        hall = box(0, 0, 50, 14)
-        areas = []
-        for k, (code, poly) in enumerate(shafts.items(), 2):
-            hall = hall.difference(poly)
-            areas.append(Area(id=k, polygon=poly, name=code, type="elevator" if "-P" in code else "stairs"))
-        areas.insert(0, Area(id=1, polygon=hall, type="corridor", name=f"hall {lv}"))
-        for a in areas:
-            a.polygon = affinity.translate(affinity.rotate(a.polygon, rot, origin=(0, 0)), dx, dy)
-        floors.append(FloorData(source=f"F{lv}.osm", areas=areas, passages=[], level=lv))
+        floors.append(_shaft_floor(lv, shafts, dx, dy, rot))
     st = fuse_floors(floors, str(tmp_path / "b.osm"), LocalFrame(0.0, 0.0), variant="fix-id")
     for lv, (dx, dy, rot) in moves.items():
         tx, ty, deg, how = st["transforms"][lv]
@@ -571,15 +577,7 @@ def test_fusion_residual_of_a_core_cut_longer_on_one_floor_is_zero(tmp_path):
             shafts["E1-ST-01"] = box(0.5, 0, 8, 3)
             shafts["E2-ST-01"] = Polygon([(18.5, 7.9), (26, 7.9), (26, 11), (18.5, 11)])
             shafts["E1-P2"] = box(44, 9.3, 46, 11.3)
-        hall = box(0, 0, 50, 14)
-        areas = []
-        for k, (code, poly) in enumerate(shafts.items(), 2):
-            hall = hall.difference(poly)
-            areas.append(Area(id=k, polygon=poly, name=code, type="elevator" if "-P" in code else "stairs"))
-        areas.insert(0, Area(id=1, polygon=hall, type="corridor", name=f"hall {lv}"))
-        for a in areas:
-            a.polygon = affinity.translate(a.polygon, dx, dy)
-        floors.append(FloorData(source=f"F{lv}.osm", areas=areas, passages=[], level=lv))
+        floors.append(_shaft_floor(lv, shafts, dx, dy))
     st = fuse_floors(floors, str(tmp_path / "b.osm"), LocalFrame(0.0, 0.0), variant="fix-id")
     lv_moved = [lv for lv, t in st["transforms"].items() if t[3] != "reference"][0]
     res = {a.split(" (")[0]: d for a, _, d in st["residuals"][lv_moved]}

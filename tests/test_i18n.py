@@ -8,6 +8,7 @@ import xml.etree.ElementTree as ET
 import pytest
 
 from .conftest import REPO, plugin_package
+from .qgis_inprocess import log_feedback
 
 LANGUAGES = ("de", "zh_CN")
 # strings allowed to stay untranslated (empty: every string is translated)
@@ -31,17 +32,8 @@ def _i18n():
 ])
 def test_plugin_speaks_the_qgis_locale(qgis_iface, qgis_app, tmp_path, locale, name, parameter, plan, help_start,
                                        log, menu):
-    from qgis.core import QgsApplication, QgsProcessingContext, QgsProcessingFeedback
+    from qgis.core import QgsApplication, QgsProcessingContext
     from qgis.PyQt.QtCore import QSettings
-
-    class Log(QgsProcessingFeedback):
-        def __init__(self):
-            super().__init__()
-            self.lines = []
-
-        def pushInfo(self, info):  # noqa: N802
-            self.lines.append(info)
-            super().pushInfo(info)
 
     settings = QSettings()
     old = settings.value("locale/userLocale", "")
@@ -73,7 +65,7 @@ def test_plugin_speaks_the_qgis_locale(qgis_iface, qgis_app, tmp_path, locale, n
         assert "feet" not in registry.algorithmById("cad2osmag:dxftoosmag").parameterDefinition("UNITS").options()
         # a log message of a real run
         sample = registry.createAlgorithmById("cad2osmag:samplebuilding")
-        feedback = Log()
+        feedback = log_feedback()
         results, ok = sample.run({"FLOORS": 1, "OUTPUT_FOLDER": str(tmp_path)}, QgsProcessingContext(), feedback)
         assert ok and results["FLOOR_COUNT"] == 1
         wrote = [line for line in feedback.lines if results["FIRST_FLOOR_DXF"] in line]
