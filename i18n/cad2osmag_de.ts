@@ -218,6 +218,16 @@ Ausgaben: OUTPUT_AREAS, die benannten Flächen (Felder name, ref, type, indoor, 
       <source>Canceled by the user.</source>
       <translation>Vom Benutzer abgebrochen.</translation>
     </message>
+    <message>
+      <location filename="../processing_provider/base.py" />
+      <source>DXF or DWG drawing</source>
+      <translation>DXF- oder DWG-Zeichnung</translation>
+    </message>
+    <message>
+      <location filename="../processing_provider/base.py" />
+      <source>Layer rules (JSON, empty = built-in defaults)</source>
+      <translation>Layer-Regeln (JSON, leer = eingebaute Regeln)</translation>
+    </message>
   </context>
   <context>
     <name>Cad2OsmagModel</name>
@@ -1429,16 +1439,6 @@ Ausgaben, in Metern im eigenen System der Zeichnung (ein lokales technisches KBS
     </message>
     <message>
       <location filename="../processing_provider/alg_extract_structure.py" />
-      <source>DXF or DWG drawing</source>
-      <translation>DXF- oder DWG-Zeichnung</translation>
-    </message>
-    <message>
-      <location filename="../processing_provider/alg_extract_structure.py" />
-      <source>Layer rules (JSON, empty = built-in defaults)</source>
-      <translation>Layer-Regeln (JSON, leer = eingebaute Regeln)</translation>
-    </message>
-    <message>
-      <location filename="../processing_provider/alg_extract_structure.py" />
       <source>Layers to keep (';' separated, overrides the rules)</source>
       <translation>Zu behaltende Layer (durch ';' getrennt, ersetzt die Regeln)</translation>
     </message>
@@ -1798,16 +1798,6 @@ Ausgaben: OUTPUT, eine Tabelle ohne Geometrie, eine Zeile je Layer (als CSV spei
     </message>
     <message>
       <location filename="../processing_provider/alg_list_layers.py" />
-      <source>DXF or DWG drawing</source>
-      <translation>DXF- oder DWG-Zeichnung</translation>
-    </message>
-    <message>
-      <location filename="../processing_provider/alg_list_layers.py" />
-      <source>Layer rules (JSON, empty = built-in defaults)</source>
-      <translation>Layer-Regeln (JSON, leer = eingebaute Regeln)</translation>
-    </message>
-    <message>
-      <location filename="../processing_provider/alg_list_layers.py" />
       <source>Layer report</source>
       <translation>Layer-Bericht</translation>
     </message>
@@ -1848,16 +1838,6 @@ Ausgaben: OUTPUT, eine Tabelle ohne Geometrie, eine Zeile je Layer (als CSV spei
       <location filename="../processing_provider/alg_list_plans.py" />
       <source>Finds the plans on a whole drawing sheet (DXF or DWG), as 'Extract structure from DXF/DWG' does, and lists every group instead of keeping one: INPUT is the drawing, LAYER_RULES the optional JSON layer rules. OUTPUT holds one rectangle per group, in metres in the drawing's own frame, with its index (the value of PLAN), kind (plan, detail, legend, other), title (e.g. '三层平面图'), width and height in metres, metres of walls, and main = true for the plan converted by default (index 0 when it is a plan). STRUCTURE (optional) holds the structure lines of the whole sheet (title frames and legends left out) to draw the sheet under the rectangles; draw an extent over it to give PLAN_EXTENT. MAIN_PLAN is the index of the main plan (-1 when the sheet holds only details). PLAN_COUNT is the number of groups and PLANS lists them as text.</source>
       <translation>Findet die Pläne auf einem ganzen Zeichnungsblatt (DXF oder DWG) wie „Bauteile aus DXF/DWG extrahieren“ und listet jede Gruppe auf, statt eine zu behalten: INPUT ist die Zeichnung, LAYER_RULES die optionalen JSON-Layer-Regeln. OUTPUT enthält ein Rechteck je Gruppe, in Metern im eigenen System der Zeichnung, mit Index (der Wert für PLAN), Art (plan, detail, legend, other), Titel (z. B. '三层平面图'), Breite und Höhe in Metern, Metern an Wänden und main = true für den Plan, der als Vorgabe umgewandelt wird (Index 0, wenn es ein Plan ist). STRUCTURE (optional) enthält die Bauteillinien des ganzen Blatts (ohne Rahmen und Legenden), um das Blatt unter den Rechtecken zu zeichnen; darüber eine Ausdehnung zeichnen, um PLAN_EXTENT anzugeben. MAIN_PLAN ist der Index des Hauptplans (-1, wenn das Blatt nur Details enthält). PLAN_COUNT ist die Anzahl der Gruppen, PLANS listet sie als Text.</translation>
-    </message>
-    <message>
-      <location filename="../processing_provider/alg_list_plans.py" />
-      <source>DXF or DWG drawing</source>
-      <translation>DXF- oder DWG-Zeichnung</translation>
-    </message>
-    <message>
-      <location filename="../processing_provider/alg_list_plans.py" />
-      <source>Layer rules (JSON, empty = built-in defaults)</source>
-      <translation>Layer-Regeln (JSON, leer = eingebaute Regeln)</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_list_plans.py" />

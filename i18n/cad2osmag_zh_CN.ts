@@ -218,6 +218,16 @@ PASSAGES（可选）：区域的通道；被拆分的区域获得各自的通道
       <source>Canceled by the user.</source>
       <translation>已被用户取消。</translation>
     </message>
+    <message>
+      <location filename="../processing_provider/base.py" />
+      <source>DXF or DWG drawing</source>
+      <translation>DXF 或 DWG 图纸</translation>
+    </message>
+    <message>
+      <location filename="../processing_provider/base.py" />
+      <source>Layer rules (JSON, empty = built-in defaults)</source>
+      <translation>图层规则（JSON，留空 = 内置规则）</translation>
+    </message>
   </context>
   <context>
     <name>Cad2OsmagModel</name>
@@ -1429,16 +1439,6 @@ LAYER_RULES：不区分大小写的关键词 JSON 文件（复制 algorithms/def
     </message>
     <message>
       <location filename="../processing_provider/alg_extract_structure.py" />
-      <source>DXF or DWG drawing</source>
-      <translation>DXF 或 DWG 图纸</translation>
-    </message>
-    <message>
-      <location filename="../processing_provider/alg_extract_structure.py" />
-      <source>Layer rules (JSON, empty = built-in defaults)</source>
-      <translation>图层规则（JSON，留空 = 内置规则）</translation>
-    </message>
-    <message>
-      <location filename="../processing_provider/alg_extract_structure.py" />
       <source>Layers to keep (';' separated, overrides the rules)</source>
       <translation>要保留的图层（以 ';' 分隔，优先于规则）</translation>
     </message>
@@ -1798,16 +1798,6 @@ LAYER_RULES：图层关键词的 JSON 文件（留空：内置规则，algorithm
     </message>
     <message>
       <location filename="../processing_provider/alg_list_layers.py" />
-      <source>DXF or DWG drawing</source>
-      <translation>DXF 或 DWG 图纸</translation>
-    </message>
-    <message>
-      <location filename="../processing_provider/alg_list_layers.py" />
-      <source>Layer rules (JSON, empty = built-in defaults)</source>
-      <translation>图层规则（JSON，留空 = 内置规则）</translation>
-    </message>
-    <message>
-      <location filename="../processing_provider/alg_list_layers.py" />
       <source>Layer report</source>
       <translation>图层报告</translation>
     </message>
@@ -1848,16 +1838,6 @@ LAYER_RULES：图层关键词的 JSON 文件（留空：内置规则，algorithm
       <location filename="../processing_provider/alg_list_plans.py" />
       <source>Finds the plans on a whole drawing sheet (DXF or DWG), as 'Extract structure from DXF/DWG' does, and lists every group instead of keeping one: INPUT is the drawing, LAYER_RULES the optional JSON layer rules. OUTPUT holds one rectangle per group, in metres in the drawing's own frame, with its index (the value of PLAN), kind (plan, detail, legend, other), title (e.g. '三层平面图'), width and height in metres, metres of walls, and main = true for the plan converted by default (index 0 when it is a plan). STRUCTURE (optional) holds the structure lines of the whole sheet (title frames and legends left out) to draw the sheet under the rectangles; draw an extent over it to give PLAN_EXTENT. MAIN_PLAN is the index of the main plan (-1 when the sheet holds only details). PLAN_COUNT is the number of groups and PLANS lists them as text.</source>
       <translation>像“从 DXF/DWG 提取建筑结构”一样查找整张图幅（DXF 或 DWG）上的平面图，并列出每一组，而不是只保留一组：INPUT 为图纸，LAYER_RULES 为可选的 JSON 图层规则。OUTPUT 为每组一个矩形，以米为单位、位于图纸自身坐标系中，字段包括序号（即 PLAN 的取值）、种类（plan、detail、legend、other）、标题（如 '三层平面图'）、宽度和高度（米）、墙体长度（米），默认转换的平面图 main = true（若序号 0 为平面图则为序号 0）。STRUCTURE（可选）为整张图幅的结构线（不含图框和图例），用于在矩形下方绘制图幅；在其上绘制范围即可给出 PLAN_EXTENT。MAIN_PLAN 为主平面图的序号（图幅上只有详图时为 -1）。PLAN_COUNT 为组数，PLANS 以文字形式列出各组。</translation>
-    </message>
-    <message>
-      <location filename="../processing_provider/alg_list_plans.py" />
-      <source>DXF or DWG drawing</source>
-      <translation>DXF 或 DWG 图纸</translation>
-    </message>
-    <message>
-      <location filename="../processing_provider/alg_list_plans.py" />
-      <source>Layer rules (JSON, empty = built-in defaults)</source>
-      <translation>图层规则（JSON，留空 = 内置规则）</translation>
     </message>
     <message>
       <location filename="../processing_provider/alg_list_plans.py" />

@@ -15,16 +15,14 @@ from qgis.core import (
     QgsProcessingParameterEnum,
     QgsProcessingParameterExtent,
     QgsProcessingParameterFeatureSink,
-    QgsProcessingParameterFile,
     QgsProcessingParameterString,
     QgsWkbTypes,
 )
 
 from ..algorithms import cad_import
 from ..algorithms.cad_sheet import describe_plans
-from ..algorithms.layer_rules import load_rules
 from ..algorithms.rasterize import LOCAL_FRAME_WKT
-from .base import CAD_FILTER, Cad2OsmagAlgorithm, FIELD_BOOL, FIELD_DOUBLE, FIELD_INT, FIELD_LONG, FIELD_STRING, make_fields
+from .base import Cad2OsmagAlgorithm, FIELD_BOOL, FIELD_DOUBLE, FIELD_INT, FIELD_LONG, FIELD_STRING, make_fields
 
 UNIT_OPTIONS = ["", "mm", "cm", "m", "inch", "feet"]
 
@@ -134,10 +132,7 @@ class ExtractStructureAlgorithm(Cad2OsmagAlgorithm):
     DOORS = "DOORS"
 
     def initAlgorithm(self, config=None):  # noqa: N802
-        self.addParameter(QgsProcessingParameterFile(self.INPUT, self.tr("DXF or DWG drawing"), fileFilter=CAD_FILTER))
-        self.addParameter(QgsProcessingParameterFile(
-            self.LAYER_RULES, self.tr("Layer rules (JSON, empty = built-in defaults)"), extension="json",
-            optional=True))
+        self.add_drawing_parameters()
         self.addParameter(QgsProcessingParameterString(
             self.LAYERS, self.tr("Layers to keep (';' separated, overrides the rules)"), optional=True))
         self.addParameter(QgsProcessingParameterEnum(
@@ -164,14 +159,12 @@ class ExtractStructureAlgorithm(Cad2OsmagAlgorithm):
         self.addOutput(QgsProcessingOutputNumber("TEXT_COUNT", self.tr("Number of texts")))
 
     def processAlgorithm(self, parameters, context, feedback):  # noqa: N802
-        path = self.parameterAsFile(parameters, self.INPUT, context)
-        rules_path = self.parameterAsFile(parameters, self.LAYER_RULES, context) or None
+        path, rules = self.drawing_and_rules(parameters, context, feedback)
         layers_txt = self.parameterAsString(parameters, self.LAYERS, context) or ""
         layers = [s.strip() for s in layers_txt.replace("\n", ";").split(";") if s.strip()] or None
         units = UNIT_OPTIONS[self.parameterAsEnum(parameters, self.UNITS, context)]
         include_doors = self.parameterAsBool(parameters, self.INCLUDE_DOORS, context)
 
-        rules = self.call(feedback, _load_rules, rules_path)
         plan = plan_argument(self, parameters, context)
         drawing = self.call(feedback, cad_import.import_dxf, path, rules=rules, layers=layers, units=units or None,
                             include_doors=include_doors, plan=plan)
@@ -239,7 +232,3 @@ class ExtractStructureAlgorithm(Cad2OsmagAlgorithm):
         if ddest is not None:
             out[self.DOORS] = ddest
         return out
-
-
-def _load_rules(path, progress=None):
-    return load_rules(path)

@@ -7,14 +7,12 @@ from qgis.core import (
     QgsProcessingOutputNumber,
     QgsProcessingOutputString,
     QgsProcessingParameterFeatureSink,
-    QgsProcessingParameterFile,
     QgsWkbTypes,
     QgsCoordinateReferenceSystem,
 )
 
 from ..algorithms import cad_import
-from ..algorithms.layer_rules import load_rules
-from .base import CAD_FILTER, Cad2OsmagAlgorithm, FIELD_BOOL, FIELD_INT, FIELD_STRING, make_fields
+from .base import Cad2OsmagAlgorithm, FIELD_BOOL, FIELD_INT, FIELD_STRING, make_fields
 
 # DXF types that get their own count column; everything else is summed in n_other
 COUNT_COLUMNS = ("LINE", "LWPOLYLINE", "POLYLINE", "ARC", "CIRCLE", "ELLIPSE", "SPLINE", "HATCH", "SOLID",
@@ -47,10 +45,7 @@ class ListLayersAlgorithm(Cad2OsmagAlgorithm):
     OUTPUT = "OUTPUT"
 
     def initAlgorithm(self, config=None):  # noqa: N802
-        self.addParameter(QgsProcessingParameterFile(self.INPUT, self.tr("DXF or DWG drawing"), fileFilter=CAD_FILTER))
-        self.addParameter(QgsProcessingParameterFile(
-            self.LAYER_RULES, self.tr("Layer rules (JSON, empty = built-in defaults)"), extension="json",
-            optional=True))
+        self.add_drawing_parameters()
         self.addParameter(QgsProcessingParameterFeatureSink(
             self.OUTPUT, self.tr("Layer report"), QgsProcessing.SourceType.TypeVector))
         self.addOutput(QgsProcessingOutputNumber("LAYER_COUNT", self.tr("Number of layers")))
@@ -58,9 +53,7 @@ class ListLayersAlgorithm(Cad2OsmagAlgorithm):
         self.addOutput(QgsProcessingOutputString("HEADER_UNIT", self.tr("Unit written in the header ($INSUNITS)")))
 
     def processAlgorithm(self, parameters, context, feedback):  # noqa: N802
-        path = self.parameterAsFile(parameters, self.INPUT, context)
-        rules_path = self.parameterAsFile(parameters, self.LAYER_RULES, context) or None
-        rules = self.call(feedback, _load_rules, rules_path)
+        path, rules = self.drawing_and_rules(parameters, context, feedback)
         drawing = self.call(feedback, cad_import.inspect_dxf, path, rules)  # reports repairs and warnings
         infos = sorted(drawing.layers.values(), key=lambda i: i.name.lower())
 
@@ -89,7 +82,3 @@ class ListLayersAlgorithm(Cad2OsmagAlgorithm):
         feedback.pushInfo(self.tr("{} layers, {} kept by the rules: {}").format(len(infos), len(kept), ", ".join(kept)))
         return {self.OUTPUT: dest, "LAYER_COUNT": len(infos), "KEPT_LAYERS": ";".join(kept),
                 "HEADER_UNIT": drawing.header_unit}
-
-
-def _load_rules(path, progress=None):
-    return load_rules(path)

@@ -12,16 +12,14 @@ from qgis.core import (
     QgsProcessingOutputNumber,
     QgsProcessingOutputString,
     QgsProcessingParameterFeatureSink,
-    QgsProcessingParameterFile,
     QgsRectangle,
     QgsWkbTypes,
 )
 
 from ..algorithms import cad_import
 from ..algorithms.cad_sheet import describe_plans
-from ..algorithms.layer_rules import load_rules
 from .alg_extract_structure import geometry_to_qgs, local_frame_crs, wall_fields
-from .base import CAD_FILTER, Cad2OsmagAlgorithm, FIELD_BOOL, FIELD_DOUBLE, FIELD_INT, FIELD_STRING, make_fields
+from .base import Cad2OsmagAlgorithm, FIELD_BOOL, FIELD_DOUBLE, FIELD_INT, FIELD_STRING, make_fields
 
 # an extent that holds any drawing: import_dxf then keeps the structure of every group on the sheet
 # (frames, title blocks and legends still left out) and still lists the groups it found
@@ -56,10 +54,7 @@ class ListPlansAlgorithm(Cad2OsmagAlgorithm):
     STRUCTURE = "STRUCTURE"
 
     def initAlgorithm(self, config=None):  # noqa: N802
-        self.addParameter(QgsProcessingParameterFile(self.INPUT, self.tr("DXF or DWG drawing"), fileFilter=CAD_FILTER))
-        self.addParameter(QgsProcessingParameterFile(
-            self.LAYER_RULES, self.tr("Layer rules (JSON, empty = built-in defaults)"), extension="json",
-            optional=True))
+        self.add_drawing_parameters()
         self.addParameter(QgsProcessingParameterFeatureSink(
             self.OUTPUT, self.tr("Plans on the sheet"), QgsProcessing.SourceType.TypeVectorPolygon))
         self.addParameter(QgsProcessingParameterFeatureSink(
@@ -70,9 +65,7 @@ class ListPlansAlgorithm(Cad2OsmagAlgorithm):
         self.addOutput(QgsProcessingOutputString("PLANS", self.tr("Plans found on the sheet")))
 
     def processAlgorithm(self, parameters, context, feedback):  # noqa: N802
-        path = self.parameterAsFile(parameters, self.INPUT, context)
-        rules_path = self.parameterAsFile(parameters, self.LAYER_RULES, context) or None
-        rules = self.call(feedback, _load_rules, rules_path)
+        path, rules = self.drawing_and_rules(parameters, context, feedback)
         drawing = self.call(feedback, cad_import.import_dxf, path, rules=rules, plan=WHOLE_SHEET)
         if feedback.isCanceled():
             return {}
@@ -112,7 +105,3 @@ class ListPlansAlgorithm(Cad2OsmagAlgorithm):
                 out[self.STRUCTURE] = sdest
         feedback.pushInfo(self.tr("Sheet: {}").format(out["PLANS"]))
         return out
-
-
-def _load_rules(path, progress=None):
-    return load_rules(path)

@@ -120,6 +120,29 @@ class Cad2OsmagAlgorithm(QgsProcessingAlgorithm):
             raise QgsProcessingException(str(exc))
 
 
+    # --- a drawing and its layer rules (every algorithm that reads a DXF/DWG) --------------------
+    def add_drawing_parameters(self):
+        """INPUT, a DXF or DWG file, and LAYER_RULES, an optional JSON file of layer keywords."""
+        from qgis.core import QgsProcessingParameterFile
+
+        self.addParameter(QgsProcessingParameterFile("INPUT", self.tr("DXF or DWG drawing"), fileFilter=CAD_FILTER))
+        self.addParameter(QgsProcessingParameterFile(
+            "LAYER_RULES", self.tr("Layer rules (JSON, empty = built-in defaults)"), extension="json",
+            optional=True))
+
+    def drawing_and_rules(self, parameters, context, feedback):
+        """(path of INPUT, the layer rules of LAYER_RULES or the built-in ones)."""
+        path = self.parameterAsFile(parameters, "INPUT", context)
+        rules_path = self.parameterAsFile(parameters, "LAYER_RULES", context) or None
+        return path, self.call(feedback, _load_rules, rules_path)
+
+
+def _load_rules(path, progress=None):
+    from ..algorithms.layer_rules import load_rules
+
+    return load_rules(path)
+
+
 def make_fields(*specs):
     """QgsFields from (name, FIELD_* type) pairs, in order."""
     fields = QgsFields()
