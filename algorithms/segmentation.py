@@ -1207,6 +1207,7 @@ def _join_cluttered_borders(labels: np.ndarray, cell_label: np.ndarray, lo, hi, 
 # --------------------------------------------------------------------------- wall-line openings
 WALL_CUTS = True
 WALL_MIN_M = 1.0  # a wall face is a straight run of at least this length (not clutter, not scan noise)
+FACE_FOLLOW = 1.0  # a wall face is followed this x WALL_MIN_M beyond its Hough segment's end
 CUT_MIN_M = 0.5  # gaps in a wall line narrower than this are scan gaps, not openings
 CUT_RATIO = 0.8  # an opening in a wall line is a door when it is narrower than this x both spaces along the line
 CUT_DEPTH = 0.5  # ... and both spaces reach at least this x the opening's width behind it
@@ -1250,6 +1251,61 @@ def _observed_walls(data: np.ndarray, space: np.ndarray) -> Optional[np.ndarray]
     return ~space & ~unknown
 
 
+FACE_JOG_PX = 1  # a scanned wall face jogs sideways by this many px: it is followed through the jog
+
+
+def _face_jog(on_wall: np.ndarray, side: np.ndarray, xs, ys, ux, uy, wall: np.ndarray, space: np.ndarray):
+    """Follow a scanned wall face through sideways jogs of ``FACE_JOG_PX``: a recorded wall is not one
+    straight pixel line (intel_map's east-room wall steps 1 px twice in 1.8 m), so the Hough segment
+    stops at the first step and the line continued from there runs inside the wall. Along the line a
+    pixel is on the wall when the line pixel or one within the jog sideways is wall, and beside space
+    when space lies within 1.5 + jog px on either side (a corner, where the wall turns, has wall on
+    both sides for longer: it still ends the face)."""
+    rows, cols = space.shape
+    j = int(FACE_JOG_PX)
+    on = on_wall.copy()
+    sd = side.copy()
+    for off in range(1, j + 1):
+        for sgn in (-off, off):
+            sx = np.clip(np.rint(xs - uy * sgn).astype(np.int64), 0, cols - 1)
+            sy = np.clip(np.rint(ys + ux * sgn).astype(np.int64), 0, rows - 1)
+            on |= wall[sy, sx]
+        for sgn in (-1.5 - off, 1.5 + off):
+            sx = np.clip(np.rint(xs - uy * sgn).astype(np.int64), 0, cols - 1)
+            sy = np.clip(np.rint(ys + ux * sgn).astype(np.int64), 0, rows - 1)
+            sd |= space[sy, sx]
+    return on, sd
+
+
+WALL_ENDS = True  # a wall line is continued from where a wall ends (a jamb), not from a corner ...
+END_THICK_M = 0.6  # ... where obstacle runs on across the line for longer than a wall is thick
+
+
+def _wall_ends(wall: np.ndarray, resolution: float, ends, dirs, k) -> np.ndarray:
+    """Whether the face that ends at each candidate opening ends as a wall does at a doorway (a jamb:
+    across the line, the obstacle at its last pixels is at most ``END_THICK_M`` thick) rather than
+    turning a corner (the obstacle runs on across the line: the outline of a block or the corner of
+    a room, whose line continued cuts open space: lab_d, a 1.6 m pier's face continued 3.3 m
+    across a hall)."""
+    rows, cols = wall.shape
+    ux, uy = dirs[:, :1], dirs[:, 1:]
+    tmax = int(math.ceil(END_THICK_M / resolution))
+    off = np.arange(0, tmax + 2, dtype=np.float64)
+    kk = np.asarray(k, np.float64)[:, None]
+    back = np.array([[1.0, 2.0]])
+    bx = ends[:, :1] + ux * (kk - back)
+    by = ends[:, 1:] + uy * (kk - back)
+    thick = np.zeros(bx.shape, np.int64)
+    for sgn in (-1.0, 1.0):
+        sx = np.clip(np.rint(bx[:, :, None] - uy[:, :, None] * sgn * off).astype(np.int64), 0, cols - 1)
+        sy = np.clip(np.rint(by[:, :, None] + ux[:, :, None] * sgn * off).astype(np.int64), 0, rows - 1)
+        w = wall[sy, sx]
+        run = np.argmin(w, axis=2)  # contiguous obstacle from the line outwards
+        run[w.all(axis=2)] = w.shape[2]
+        thick += run
+    return thick.min(axis=1) <= tmax + 1
+
+
 def _wall_line_openings(space: np.ndarray, labels: np.ndarray, resolution: float, max_cut_m: float,
                         occupied: Optional[np.ndarray] = None):
     """Openings in wall lines: a wall face that ends in free space is continued along its own line
@@ -1284,14 +1340,17 @@ def _wall_line_openings(space: np.ndarray, labels: np.ndarray, resolution: float
     # follow the wall face to its end (Hough segments stop short, by less than a wall length):
     # obstacle pixels along the line with free space beside them; an obstacle pixel with none beside
     # it is a corner (the wall turns)
-    t_face = np.arange(0, int(math.ceil(WALL_MIN_M / resolution)) + 1, dtype=np.float64)[None, :]
+    t_face = np.arange(0, int(math.ceil(FACE_FOLLOW * WALL_MIN_M / resolution)) + 1, dtype=np.float64)[None, :]
     xs, ys, inb = sample(ends[:, :1], ends[:, 1:], t_face)
     side = np.zeros(xs.shape, bool)
     for sgn in (-1.5, 1.5):
         sx = np.clip(np.rint(xs - uy * sgn).astype(np.int64), 0, cols - 1)
         sy = np.clip(np.rint(ys + ux * sgn).astype(np.int64), 0, rows - 1)
         side |= space[sy, sx]
-    along_face = wall[ys, xs] & side & inb
+    on_wall = wall[ys, xs]
+    if FACE_JOG_PX:
+        on_wall, side = _face_jog(on_wall, side, xs, ys, ux, uy, wall, space)
+    along_face = on_wall & side & inb
     k = np.argmin(along_face, axis=1)
     rr = np.arange(len(k))
     valid = ~along_face.all(axis=1) & inb[rr, k] & space[ys[rr, k], xs[rr, k]]
@@ -1304,6 +1363,8 @@ def _wall_line_openings(space: np.ndarray, labels: np.ndarray, resolution: float
     stop = np.argmin(fr, axis=1)
     # no obstacle within reach (open space, not a gap in a wall line) or the map ends first
     valid &= ~fr.all(axis=1) & inb[rr, stop] & (stop > 0)
+    if WALL_ENDS and valid.any():
+        valid &= _wall_ends(wall, resolution, ends, dirs, k)
     out = []
     seen = set()
     for i in np.flatnonzero(valid).tolist():
