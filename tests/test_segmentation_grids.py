@@ -235,7 +235,7 @@ def test_observed_walls_on_the_recorded_maps(shared_data):
 
 # ------------------------------------------------- wall faces: scanned jogs, corners are no wall ends
 def _bay_beside_jogged_wall(jog_px=1):
-    """A corridor 2.4 m wide (x 1..3.4, y 1..15) whose east wall (a 0.25 m partition, x 3.4..3.65,
+    """A recorded map (unknown beyond 0.15 m of wall): a corridor 2.4 m wide (x 1..3.4, y 1..15) whose east wall (a 0.25 m partition, x 3.4..3.65,
     y 7..15, an office behind it) ends 3 m short of a wall stub (y 1..4): behind the 3 m opening a
     4.35 x 5 m bay (x 3.65..8, y 2..7). The wall's corridor face steps ``jog_px`` into the corridor
     (both faces) for its last 0.9 m, as a scanned wall does (intel_map's east-room wall), so its Hough segment
@@ -249,6 +249,11 @@ def _bay_beside_jogged_wall(jog_px=1):
     if jog_px:  # the wall's last 0.9 m, both faces, shifted into the corridor
         img[_px(7):_px(7.9), _px(3.4) - jog_px:_px(3.4)] = OCCUPIED
         img[_px(7):_px(7.9), _px(3.65) - jog_px:_px(3.65)] = FREE
+    from scipy import ndimage as ndi
+
+    from algorithms.model import UNKNOWN
+
+    img[ndi.distance_transform_edt(img != FREE) > 3] = UNKNOWN  # recorded: unknown beyond the walls seen
     grid = OccupancyGrid(img, 0.0, img.shape[0] * RES, RES)
     return grid, (3.8, 2.2, 7.8, 6.8), (1.2, 8, 3.2, 14.8)
 
@@ -256,7 +261,8 @@ def _bay_beside_jogged_wall(jog_px=1):
 @pytest.mark.parametrize("jog", [0, 1])
 def test_jogged_wall_face_still_makes_an_opening(jog, monkeypatch):
     """A face that steps 1 px sideways before its end is followed through the step
-    (``_face_jog``): the bay behind the 3 m opening is a room, not part of the corridor."""
+    (``_face_jog``, on scanned maps: grids with unknown cells): the bay behind the 3 m opening is a
+    room, not part of the corridor."""
     monkeypatch.setattr(seg, "FACE_JOG_PX", jog)
     grid, bay, corridor = _bay_beside_jogged_wall()
     ag = seg.segment(grid)
@@ -316,3 +322,14 @@ def test_wall_ends_keep_thin_partitions():
     assert len(front) >= 4 and front <= {o[0] for o in on}
     # the corridor's walls turning into the side corridor's at the T junction are corners: dropped
     assert len(on) < len(off)
+
+
+def test_cad_rasters_do_not_jog():
+    """A binary grid (every CAD raster) draws exact lines: the face is not followed through steps
+    (the same plan without unknown cells keeps the bay in the corridor, as before the rule)."""
+    grid, bay, corridor = _bay_beside_jogged_wall()
+    from algorithms.model import UNKNOWN
+
+    data = np.where(grid.data == UNKNOWN, OCCUPIED, grid.data).astype(np.uint8)
+    ag = seg.segment(OccupancyGrid(data, grid.origin_x, grid.origin_y, RES))
+    assert _main(ag, *bay) == _main(ag, *corridor)
