@@ -1429,9 +1429,9 @@ def _wall_line_openings(space: np.ndarray, labels: np.ndarray, resolution: float
             continue
         seen.add(key)
         out.append((key, run, (float(dirs[i, 1]), float(dirs[i, 0]))))
-    if jambs:  # the second pass (``_wall_line_doors``): openings square to the wall from its end
-        return _jamb_openings(space, wall, ends[face_end], dirs[face_end], k[face_end], min_px, max_px, seen,
-                              resolution)
+    if jambs:  # also the openings square to the wall from its end (``_wall_line_doors``' second pass)
+        return out, _jamb_openings(space, wall, ends[face_end], dirs[face_end], k[face_end], min_px, max_px,
+                                   seen, resolution)
     return out
 
 
@@ -1475,7 +1475,7 @@ def _judge_opening(comp: np.ndarray, find, key, run: float, ux: float, uy: float
 
 def _split_at_wall_openings(labels: np.ndarray, space: np.ndarray, resolution: float, max_cut_m: float,
                             dist: np.ndarray, peaks: dict, grown: dict, occupied: Optional[np.ndarray] = None,
-                            jambs: bool = False, jog_px: int = 0):
+                            openings=None, jog_px: int = 0):
     """Rooms open to a corridor (or to each other) through an opening wider than a door but in a
     wall line: the wall's own line continued across the opening cuts the area in two when the
     opening is clearly narrower than the spaces on both sides measured along the line
@@ -1488,7 +1488,8 @@ def _split_at_wall_openings(labels: np.ndarray, space: np.ndarray, resolution: f
     import cv2
     from scipy import ndimage as ndi
 
-    openings = _wall_line_openings(space, labels, resolution, max_cut_m, occupied, jambs, jog_px)
+    if openings is None:
+        openings = _wall_line_openings(space, labels, resolution, max_cut_m, occupied, jog_px=jog_px)
     if not openings:
         return labels, 0
     cut_id = np.zeros(labels.shape, np.int32)
@@ -1615,12 +1616,16 @@ def _wall_line_doors(labels: np.ndarray, space: np.ndarray, dist: np.ndarray, re
     peaks: dict = {}
     grown: dict = {}
     jog = FACE_JOG_PX if scanned else 0  # CAD rasters draw exact lines: only scanned faces jog
+    jamb_ops = None
+    openings = _wall_line_openings(space, labels, resolution, max_cut_m, occupied, jambs=JAMB_CUTS, jog_px=jog)
+    if JAMB_CUTS:
+        openings, jamb_ops = openings
     labels, n_cuts = _split_at_wall_openings(labels, space, resolution, max_cut_m, dist, peaks, grown, occupied,
-                                             jog_px=jog)
+                                             openings=openings)
     stats["wall_line_doors"] = float(n_cuts)
-    if JAMB_CUTS:  # after the wall lines: a jamb's cut across a corridor is judged with the rooms already apart
+    if jamb_ops:  # after the wall lines: a jamb's cut across a corridor is judged with the rooms already apart
         labels, n_jambs = _split_at_wall_openings(labels, space, resolution, max_cut_m, dist, peaks, grown,
-                                                  occupied, jambs=True, jog_px=jog)
+                                                  occupied, openings=jamb_ops)
         stats["jamb_doors"] = float(n_jambs)
     if peaks or grown:
         top = max(list(peaks) + list(grown))
