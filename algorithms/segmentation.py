@@ -1207,6 +1207,7 @@ def _join_cluttered_borders(labels: np.ndarray, cell_label: np.ndarray, lo, hi, 
 # --------------------------------------------------------------------------- wall-line openings
 WALL_CUTS = True
 WALL_MIN_M = 1.0  # a wall face is a straight run of at least this length (not clutter, not scan noise)
+FACE_FOLLOW = 1.0  # a wall face is followed this x WALL_MIN_M beyond its Hough segment's end
 CUT_MIN_M = 0.5  # gaps in a wall line narrower than this are scan gaps, not openings
 CUT_RATIO = 0.8  # an opening in a wall line is a door when it is narrower than this x both spaces along the line
 CUT_DEPTH = 0.5  # ... and both spaces reach at least this x the opening's width behind it
@@ -1250,8 +1251,113 @@ def _observed_walls(data: np.ndarray, space: np.ndarray) -> Optional[np.ndarray]
     return ~space & ~unknown
 
 
+FACE_JOG_PX = 1  # a scanned wall face jogs sideways by this many px: it is followed through the jog
+
+
+def _face_jog(on_wall: np.ndarray, side: np.ndarray, xs, ys, ux, uy, wall: np.ndarray, space: np.ndarray,
+              jog_px: int = FACE_JOG_PX):
+    """Follow a scanned wall face through sideways jogs of ``FACE_JOG_PX``: a recorded wall is not one
+    straight pixel line (intel_map's east-room wall steps 1 px twice in 1.8 m), so the Hough segment
+    stops at the first step and the line continued from there runs inside the wall. Along the line a
+    pixel is on the wall when the line pixel or one within the jog sideways is wall, and beside space
+    when space lies within 1.5 + jog px on either side (a corner, where the wall turns, has wall on
+    both sides for longer: it still ends the face)."""
+    rows, cols = space.shape
+    j = int(jog_px)
+    on = on_wall.copy()
+    sd = side.copy()
+    for off in range(1, j + 1):
+        for sgn in (-off, off):
+            sx = np.clip(np.rint(xs - uy * sgn).astype(np.int64), 0, cols - 1)
+            sy = np.clip(np.rint(ys + ux * sgn).astype(np.int64), 0, rows - 1)
+            on |= wall[sy, sx]
+        for sgn in (-1.5 - off, 1.5 + off):
+            sx = np.clip(np.rint(xs - uy * sgn).astype(np.int64), 0, cols - 1)
+            sy = np.clip(np.rint(ys + ux * sgn).astype(np.int64), 0, rows - 1)
+            sd |= space[sy, sx]
+    return on, sd
+
+
+WALL_ENDS = True  # a wall line is continued from where a wall ends (a jamb), not from a corner ...
+END_THICK_M = 0.6  # ... where obstacle runs on across the line for longer than a wall is thick
+
+
+def _wall_ends(wall: np.ndarray, resolution: float, ends, dirs, k) -> np.ndarray:
+    """Whether the face that ends at each candidate opening ends as a wall does at a doorway (a jamb:
+    across the line, the obstacle at its last pixels is at most ``END_THICK_M`` thick) rather than
+    turning a corner (the obstacle runs on across the line: the outline of a block or the corner of
+    a room, whose line continued cuts open space: lab_d, a 1.6 m pier's face continued 3.3 m
+    across a hall)."""
+    rows, cols = wall.shape
+    ux, uy = dirs[:, :1], dirs[:, 1:]
+    tmax = int(math.ceil(END_THICK_M / resolution))
+    off = np.arange(0, tmax + 2, dtype=np.float64)
+    kk = np.asarray(k, np.float64)[:, None]
+    back = np.array([[1.0, 2.0]])
+    bx = ends[:, :1] + ux * (kk - back)
+    by = ends[:, 1:] + uy * (kk - back)
+    thick = np.zeros(bx.shape, np.int64)
+    for sgn in (-1.0, 1.0):
+        sx = np.clip(np.rint(bx[:, :, None] - uy[:, :, None] * sgn * off).astype(np.int64), 0, cols - 1)
+        sy = np.clip(np.rint(by[:, :, None] + ux[:, :, None] * sgn * off).astype(np.int64), 0, rows - 1)
+        w = wall[sy, sx]
+        run = np.argmin(w, axis=2)  # contiguous obstacle from the line outwards
+        run[w.all(axis=2)] = w.shape[2]
+        thick += run
+    return thick.min(axis=1) <= tmax + 1
+
+
+JAMB_CUTS = False  # openings also run from a wall's end across to the next obstacle, square to the wall
+
+
+def _jamb_openings(space: np.ndarray, wall: np.ndarray, ends, dirs, k, min_px: float, max_px: float, seen: set,
+                   resolution: float):
+    """Openings from a wall's end (a jamb) square to the wall: from the wall's last pixel, across
+    the free space beside it to the next obstacle (``min_px`` .. ``max_px`` long). A room open onto
+    a corridor beside the end of a wall (intel_map's corner room: the wall between it and the next
+    room ends where the corridor turns, and the room's open side runs from that end to the block
+    opposite) has its opening there, not along the wall's line. Judged like every wall-line opening
+    (``_judge_opening``). Returns entries as ``_wall_line_openings``."""
+    rows, cols = space.shape
+    ux, uy = dirs[:, :1], dirs[:, 1:]
+    last = np.asarray(k, np.float64)[:, None] - 1.0
+    px = ends[:, :1] + ux * last
+    py = ends[:, 1:] + uy * last
+    thick_px = int(math.ceil(END_THICK_M / resolution)) + 1
+    t = np.arange(1, int(math.ceil(max_px)) + thick_px + 3, dtype=np.float64)[None, :]
+    out = []
+    for sgn in (-1.0, 1.0):
+        nx, ny = -uy * sgn, ux * sgn
+        xs = np.rint(px + nx * t).astype(np.int64)
+        ys = np.rint(py + ny * t).astype(np.int64)
+        inb = (xs >= 0) & (xs < cols) & (ys >= 0) & (ys < rows)
+        xs, ys = np.clip(xs, 0, cols - 1), np.clip(ys, 0, rows - 1)
+        # through the wall's own thickness first (the face may be either of its two faces)
+        w = wall[ys, xs] & inb
+        skip = np.argmin(w, axis=1)
+        rr = np.arange(len(skip))
+        fr = space[ys, xs] & inb & (np.arange(t.shape[1])[None, :] >= skip[:, None])
+        after = np.where(np.arange(t.shape[1])[None, :] < skip[:, None], True, fr)
+        stop = np.argmin(after, axis=1)
+        ok = (~after.all(axis=1) & (skip <= thick_px) & fr[rr, skip] & (stop > skip) & inb[rr, stop]
+              & wall[ys[rr, stop], xs[rr, stop]])
+        for i in np.flatnonzero(ok).tolist():
+            st = int(stop[i])
+            s0 = int(skip[i])
+            key = (int(xs[i, s0]), int(ys[i, s0]), int(xs[i, st - 1]), int(ys[i, st - 1]))
+            run = math.hypot(key[2] - key[0], key[3] - key[1]) + 1.0
+            if run < min_px or run > max_px:
+                continue
+            rkey = (key[2], key[3], key[0], key[1])
+            if key in seen or rkey in seen:
+                continue
+            seen.add(key)
+            out.append((key, run, (float(ny[i, 0]), float(nx[i, 0]))))
+    return out
+
+
 def _wall_line_openings(space: np.ndarray, labels: np.ndarray, resolution: float, max_cut_m: float,
-                        occupied: Optional[np.ndarray] = None):
+                        occupied: Optional[np.ndarray] = None, jambs: bool = False, jog_px: int = 0):
     """Openings in wall lines: a wall face that ends in free space is continued along its own line
     to the next obstacle; runs of free space between ``CUT_MIN_M`` and ``max_cut_m`` long are
     candidate openings. Returns a list of ((x0, y0, x1, y1) px ends of the free run, length px,
@@ -1284,17 +1390,23 @@ def _wall_line_openings(space: np.ndarray, labels: np.ndarray, resolution: float
     # follow the wall face to its end (Hough segments stop short, by less than a wall length):
     # obstacle pixels along the line with free space beside them; an obstacle pixel with none beside
     # it is a corner (the wall turns)
-    t_face = np.arange(0, int(math.ceil(WALL_MIN_M / resolution)) + 1, dtype=np.float64)[None, :]
+    t_face = np.arange(0, int(math.ceil(FACE_FOLLOW * WALL_MIN_M / resolution)) + 1, dtype=np.float64)[None, :]
     xs, ys, inb = sample(ends[:, :1], ends[:, 1:], t_face)
     side = np.zeros(xs.shape, bool)
     for sgn in (-1.5, 1.5):
         sx = np.clip(np.rint(xs - uy * sgn).astype(np.int64), 0, cols - 1)
         sy = np.clip(np.rint(ys + ux * sgn).astype(np.int64), 0, rows - 1)
         side |= space[sy, sx]
-    along_face = wall[ys, xs] & side & inb
+    on_wall = wall[ys, xs]
+    if jog_px:  # scanned maps: faces step sideways (``_face_jog``)
+        on_wall, side = _face_jog(on_wall, side, xs, ys, ux, uy, wall, space, jog_px)
+    along_face = on_wall & side & inb
     k = np.argmin(along_face, axis=1)
     rr = np.arange(len(k))
     valid = ~along_face.all(axis=1) & inb[rr, k] & space[ys[rr, k], xs[rr, k]]
+    if WALL_ENDS and valid.any():
+        valid &= _wall_ends(wall, resolution, ends, dirs, k)
+    face_end = valid.copy()
     # then the gap: free pixels along the line up to the next obstacle
     t = np.arange(0, int(math.ceil(max_px)) + 6, dtype=np.float64)[None, :]
     x0 = ends[:, :1] + ux * k[:, None]
@@ -1317,6 +1429,9 @@ def _wall_line_openings(space: np.ndarray, labels: np.ndarray, resolution: float
             continue
         seen.add(key)
         out.append((key, run, (float(dirs[i, 1]), float(dirs[i, 0]))))
+    if jambs:  # also the openings square to the wall from its end (``_wall_line_doors``' second pass)
+        return out, _jamb_openings(space, wall, ends[face_end], dirs[face_end], k[face_end], min_px, max_px,
+                                   seen, resolution)
     return out
 
 
@@ -1359,7 +1474,8 @@ def _judge_opening(comp: np.ndarray, find, key, run: float, ux: float, uy: float
 
 
 def _split_at_wall_openings(labels: np.ndarray, space: np.ndarray, resolution: float, max_cut_m: float,
-                            dist: np.ndarray, peaks: dict, grown: dict, occupied: Optional[np.ndarray] = None):
+                            dist: np.ndarray, peaks: dict, grown: dict, occupied: Optional[np.ndarray] = None,
+                            openings=None, jog_px: int = 0):
     """Rooms open to a corridor (or to each other) through an opening wider than a door but in a
     wall line: the wall's own line continued across the opening cuts the area in two when the
     opening is clearly narrower than the spaces on both sides measured along the line
@@ -1372,7 +1488,8 @@ def _split_at_wall_openings(labels: np.ndarray, space: np.ndarray, resolution: f
     import cv2
     from scipy import ndimage as ndi
 
-    openings = _wall_line_openings(space, labels, resolution, max_cut_m, occupied)
+    if openings is None:
+        openings = _wall_line_openings(space, labels, resolution, max_cut_m, occupied, jog_px=jog_px)
     if not openings:
         return labels, 0
     cut_id = np.zeros(labels.shape, np.int32)
@@ -1491,14 +1608,25 @@ def _split_at_wall_openings(labels: np.ndarray, space: np.ndarray, resolution: f
 
 
 def _wall_line_doors(labels: np.ndarray, space: np.ndarray, dist: np.ndarray, resolution: float,
-                     max_cut_m: float, group_peak: np.ndarray, stats: dict, occupied: Optional[np.ndarray] = None):
+                     max_cut_m: float, group_peak: np.ndarray, stats: dict, occupied: Optional[np.ndarray] = None,
+                     scanned: bool = False):
     """``_split_at_wall_openings`` on the merged labels; new areas get their clearance peak.
     Returns (labels, group_peak)."""
     t = time.perf_counter()
     peaks: dict = {}
     grown: dict = {}
-    labels, n_cuts = _split_at_wall_openings(labels, space, resolution, max_cut_m, dist, peaks, grown, occupied)
+    jog = FACE_JOG_PX if scanned else 0  # CAD rasters draw exact lines: only scanned faces jog
+    jamb_ops = None
+    openings = _wall_line_openings(space, labels, resolution, max_cut_m, occupied, jambs=JAMB_CUTS, jog_px=jog)
+    if JAMB_CUTS:
+        openings, jamb_ops = openings
+    labels, n_cuts = _split_at_wall_openings(labels, space, resolution, max_cut_m, dist, peaks, grown, occupied,
+                                             openings=openings)
     stats["wall_line_doors"] = float(n_cuts)
+    if jamb_ops:  # after the wall lines: a jamb's cut across a corridor is judged with the rooms already apart
+        labels, n_jambs = _split_at_wall_openings(labels, space, resolution, max_cut_m, dist, peaks, grown,
+                                                  occupied, openings=jamb_ops)
+        stats["jamb_doors"] = float(n_jambs)
     if peaks or grown:
         top = max(list(peaks) + list(grown))
         if top >= len(group_peak):
@@ -2042,7 +2170,8 @@ def segment(grid: OccupancyGrid, door_width: float = DEFAULT_DOOR_WIDTH,
         labels, group_peak = _join_cluttered_borders(labels, cell_label, lo, hi, border, group_peak, stats)
     if WALL_CUTS:
         labels, group_peak = _wall_line_doors(labels, space, dist, res, max(door_width + delta, envelope_gap),
-                                              group_peak, stats, _observed_walls(data, space))
+                                              group_peak, stats, _observed_walls(data, space),
+                                              scanned=bool((data == UNKNOWN).any()))
     labels, group_peak, dropped_px = _drop_outside_pockets(labels, free & ~interior, group_peak,
                                                            info.get("claimed"), info.get("inside_pixels"))
     info.pop("claimed", None)

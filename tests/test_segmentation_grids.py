@@ -103,10 +103,12 @@ def test_corridor_leaving_a_hall_is_not_cut_off():
 
 @pytest.mark.slow
 def test_wall_line_rule_on_the_shared_robot_maps(shared_data):
-    """The five grid_gt maps with the default widths, rule on and off (measured 2026-12-01, before ->
-    after: Freiburg101 0.906 -> 0.906, freiburg_building52 0.970 -> 0.970, intel_map 0.621 -> 0.671,
-    lab_a 0.918 -> 0.928, lab_d 0.955 -> 0.955; mean 0.874 -> 0.886). No map gets worse, the mean
-    rises; on intel_map offices open to the corridor through 1.8-3.9 m openings become areas."""
+    """The five grid_gt maps with the default widths: rule off, the session-4 rule (no jogs, lines
+    from corners too) and the rule now (measured 2026-12-02, off -> session 4 -> now: Freiburg101 0.906
+    -> 0.906 -> 0.906, freiburg_building52 0.970 (all three), intel_map 0.621 -> 0.687 -> 0.741, lab_a
+    0.918 -> 0.928 -> 0.931, lab_d 0.955 (all three); mean 0.874 -> 0.889 -> 0.901). No map gets
+    worse, the mean rises; on intel_map offices open to the corridor through 1.8-3.9 m openings become
+    areas, and the bay east of the arc (its wall's face steps sideways before its end)."""
     import sys
     from pathlib import Path
 
@@ -117,24 +119,28 @@ def test_wall_line_rule_on_the_shared_robot_maps(shared_data):
 
     folder = shared_data / "grid_gt"
     scores = {}
+    settings = {"off": dict(WALL_CUTS=False), "s4": dict(FACE_JOG_PX=0, WALL_ENDS=False), "on": {}}
     for m in load_maps(folder):
         grid = _read_map(folder / "input" / f"{m['name']}.png", m["resolution"])
         gt = read_gt_image(str(folder / "gt" / f"{m['name']}.png"))
-        for on in (False, True):
-            seg.WALL_CUTS = on
+        for key, flags in settings.items():
+            saved = {k: getattr(seg, k) for k in flags}
+            for k, v in flags.items():
+                setattr(seg, k, v)
             try:
                 ag = seg.segment(grid)
             finally:
-                seg.WALL_CUTS = True
-            scores[(m["name"], on)] = evaluate(ag.labels, gt)["mcc"]
+                for k, v in saved.items():
+                    setattr(seg, k, v)
+            scores[(m["name"], key)] = evaluate(ag.labels, gt)["mcc"]
     names = sorted({n for n, _ in scores})
     for n in names:
-        assert scores[(n, True)] >= scores[(n, False)] - 0.002, (n, scores)
-    mean_on = np.mean([scores[(n, True)] for n in names])
-    mean_off = np.mean([scores[(n, False)] for n in names])
-    assert mean_on >= mean_off + 0.01, (mean_on, mean_off)
-    assert mean_on >= 0.88, scores
-    assert scores[("intel_map", True)] >= 0.66, scores
+        assert scores[(n, "s4")] >= scores[(n, "off")] - 0.002, (n, scores)
+        assert scores[(n, "on")] >= scores[(n, "s4")] - 0.002, (n, scores)
+    mean = {k: np.mean([scores[(n, k)] for n in names]) for k in settings}
+    assert mean["s4"] >= mean["off"] + 0.01, mean
+    assert mean["on"] >= 0.90, (mean, scores)
+    assert scores[("intel_map", "on")] >= scores[("intel_map", "s4")] + 0.04, scores
 
 
 # ----------------------------------------------------------------- recorded maps: unknown is no wall
@@ -231,3 +237,105 @@ def test_observed_walls_on_the_recorded_maps(shared_data):
         assert scores[(n, True)] >= scores[(n, False)] - 0.002, (n, scores)
     assert scores[("lab_a", True)] >= scores[("lab_a", False)] + 0.015, scores
     assert np.mean([scores[(n, True)] for n in names]) >= 0.87, scores
+
+
+# ------------------------------------------------- wall faces: scanned jogs, corners are no wall ends
+def _bay_beside_jogged_wall(jog_px=1):
+    """A recorded map (unknown beyond 0.15 m of wall): a corridor 2.4 m wide (x 1..3.4, y 1..15) whose east wall (a 0.25 m partition, x 3.4..3.65,
+    y 7..15, an office behind it) ends 3 m short of a wall stub (y 1..4): behind the 3 m opening a
+    4.35 x 5 m bay (x 3.65..8, y 2..7). The wall's corridor face steps ``jog_px`` into the corridor
+    (both faces) for its last 0.9 m, as a scanned wall does (intel_map's east-room wall), so its Hough segment
+    stops 0.9 m short of the wall's end."""
+    img = np.full((_px(16), _px(9)), OCCUPIED, np.uint8)
+    _free(img, 1, 1, 3.4, 15)  # corridor
+    _free(img, 3.4, 4, 3.65, 7)  # the opening in the wall line
+    _free(img, 3.65, 2, 8, 7)  # bay
+    _free(img, 3.65, 7.15, 8, 15)  # office behind the partition ...
+    _free(img, 3.4, 11, 3.65, 11.9)  # ... through a 0.9 m door
+    if jog_px:  # the wall's last 0.9 m, both faces, shifted into the corridor
+        img[_px(7):_px(7.9), _px(3.4) - jog_px:_px(3.4)] = OCCUPIED
+        img[_px(7):_px(7.9), _px(3.65) - jog_px:_px(3.65)] = FREE
+    from scipy import ndimage as ndi
+
+    from algorithms.model import UNKNOWN
+
+    img[ndi.distance_transform_edt(img != FREE) > 3] = UNKNOWN  # recorded: unknown beyond the walls seen
+    grid = OccupancyGrid(img, 0.0, img.shape[0] * RES, RES)
+    return grid, (3.8, 2.2, 7.8, 6.8), (1.2, 8, 3.2, 14.8)
+
+
+@pytest.mark.parametrize("jog", [0, 1])
+def test_jogged_wall_face_still_makes_an_opening(jog, monkeypatch):
+    """A face that steps 1 px sideways before its end is followed through the step
+    (``_face_jog``, on scanned maps: grids with unknown cells): the bay behind the 3 m opening is a
+    room, not part of the corridor."""
+    monkeypatch.setattr(seg, "FACE_JOG_PX", jog)
+    grid, bay, corridor = _bay_beside_jogged_wall()
+    ag = seg.segment(grid)
+    if jog:
+        assert _main(ag, *bay) != _main(ag, *corridor)
+        d = _labels_in(ag, *bay)
+        assert max(d.values()) >= 0.97 * sum(d.values()), d
+    else:  # the failure the rule fixes: the face is lost at its step, the bay joins the corridor
+        assert _main(ag, *bay) == _main(ag, *corridor)
+
+
+def _hall_with_pier():
+    """An 8.3 x 8 m hall (x 1..9.3, y 1..9) with a 1.6 m thick pier standing out 3.5 m from its
+    north wall (x 6..7.6, y 1..4.5; 1.7 m from the east wall) and a 1.6 x 0.7 m cabinet against its
+    south wall (x 5.2..6.8, y 8.3..9), as in lab_d: the pier's west face, continued south, meets the
+    cabinet 3.8 m further, with the hall running on beyond both ends: a wall line, but from a corner
+    (the pier's outline turns), not from a wall's end."""
+    img = np.full((_px(10), _px(10.3)), OCCUPIED, np.uint8)
+    _free(img, 1, 1, 9.3, 9)
+    img[_px(1):_px(4.5), _px(6):_px(7.6)] = OCCUPIED
+    img[_px(8.3):_px(9), _px(5.2):_px(6.8)] = OCCUPIED
+    return OccupancyGrid(img, 0.0, img.shape[0] * RES, RES)
+
+
+def _from_pier(ops):
+    """Openings continuing the pier's west or east face (x 6 or 7.6 m) south of it."""
+    return [o for o in ops if min(abs(o[0][0] - _px(6)), abs(o[0][0] - _px(7.6))) <= 2 and o[0][1] >= _px(4.4)]
+
+
+def test_pier_face_continued_is_no_opening(monkeypatch):
+    """The line of a thick pier's face continued across the hall is no wall-line opening
+    (``_wall_ends``: across the line the pier is 1.6 m thick at the face's end, a corner); with the
+    rule off it is a 3.8 m candidate. The hall is one area."""
+    grid = _hall_with_pier()
+    space = grid.data == FREE
+    assert not _from_pier(seg._wall_line_openings(space, space.astype(np.int32), RES, 4.0))
+    ag = seg.segment(grid)
+    hall = _labels_in(ag, 1.2, 1.2, 9.1, 8.1)
+    assert max(hall.values()) >= 0.97 * sum(hall.values()), hall
+    monkeypatch.setattr(seg, "WALL_ENDS", False)
+    ops = _from_pier(seg._wall_line_openings(space, space.astype(np.int32), RES, 4.0))
+    assert ops and max(o[1] for o in ops) * RES >= 3.5, ops
+
+
+def test_wall_ends_keep_thin_partitions():
+    """The ends of 0.15 m partitions (office fronts, door jambs) are wall ends: every opening in the
+    offices' fronts is still a candidate."""
+    grid, _, _, _ = _offices_on_corridor()
+    space = grid.data == FREE
+    on = seg._wall_line_openings(space, space.astype(np.int32), RES, 4.0)
+    seg.WALL_ENDS = False
+    try:
+        off = seg._wall_line_openings(space, space.astype(np.int32), RES, 4.0)
+    finally:
+        seg.WALL_ENDS = True
+    front = {o[0] for o in off if max(o[0][1], o[0][3]) <= _px(5.15)}  # the office fronts' openings
+    assert len(front) >= 4 and front <= {o[0] for o in on}
+    # the corridor's walls turning into the side corridor's at the T junction are corners: dropped
+    assert len(on) < len(off)
+
+
+def test_cad_rasters_do_not_jog():
+    """A binary grid (every CAD raster) draws exact lines: the face is not followed through steps
+    (the same plan without unknown cells keeps the bay in the corridor, as before the rule)."""
+    grid, bay, corridor = _bay_beside_jogged_wall()
+    from algorithms.model import UNKNOWN
+
+    data = np.where(grid.data == UNKNOWN, OCCUPIED, grid.data).astype(np.uint8)
+    ag = seg.segment(OccupancyGrid(data, grid.origin_x, grid.origin_y, RES))
+    assert _main(ag, *bay) == _main(ag, *corridor)
