@@ -518,9 +518,16 @@ def building_interior(free: np.ndarray, resolution: float, envelope_gap: float =
         scales += [r for r in (rcf, 2.0 * rcf) if 2.0 * r <= max(free.shape)]
     # the envelope and the footprint scale exactly (their arcs decide bites), larger scales coarsely
     pad = int(math.ceil(scales[1] if len(scales) > 1 else rc0)) + 2
-    dist = _edt(np.pad(passable, pad, mode="constant", constant_values=True))
-    check()
-    reach0 = _reach(_outside_centres(dist, rc0), rc0, pad)
+    shared = info.pop("_free_dist", None)  # supported_boundary's transform of the same free space, if any
+    if (shared is not None and shared.get("free") is free and passable is free and shared["pad"] == pad
+            and shared["rc0"] == rc0):
+        dist = shared["dist"]
+        reach0 = shared["reach"] if "reach" in shared else _reach(shared["centres"], rc0, pad)
+    else:
+        dist = _edt(np.pad(passable, pad, mode="constant", constant_values=True))
+        check()
+        reach0 = _reach(_outside_centres(dist, rc0), rc0, pad)
+    del shared
     check()
     interior0 = free & ~reach0
     # what the disk leaves in the corners of the outside (up to rc0^2: corners of 50 degrees and more)
@@ -628,12 +635,38 @@ def supported_boundary(free: np.ndarray, boundary: np.ndarray, resolution: float
     if boundary is None or not boundary.any():
         return None
     rc0 = max(1.0, envelope_gap / 2.0 / resolution)
-    pad = int(math.ceil(rc0)) + 2
-    reach_a = _reach(_outside_centres(_edt(np.pad(free, pad, mode="constant", constant_values=True)), rc0), rc0,
-                     pad)
+    # the envelope disk on the free space alone: computed with building_interior's padding and handed to
+    # it (``info["_free_dist"]``), which needs the same distance transform when no line is kept
+    pad = _envelope_pad(free.shape, resolution, envelope_gap)
+    dist_a = _edt(np.pad(free, pad, mode="constant", constant_values=True))
+    out_a = _outside_centres(dist_a, rc0)
+    shared = {"free": free, "pad": pad, "rc0": rc0, "dist": dist_a, "centres": out_a}
+    if info is not None:
+        info["_free_dist"] = shared
+    # the lines take away the disk centres within rc0 of them: the distance to the free space's walls
+    # and lines is the smaller of the two distances
+    centres_b = (dist_a > rc0) & ~_near(np.pad(boundary, pad, mode="constant", constant_values=False), rc0)
+    _, lab_b = cv2.connectedComponents(centres_b.view(np.uint8), connectivity=8, ltype=cv2.CV_32S)
+    out_b = (lab_b == lab_b[0, 0]) if lab_b[0, 0] else np.zeros(lab_b.shape, bool)
+    del lab_b, centres_b
+    removed = out_a & ~out_b
+    if not removed.any():  # the lines stop no disk from outside: they close nothing
+        return None
+    reach_a = _reach(out_a, rc0, pad)
+    shared["reach"] = reach_a
+    # the reach without the removed centres differs only within rc0 of them
+    reach_b = reach_a.copy()
+    rows, cols = free.shape
+    r0, r1, c0, c1 = _bbox(removed)
+    m = int(math.ceil(rc0)) + 1
+    ra, rb, ca, cb = max(r0 - m, pad), min(r1 + 1 + m, rows + pad), max(c0 - m, pad), min(c1 + 1 + m, cols + pad)
+    if ra < rb and ca < cb:
+        w = m + 2
+        wa, wb, wc, wd = max(ra - w, 0), min(rb + w, out_b.shape[0]), max(ca - w, 0), min(cb + w, out_b.shape[1])
+        e = _edt(~out_b[wa:wb, wc:wd])[ra - wa:rb - wa, ca - wc:cb - wc]
+        reach_b[ra - pad:rb - pad, ca - pad:cb - pad] = ~(e > rc0)
+    del out_b, removed
     walk = free & ~boundary
-    reach_b = _reach(_outside_centres(_edt(np.pad(walk, pad, mode="constant", constant_values=True)), rc0), rc0,
-                     pad)
     cand = walk & reach_a & ~reach_b
     if not cand.any():
         return None
@@ -645,9 +678,17 @@ def supported_boundary(free: np.ndarray, boundary: np.ndarray, resolution: float
     keep = np.zeros(n, bool)
     if n0 > 1 and big0.any():
         keep = _opens_onto(lab, n, lab0, n0, big0, max(1, int(round(MIN_CONTACT_M / resolution))))
-    clearance = _edt(cand)
+    # the widest clearance of each piece: the distance transform on the pieces' box (a ring of non-piece
+    # pixels around it keeps it exact)
+    r0, r1, c0, c1 = _bbox(cand)
+    ya, yb, xa, xb = max(r0 - 1, 0), min(r1 + 2, rows), max(c0 - 1, 0), min(c1 + 2, cols)
+    box = np.zeros((yb - ya + 2, xb - xa + 2), bool)
+    box[1:-1, 1:-1] = cand[ya:yb, xa:xb]
+    clearance = _edt(box)[1:-1, 1:-1]
+    sub = lab[ya:yb, xa:xb]
+    inside = sub > 0
     widest = np.zeros(n)
-    np.maximum.at(widest, lab.ravel(), clearance.ravel())
+    np.maximum.at(widest, sub[inside], clearance[inside])
     keep &= widest >= 0.5 * BOUNDARY_MIN_WIDTH_M / resolution
     if inside_points is not None and len(inside_points):
         pts = np.rint(np.asarray(inside_points, dtype=np.float64).reshape(-1, 2) - 0.5).astype(np.int64)
@@ -664,6 +705,37 @@ def supported_boundary(free: np.ndarray, boundary: np.ndarray, resolution: float
     near = cv2.dilate(space.view(np.uint8), np.ones((5, 5), np.uint8)) > 0
     out = boundary & near
     return out if out.any() else None
+
+
+def _bbox(mask: np.ndarray) -> Tuple[int, int, int, int]:
+    """(first row, last row, first col, last col) of the True pixels of a non-empty mask."""
+    rows = np.flatnonzero(mask.any(axis=1))
+    cols = np.flatnonzero(mask.any(axis=0))
+    return int(rows[0]), int(rows[-1]), int(cols[0]), int(cols[-1])
+
+
+def _near(mask: np.ndarray, r: float) -> np.ndarray:
+    """Pixels within ``r`` px (exact Euclidean distance <= r) of a True pixel of ``mask``: the distance
+    transform on the box of the True pixels grown by r (no pixel farther out can be that near)."""
+    out = np.zeros(mask.shape, bool)
+    if not mask.any():
+        return out
+    r0, r1, c0, c1 = _bbox(mask)
+    m = int(math.ceil(r)) + 1
+    ya, yb, xa, xb = max(r0 - m, 0), min(r1 + 1 + m, mask.shape[0]), max(c0 - m, 0), min(c1 + 1 + m, mask.shape[1])
+    out[ya:yb, xa:xb] = ~(_edt(~mask[ya:yb, xa:xb]) > r)
+    return out
+
+
+def _envelope_pad(shape, resolution: float, envelope_gap: float, footprint_gap: Optional[float] = None) -> int:
+    """The padding of building_interior's distance transform (the largest exactly computed disk + 2)."""
+    rc0 = max(1.0, envelope_gap / 2.0 / resolution)
+    fgap = FOOTPRINT_FACTOR * envelope_gap if footprint_gap is None else float(footprint_gap)
+    scales = [rc0]
+    if fgap > envelope_gap:
+        rcf = fgap / 2.0 / resolution
+        scales += [r for r in (rcf, 2.0 * rcf) if 2.0 * r <= max(shape)]
+    return int(math.ceil(scales[1] if len(scales) > 1 else rc0)) + 2
 
 
 def _narrow_pockets(space: np.ndarray, dist: np.ndarray, resolution: float) -> Optional[np.ndarray]:
@@ -1958,6 +2030,7 @@ def segment(grid: OccupancyGrid, door_width: float = DEFAULT_DOOR_WIDTH,
         binfo: dict = {}
         progress.check()
         boundary = supported_boundary(free, boundary, res, envelope_gap, pix_pts, binfo)
+        info["_free_dist"] = binfo.pop("_free_dist", None)  # the envelope transform, reused when no line is kept
         stats["boundary_px"] = float(boundary.sum()) if boundary is not None else 0.0
     interior, envelope = building_interior(free, res, envelope_gap, inside_points=pix_pts, info=info,
                                            footprint=footprint, progress=progress, boundary=boundary)

@@ -203,3 +203,109 @@ def test_bounds_growth_in_one_pass_equals_the_per_geometry_loop(seed):
     with warnings.catch_warnings():
         warnings.simplefilter("ignore", RuntimeWarning)
         assert _grow_to_touching(geoms, box) == _grow_reference(geoms, box)
+
+
+def _supported_boundary_reference(free, boundary, resolution, envelope_gap=4.0, inside_points=None, info=None):
+    """segmentation.supported_boundary as it was (five whole-raster distance transforms)."""
+    import math
+
+    import cv2
+
+    from algorithms.segmentation import (BOUNDARY_MIN_WIDTH_M, CLAIM_FACTOR, FOOTPRINT_FACTOR, MIN_CONTACT_M,
+                                         _edt, _opens_onto, _outside_centres, _reach)
+
+    if boundary is None or not boundary.any():
+        return None
+    rc0 = max(1.0, envelope_gap / 2.0 / resolution)
+    pad = int(math.ceil(rc0)) + 2
+    reach_a = _reach(_outside_centres(_edt(np.pad(free, pad, mode="constant", constant_values=True)), rc0), rc0,
+                     pad)
+    walk = free & ~boundary
+    reach_b = _reach(_outside_centres(_edt(np.pad(walk, pad, mode="constant", constant_values=True)), rc0), rc0,
+                     pad)
+    cand = walk & reach_a & ~reach_b
+    if not cand.any():
+        return None
+    n, lab = cv2.connectedComponents(cand.view(np.uint8), connectivity=4, ltype=cv2.CV_32S)
+    interior0 = free & ~reach_a
+    n0, lab0, st0, _ = cv2.connectedComponentsWithStats(interior0.view(np.uint8), connectivity=4, ltype=cv2.CV_32S)
+    big0 = st0[:, cv2.CC_STAT_AREA] >= rc0 * rc0
+    big0[0] = False
+    keep = np.zeros(n, bool)
+    if n0 > 1 and big0.any():
+        keep = _opens_onto(lab, n, lab0, n0, big0, max(1, int(round(MIN_CONTACT_M / resolution))))
+    clearance = _edt(cand)
+    widest = np.zeros(n)
+    np.maximum.at(widest, lab.ravel(), clearance.ravel())
+    keep &= widest >= 0.5 * BOUNDARY_MIN_WIDTH_M / resolution
+    if inside_points is not None and len(inside_points):
+        pts = np.rint(np.asarray(inside_points, dtype=np.float64).reshape(-1, 2) - 0.5).astype(np.int64)
+        ok = (pts[:, 0] >= 0) & (pts[:, 0] < free.shape[1]) & (pts[:, 1] >= 0) & (pts[:, 1] < free.shape[0])
+        keep[lab[pts[ok, 1], pts[ok, 0]]] = True
+    size = np.bincount(lab.ravel(), minlength=n)
+    keep &= size * resolution ** 2 <= (CLAIM_FACTOR * FOOTPRINT_FACTOR * envelope_gap) ** 2
+    keep[0] = False
+    if not keep.any():
+        return None
+    space = keep[lab]
+    if info is not None:
+        info["space"] = space
+    near = cv2.dilate(space.view(np.uint8), np.ones((5, 5), np.uint8)) > 0
+    out = boundary & near
+    return out if out.any() else None
+
+
+def _building_with_lines(seed, shape=(170, 230)):
+    """A walled building (rc0 = 10 px at 0.2 m/px) with a recess 22-34 px wide open to the outside, a
+    doorway from it into the rooms and, on most seeds, a projection line across its mouth; plus random
+    lines in the landscape and across the image edge, some touching walls."""
+    import cv2
+
+    rng = np.random.default_rng(seed)
+    img = np.ones(shape, np.uint8)
+    r0, c0 = int(rng.integers(3, 40)), int(rng.integers(3, 50))
+    r1, c1 = int(rng.integers(120, shape[0] - 3)), int(rng.integers(160, shape[1] - 3))
+    cv2.rectangle(img, (c0, r0), (c1, r1), 0, 2)
+    cv2.line(img, ((c0 + c1) // 2, r0), ((c0 + c1) // 2, r1), 0, 2)  # two rooms
+    img[r0 + 20:r0 + 24, (c0 + c1) // 2 - 1:(c0 + c1) // 2 + 2] = 1  # doorway between them
+    w = int(rng.integers(22, 35))  # recess in the bottom facade, open downwards
+    x = int(rng.integers(c0 + 10, c1 - w - 10))
+    depth = int(rng.integers(20, 40))
+    img[r1 - depth:r1 + 2, x:x + w] = 1
+    cv2.rectangle(img, (x - 2, r1 - depth - 2), (x + w + 1, r1 + 1), 0, 2)
+    img[r1 - depth:r1 + 5, x:x + w] = 1
+    img[r1 - depth - 5:r1 - depth, x + 4:x + 4 + int(rng.integers(6, 14))] = 1  # doorway into the rooms
+    bnd = np.zeros(shape, np.uint8)
+    if seed % 4:
+        cv2.line(bnd, (x - 1, r1), (x + w, r1), 1, 1)  # the projection line across the mouth
+    for _ in range(int(rng.integers(0, 5))):
+        p = (int(rng.integers(-20, shape[1] + 20)), int(rng.integers(-20, shape[0] + 20)))
+        q = (p[0] + int(rng.integers(-60, 60)), p[1] + int(rng.integers(-60, 60)))
+        cv2.line(bnd, p, q, 1, 1)
+    for _ in range(10):  # pillars and specks
+        r, c = int(rng.integers(0, shape[0])), int(rng.integers(0, shape[1]))
+        img[r:r + int(rng.integers(1, 4)), c:c + int(rng.integers(1, 4))] = 0
+    return img.astype(bool), bnd.astype(bool)
+
+
+def test_supported_boundary_equals_the_whole_raster_version():
+    """The envelope disk with and without the lines, cut to where the lines take disk centres away,
+    and the transform handed on to building_interior: the same kept lines and spaces as before."""
+    from algorithms.segmentation import building_interior, supported_boundary
+
+    kept = 0
+    for seed in range(24):
+        free, bnd = _building_with_lines(seed)
+        pts = np.array([[5.0, 5.0]]) if seed % 5 == 0 else None
+        ref_info, info = {}, {}
+        ref = _supported_boundary_reference(free, bnd, 0.2, 4.0, pts, ref_info)
+        got = supported_boundary(free, bnd, 0.2, 4.0, pts, info)
+        assert (got is None) == (ref is None), seed
+        if ref is not None:
+            kept += 1
+            assert np.array_equal(got, ref) and np.array_equal(info["space"], ref_info["space"]), seed
+        # building_interior reuses the handed-on transform only where it is the same computation
+        a = building_interior(free, 0.2, 4.0, footprint=True, boundary=got, info={"_free_dist": info.get("_free_dist")})
+        b = building_interior(free, 0.2, 4.0, footprint=True, boundary=got)
+        assert np.array_equal(a[0], b[0]) and np.array_equal(a[1], b[1]), seed
+    assert kept >= 12  # the lines across the mouth close a space on most seeds
