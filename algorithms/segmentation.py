@@ -519,10 +519,13 @@ def building_interior(free: np.ndarray, resolution: float, envelope_gap: float =
     # the envelope and the footprint scale exactly (their arcs decide bites), larger scales coarsely
     pad = int(math.ceil(scales[1] if len(scales) > 1 else rc0)) + 2
     shared = info.pop("_free_dist", None)  # supported_boundary's transform of the same free space, if any
-    if (shared is not None and shared.get("free") is free and passable is free and shared["pad"] == pad
-            and shared["rc0"] == rc0):
+    reuse = (shared is not None and shared.get("free") is free and unknown is None and shared["pad"] == pad
+             and shared["rc0"] == rc0)
+    if reuse and boundary is None:
         dist = shared["dist"]
         reach0 = shared["reach"] if "reach" in shared else _reach(shared["centres"], rc0, pad)
+    elif reuse and boundary.any() and _tie_free(rc0) and _tie_free(scales[1] if len(scales) > 1 else rc0):  # the kept lines are walls for the disk: the same transform, updated near them
+        dist, reach0 = _with_lines(shared, boundary, scales[1] if len(scales) > 1 else rc0)
     else:
         dist = _edt(np.pad(passable, pad, mode="constant", constant_values=True))
         check()
@@ -635,6 +638,8 @@ def supported_boundary(free: np.ndarray, boundary: np.ndarray, resolution: float
     if boundary is None or not boundary.any():
         return None
     rc0 = max(1.0, envelope_gap / 2.0 / resolution)
+    if not (_tie_free(rc0) and _tie_free(0.5 * BOUNDARY_MIN_WIDTH_M / resolution)):
+        return _supported_boundary_whole(free, boundary, resolution, envelope_gap, inside_points, info)
     # the envelope disk on the free space alone: computed with building_interior's padding and handed to
     # it (``info["_free_dist"]``), which needs the same distance transform when no line is kept
     pad = _envelope_pad(free.shape, resolution, envelope_gap)
@@ -649,35 +654,18 @@ def supported_boundary(free: np.ndarray, boundary: np.ndarray, resolution: float
     _, lab_b = cv2.connectedComponents(centres_b.view(np.uint8), connectivity=8, ltype=cv2.CV_32S)
     out_b = (lab_b == lab_b[0, 0]) if lab_b[0, 0] else np.zeros(lab_b.shape, bool)
     del lab_b, centres_b
-    removed = out_a & ~out_b
-    if not removed.any():  # the lines stop no disk from outside: they close nothing
+    if not (out_a & ~out_b).any():  # the lines stop no disk from outside: they close nothing
         return None
     reach_a = _reach(out_a, rc0, pad)
     shared["reach"] = reach_a
-    # the reach without the removed centres differs only within rc0 of them
-    reach_b = reach_a.copy()
+    reach_b = _reach_without(reach_a, out_a, out_b, rc0, pad)
+    del out_b
     rows, cols = free.shape
-    r0, r1, c0, c1 = _bbox(removed)
-    m = int(math.ceil(rc0)) + 1
-    ra, rb, ca, cb = max(r0 - m, pad), min(r1 + 1 + m, rows + pad), max(c0 - m, pad), min(c1 + 1 + m, cols + pad)
-    if ra < rb and ca < cb:
-        w = m + 2
-        wa, wb, wc, wd = max(ra - w, 0), min(rb + w, out_b.shape[0]), max(ca - w, 0), min(cb + w, out_b.shape[1])
-        e = _edt(~out_b[wa:wb, wc:wd])[ra - wa:rb - wa, ca - wc:cb - wc]
-        reach_b[ra - pad:rb - pad, ca - pad:cb - pad] = ~(e > rc0)
-    del out_b, removed
     walk = free & ~boundary
     cand = walk & reach_a & ~reach_b
     if not cand.any():
         return None
     n, lab = cv2.connectedComponents(cand.view(np.uint8), connectivity=4, ltype=cv2.CV_32S)
-    interior0 = free & ~reach_a
-    n0, lab0, st0, _ = cv2.connectedComponentsWithStats(interior0.view(np.uint8), connectivity=4, ltype=cv2.CV_32S)
-    big0 = st0[:, cv2.CC_STAT_AREA] >= rc0 * rc0
-    big0[0] = False
-    keep = np.zeros(n, bool)
-    if n0 > 1 and big0.any():
-        keep = _opens_onto(lab, n, lab0, n0, big0, max(1, int(round(MIN_CONTACT_M / resolution))))
     # the widest clearance of each piece: the distance transform on the pieces' box (a ring of non-piece
     # pixels around it keeps it exact)
     r0, r1, c0, c1 = _bbox(cand)
@@ -689,6 +677,51 @@ def supported_boundary(free: np.ndarray, boundary: np.ndarray, resolution: float
     inside = sub > 0
     widest = np.zeros(n)
     np.maximum.at(widest, sub[inside], clearance[inside])
+    return _kept_lines(free, boundary, resolution, envelope_gap, inside_points, info, n, lab, reach_a, widest)
+
+
+def _tie_free(r: float) -> bool:
+    """True when no pixel distance (the square root of an integer) lies within 1e-4 of ``r``: OpenCV's
+    distance transform is exact to about 1e-6 but not bit-identical between a window and the whole
+    raster, so the windowed shortcuts are taken only where a comparison with ``r`` cannot tip."""
+    k = int(round(r * r))
+    return all(abs(math.sqrt(j) - r) > 1e-4 for j in (max(k - 1, 0), k, k + 1))
+
+
+def _supported_boundary_whole(free, boundary, resolution, envelope_gap, inside_points, info):
+    """supported_boundary on whole-raster transforms (where a radius sits on a pixel distance)."""
+    import cv2
+
+    rc0 = max(1.0, envelope_gap / 2.0 / resolution)
+    pad = int(math.ceil(rc0)) + 2
+    reach_a = _reach(_outside_centres(_edt(np.pad(free, pad, mode="constant", constant_values=True)), rc0), rc0,
+                     pad)
+    walk = free & ~boundary
+    reach_b = _reach(_outside_centres(_edt(np.pad(walk, pad, mode="constant", constant_values=True)), rc0), rc0,
+                     pad)
+    cand = walk & reach_a & ~reach_b
+    if not cand.any():
+        return None
+    n, lab = cv2.connectedComponents(cand.view(np.uint8), connectivity=4, ltype=cv2.CV_32S)
+    clearance = _edt(cand)
+    widest = np.zeros(n)
+    np.maximum.at(widest, lab.ravel(), clearance.ravel())
+    return _kept_lines(free, boundary, resolution, envelope_gap, inside_points, info, n, lab, reach_a, widest)
+
+
+def _kept_lines(free, boundary, resolution, envelope_gap, inside_points, info, n, lab, reach_a, widest):
+    """The end of supported_boundary: which candidate pieces (``lab``, 1..n-1) are kept, and the lines
+    along them."""
+    import cv2
+
+    rc0 = max(1.0, envelope_gap / 2.0 / resolution)
+    interior0 = free & ~reach_a
+    n0, lab0, st0, _ = cv2.connectedComponentsWithStats(interior0.view(np.uint8), connectivity=4, ltype=cv2.CV_32S)
+    big0 = st0[:, cv2.CC_STAT_AREA] >= rc0 * rc0
+    big0[0] = False
+    keep = np.zeros(n, bool)
+    if n0 > 1 and big0.any():
+        keep = _opens_onto(lab, n, lab0, n0, big0, max(1, int(round(MIN_CONTACT_M / resolution))))
     keep &= widest >= 0.5 * BOUNDARY_MIN_WIDTH_M / resolution
     if inside_points is not None and len(inside_points):
         pts = np.rint(np.asarray(inside_points, dtype=np.float64).reshape(-1, 2) - 0.5).astype(np.int64)
@@ -705,6 +738,44 @@ def supported_boundary(free: np.ndarray, boundary: np.ndarray, resolution: float
     near = cv2.dilate(space.view(np.uint8), np.ones((5, 5), np.uint8)) > 0
     out = boundary & near
     return out if out.any() else None
+
+
+def _reach_without(reach_a: np.ndarray, out_a: np.ndarray, out_b: np.ndarray, rc: float, pad: int) -> np.ndarray:
+    """``_reach(out_b, rc, pad)`` from ``reach_a = _reach(out_a, rc, pad)`` when ``out_b`` is a subset of
+    ``out_a`` (padded frame): the reach changes only within rc of the removed centres, where it is
+    recomputed from the centres within reach of that window."""
+    removed = out_a & ~out_b
+    reach_b = reach_a.copy()
+    if not removed.any():
+        return reach_b
+    rows, cols = reach_a.shape
+    r0, r1, c0, c1 = _bbox(removed)
+    m = int(math.ceil(rc)) + 1
+    ra, rb, ca, cb = max(r0 - m, pad), min(r1 + 1 + m, rows + pad), max(c0 - m, pad), min(c1 + 1 + m, cols + pad)
+    if ra < rb and ca < cb:
+        w = m + 2
+        wa, wb, wc, wd = max(ra - w, 0), min(rb + w, out_b.shape[0]), max(ca - w, 0), min(cb + w, out_b.shape[1])
+        e = _edt(~out_b[wa:wb, wc:wd])[ra - wa:rb - wa, ca - wc:cb - wc]
+        reach_b[ra - pad:rb - pad, ca - pad:cb - pad] = ~(e > rc)
+    return reach_b
+
+
+def _with_lines(shared: dict, lines: np.ndarray, rc_max: float):
+    """building_interior's padded transform and envelope reach of ``free & ~lines`` from those of ``free``
+    (``shared``, from supported_boundary): the distance to the lines is computed on their box grown by
+    ``rc_max`` + 1 and is the smaller one there; farther out both distances exceed rc_max, the largest
+    radius it is compared with (the transform is exact up to rc_max + 1, which is all it is used for)."""
+    pad, rc0 = shared["pad"], shared["rc0"]
+    lp = np.pad(lines, pad, mode="constant", constant_values=False)
+    dist = shared["dist"].copy()
+    r0, r1, c0, c1 = _bbox(lp)
+    m = int(math.ceil(rc_max)) + 1
+    ya, yb, xa, xb = max(r0 - m, 0), min(r1 + 1 + m, lp.shape[0]), max(c0 - m, 0), min(c1 + 1 + m, lp.shape[1])
+    np.minimum(dist[ya:yb, xa:xb], _edt(~lp[ya:yb, xa:xb]), out=dist[ya:yb, xa:xb])
+    del lp
+    out_b = _outside_centres(dist, rc0)
+    reach_a = shared["reach"] if "reach" in shared else _reach(shared["centres"], rc0, pad)
+    return dist, _reach_without(reach_a, shared["centres"], out_b, rc0, pad)
 
 
 def _bbox(mask: np.ndarray) -> Tuple[int, int, int, int]:
