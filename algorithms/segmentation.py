@@ -1161,11 +1161,20 @@ def _drop_outside_pockets(labels: np.ndarray, outside: np.ndarray, group_peak: n
         return labels, group_peak, 0
     total = np.zeros(n + 1, np.int64)
     open_ = np.zeros(n + 1, np.int64)
-    for axis in (0, 1):
-        a, b = (labels[:-1, :], labels[1:, :]) if axis == 0 else (labels[:, :-1], labels[:, 1:])
-        oa, ob = (outside[:-1, :], outside[1:, :]) if axis == 0 else (outside[:, :-1], outside[:, 1:])
-        diff = a != b
-        total += np.bincount(a[diff], minlength=n + 1) + np.bincount(b[diff], minlength=n + 1)
+    # the 4-neighbour pairs (p, p + step) of the flat raster whose labels differ; outside pixels carry no
+    # label, so every labelled-outside pair is one of them
+    flat = np.ascontiguousarray(labels).ravel()
+    out_flat = np.ascontiguousarray(outside).ravel()
+    cols = labels.shape[1]
+    for step in (cols, 1):
+        diff = flat[:-step] != flat[step:]
+        if step == 1:
+            diff[cols - 1::cols] = False  # no pair from the end of a row to the start of the next
+        idx = np.flatnonzero(diff)
+        del diff
+        a, b = flat[idx], flat[idx + step]
+        oa, ob = out_flat[idx], out_flat[idx + step]
+        total += np.bincount(a, minlength=n + 1) + np.bincount(b, minlength=n + 1)
         open_ += np.bincount(a[(a > 0) & ob], minlength=n + 1) + np.bincount(b[(b > 0) & oa], minlength=n + 1)
     drop = open_ >= OUTSIDE_CONTACT * np.maximum(total, 1)
     if claimed is not None and claimed.any():

@@ -70,6 +70,31 @@ def test_sist_output_is_pinned(name, tmp_path):
     _check(name, src, tmp_path)
 
 
+# the segmentation of one original DWG sheet (projection lines kept as boundary evidence: supported_boundary's
+# windowed path): sha256 of the rasterized grid (stages 1-2 of pipeline.process_floor) and of the label raster
+DWG_SHEET = "sist-original/SIST-F5.dwg"
+DWG_PINNED = {"grid": "b56b49e946cdc21c8f937d1f14a680170be91ea03ddee686d008de7b92183bf8",
+              "labels": "32366eee0d457285f37234ad92d9c32728d55ad528ae6de9f2e755dbfac073d9"}
+
+
+def _dwg_digests(fr):
+    return {"grid": hashlib.sha256(fr.grid.data.tobytes()).hexdigest(),
+            "labels": hashlib.sha256(fr.seg.labels.astype(np.int32).tobytes()).hexdigest()}
+
+
+@pytest.mark.slow
+def test_dwg_sheet_segmentation_is_pinned(floor_cache):
+    """On the session's cached conversion of SIST-F5.dwg (shared with test_sist_connect): no extra run."""
+    src = SHARED_DATA / "dwg" / DWG_SHEET
+    if not src.exists():
+        pytest.skip(f"shared data missing: {src}")
+    got = _dwg_digests(floor_cache.process_floor(src))
+    if got["grid"] != DWG_PINNED["grid"]:
+        pytest.fail(f"{DWG_SHEET}: the rasterized grid changed (import or rasterize changed on purpose?): the pinned "
+                    "segmentation applies to the old grid; re-pin both with python -m tests.test_speed_equivalence")
+    assert got["labels"] == DWG_PINNED["labels"], f"{DWG_SHEET}: the segmentation of the same grid changed"
+
+
 if __name__ == "__main__":  # print the digests to re-pin after an intended rule change
     import tempfile
 
@@ -77,6 +102,7 @@ if __name__ == "__main__":  # print the digests to re-pin after an intended rule
     srcs = {"sample-F1": _sample_f1(tmp), **{n: SIST / f"{n}.dxf" for n in ("SIST-F1", "SIST-F5")}}
     for name, src in srcs.items():
         print(name, *_digest(src, tmp / f"{name}.osm"))
+    print(DWG_SHEET, _dwg_digests(pipeline.process_floor(str(SHARED_DATA / "dwg" / DWG_SHEET))))
 
 
 # ------------------------------------------------------------------ rewritten helpers vs their plain versions
@@ -318,3 +344,42 @@ def test_supported_boundary_equals_the_whole_raster_version():
     ref = _supported_boundary_reference(free, bnd, 0.2, 4.0, None, ref_info)
     assert ref is not None and np.array_equal(supported_boundary(free, bnd, 0.2, 4.0, None, info), ref)
     assert "_free_dist" not in info and np.array_equal(info["space"], ref_info["space"])
+
+
+def _outside_contact_reference(labels, outside):
+    """The outline and open-to-outside pixel-edge counts of segmentation._drop_outside_pockets as they were."""
+    n = int(labels.max())
+    total = np.zeros(n + 1, np.int64)
+    open_ = np.zeros(n + 1, np.int64)
+    for axis in (0, 1):
+        a, b = (labels[:-1, :], labels[1:, :]) if axis == 0 else (labels[:, :-1], labels[:, 1:])
+        oa, ob = (outside[:-1, :], outside[1:, :]) if axis == 0 else (outside[:, :-1], outside[:, 1:])
+        diff = a != b
+        total += np.bincount(a[diff], minlength=n + 1) + np.bincount(b[diff], minlength=n + 1)
+        open_ += np.bincount(a[(a > 0) & ob], minlength=n + 1) + np.bincount(b[(b > 0) & oa], minlength=n + 1)
+    return total, open_
+
+
+@pytest.mark.parametrize("seed", range(6))
+def test_drop_outside_pockets_counts_the_same_edges_as_the_per_axis_version(seed):
+    """The flat-raster pairs (no pair across a row end) give the same counts, hence the same areas dropped."""
+    import cv2
+
+    from algorithms.segmentation import OUTSIDE_CONTACT, _drop_outside_pockets
+
+    rng = np.random.default_rng(seed)
+    shape = (int(rng.integers(5, 90)), int(rng.integers(5, 90)))
+    coarse = rng.integers(0, 7, (shape[0] // 4 + 1, shape[1] // 4 + 1)).astype(np.float32)
+    labels = cv2.resize(coarse, (shape[1], shape[0]), interpolation=cv2.INTER_NEAREST).astype(np.int32)
+    outside = (labels == 0) & (rng.random(shape) < 0.7)
+    total, open_ = _outside_contact_reference(labels, outside)
+    drop = open_ >= OUTSIDE_CONTACT * np.maximum(total, 1)
+    drop[0] = False
+    peaks = np.arange(labels.max() + 1, dtype=np.float64)
+    got, got_peaks, dropped = _drop_outside_pockets(labels, outside, peaks)
+    assert dropped == int(drop[labels].sum())
+    kept = np.flatnonzero(~drop[1:]) + 1
+    assert got_peaks.tolist() == [0.0] + peaks[kept].tolist()
+    lut = np.zeros(len(drop), np.int32)
+    lut[kept] = np.arange(1, len(kept) + 1)
+    assert np.array_equal(got, lut[labels])
