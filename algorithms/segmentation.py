@@ -206,8 +206,8 @@ def _coarse_reach(passable: np.ndarray, rc: float, target_px: float = 32.0) -> n
     return reach
 
 
-def _opens_onto(lab: np.ndarray, n: int, lab0: np.ndarray, n0: int, big0: np.ndarray, min_contact: int
-                ) -> np.ndarray:
+def _opens_onto(lab: np.ndarray, n: int, lab0: np.ndarray, n0: int, big0: np.ndarray, min_contact: int,
+                pairs=None) -> np.ndarray:
     """Which candidate pieces (``lab`` 1..n-1) open onto the enclosed interior: pieces and interior
     pockets (``lab0`` 1..n0-1) touching along at least ``min_contact`` pixel edges are linked, and a
     piece is kept when its links reach an interior component that is a real space (``big0``), not a
@@ -219,7 +219,7 @@ def _opens_onto(lab: np.ndarray, n: int, lab0: np.ndarray, n0: int, big0: np.nda
     # the pieces are 4-connected components of the candidates, so they never touch each other:
     # only piece-pocket contacts link them
     ca, cb = [], []
-    for src, nb, _ in _boundary_pairs(lab):
+    for src, nb, _ in (_boundary_pairs(lab) if pairs is None else pairs):
         b = lab0.ravel()[nb]
         m = b > 0
         ca.append(lab.ravel()[src[m]])
@@ -261,7 +261,7 @@ def _boundary_pairs(lab: np.ndarray):
         yield src[keep], nb[keep], (dr, dc)
 
 
-def _space_shaped(lab: np.ndarray, n: int, interior0: np.ndarray, out_free: np.ndarray) -> np.ndarray:
+def _space_shaped(lab: np.ndarray, n: int, interior0: np.ndarray, out_free: np.ndarray, pairs=None) -> np.ndarray:
     """Which candidate pieces are spaces rather than corners of the outside: a piece is kept when it
     is a bite of the outside disk into a room (at least ``BITE_CONTACT`` of its outline runs along
     ``interior0``, the enclosed rooms) or when it is deep behind its opening (area >= ``DEEP_SPACE`` x chord^2,
@@ -277,7 +277,7 @@ def _space_shaped(lab: np.ndarray, n: int, interior0: np.ndarray, out_free: np.n
     flat = lab.ravel()
     i0 = interior0.ravel()
     of = out_free.ravel()
-    for src, nb, _ in _boundary_pairs(lab):
+    for src, nb, _ in (_boundary_pairs(lab) if pairs is None else pairs):
         ids = flat[src]
         total += np.bincount(ids, minlength=n)
         contact += np.bincount(ids[i0[nb]], minlength=n)
@@ -572,8 +572,9 @@ def building_interior(free: np.ndarray, resolution: float, envelope_gap: float =
         if k == 0 and not footprint:
             keep[:] = False
         elif k == 0:  # footprint: keep what opens onto the enclosed interior and is a space of its own
-            keep = _opens_onto(lab, n, lab0, n0, big0, min_contact) & _space_shaped(lab, n, big0[lab0],
-                                                                                     free & reach)
+            pairs = list(_boundary_pairs(lab))  # (``pairs``: the pieces' outline, walked once for both tests)
+            keep = (_opens_onto(lab, n, lab0, n0, big0, min_contact, pairs)
+                    & _space_shaped(lab, n, big0[lab0], free & reach, pairs))
         # a space proven enclosed by a disk of diameter D is believed up to (CLAIM_FACTOR x D)^2:
         # larger ones are the gaps between drawings on a sheet, forecourts, the street
         size = np.bincount(lab.ravel(), minlength=n)
@@ -650,7 +651,11 @@ def supported_boundary(free: np.ndarray, boundary: np.ndarray, resolution: float
         info["_free_dist"] = shared
     # the lines take away the disk centres within rc0 of them: the distance to the free space's walls
     # and lines is the smaller of the two distances
-    centres_b = (dist_a > rc0) & ~_near(np.pad(boundary, pad, mode="constant", constant_values=False), rc0)
+    near = _near(np.pad(boundary, pad, mode="constant", constant_values=False), rc0)
+    if not (near & out_a).any():  # no disk from outside comes within rc0 of a line: they close nothing
+        return None
+    centres_b = (dist_a > rc0) & ~near
+    del near
     _, lab_b = cv2.connectedComponents(centres_b.view(np.uint8), connectivity=8, ltype=cv2.CV_32S)
     out_b = (lab_b == lab_b[0, 0]) if lab_b[0, 0] else np.zeros(lab_b.shape, bool)
     del lab_b, centres_b
