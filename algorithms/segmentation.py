@@ -261,7 +261,8 @@ def _boundary_pairs(lab: np.ndarray):
         yield src[keep], nb[keep], (dr, dc)
 
 
-def _space_shaped(lab: np.ndarray, n: int, interior0: np.ndarray, out_free: np.ndarray, pairs=None) -> np.ndarray:
+def _space_shaped(lab: np.ndarray, n: int, interior0: np.ndarray, out_free: np.ndarray, pairs=None,
+                  area: Optional[np.ndarray] = None) -> np.ndarray:
     """Which candidate pieces are spaces rather than corners of the outside: a piece is kept when it
     is a bite of the outside disk into a room (at least ``BITE_CONTACT`` of its outline runs along
     ``interior0``, the enclosed rooms) or when it is deep behind its opening (area >= ``DEEP_SPACE`` x chord^2,
@@ -286,7 +287,7 @@ def _space_shaped(lab: np.ndarray, n: int, interior0: np.ndarray, out_free: np.n
             rc = np.stack(np.divmod(src[cut], cols), 1)
             np.minimum.at(cmin, ids[cut], rc)
             np.maximum.at(cmax, ids[cut], rc)
-    area = np.bincount(flat, minlength=n).astype(np.float64)
+    area = (np.bincount(flat, minlength=n) if area is None else area).astype(np.float64)  # (``area``: pixels per piece)
     span = np.where(cmax[:, :1] >= 0, cmax - cmin + 1, 0).astype(np.float64)
     chord2 = (span ** 2).sum(axis=1)
     ok = (contact >= BITE_CONTACT * np.maximum(total, 1)) | (area >= DEEP_SPACE * chord2)
@@ -567,17 +568,19 @@ def building_interior(free: np.ndarray, resolution: float, envelope_gap: float =
         cand = free & reach0 & ~reach & ~claimed
         if not cand.any():
             continue
-        n, lab = cv2.connectedComponents(cand.view(np.uint8), connectivity=4, ltype=cv2.CV_32S)
+        # the sizes from the labelling's statistics (a bincount of the raster costs more than the stats)
+        n, lab, st, _ = cv2.connectedComponentsWithStats(cand.view(np.uint8), connectivity=4, ltype=cv2.CV_32S)
+        size = st[:, cv2.CC_STAT_AREA].astype(np.int64)
+        del st
         keep = np.zeros(n, bool)
         if k == 0 and not footprint:
             keep[:] = False
         elif k == 0:  # footprint: keep what opens onto the enclosed interior and is a space of its own
             pairs = list(_boundary_pairs(lab))  # (``pairs``: the pieces' outline, walked once for both tests)
             keep = (_opens_onto(lab, n, lab0, n0, big0, min_contact, pairs)
-                    & _space_shaped(lab, n, big0[lab0], free & reach, pairs))
+                    & _space_shaped(lab, n, big0[lab0], free & reach, pairs, size))
         # a space proven enclosed by a disk of diameter D is believed up to (CLAIM_FACTOR x D)^2:
         # larger ones are the gaps between drawings on a sheet, forecourts, the street
-        size = np.bincount(lab.ravel(), minlength=n)
         small = size <= ((CLAIM_FACTOR if k == 0 else 1.0) * 2.0 * rc) ** 2
         rest = []
         for c, r in open_pts:

@@ -78,8 +78,14 @@ DWG_PINNED = {"grid": "b56b49e946cdc21c8f937d1f14a680170be91ea03ddee686d008de7b9
 
 
 def _dwg_digests(fr):
-    return {"grid": hashlib.sha256(fr.grid.data.tobytes()).hexdigest(),
-            "labels": hashlib.sha256(fr.seg.labels.astype(np.int32).tobytes()).hexdigest()}
+    """The grid, and the segmentation's areas (ids, clearances, outlines) and passages (the label raster is
+    not used: the stair/lift carving repaints it in place later in process_floor)."""
+    h = hashlib.sha256()
+    for a in fr.segmented.areas:
+        h.update(f"{a.id} {a.max_clearance!r} ".encode() + a.polygon.wkb)
+    for p in fr.segmented.passages:
+        h.update(f"{p.from_id} {p.to_id} ".encode() + p.line.wkb)
+    return {"grid": hashlib.sha256(fr.grid.data.tobytes()).hexdigest(), "areas": h.hexdigest()}
 
 
 @pytest.mark.slow
@@ -92,7 +98,7 @@ def test_dwg_sheet_segmentation_is_pinned(floor_cache):
     if got["grid"] != DWG_PINNED["grid"]:
         pytest.fail(f"{DWG_SHEET}: the rasterized grid changed (import or rasterize changed on purpose?): the pinned "
                     "segmentation applies to the old grid; re-pin both with python -m tests.test_speed_equivalence")
-    assert got["labels"] == DWG_PINNED["labels"], f"{DWG_SHEET}: the segmentation of the same grid changed"
+    assert got["areas"] == DWG_PINNED["areas"], f"{DWG_SHEET}: the segmentation of the same grid changed"
 
 
 if __name__ == "__main__":  # print the digests to re-pin after an intended rule change
