@@ -304,6 +304,13 @@ def _chord_pockets(claimed: np.ndarray, free_out: np.ndarray, max_chord: float =
     those lenses (to be claimed too). ``max_chord`` > 0: only cut pieces at most that long (px)."""
     import cv2
 
+    full = np.zeros(claimed.shape, bool)
+    if not claimed.any():
+        return full
+    # everything happens within a pixel of the claimed space: work on its box grown by two pixels
+    r0, r1, c0, c1 = _bbox(claimed)
+    box = (slice(max(r0 - 2, 0), min(r1 + 3, claimed.shape[0])), slice(max(c0 - 2, 0), min(c1 + 3, claimed.shape[1])))
+    claimed, free_out = np.ascontiguousarray(claimed[box]), free_out[box]
     cut = free_out & (cv2.dilate(claimed.view(np.uint8), np.ones((3, 3), np.uint8)).view(bool))
     n, lab, st, _ = cv2.connectedComponentsWithStats(cut.view(np.uint8), connectivity=8, ltype=cv2.CV_32S)
     out = np.zeros(claimed.shape, np.uint8)
@@ -316,7 +323,8 @@ def _chord_pockets(claimed: np.ndarray, free_out: np.ndarray, max_chord: float =
         rr, cc = np.nonzero(lab[y0:y0 + h, x0:x0 + w] == k)
         pts = np.stack([cc + x0, rr + y0], axis=1).astype(np.int32)
         cv2.fillConvexPoly(out, cv2.convexHull(pts), 1)
-    return out.view(bool) & free_out
+    full[box] = out.view(bool) & free_out
+    return full
 
 
 MOUTH_RAYS = 720  # rays cast from a room name still outside to find the facades around it

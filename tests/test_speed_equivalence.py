@@ -389,3 +389,40 @@ def test_drop_outside_pockets_counts_the_same_edges_as_the_per_axis_version(seed
     lut = np.zeros(len(drop), np.int32)
     lut[kept] = np.arange(1, len(kept) + 1)
     assert np.array_equal(got, lut[labels])
+
+
+def _chord_pockets_reference(claimed, free_out, max_chord=0.0):
+    """segmentation._chord_pockets as it was (whole raster)."""
+    import math
+
+    import cv2
+
+    cut = free_out & (cv2.dilate(claimed.view(np.uint8), np.ones((3, 3), np.uint8)).view(bool))
+    n, lab, st, _ = cv2.connectedComponentsWithStats(cut.view(np.uint8), connectivity=8, ltype=cv2.CV_32S)
+    out = np.zeros(claimed.shape, np.uint8)
+    for k in range(1, n):
+        if st[k, cv2.CC_STAT_AREA] < 3:
+            continue
+        x0, y0, w, h = (int(v) for v in st[k, :4])
+        if max_chord > 0 and math.hypot(w, h) > max_chord:
+            continue
+        rr, cc = np.nonzero(lab[y0:y0 + h, x0:x0 + w] == k)
+        pts = np.stack([cc + x0, rr + y0], axis=1).astype(np.int32)
+        cv2.fillConvexPoly(out, cv2.convexHull(pts), 1)
+    return out.view(bool) & free_out
+
+
+def test_chord_pockets_on_the_claimed_box_equal_the_whole_raster_version():
+    from algorithms.segmentation import _chord_pockets
+
+    for seed in range(40):
+        rng = np.random.default_rng(seed)
+        shape = (int(rng.integers(3, 80)), int(rng.integers(3, 80)))
+        claimed = np.zeros(shape, bool)
+        for _ in range(int(rng.integers(0, 4))):
+            r, c = int(rng.integers(0, shape[0])), int(rng.integers(0, shape[1]))
+            claimed[r:r + int(rng.integers(1, 30)), c:c + int(rng.integers(1, 30))] = True
+        free_out = (rng.random(shape) < 0.8) & ~claimed
+        max_chord = float(rng.choice([0.0, 5.0, 20.0]))
+        assert np.array_equal(_chord_pockets(claimed, free_out, max_chord),
+                              _chord_pockets_reference(claimed, free_out, max_chord)), seed
