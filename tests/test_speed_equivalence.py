@@ -74,7 +74,7 @@ def test_sist_output_is_pinned(name, tmp_path):
 # windowed path): sha256 of the rasterized grid (stages 1-2 of pipeline.process_floor) and of the label raster
 DWG_SHEET = "sist-original/SIST-F5.dwg"
 DWG_PINNED = {"grid": "b56b49e946cdc21c8f937d1f14a680170be91ea03ddee686d008de7b92183bf8",
-              "labels": "32366eee0d457285f37234ad92d9c32728d55ad528ae6de9f2e755dbfac073d9"}
+              "areas": "cd38b6fbe1965aea02110b8431f86c5fcfdef687537db705bee9eb21530ff998"}
 
 
 def _dwg_digests(fr):
