@@ -166,12 +166,18 @@ def _edt(mask: np.ndarray) -> np.ndarray:
 
 def _outside_centres(dist_padded: np.ndarray, rc: float) -> np.ndarray:
     """Centres (padded frame) of the disks of radius ``rc`` px that can roll in from outside the image."""
+    return _corner_component((dist_padded > rc).view(np.uint8))
+
+
+def _corner_component(mask: np.ndarray) -> np.ndarray:
+    """The 8-connected component of the set pixels of ``mask`` (uint8 0/1, overwritten) holding pixel (0, 0),
+    or nothing: a flood fill from the corner (it visits only that component, a labelling the whole raster)."""
     import cv2
 
-    centers = (dist_padded > rc).view(np.uint8)
-    _, lab = cv2.connectedComponents(centers, connectivity=8, ltype=cv2.CV_32S)
-    outside_id = lab[0, 0]
-    return (lab == outside_id) if outside_id else np.zeros(lab.shape, bool)
+    if not mask[0, 0]:
+        return np.zeros(mask.shape, bool)
+    cv2.floodFill(mask, None, (0, 0), 2, loDiff=0, upDiff=0, flags=8 | cv2.FLOODFILL_FIXED_RANGE)
+    return mask == 2
 
 
 def _reach(centres: np.ndarray, rc: float, pad: int) -> np.ndarray:
@@ -667,9 +673,8 @@ def supported_boundary(free: np.ndarray, boundary: np.ndarray, resolution: float
         return None
     centres_b = (dist_a > rc0) & ~near
     del near
-    _, lab_b = cv2.connectedComponents(centres_b.view(np.uint8), connectivity=8, ltype=cv2.CV_32S)
-    out_b = (lab_b == lab_b[0, 0]) if lab_b[0, 0] else np.zeros(lab_b.shape, bool)
-    del lab_b, centres_b
+    out_b = _corner_component(centres_b.view(np.uint8))
+    del centres_b
     if not (out_a & ~out_b).any():  # the lines stop no disk from outside: they close nothing
         return None
     reach_a = _reach(out_a, rc0, pad)

@@ -426,3 +426,20 @@ def test_chord_pockets_on_the_claimed_box_equal_the_whole_raster_version():
         max_chord = float(rng.choice([0.0, 5.0, 20.0]))
         assert np.array_equal(_chord_pockets(claimed, free_out, max_chord),
                               _chord_pockets_reference(claimed, free_out, max_chord)), seed
+
+
+def test_outside_centres_by_flood_fill_equal_the_labelling():
+    """The corner's 8-connected component by a flood fill, as the labelling found it."""
+    import cv2
+
+    from algorithms.segmentation import _outside_centres
+
+    for seed in range(60):
+        rng = np.random.default_rng(seed)
+        d = (rng.random((int(rng.integers(1, 60)), int(rng.integers(1, 60)))) * 3).astype(np.float32)
+        if seed % 3 == 0:
+            d = cv2.GaussianBlur(d, (5, 5), 0)
+        for rc in (0.5, 1.0, 1.5, 2.0):
+            _, lab = cv2.connectedComponents((d > rc).view(np.uint8), connectivity=8, ltype=cv2.CV_32S)
+            ref = (lab == lab[0, 0]) if lab[0, 0] else np.zeros(lab.shape, bool)
+            assert np.array_equal(_outside_centres(d, rc), ref), (seed, rc)
