@@ -539,7 +539,8 @@ def building_interior(free: np.ndarray, resolution: float, envelope_gap: float =
     if reuse and boundary is None:
         dist = shared["dist"]
         reach0 = shared["reach"] if "reach" in shared else _reach(shared["centres"], rc0, pad)
-    elif reuse and boundary.any() and _tie_free(rc0) and _tie_free(scales[1] if len(scales) > 1 else rc0):  # the kept lines are walls for the disk: the same transform, updated near them
+    elif reuse and boundary.any() and _tie_free(rc0) and _tie_free(scales[1] if len(scales) > 1 else rc0):
+        # the kept lines are walls for the disk: the same transform, updated near them
         dist, reach0 = _with_lines(shared, boundary, scales[1] if len(scales) > 1 else rc0)
     else:
         dist = _edt(np.pad(passable, pad, mode="constant", constant_values=True))
