@@ -166,12 +166,18 @@ def _edt(mask: np.ndarray) -> np.ndarray:
 
 def _outside_centres(dist_padded: np.ndarray, rc: float) -> np.ndarray:
     """Centres (padded frame) of the disks of radius ``rc`` px that can roll in from outside the image."""
+    return _corner_component((dist_padded > rc).view(np.uint8))
+
+
+def _corner_component(mask: np.ndarray) -> np.ndarray:
+    """The 8-connected component of the set pixels of ``mask`` (uint8 0/1, overwritten) holding pixel (0, 0),
+    or nothing: a flood fill from the corner (it visits only that component, a labelling the whole raster)."""
     import cv2
 
-    centers = (dist_padded > rc).view(np.uint8)
-    _, lab = cv2.connectedComponents(centers, connectivity=8, ltype=cv2.CV_32S)
-    outside_id = lab[0, 0]
-    return (lab == outside_id) if outside_id else np.zeros(lab.shape, bool)
+    if not mask[0, 0]:
+        return np.zeros(mask.shape, bool)
+    cv2.floodFill(mask, None, (0, 0), 2, loDiff=0, upDiff=0, flags=8 | cv2.FLOODFILL_FIXED_RANGE)
+    return mask == 2
 
 
 def _reach(centres: np.ndarray, rc: float, pad: int) -> np.ndarray:
@@ -206,8 +212,8 @@ def _coarse_reach(passable: np.ndarray, rc: float, target_px: float = 32.0) -> n
     return reach
 
 
-def _opens_onto(lab: np.ndarray, n: int, lab0: np.ndarray, n0: int, big0: np.ndarray, min_contact: int
-                ) -> np.ndarray:
+def _opens_onto(lab: np.ndarray, n: int, lab0: np.ndarray, n0: int, big0: np.ndarray, min_contact: int,
+                pairs=None) -> np.ndarray:
     """Which candidate pieces (``lab`` 1..n-1) open onto the enclosed interior: pieces and interior
     pockets (``lab0`` 1..n0-1) touching along at least ``min_contact`` pixel edges are linked, and a
     piece is kept when its links reach an interior component that is a real space (``big0``), not a
@@ -219,7 +225,7 @@ def _opens_onto(lab: np.ndarray, n: int, lab0: np.ndarray, n0: int, big0: np.nda
     # the pieces are 4-connected components of the candidates, so they never touch each other:
     # only piece-pocket contacts link them
     ca, cb = [], []
-    for src, nb, _ in _boundary_pairs(lab):
+    for src, nb, _ in (_boundary_pairs(lab) if pairs is None else pairs):
         b = lab0.ravel()[nb]
         m = b > 0
         ca.append(lab.ravel()[src[m]])
@@ -261,7 +267,8 @@ def _boundary_pairs(lab: np.ndarray):
         yield src[keep], nb[keep], (dr, dc)
 
 
-def _space_shaped(lab: np.ndarray, n: int, interior0: np.ndarray, out_free: np.ndarray) -> np.ndarray:
+def _space_shaped(lab: np.ndarray, n: int, interior0: np.ndarray, out_free: np.ndarray, pairs=None,
+                  area: Optional[np.ndarray] = None) -> np.ndarray:
     """Which candidate pieces are spaces rather than corners of the outside: a piece is kept when it
     is a bite of the outside disk into a room (at least ``BITE_CONTACT`` of its outline runs along
     ``interior0``, the enclosed rooms) or when it is deep behind its opening (area >= ``DEEP_SPACE`` x chord^2,
@@ -277,7 +284,7 @@ def _space_shaped(lab: np.ndarray, n: int, interior0: np.ndarray, out_free: np.n
     flat = lab.ravel()
     i0 = interior0.ravel()
     of = out_free.ravel()
-    for src, nb, _ in _boundary_pairs(lab):
+    for src, nb, _ in (_boundary_pairs(lab) if pairs is None else pairs):
         ids = flat[src]
         total += np.bincount(ids, minlength=n)
         contact += np.bincount(ids[i0[nb]], minlength=n)
@@ -286,7 +293,7 @@ def _space_shaped(lab: np.ndarray, n: int, interior0: np.ndarray, out_free: np.n
             rc = np.stack(np.divmod(src[cut], cols), 1)
             np.minimum.at(cmin, ids[cut], rc)
             np.maximum.at(cmax, ids[cut], rc)
-    area = np.bincount(flat, minlength=n).astype(np.float64)
+    area = (np.bincount(flat, minlength=n) if area is None else area).astype(np.float64)  # (``area``: pixels per piece)
     span = np.where(cmax[:, :1] >= 0, cmax - cmin + 1, 0).astype(np.float64)
     chord2 = (span ** 2).sum(axis=1)
     ok = (contact >= BITE_CONTACT * np.maximum(total, 1)) | (area >= DEEP_SPACE * chord2)
@@ -303,6 +310,13 @@ def _chord_pockets(claimed: np.ndarray, free_out: np.ndarray, max_chord: float =
     those lenses (to be claimed too). ``max_chord`` > 0: only cut pieces at most that long (px)."""
     import cv2
 
+    full = np.zeros(claimed.shape, bool)
+    if not claimed.any():
+        return full
+    # everything happens within a pixel of the claimed space: work on its box grown by two pixels
+    r0, r1, c0, c1 = _bbox(claimed)
+    box = (slice(max(r0 - 2, 0), min(r1 + 3, claimed.shape[0])), slice(max(c0 - 2, 0), min(c1 + 3, claimed.shape[1])))
+    claimed, free_out = np.ascontiguousarray(claimed[box]), free_out[box]
     cut = free_out & (cv2.dilate(claimed.view(np.uint8), np.ones((3, 3), np.uint8)).view(bool))
     n, lab, st, _ = cv2.connectedComponentsWithStats(cut.view(np.uint8), connectivity=8, ltype=cv2.CV_32S)
     out = np.zeros(claimed.shape, np.uint8)
@@ -315,7 +329,8 @@ def _chord_pockets(claimed: np.ndarray, free_out: np.ndarray, max_chord: float =
         rr, cc = np.nonzero(lab[y0:y0 + h, x0:x0 + w] == k)
         pts = np.stack([cc + x0, rr + y0], axis=1).astype(np.int32)
         cv2.fillConvexPoly(out, cv2.convexHull(pts), 1)
-    return out.view(bool) & free_out
+    full[box] = out.view(bool) & free_out
+    return full
 
 
 MOUTH_RAYS = 720  # rays cast from a room name still outside to find the facades around it
@@ -518,9 +533,20 @@ def building_interior(free: np.ndarray, resolution: float, envelope_gap: float =
         scales += [r for r in (rcf, 2.0 * rcf) if 2.0 * r <= max(free.shape)]
     # the envelope and the footprint scale exactly (their arcs decide bites), larger scales coarsely
     pad = int(math.ceil(scales[1] if len(scales) > 1 else rc0)) + 2
-    dist = _edt(np.pad(passable, pad, mode="constant", constant_values=True))
-    check()
-    reach0 = _reach(_outside_centres(dist, rc0), rc0, pad)
+    shared = info.pop("_free_dist", None)  # supported_boundary's transform of the same free space, if any
+    reuse = (shared is not None and shared.get("free") is free and unknown is None and shared["pad"] == pad
+             and shared["rc0"] == rc0)
+    if reuse and boundary is None:
+        dist = shared["dist"]
+        reach0 = shared["reach"] if "reach" in shared else _reach(shared["centres"], rc0, pad)
+    elif reuse and boundary.any() and _tie_free(rc0) and _tie_free(scales[1] if len(scales) > 1 else rc0):
+        # the kept lines are walls for the disk: the same transform, updated near them
+        dist, reach0 = _with_lines(shared, boundary, scales[1] if len(scales) > 1 else rc0)
+    else:
+        dist = _edt(np.pad(passable, pad, mode="constant", constant_values=True))
+        check()
+        reach0 = _reach(_outside_centres(dist, rc0), rc0, pad)
+    del shared
     check()
     interior0 = free & ~reach0
     # what the disk leaves in the corners of the outside (up to rc0^2: corners of 50 degrees and more)
@@ -557,16 +583,19 @@ def building_interior(free: np.ndarray, resolution: float, envelope_gap: float =
         cand = free & reach0 & ~reach & ~claimed
         if not cand.any():
             continue
-        n, lab = cv2.connectedComponents(cand.view(np.uint8), connectivity=4, ltype=cv2.CV_32S)
+        # the sizes from the labelling's statistics (a bincount of the raster costs more than the stats)
+        n, lab, st, _ = cv2.connectedComponentsWithStats(cand.view(np.uint8), connectivity=4, ltype=cv2.CV_32S)
+        size = st[:, cv2.CC_STAT_AREA].astype(np.int64)
+        del st
         keep = np.zeros(n, bool)
         if k == 0 and not footprint:
             keep[:] = False
         elif k == 0:  # footprint: keep what opens onto the enclosed interior and is a space of its own
-            keep = _opens_onto(lab, n, lab0, n0, big0, min_contact) & _space_shaped(lab, n, big0[lab0],
-                                                                                     free & reach)
+            pairs = list(_boundary_pairs(lab))  # (``pairs``: the pieces' outline, walked once for both tests)
+            keep = (_opens_onto(lab, n, lab0, n0, big0, min_contact, pairs)
+                    & _space_shaped(lab, n, big0[lab0], free & reach, pairs, size))
         # a space proven enclosed by a disk of diameter D is believed up to (CLAIM_FACTOR x D)^2:
         # larger ones are the gaps between drawings on a sheet, forecourts, the street
-        size = np.bincount(lab.ravel(), minlength=n)
         small = size <= ((CLAIM_FACTOR if k == 0 else 1.0) * 2.0 * rc) ** 2
         rest = []
         for c, r in open_pts:
@@ -628,6 +657,64 @@ def supported_boundary(free: np.ndarray, boundary: np.ndarray, resolution: float
     if boundary is None or not boundary.any():
         return None
     rc0 = max(1.0, envelope_gap / 2.0 / resolution)
+    if not (_tie_free(rc0) and _tie_free(0.5 * BOUNDARY_MIN_WIDTH_M / resolution)):
+        return _supported_boundary_whole(free, boundary, resolution, envelope_gap, inside_points, info)
+    # the envelope disk on the free space alone: computed with building_interior's padding and handed to
+    # it (``info["_free_dist"]``), which needs the same distance transform when no line is kept
+    pad = _envelope_pad(free.shape, resolution, envelope_gap)
+    dist_a = _edt(np.pad(free, pad, mode="constant", constant_values=True))
+    out_a = _outside_centres(dist_a, rc0)
+    shared = {"free": free, "pad": pad, "rc0": rc0, "dist": dist_a, "centres": out_a}
+    if info is not None:
+        info["_free_dist"] = shared
+    # the lines take away the disk centres within rc0 of them: the distance to the free space's walls
+    # and lines is the smaller of the two distances
+    near = _near(np.pad(boundary, pad, mode="constant", constant_values=False), rc0)
+    if not (near & out_a).any():  # no disk from outside comes within rc0 of a line: they close nothing
+        return None
+    centres_b = (dist_a > rc0) & ~near
+    del near
+    out_b = _corner_component(centres_b.view(np.uint8))
+    del centres_b
+    if not (out_a & ~out_b).any():  # the lines stop no disk from outside: they close nothing
+        return None
+    reach_a = _reach(out_a, rc0, pad)
+    shared["reach"] = reach_a
+    reach_b = _reach_without(reach_a, out_a, out_b, rc0, pad)
+    del out_b
+    rows, cols = free.shape
+    walk = free & ~boundary
+    cand = walk & reach_a & ~reach_b
+    if not cand.any():
+        return None
+    n, lab = cv2.connectedComponents(cand.view(np.uint8), connectivity=4, ltype=cv2.CV_32S)
+    # the widest clearance of each piece: the distance transform on the pieces' box (a ring of non-piece
+    # pixels around it keeps it exact)
+    r0, r1, c0, c1 = _bbox(cand)
+    ya, yb, xa, xb = max(r0 - 1, 0), min(r1 + 2, rows), max(c0 - 1, 0), min(c1 + 2, cols)
+    box = np.zeros((yb - ya + 2, xb - xa + 2), bool)
+    box[1:-1, 1:-1] = cand[ya:yb, xa:xb]
+    clearance = _edt(box)[1:-1, 1:-1]
+    sub = lab[ya:yb, xa:xb]
+    inside = sub > 0
+    widest = np.zeros(n)
+    np.maximum.at(widest, sub[inside], clearance[inside])
+    return _kept_lines(free, boundary, resolution, envelope_gap, inside_points, info, n, lab, reach_a, widest)
+
+
+def _tie_free(r: float) -> bool:
+    """True when no pixel distance (the square root of an integer) lies within 1e-4 of ``r``: OpenCV's
+    distance transform is exact to about 1e-6 but not bit-identical between a window and the whole
+    raster, so the windowed shortcuts are taken only where a comparison with ``r`` cannot tip."""
+    k = int(round(r * r))
+    return all(abs(math.sqrt(j) - r) > 1e-4 for j in (max(k - 1, 0), k, k + 1))
+
+
+def _supported_boundary_whole(free, boundary, resolution, envelope_gap, inside_points, info):
+    """supported_boundary on whole-raster transforms (where a radius sits on a pixel distance)."""
+    import cv2
+
+    rc0 = max(1.0, envelope_gap / 2.0 / resolution)
     pad = int(math.ceil(rc0)) + 2
     reach_a = _reach(_outside_centres(_edt(np.pad(free, pad, mode="constant", constant_values=True)), rc0), rc0,
                      pad)
@@ -638,6 +725,18 @@ def supported_boundary(free: np.ndarray, boundary: np.ndarray, resolution: float
     if not cand.any():
         return None
     n, lab = cv2.connectedComponents(cand.view(np.uint8), connectivity=4, ltype=cv2.CV_32S)
+    clearance = _edt(cand)
+    widest = np.zeros(n)
+    np.maximum.at(widest, lab.ravel(), clearance.ravel())
+    return _kept_lines(free, boundary, resolution, envelope_gap, inside_points, info, n, lab, reach_a, widest)
+
+
+def _kept_lines(free, boundary, resolution, envelope_gap, inside_points, info, n, lab, reach_a, widest):
+    """The end of supported_boundary: which candidate pieces (``lab``, 1..n-1) are kept, and the lines
+    along them."""
+    import cv2
+
+    rc0 = max(1.0, envelope_gap / 2.0 / resolution)
     interior0 = free & ~reach_a
     n0, lab0, st0, _ = cv2.connectedComponentsWithStats(interior0.view(np.uint8), connectivity=4, ltype=cv2.CV_32S)
     big0 = st0[:, cv2.CC_STAT_AREA] >= rc0 * rc0
@@ -645,9 +744,6 @@ def supported_boundary(free: np.ndarray, boundary: np.ndarray, resolution: float
     keep = np.zeros(n, bool)
     if n0 > 1 and big0.any():
         keep = _opens_onto(lab, n, lab0, n0, big0, max(1, int(round(MIN_CONTACT_M / resolution))))
-    clearance = _edt(cand)
-    widest = np.zeros(n)
-    np.maximum.at(widest, lab.ravel(), clearance.ravel())
     keep &= widest >= 0.5 * BOUNDARY_MIN_WIDTH_M / resolution
     if inside_points is not None and len(inside_points):
         pts = np.rint(np.asarray(inside_points, dtype=np.float64).reshape(-1, 2) - 0.5).astype(np.int64)
@@ -664,6 +760,75 @@ def supported_boundary(free: np.ndarray, boundary: np.ndarray, resolution: float
     near = cv2.dilate(space.view(np.uint8), np.ones((5, 5), np.uint8)) > 0
     out = boundary & near
     return out if out.any() else None
+
+
+def _reach_without(reach_a: np.ndarray, out_a: np.ndarray, out_b: np.ndarray, rc: float, pad: int) -> np.ndarray:
+    """``_reach(out_b, rc, pad)`` from ``reach_a = _reach(out_a, rc, pad)`` when ``out_b`` is a subset of
+    ``out_a`` (padded frame): the reach changes only within rc of the removed centres, where it is
+    recomputed from the centres within reach of that window."""
+    removed = out_a & ~out_b
+    reach_b = reach_a.copy()
+    if not removed.any():
+        return reach_b
+    rows, cols = reach_a.shape
+    r0, r1, c0, c1 = _bbox(removed)
+    m = int(math.ceil(rc)) + 1
+    ra, rb, ca, cb = max(r0 - m, pad), min(r1 + 1 + m, rows + pad), max(c0 - m, pad), min(c1 + 1 + m, cols + pad)
+    if ra < rb and ca < cb:
+        w = m + 2
+        wa, wb, wc, wd = max(ra - w, 0), min(rb + w, out_b.shape[0]), max(ca - w, 0), min(cb + w, out_b.shape[1])
+        e = _edt(~out_b[wa:wb, wc:wd])[ra - wa:rb - wa, ca - wc:cb - wc]
+        reach_b[ra - pad:rb - pad, ca - pad:cb - pad] = ~(e > rc)
+    return reach_b
+
+
+def _with_lines(shared: dict, lines: np.ndarray, rc_max: float):
+    """building_interior's padded transform and envelope reach of ``free & ~lines`` from those of ``free``
+    (``shared``, from supported_boundary): the distance to the lines is computed on their box grown by
+    ``rc_max`` + 1 and is the smaller one there; farther out both distances exceed rc_max, the largest
+    radius it is compared with (the transform is exact up to rc_max + 1, which is all it is used for)."""
+    pad, rc0 = shared["pad"], shared["rc0"]
+    lp = np.pad(lines, pad, mode="constant", constant_values=False)
+    dist = shared["dist"].copy()
+    r0, r1, c0, c1 = _bbox(lp)
+    m = int(math.ceil(rc_max)) + 1
+    ya, yb, xa, xb = max(r0 - m, 0), min(r1 + 1 + m, lp.shape[0]), max(c0 - m, 0), min(c1 + 1 + m, lp.shape[1])
+    np.minimum(dist[ya:yb, xa:xb], _edt(~lp[ya:yb, xa:xb]), out=dist[ya:yb, xa:xb])
+    del lp
+    out_b = _outside_centres(dist, rc0)
+    reach_a = shared["reach"] if "reach" in shared else _reach(shared["centres"], rc0, pad)
+    return dist, _reach_without(reach_a, shared["centres"], out_b, rc0, pad)
+
+
+def _bbox(mask: np.ndarray) -> Tuple[int, int, int, int]:
+    """(first row, last row, first col, last col) of the True pixels of a non-empty mask."""
+    rows = np.flatnonzero(mask.any(axis=1))
+    cols = np.flatnonzero(mask.any(axis=0))
+    return int(rows[0]), int(rows[-1]), int(cols[0]), int(cols[-1])
+
+
+def _near(mask: np.ndarray, r: float) -> np.ndarray:
+    """Pixels within ``r`` px (exact Euclidean distance <= r) of a True pixel of ``mask``: the distance
+    transform on the box of the True pixels grown by r (no pixel farther out can be that near)."""
+    out = np.zeros(mask.shape, bool)
+    if not mask.any():
+        return out
+    r0, r1, c0, c1 = _bbox(mask)
+    m = int(math.ceil(r)) + 1
+    ya, yb, xa, xb = max(r0 - m, 0), min(r1 + 1 + m, mask.shape[0]), max(c0 - m, 0), min(c1 + 1 + m, mask.shape[1])
+    out[ya:yb, xa:xb] = ~(_edt(~mask[ya:yb, xa:xb]) > r)
+    return out
+
+
+def _envelope_pad(shape, resolution: float, envelope_gap: float, footprint_gap: Optional[float] = None) -> int:
+    """The padding of building_interior's distance transform (the largest exactly computed disk + 2)."""
+    rc0 = max(1.0, envelope_gap / 2.0 / resolution)
+    fgap = FOOTPRINT_FACTOR * envelope_gap if footprint_gap is None else float(footprint_gap)
+    scales = [rc0]
+    if fgap > envelope_gap:
+        rcf = fgap / 2.0 / resolution
+        scales += [r for r in (rcf, 2.0 * rcf) if 2.0 * r <= max(shape)]
+    return int(math.ceil(scales[1] if len(scales) > 1 else rc0)) + 2
 
 
 def _narrow_pockets(space: np.ndarray, dist: np.ndarray, resolution: float) -> Optional[np.ndarray]:
@@ -1018,11 +1183,20 @@ def _drop_outside_pockets(labels: np.ndarray, outside: np.ndarray, group_peak: n
         return labels, group_peak, 0
     total = np.zeros(n + 1, np.int64)
     open_ = np.zeros(n + 1, np.int64)
-    for axis in (0, 1):
-        a, b = (labels[:-1, :], labels[1:, :]) if axis == 0 else (labels[:, :-1], labels[:, 1:])
-        oa, ob = (outside[:-1, :], outside[1:, :]) if axis == 0 else (outside[:, :-1], outside[:, 1:])
-        diff = a != b
-        total += np.bincount(a[diff], minlength=n + 1) + np.bincount(b[diff], minlength=n + 1)
+    # the 4-neighbour pairs (p, p + step) of the flat raster whose labels differ; outside pixels carry no
+    # label, so every labelled-outside pair is one of them
+    flat = np.ascontiguousarray(labels).ravel()
+    out_flat = np.ascontiguousarray(outside).ravel()
+    cols = labels.shape[1]
+    for step in (cols, 1):
+        diff = flat[:-step] != flat[step:]
+        if step == 1:
+            diff[cols - 1::cols] = False  # no pair from the end of a row to the start of the next
+        idx = np.flatnonzero(diff)
+        del diff
+        a, b = flat[idx], flat[idx + step]
+        oa, ob = out_flat[idx], out_flat[idx + step]
+        total += np.bincount(a, minlength=n + 1) + np.bincount(b, minlength=n + 1)
         open_ += np.bincount(a[(a > 0) & ob], minlength=n + 1) + np.bincount(b[(b > 0) & oa], minlength=n + 1)
     drop = open_ >= OUTSIDE_CONTACT * np.maximum(total, 1)
     if claimed is not None and claimed.any():
@@ -2086,6 +2260,7 @@ def segment(grid: OccupancyGrid, door_width: float = DEFAULT_DOOR_WIDTH,
         binfo: dict = {}
         progress.check()
         boundary = supported_boundary(free, boundary, res, envelope_gap, pix_pts, binfo)
+        info["_free_dist"] = binfo.pop("_free_dist", None)  # the envelope transform, reused when no line is kept
         stats["boundary_px"] = float(boundary.sum()) if boundary is not None else 0.0
     interior, envelope = building_interior(free, res, envelope_gap, inside_points=pix_pts, info=info,
                                            footprint=footprint, progress=progress, boundary=boundary)

@@ -70,6 +70,37 @@ def test_sist_output_is_pinned(name, tmp_path):
     _check(name, src, tmp_path)
 
 
+# the segmentation of one original DWG sheet (projection lines kept as boundary evidence: supported_boundary's
+# windowed path): sha256 of the rasterized grid (stages 1-2 of pipeline.process_floor) and of the label raster
+DWG_SHEET = "sist-original/SIST-F5.dwg"
+DWG_PINNED = {"grid": "b56b49e946cdc21c8f937d1f14a680170be91ea03ddee686d008de7b92183bf8",
+              "areas": "cd38b6fbe1965aea02110b8431f86c5fcfdef687537db705bee9eb21530ff998"}
+
+
+def _dwg_digests(fr):
+    """The grid, and the segmentation's areas (ids, clearances, outlines) and passages (the label raster is
+    not used: the stair/lift carving repaints it in place later in process_floor)."""
+    h = hashlib.sha256()
+    for a in fr.segmented.areas:
+        h.update(f"{a.id} {a.max_clearance!r} ".encode() + a.polygon.wkb)
+    for p in fr.segmented.passages:
+        h.update(f"{p.from_id} {p.to_id} ".encode() + p.line.wkb)
+    return {"grid": hashlib.sha256(fr.grid.data.tobytes()).hexdigest(), "areas": h.hexdigest()}
+
+
+@pytest.mark.slow
+def test_dwg_sheet_segmentation_is_pinned(floor_cache):
+    """On the session's cached conversion of SIST-F5.dwg (shared with test_sist_connect): no extra run."""
+    src = SHARED_DATA / "dwg" / DWG_SHEET
+    if not src.exists():
+        pytest.skip(f"shared data missing: {src}")
+    got = _dwg_digests(floor_cache.process_floor(src))
+    if got["grid"] != DWG_PINNED["grid"]:
+        pytest.fail(f"{DWG_SHEET}: the rasterized grid changed (import or rasterize changed on purpose?): the pinned "
+                    "segmentation applies to the old grid; re-pin both with python -m tests.test_speed_equivalence")
+    assert got["areas"] == DWG_PINNED["areas"], f"{DWG_SHEET}: the segmentation of the same grid changed"
+
+
 if __name__ == "__main__":  # print the digests to re-pin after an intended rule change
     import tempfile
 
@@ -77,6 +108,7 @@ if __name__ == "__main__":  # print the digests to re-pin after an intended rule
     srcs = {"sample-F1": _sample_f1(tmp), **{n: SIST / f"{n}.dxf" for n in ("SIST-F1", "SIST-F5")}}
     for name, src in srcs.items():
         print(name, *_digest(src, tmp / f"{name}.osm"))
+    print(DWG_SHEET, _dwg_digests(pipeline.process_floor(str(SHARED_DATA / "dwg" / DWG_SHEET))))
 
 
 # ------------------------------------------------------------------ rewritten helpers vs their plain versions
@@ -203,3 +235,211 @@ def test_bounds_growth_in_one_pass_equals_the_per_geometry_loop(seed):
     with warnings.catch_warnings():
         warnings.simplefilter("ignore", RuntimeWarning)
         assert _grow_to_touching(geoms, box) == _grow_reference(geoms, box)
+
+
+def _supported_boundary_reference(free, boundary, resolution, envelope_gap=4.0, inside_points=None, info=None):
+    """segmentation.supported_boundary as it was (five whole-raster distance transforms)."""
+    import math
+
+    import cv2
+
+    from algorithms.segmentation import (BOUNDARY_MIN_WIDTH_M, CLAIM_FACTOR, FOOTPRINT_FACTOR, MIN_CONTACT_M,
+                                         _edt, _opens_onto, _outside_centres, _reach)
+
+    if boundary is None or not boundary.any():
+        return None
+    rc0 = max(1.0, envelope_gap / 2.0 / resolution)
+    pad = int(math.ceil(rc0)) + 2
+    reach_a = _reach(_outside_centres(_edt(np.pad(free, pad, mode="constant", constant_values=True)), rc0), rc0,
+                     pad)
+    walk = free & ~boundary
+    reach_b = _reach(_outside_centres(_edt(np.pad(walk, pad, mode="constant", constant_values=True)), rc0), rc0,
+                     pad)
+    cand = walk & reach_a & ~reach_b
+    if not cand.any():
+        return None
+    n, lab = cv2.connectedComponents(cand.view(np.uint8), connectivity=4, ltype=cv2.CV_32S)
+    interior0 = free & ~reach_a
+    n0, lab0, st0, _ = cv2.connectedComponentsWithStats(interior0.view(np.uint8), connectivity=4, ltype=cv2.CV_32S)
+    big0 = st0[:, cv2.CC_STAT_AREA] >= rc0 * rc0
+    big0[0] = False
+    keep = np.zeros(n, bool)
+    if n0 > 1 and big0.any():
+        keep = _opens_onto(lab, n, lab0, n0, big0, max(1, int(round(MIN_CONTACT_M / resolution))))
+    clearance = _edt(cand)
+    widest = np.zeros(n)
+    np.maximum.at(widest, lab.ravel(), clearance.ravel())
+    keep &= widest >= 0.5 * BOUNDARY_MIN_WIDTH_M / resolution
+    if inside_points is not None and len(inside_points):
+        pts = np.rint(np.asarray(inside_points, dtype=np.float64).reshape(-1, 2) - 0.5).astype(np.int64)
+        ok = (pts[:, 0] >= 0) & (pts[:, 0] < free.shape[1]) & (pts[:, 1] >= 0) & (pts[:, 1] < free.shape[0])
+        keep[lab[pts[ok, 1], pts[ok, 0]]] = True
+    size = np.bincount(lab.ravel(), minlength=n)
+    keep &= size * resolution ** 2 <= (CLAIM_FACTOR * FOOTPRINT_FACTOR * envelope_gap) ** 2
+    keep[0] = False
+    if not keep.any():
+        return None
+    space = keep[lab]
+    if info is not None:
+        info["space"] = space
+    near = cv2.dilate(space.view(np.uint8), np.ones((5, 5), np.uint8)) > 0
+    out = boundary & near
+    return out if out.any() else None
+
+
+def _building_with_lines(seed, shape=(170, 230)):
+    """A walled building (rc0 = 10 px at 0.2 m/px) with a recess 22-34 px wide open to the outside, a
+    doorway from it into the rooms and, on most seeds, a projection line across its mouth; plus random
+    lines in the landscape and across the image edge, some touching walls."""
+    import cv2
+
+    rng = np.random.default_rng(seed)
+    img = np.ones(shape, np.uint8)
+    r0, c0 = int(rng.integers(3, 40)), int(rng.integers(3, 50))
+    r1, c1 = int(rng.integers(120, shape[0] - 3)), int(rng.integers(160, shape[1] - 3))
+    cv2.rectangle(img, (c0, r0), (c1, r1), 0, 2)
+    cv2.line(img, ((c0 + c1) // 2, r0), ((c0 + c1) // 2, r1), 0, 2)  # two rooms
+    img[r0 + 20:r0 + 24, (c0 + c1) // 2 - 1:(c0 + c1) // 2 + 2] = 1  # doorway between them
+    w = int(rng.integers(22, 35))  # recess in the bottom facade, open downwards
+    x = int(rng.integers(c0 + 10, c1 - w - 10))
+    depth = int(rng.integers(20, 40))
+    img[r1 - depth:r1 + 2, x:x + w] = 1
+    cv2.rectangle(img, (x - 2, r1 - depth - 2), (x + w + 1, r1 + 1), 0, 2)
+    img[r1 - depth:r1 + 5, x:x + w] = 1
+    img[r1 - depth - 5:r1 - depth, x + 4:x + 4 + int(rng.integers(6, 14))] = 1  # doorway into the rooms
+    bnd = np.zeros(shape, np.uint8)
+    if seed % 4:
+        cv2.line(bnd, (x - 1, r1), (x + w, r1), 1, 1)  # the projection line across the mouth
+    for _ in range(int(rng.integers(0, 5))):
+        p = (int(rng.integers(-20, shape[1] + 20)), int(rng.integers(-20, shape[0] + 20)))
+        q = (p[0] + int(rng.integers(-60, 60)), p[1] + int(rng.integers(-60, 60)))
+        cv2.line(bnd, p, q, 1, 1)
+    for _ in range(10):  # pillars and specks
+        r, c = int(rng.integers(0, shape[0])), int(rng.integers(0, shape[1]))
+        img[r:r + int(rng.integers(1, 4)), c:c + int(rng.integers(1, 4))] = 0
+    return img.astype(bool), bnd.astype(bool)
+
+
+RES = 0.21  # radii 9.52 and 28.6 px: no pixel distance within 1e-4 (see segmentation._tie_free)
+
+
+def test_supported_boundary_equals_the_whole_raster_version():
+    """The envelope disk with and without the lines, cut to where the lines take disk centres away,
+    and the transform handed on to building_interior: the same kept lines and spaces as before."""
+    from algorithms.segmentation import building_interior, supported_boundary
+
+    kept = 0
+    for seed in range(14):
+        free, bnd = _building_with_lines(seed)
+        pts = np.array([[5.0, 5.0]]) if seed % 5 == 0 else None
+        ref_info, info = {}, {}
+        ref = _supported_boundary_reference(free, bnd, RES, 4.0, pts, ref_info)
+        got = supported_boundary(free, bnd, RES, 4.0, pts, info)
+        assert (got is None) == (ref is None), seed
+        if ref is not None:
+            kept += 1
+            assert np.array_equal(got, ref) and np.array_equal(info["space"], ref_info["space"]), seed
+        # building_interior reuses the handed-on transform only where it is the same computation
+        a = building_interior(free, RES, 4.0, footprint=True, boundary=got, info={"_free_dist": info.get("_free_dist")})
+        b = building_interior(free, RES, 4.0, footprint=True, boundary=got)
+        assert np.array_equal(a[0], b[0]) and np.array_equal(a[1], b[1]), seed
+    assert kept >= 8  # the lines across the mouth close a space on most seeds
+    # a radius on a pixel distance (10 px at 0.2 m/px): the whole-raster transforms, as before
+    free, bnd = _building_with_lines(1)
+    ref_info, info = {}, {}
+    ref = _supported_boundary_reference(free, bnd, 0.2, 4.0, None, ref_info)
+    assert ref is not None and np.array_equal(supported_boundary(free, bnd, 0.2, 4.0, None, info), ref)
+    assert "_free_dist" not in info and np.array_equal(info["space"], ref_info["space"])
+
+
+def _outside_contact_reference(labels, outside):
+    """The outline and open-to-outside pixel-edge counts of segmentation._drop_outside_pockets as they were."""
+    n = int(labels.max())
+    total = np.zeros(n + 1, np.int64)
+    open_ = np.zeros(n + 1, np.int64)
+    for axis in (0, 1):
+        a, b = (labels[:-1, :], labels[1:, :]) if axis == 0 else (labels[:, :-1], labels[:, 1:])
+        oa, ob = (outside[:-1, :], outside[1:, :]) if axis == 0 else (outside[:, :-1], outside[:, 1:])
+        diff = a != b
+        total += np.bincount(a[diff], minlength=n + 1) + np.bincount(b[diff], minlength=n + 1)
+        open_ += np.bincount(a[(a > 0) & ob], minlength=n + 1) + np.bincount(b[(b > 0) & oa], minlength=n + 1)
+    return total, open_
+
+
+@pytest.mark.parametrize("seed", range(6))
+def test_drop_outside_pockets_counts_the_same_edges_as_the_per_axis_version(seed):
+    """The flat-raster pairs (no pair across a row end) give the same counts, hence the same areas dropped."""
+    import cv2
+
+    from algorithms.segmentation import OUTSIDE_CONTACT, _drop_outside_pockets
+
+    rng = np.random.default_rng(seed)
+    shape = (int(rng.integers(5, 90)), int(rng.integers(5, 90)))
+    coarse = rng.integers(0, 7, (shape[0] // 4 + 1, shape[1] // 4 + 1)).astype(np.float32)
+    labels = cv2.resize(coarse, (shape[1], shape[0]), interpolation=cv2.INTER_NEAREST).astype(np.int32)
+    outside = (labels == 0) & (rng.random(shape) < 0.7)
+    total, open_ = _outside_contact_reference(labels, outside)
+    drop = open_ >= OUTSIDE_CONTACT * np.maximum(total, 1)
+    drop[0] = False
+    peaks = np.arange(labels.max() + 1, dtype=np.float64)
+    got, got_peaks, dropped = _drop_outside_pockets(labels, outside, peaks)
+    assert dropped == int(drop[labels].sum())
+    kept = np.flatnonzero(~drop[1:]) + 1
+    assert got_peaks.tolist() == [0.0] + peaks[kept].tolist()
+    lut = np.zeros(len(drop), np.int32)
+    lut[kept] = np.arange(1, len(kept) + 1)
+    assert np.array_equal(got, lut[labels])
+
+
+def _chord_pockets_reference(claimed, free_out, max_chord=0.0):
+    """segmentation._chord_pockets as it was (whole raster)."""
+    import math
+
+    import cv2
+
+    cut = free_out & (cv2.dilate(claimed.view(np.uint8), np.ones((3, 3), np.uint8)).view(bool))
+    n, lab, st, _ = cv2.connectedComponentsWithStats(cut.view(np.uint8), connectivity=8, ltype=cv2.CV_32S)
+    out = np.zeros(claimed.shape, np.uint8)
+    for k in range(1, n):
+        if st[k, cv2.CC_STAT_AREA] < 3:
+            continue
+        x0, y0, w, h = (int(v) for v in st[k, :4])
+        if max_chord > 0 and math.hypot(w, h) > max_chord:
+            continue
+        rr, cc = np.nonzero(lab[y0:y0 + h, x0:x0 + w] == k)
+        pts = np.stack([cc + x0, rr + y0], axis=1).astype(np.int32)
+        cv2.fillConvexPoly(out, cv2.convexHull(pts), 1)
+    return out.view(bool) & free_out
+
+
+def test_chord_pockets_on_the_claimed_box_equal_the_whole_raster_version():
+    from algorithms.segmentation import _chord_pockets
+
+    for seed in range(40):
+        rng = np.random.default_rng(seed)
+        shape = (int(rng.integers(3, 80)), int(rng.integers(3, 80)))
+        claimed = np.zeros(shape, bool)
+        for _ in range(int(rng.integers(0, 4))):
+            r, c = int(rng.integers(0, shape[0])), int(rng.integers(0, shape[1]))
+            claimed[r:r + int(rng.integers(1, 30)), c:c + int(rng.integers(1, 30))] = True
+        free_out = (rng.random(shape) < 0.8) & ~claimed
+        max_chord = float(rng.choice([0.0, 5.0, 20.0]))
+        assert np.array_equal(_chord_pockets(claimed, free_out, max_chord),
+                              _chord_pockets_reference(claimed, free_out, max_chord)), seed
+
+
+def test_outside_centres_by_flood_fill_equal_the_labelling():
+    """The corner's 8-connected component by a flood fill, as the labelling found it."""
+    import cv2
+
+    from algorithms.segmentation import _outside_centres
+
+    for seed in range(60):
+        rng = np.random.default_rng(seed)
+        d = (rng.random((int(rng.integers(1, 60)), int(rng.integers(1, 60)))) * 3).astype(np.float32)
+        if seed % 3 == 0:
+            d = cv2.GaussianBlur(d, (5, 5), 0)
+        for rc in (0.5, 1.0, 1.5, 2.0):
+            _, lab = cv2.connectedComponents((d > rc).view(np.uint8), connectivity=8, ltype=cv2.CV_32S)
+            ref = (lab == lab[0, 0]) if lab[0, 0] else np.zeros(lab.shape, bool)
+            assert np.array_equal(_outside_centres(d, rc), ref), (seed, rc)
