@@ -98,15 +98,18 @@ def process_floor(dxf_path: str, *, rules=None, layers=None, units=None, include
     # projection lines no rule keeps count for the extent (a corridor closed by one lies beyond the walls)
     grid = timed("rasterize", 25, 35, rasterize.rasterize, drawing.geometries + drawing.boundary,
                  resolution=resolution, extent=extent, door_hints=drawing.doors)
+    # the drawing's texts are classified once (segmentation's evidence, protected rooms, names, outdoor spaces)
+    classified = semantics.classify_labels(drawing.texts, name_rules)
     seg = timed("segment", 35, 80, segmentation.segment, grid, door_width=door_width,
                 corridor_width=corridor_width, delta=delta, prune=prune,
-                inside_points=segmentation.room_name_points(drawing.texts, name_rules), door_hints=drawing.doors, footprint=True,
+                inside_points=_inside_points(drawing, name_rules, classified), door_hints=drawing.doors, footprint=True,
                 boundary=rasterize.boundary_mask(drawing.boundary, grid))
     t0, c0 = time.perf_counter(), time.process_time()
     vertical = classify_vertical_areas(seg.areas, drawing.geometries)
     if vertical:
         progress.info(f"{len(vertical)} stair/lift areas recognised from their symbols")
-    protected = semantics.protect_labelled_areas(seg.areas, drawing.texts, min_area, name_rules) if names else {}
+    protected = semantics.protect_labelled_areas(seg.areas, drawing.texts, min_area, name_rules,
+                                                 classified=classified) if names else {}
     timings["types"], cpu["types"] = time.perf_counter() - t0, time.process_time() - c0
     refined, rstats = timed("refine", 80, 95, refine.refine, seg, grid.resolution, epsilon_px=epsilon_px,
                             min_area=min_area, keep_types=refine.KEEP_TYPES + (semantics.PROTECTED_TYPE,))
@@ -117,9 +120,9 @@ def process_floor(dxf_path: str, *, rules=None, layers=None, units=None, include
     if names:
         names_report = timed("names", 95, 98, semantics.assign_names, refined.areas, drawing.texts, level,
                              rules=name_rules, grid=grid, passages=refined.passages,
-                             hidden_texts=getattr(drawing, "hidden_texts", None))
+                             hidden_texts=getattr(drawing, "hidden_texts", None), classified=classified)
         progress.info(names_report.summary())
-    closed, share = _closed_spaces(refined, drawing, name_rules, rstats, progress)
+    closed, share = _closed_spaces(refined, drawing, name_rules, rstats, progress, classified)
     t0, c0 = time.perf_counter(), time.process_time()
     outline = floor_outline(refined.areas)
     timings["outline"], cpu["outline"] = time.perf_counter() - t0, time.process_time() - c0
@@ -138,6 +141,14 @@ def process_floor(dxf_path: str, *, rules=None, layers=None, units=None, include
     return FloorResult(drawing, grid, seg, refined, floor_area, stats, names_report)
 
 
+def _inside_points(drawing: CadDrawing, name_rules, classified):
+    """``segmentation.room_name_points`` of the drawing from its classified texts (an (n, 2) array)."""
+    import numpy as np
+
+    pts = [(x, y) for x, y, _ in semantics.room_name_points(drawing.texts, name_rules, classified=classified)]
+    return np.asarray(pts, dtype=np.float64).reshape(-1, 2)
+
+
 def _carve_anchors(refined: AreaGraph, drawing: CadDrawing, grid, timings, cpu, progress) -> None:
     """``anchors.carve_anchors`` on the refined graph (labels repainted), timed with stage "types"."""
     t0, c0 = time.perf_counter(), time.process_time()
@@ -151,17 +162,19 @@ def _carve_anchors(refined: AreaGraph, drawing: CadDrawing, grid, timings, cpu, 
     cpu["types"] = cpu.get("types", 0.0) + time.process_time() - c0
 
 
-def _closed_spaces(refined: AreaGraph, drawing: CadDrawing, name_rules, rstats, progress):
+def _closed_spaces(refined: AreaGraph, drawing: CadDrawing, name_rules, rstats, progress, classified=None):
     """Wall cavities, ducts and shafts the drawing closes on all sides (``segmentation.closed_spaces``):
     tagged ``cad2osmag:closed=yes`` and counted out of the largest component's share (issue 8, item 6)."""
     if rstats.get("components", 1) <= 1:
         return [], rstats.get("largest_component_share", 1.0)
-    pts = semantics.room_name_points(drawing.texts, name_rules)
+    if classified is None:
+        classified = semantics.classify_labels(drawing.texts, name_rules)
+    pts = semantics.room_name_points(drawing.texts, name_rules, classified=classified)
     closed = segmentation.closed_spaces(refined.areas, refined.passages, pts)
     _count_out(refined, closed, "cad2osmag:closed", "closed space(s) no passage reaches and no room name labels "
                "(wall cavities, ducts, shafts", progress)
     roofs = _roof_spaces(refined, drawing, closed, rstats, progress)
-    outdoor = _outdoor_spaces(refined, drawing, name_rules, list(closed) + roofs, rstats, progress)
+    outdoor = _outdoor_spaces(refined, drawing, name_rules, list(closed) + roofs, rstats, progress, classified)
     return closed, segmentation.connected_share(refined.areas, list(closed) + roofs + outdoor)
 
 
@@ -186,11 +199,14 @@ def _count_out(refined: AreaGraph, ids, tag: str, what: str, progress) -> None:
                       "out of the connectivity")
 
 
-def _outdoor_spaces(refined: AreaGraph, drawing: CadDrawing, name_rules, counted_out, rstats, progress):
+def _outdoor_spaces(refined: AreaGraph, drawing: CadDrawing, name_rules, counted_out, rstats, progress,
+                    classified=None):
     """Terraces and landscape outside the facade no passage reaches and no room name labels
     (``segmentation.outdoor_spaces``): tagged ``cad2osmag:outdoor=yes``, listed in ``rstats['outdoor_spaces']``
     and counted out of the share, like roofs."""
-    names = [(x, y, lab.text) for lab in semantics.classify_labels(drawing.texts, name_rules)
+    if classified is None:
+        classified = semantics.classify_labels(drawing.texts, name_rules)
+    names = [(x, y, lab.text) for lab in classified
              if lab.role in ("name", "number") for x, y in [(lab.x, lab.y)] + list(lab.alts)]
     outdoor = segmentation.outdoor_spaces(refined.areas, refined.passages, names, counted_out)
     rstats["outdoor_spaces"] = outdoor
