@@ -221,18 +221,23 @@ def _groups(shapes: Sequence[Polygon], gap: float, angles=None, flight_gap: floa
     return out
 
 
-def find_anchor_symbols(geometries: Sequence[CadGeometry]) -> List[Tuple[str, Polygon, tuple, bool]]:
+def find_anchor_symbols(geometries: Sequence[CadGeometry], shapes=None) -> List[Tuple[str, Polygon, tuple, bool]]:
     """Stair footprints' cores (runs of treads, flights of one stair grouped) and lift groups (crosses)
     the drawing shows, on any layer: [(kind, hull, tread angles (stairs; radians modulo pi), whether treads
-    continue beyond the hull (a curved flight))]."""
+    continue beyond the hull (a curved flight))]. ``shapes``: the drawing's ``area_types.Symbols`` (segments,
+    runs and crosses found once for the typing), used when they are of the same geometries."""
     geoms = [g for g in geometries if g.kind != "boundary"]
-    segs = _segments(geoms)
-    runs = stair_runs(geoms, segments=segs)
+    if shapes is None or not shapes.same(geoms):
+        from .area_types import Symbols
+
+        shapes = Symbols(geoms)
+    segs = shapes.segments
+    runs = shapes.runs
     groups = _groups([r for r, _ in runs], GROUP_GAP["stairs"], [a for _, a in runs], FLIGHT_GAP, LANDING_GAP)
     out = [("stairs", g, a) for g, a in groups]
     curved = _continuing(groups, segs)
     # a cross on or beside a flight is its break line (the cut of the plan through the flight), not a lift car
-    crosses = [b for b in find_lift_crosses(geoms, segments=segs) if not any(b.distance(r) < BREAK_GAP for r, _ in runs)]
+    crosses = [b for b in shapes.crosses if not any(b.distance(r) < BREAK_GAP for r, _ in runs)]
     out += [("elevator", g, ()) for g, _ in _groups(crosses, GROUP_GAP["elevator"])]
     return [(k, g, a, i < len(groups) and curved[i]) for i, (k, g, a) in enumerate(out)]
 
@@ -523,6 +528,13 @@ def carve_anchors(areas: List[Area], passages: List[Passage], geometries: Sequen
             carved_ids.discard(b.id)
         pieces_by_id = {host.id: host.polygon, new.id: fpoly}
         pieces_by_id.update({e.id: e.polygon for e in extra})
+        rims: Dict[int, object] = {}  # each piece's border buffered once (not once per passage of the host)
+
+        def rim(i):
+            if i not in rims:
+                rims[i] = pieces_by_id[i].boundary.buffer(1e-3)
+            return rims[i]
+
         # the host's passages go to the piece they lie on; one that spans two pieces (a door the cut runs
         # through) is split at the cut, one part per piece
         for p in list(passages):
@@ -553,7 +565,7 @@ def carve_anchors(areas: List[Area], passages: List[Passage], geometries: Sequen
                         next_pass += 1
                 continue
             # the piece whose border holds most of the passage (its midpoint may lie on two borders)
-            best = max(pieces_by_id, key=lambda i: (p.line.intersection(pieces_by_id[i].boundary.buffer(1e-3)).length,
+            best = max(pieces_by_id, key=lambda i: (p.line.intersection(rim(i)).length,
                                                     -pieces_by_id[i].distance(p.line.interpolate(0.5, normalized=True))))
             if best != other:
                 setattr(p, end, best)

@@ -17,7 +17,7 @@ from shapely.geometry import Polygon
 from shapely.ops import unary_union
 
 from . import anchors, cad_import, osmag, rasterize, refine, segmentation, semantics
-from .area_types import classify_vertical_areas
+from .area_types import Symbols, classify_vertical_areas
 from .georef import LocalFrame
 from .errors import Canceled, InputError
 from .model import Area, AreaGraph, CadDrawing, OccupancyGrid
@@ -105,7 +105,8 @@ def process_floor(dxf_path: str, *, rules=None, layers=None, units=None, include
                 inside_points=_inside_points(drawing, name_rules, classified), door_hints=drawing.doors, footprint=True,
                 boundary=rasterize.boundary_mask(drawing.boundary, grid))
     t0, c0 = time.perf_counter(), time.process_time()
-    vertical = classify_vertical_areas(seg.areas, drawing.geometries)
+    symbols = Symbols(drawing.geometries)  # segments, stair runs and lift crosses: found once, typing and carve
+    vertical = classify_vertical_areas(seg.areas, drawing.geometries, symbols=symbols)
     if vertical:
         progress.info(f"{len(vertical)} stair/lift areas recognised from their symbols")
     protected = semantics.protect_labelled_areas(seg.areas, drawing.texts, min_area, name_rules,
@@ -115,7 +116,7 @@ def process_floor(dxf_path: str, *, rules=None, layers=None, units=None, include
                             min_area=min_area, keep_types=refine.KEEP_TYPES + (semantics.PROTECTED_TYPE,))
     semantics.restore_types(protected, seg.areas, refined.areas)
     if carve:  # stairs and lifts swallowed by a larger area become areas of their own (before names: codes name them)
-        _carve_anchors(refined, drawing, grid, timings, cpu, progress)
+        _carve_anchors(refined, drawing, grid, timings, cpu, progress, symbols)
     names_report = None
     if names:
         names_report = timed("names", 95, 98, semantics.assign_names, refined.areas, drawing.texts, level,
@@ -149,10 +150,12 @@ def _inside_points(drawing: CadDrawing, name_rules, classified):
     return np.asarray(pts, dtype=np.float64).reshape(-1, 2)
 
 
-def _carve_anchors(refined: AreaGraph, drawing: CadDrawing, grid, timings, cpu, progress) -> None:
+def _carve_anchors(refined: AreaGraph, drawing: CadDrawing, grid, timings, cpu, progress, symbols=None) -> None:
     """``anchors.carve_anchors`` on the refined graph (labels repainted), timed with stage "types"."""
     t0, c0 = time.perf_counter(), time.process_time()
-    st = anchors.carve_anchors(refined.areas, refined.passages, drawing.geometries, progress=progress.sub(95, 95))
+    found = anchors.find_anchor_symbols(drawing.geometries, shapes=symbols)
+    st = anchors.carve_anchors(refined.areas, refined.passages, drawing.geometries, progress=progress.sub(95, 95),
+                               symbols=found)
     anchors.relabel(refined.labels, grid, refined.areas, st)
     if st["carved"]:
         progress.info(f"{len(st['carved'])} stair/lift area(s) carved out of the areas that swallowed them ("
