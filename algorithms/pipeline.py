@@ -50,10 +50,18 @@ def floor_outline(areas: Sequence[Area], wall_gap: float = 0.8) -> Optional[Poly
     import shapely
 
     arr = np.asarray(polys, dtype=object)
-    exact = shapely.union_all(arr)  # containment is exact, whatever the buffers rounded
+    exact = None
+    reach = _OutlineReach(arr)
     gap = wall_gap
     while True:
         half = gap / 2.0
+        if gap < 8.0 and reach.apart(half):
+            # the buffered areas cannot all meet at this gap: the result would not be one polygon (the mitre
+            # buffers of a floor with a far piece were ~2/3 of this step on SIST-F1.dwg)
+            gap *= 2.0
+            continue
+        if exact is None:
+            exact = shapely.union_all(arr)  # containment is exact, whatever the buffers rounded
         # one vectorised buffer of every area and one union (the loop of buffers was ~1/3 of this step)
         merged = shapely.union_all(shapely.buffer(arr, half, join_style="mitre")).buffer(-half / 2.0, join_style=2)
         merged = unary_union([merged, exact])
@@ -62,6 +70,60 @@ def floor_outline(areas: Sequence[Area], wall_gap: float = 0.8) -> Optional[Poly
         if gap >= 8.0:
             return Polygon(merged.convex_hull.exterior)
         gap *= 2.0
+
+
+_MITRE_LIMIT = 5.0  # shapely's default mitre_limit: a mitred corner reaches at most this many distances out
+
+
+class _OutlineReach:
+    """Which areas' mitre buffers (``floor_outline``) can meet: the buffer of polygon P by h lies within
+    h * f(P) of P, f(P) = 1 / sin(phi / 2) over its sharpest corner phi (capped by the mitre limit), so
+    two buffers meet only where dist(P, Q) <= h * (f(P) + f(Q)). When the areas fall into several groups
+    at that reach, the union of the buffers has several pieces, and so does the eroded outline (each
+    piece still holds its areas grown by h / 2): ``floor_outline`` goes to the next gap without buffering."""
+
+    def __init__(self, arr):
+        import numpy as np
+        import shapely
+
+        self.arr = arr
+        self.f = np.array([self._factor(p) for p in arr], dtype=float)
+        self.tree = shapely.STRtree(arr)
+
+    @staticmethod
+    def _factor(poly) -> float:
+        import numpy as np
+        import shapely
+
+        f = 1.0
+        for ring in [poly.exterior] + list(poly.interiors):
+            xy = shapely.get_coordinates(ring)[:-1]
+            if len(xy) < 3:
+                return _MITRE_LIMIT * 1.01
+            a, b = np.roll(xy, 1, axis=0) - xy, np.roll(xy, -1, axis=0) - xy
+            na, nb = np.hypot(a[:, 0], a[:, 1]), np.hypot(b[:, 0], b[:, 1])
+            if not ((na > 0) & (nb > 0)).all():
+                return _MITRE_LIMIT * 1.01  # a repeated vertex: assume the sharpest corner
+            cos = np.clip((a * b).sum(axis=1) / (na * nb), -1.0, 1.0)
+            s = float(np.sin(np.arccos(cos) / 2.0).min())
+            f = max(f, 1.0 / s if s > 0 else _MITRE_LIMIT)
+        return min(_MITRE_LIMIT, f) * 1.01 + 1e-9  # a margin for rounding: only ever buffers more often
+
+    def apart(self, half: float) -> bool:
+        """The areas fall into more than one group at the reach of buffers by ``half``."""
+        import numpy as np
+        import shapely
+        from scipy.sparse import coo_matrix
+        from scipy.sparse.csgraph import connected_components
+
+        n = len(self.arr)
+        if n < 2:
+            return False
+        i, j = self.tree.query(self.arr, predicate="dwithin", distance=2.0 * half * float(self.f.max()))
+        near = shapely.distance(self.arr[i], self.arr[j]) <= half * (self.f[i] + self.f[j])
+        k, _ = connected_components(coo_matrix((np.ones(int(near.sum())), (i[near], j[near])), shape=(n, n)),
+                                    directed=False)
+        return k > 1
 
 
 def process_floor(dxf_path: str, *, rules=None, layers=None, units=None, include_doors: bool = False, plan=None,
