@@ -603,11 +603,18 @@ def relabel(labels: Optional[np.ndarray], grid, areas: Sequence[Area], stats) ->
             a = by_id.get(aid)
             if a is None:
                 continue
-            m = np.zeros((rows, cols), np.uint8)
             xs, ys = np.asarray(a.polygon.exterior.coords).T
             c, r = grid.world_to_pixel(xs, ys)
-            cv2.fillPoly(m, [np.round(np.column_stack((c, r)) * 8).astype(np.int32)], 1, shift=3)
-            labels[(labels == host_id) & m.astype(bool)] = a.id
+            pts = np.round(np.column_stack((c, r)) * 8).astype(np.int32)
+            # only the window of the polygon's pixels (a mask of the whole raster per piece was most of this)
+            c0, r0 = max(int(pts[:, 0].min()) >> 3, 0), max(int(pts[:, 1].min()) >> 3, 0)
+            c1, r1 = min((int(pts[:, 0].max()) >> 3) + 2, cols), min((int(pts[:, 1].max()) >> 3) + 2, rows)
+            if c1 <= c0 or r1 <= r0:
+                continue
+            m = np.zeros((r1 - r0, c1 - c0), np.uint8)
+            cv2.fillPoly(m, [pts - np.array([c0 << 3, r0 << 3], np.int32)], 1, shift=3)
+            win = labels[r0:r1, c0:c1]
+            win[(win == host_id) & m.astype(bool)] = a.id
 
 
 __all__ = ["carve_anchors", "relabel", "find_anchor_symbols", "footprint"]

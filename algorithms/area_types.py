@@ -182,6 +182,7 @@ def find_stair_runs(geometries: Sequence[CadGeometry], min_treads: int = MIN_TRE
 def stair_runs(geometries: Sequence[CadGeometry], min_treads: int = MIN_TREADS, segments=None):
     """``find_stair_runs`` with each run's tread direction: [(rectangle, angle of the treads in radians,
     modulo pi)]. A flight is entered and left across its treads' direction (its first and last tread)."""
+    import shapely
     from scipy.sparse import coo_matrix
     from scipy.sparse.csgraph import connected_components
     from scipy.spatial import cKDTree
@@ -227,7 +228,8 @@ def stair_runs(geometries: Sequence[CadGeometry], min_treads: int = MIN_TREADS, 
         steps = steps[steps > 0.05]
         if len(steps) < min_treads - 1 or np.std(steps) > 0.25 * np.mean(steps):
             continue
-        runs.append((MultiPoint(S[idx].reshape(-1, 2)).minimum_rotated_rectangle, float(a0)))
+        # the points in one vectorised call (MultiPoint() of an array builds a Point per row in Python)
+        runs.append((shapely.multipoints(S[idx].reshape(-1, 2)).minimum_rotated_rectangle, float(a0)))
     return runs
 
 

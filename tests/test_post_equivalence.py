@@ -335,3 +335,44 @@ def test_given_classification_gives_the_same_points_protection_and_names():
     assert r1.counts() == r2.counts() and r1.named >= 1
     # the records own their ids: the classification passed in is not changed by the naming
     assert all(r.ids is not l.ids for r, l in zip(r1.texts, classified))
+
+
+# ------------------------------------------------------------------ label rasters repainted in a window
+def _relabel_reference(labels, grid, host_id, polys_ids):
+    import cv2
+
+    rows, cols = labels.shape
+    for poly, aid in polys_ids:
+        m = np.zeros((rows, cols), np.uint8)
+        xs, ys = np.asarray(poly.exterior.coords).T
+        c, r = grid.world_to_pixel(xs, ys)
+        cv2.fillPoly(m, [np.round(np.column_stack((c, r)) * 8).astype(np.int32)], 1, shift=3)
+        labels[(labels == host_id) & m.astype(bool)] = aid
+
+
+@pytest.mark.parametrize("seed", range(4))
+def test_relabel_in_a_window_equals_the_whole_raster_mask(seed):
+    from algorithms import anchors
+    from algorithms.model import OccupancyGrid
+
+    rng = np.random.default_rng(seed)
+    labels0 = np.where(rng.random((90, 120)) < 0.9, 7, 3).astype(np.int32)
+    grid = OccupancyGrid(np.zeros((90, 120), np.uint8), -1.3, 20.7, 0.2)
+    polys = []
+    for k in range(6):  # some reach over the raster's border
+        c = rng.uniform(-3, 26, 2) + [0, -2]
+        polys.append(MultiPoint(c + rng.normal(0, 2.0, (7, 2))).convex_hull)
+    areas = [Area(100 + k, p) for k, p in enumerate(polys)]
+    stats = {"carved": [("stairs", 100, 7, 1.0), ("elevator", 103, 7, 1.0)], "pieces": {100: [101, 102]}}
+    got, ref = labels0.copy(), labels0.copy()
+    anchors.relabel(got, grid, areas, stats)
+    _relabel_reference(ref, grid, 7, [(areas[i].polygon, 100 + i) for i in (0, 1, 2, 3)])
+    assert np.array_equal(got, ref) and (got != labels0).any()
+    got2, ref2 = labels0.copy(), labels0.copy()
+    semantics._relabel(got2, grid, 7, [areas[0]] + areas[1:4])
+    sel = ref2 == 7
+    for a in areas[1:4]:
+        m = np.zeros_like(ref2)
+        _relabel_reference(m, grid, 0, [(a.polygon, 1)])
+        ref2[sel & (m == 1)] = a.id
+    assert np.array_equal(got2, ref2)
