@@ -388,6 +388,16 @@ def _on_border(pt, a: Polygon, b: Polygon):
     return (q.x, q.y)
 
 
+def _intersecting(areas: Sequence[Area], geom) -> List[Area]:
+    """The areas whose polygon intersects ``geom``, in order (one vectorised predicate, not one call per area)."""
+    import shapely
+
+    if not areas:
+        return []
+    hit = shapely.intersects(np.array([a.polygon for a in areas], dtype=object), geom)
+    return [a for a, h in zip(areas, hit.tolist()) if h]
+
+
 def carve_anchors(areas: List[Area], passages: List[Passage], geometries: Sequence[CadGeometry],
                   progress=None, symbols=None) -> Dict[str, object]:
     """Carve every stair and lift the drawing shows inside a larger area into a typed area of its own (in
@@ -412,7 +422,7 @@ def carve_anchors(areas: List[Area], passages: List[Passage], geometries: Sequen
     for k, (kind, sym, angles, continues) in enumerate(order):
         progress.check()
         progress.step(100.0 * k / len(order))
-        cand = [a for a in areas if a.type != "structure" and a.polygon is not None and a.polygon.intersects(sym)]
+        cand = _intersecting([a for a in areas if a.type != "structure" and a.polygon is not None], sym)
         if not cand:
             skip("outside every area")
             continue
@@ -431,7 +441,7 @@ def carve_anchors(areas: List[Area], passages: List[Passage], geometries: Sequen
             continue
         fpoly, _walls = fp
         hpoly = host.polygon
-        others = [a.polygon for a in areas if a is not host and a.type != "structure" and a.polygon.intersects(fpoly)]
+        others = [a.polygon for a in _intersecting([a for a in areas if a is not host and a.type != "structure"], fpoly)]
         if others:  # the closed walls never reach into a neighbour
             cut = fpoly.difference(unary_union(others))
             cut = max(getattr(cut, "geoms", [cut]), key=lambda g: g.area) if not cut.is_empty else cut
