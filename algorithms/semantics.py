@@ -1448,7 +1448,7 @@ def _split_area(a: Area, recs: List[TextRecord], names: Dict[str, TextRecord], g
         return None
     t, reg, present, owner = found
     # cells tiling the window: every pixel takes the region of the nearest area pixel
-    _, (ir, ic) = ndimage.distance_transform_edt(reg == 0, return_indices=True)
+    ir, ic = ndimage.distance_transform_edt(reg == 0, return_distances=False, return_indices=True)
     cells = reg[ir, ic].astype(np.int32)
     cell_polys = label_polygons(cells, OccupancyGrid(cells, ox, oy, res))
     pieces = []

@@ -376,3 +376,22 @@ def test_relabel_in_a_window_equals_the_whole_raster_mask(seed):
         _relabel_reference(m, grid, 0, [(a.polygon, 1)])
         ref2[sel & (m == 1)] = a.id
     assert np.array_equal(got2, ref2)
+
+
+# ------------------------------------------------------------------ refine: deviation figures
+@pytest.mark.parametrize("seed", range(4))
+def test_max_hausdorff_equals_measuring_every_arc(seed):
+    import shapely
+
+    rng = np.random.default_rng(seed)
+    orig, simple = [], []
+    for _ in range(150):
+        n = int(rng.integers(2, 40))
+        xy = np.cumsum(rng.normal(0, 0.3, (n, 2)), axis=0) + rng.uniform(0, 50, 2)
+        keep = np.sort(np.unique(np.concatenate([[0, n - 1], rng.integers(0, n, n // 3)])))
+        orig.append(xy)
+        simple.append(xy[keep] if rng.random() > 0.05 else xy[[0, n // 2, -1]] + 0.01)  # some not subsequences
+    ref = float(np.max(shapely.hausdorff_distance(refine._lines(orig), refine._lines(simple), densify=0.25)))
+    assert refine._max_hausdorff(orig, simple) == ref
+    for o, s in zip(orig[:40], simple[:40]):
+        assert refine._chord_bound(o, s) >= shapely.hausdorff_distance(LineString(o), LineString(s), densify=0.25)
