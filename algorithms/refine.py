@@ -333,8 +333,8 @@ def _chord_bound(xy: np.ndarray, simple: np.ndarray) -> float:
     (the arc crosses the chord's normal there). inf when ``simple`` is not such a subsequence."""
     if len(simple) < 2 or len(xy) < 2:
         return math.inf
-    oc = xy[:, 0] + 1j * xy[:, 1]
-    idx = np.flatnonzero(np.isin(oc, simple[:, 0] + 1j * simple[:, 1]))
+    kept = set(map(tuple, simple.tolist()))
+    idx = np.array([k for k, p in enumerate(xy.tolist()) if tuple(p) in kept], dtype=np.int64)
     if len(idx) != len(simple) or idx[0] != 0 or idx[-1] != len(xy) - 1 or not np.array_equal(xy[idx], simple):
         return math.inf
     seg = np.clip(np.searchsorted(idx, np.arange(len(xy)), side="right") - 1, 0, len(idx) - 2)
@@ -356,8 +356,10 @@ def _max_hausdorff(orig: List[np.ndarray], simple: List[np.ndarray], batch: int 
     bound = np.array([_chord_bound(o, s) for o, s in zip(orig, simple)])
     order = np.argsort(-bound, kind="stable")
     best = 0.0
-    for k in range(0, len(order), batch):
-        sel = order[k:k + batch]
+    k = 0
+    while k < len(order):
+        sel = order[k:k + (1 if k == 0 else batch)]  # the arc of the largest bound first: it often is the one
+        k += len(sel)
         if bound[sel[0]] < best:
             break
         sel = sel[bound[sel] >= best]
