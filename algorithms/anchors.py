@@ -538,12 +538,18 @@ def carve_anchors(areas: List[Area], passages: List[Passage], geometries: Sequen
             carved_ids.discard(b.id)
         pieces_by_id = {host.id: host.polygon, new.id: fpoly}
         pieces_by_id.update({e.id: e.polygon for e in extra})
-        rims: Dict[int, object] = {}  # each piece's border buffered once (not once per passage of the host)
+        rims: Dict[int, object] = {}  # each piece (and its border) buffered once, not once per passage of the host
+        grown: Dict[int, object] = {}
 
         def rim(i):
             if i not in rims:
                 rims[i] = pieces_by_id[i].boundary.buffer(1e-3)
             return rims[i]
+
+        def grown_piece(i):
+            if i not in grown:
+                grown[i] = pieces_by_id[i].buffer(1e-4)
+            return grown[i]
 
         # the host's passages go to the piece they lie on; one that spans two pieces (a door the cut runs
         # through) is split at the cut, one part per piece
@@ -556,7 +562,7 @@ def carve_anchors(areas: List[Area], passages: List[Passage], geometries: Sequen
             for i, poly in pieces_by_id.items():
                 if i == other:
                     continue
-                seg = p.line.intersection(poly.buffer(1e-4))
+                seg = p.line.intersection(grown_piece(i))
                 if seg.geom_type == "LineString" and seg.length >= 0.2 and seg.length < p.line.length - 1e-3:
                     parts.append((i, seg))
             if len(parts) >= 2:

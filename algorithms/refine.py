@@ -152,7 +152,8 @@ def merge_small_areas(areas: List[Area], passages: List[Passage], min_area: floa
         near = near[near != si]  # in list order: the first longest border wins, as before
         if len(near):
             polys = np.array([areas[i].polygon for i in near.tolist()], dtype=object)
-            touching = np.flatnonzero(shapely.intersects(s.polygon, polys))
+            shapely.prepare(polys)  # the neighbours are often large (a hall, the outdoor space): prepared once
+            touching = np.flatnonzero(shapely.intersects(polys, s.polygon))
             if len(touching):
                 lens = shapely.length(shapely.intersection(s.polygon.boundary,
                                                            shapely.boundary(polys[touching])))
