@@ -1493,13 +1493,14 @@ def _geodesic_regions(markers: np.ndarray, inside: np.ndarray, max_iter: int = 5
     # cross and square steps alternate: an octagonal metric, close to the Euclidean one
     kernels = (cv2.getStructuringElement(cv2.MORPH_CROSS, (3, 3)), np.ones((3, 3), np.uint8))
     todo = inside & (lab == 0)
+    new = np.empty_like(todo)
     for it in range(max_iter):
         grown = cv2.dilate(lab, kernels[it % 2])
-        new = todo & (grown > 0)
+        np.logical_and(todo, grown > 0, out=new)
         if not new.any():
             break
-        lab[new] = grown[new]
-        todo &= ~new
+        np.copyto(lab, grown, where=new)  # as lab[new] = grown[new], without gathering the pixels
+        todo ^= new  # new lies in todo: as todo &= ~new
     return lab.astype(np.int32)
 
 

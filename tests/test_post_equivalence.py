@@ -395,3 +395,34 @@ def test_max_hausdorff_equals_measuring_every_arc(seed):
     assert refine._max_hausdorff(orig, simple) == ref
     for o, s in zip(orig[:40], simple[:40]):
         assert refine._chord_bound(o, s) >= shapely.hausdorff_distance(LineString(o), LineString(s), densify=0.25)
+
+
+# ------------------------------------------------------------------ names: geodesic regions of a split
+def _geodesic_reference(markers, inside, max_iter=5000):
+    import cv2
+
+    lab = markers.astype(np.uint16)
+    kernels = (cv2.getStructuringElement(cv2.MORPH_CROSS, (3, 3)), np.ones((3, 3), np.uint8))
+    todo = inside & (lab == 0)
+    for it in range(max_iter):
+        grown = cv2.dilate(lab, kernels[it % 2])
+        new = todo & (grown > 0)
+        if not new.any():
+            break
+        lab[new] = grown[new]
+        todo &= ~new
+    return lab.astype(np.int32)
+
+
+@pytest.mark.parametrize("seed", range(4))
+def test_geodesic_regions_equal_the_masked_assignment_loop(seed):
+    rng = np.random.default_rng(seed)
+    inside = rng.random((70, 90)) < 0.8
+    markers = np.zeros((70, 90), np.int32)
+    for k in range(1, 6):
+        r, c = rng.integers(0, 70), rng.integers(0, 90)
+        markers[r:r + 3, c:c + 3] = k
+    markers[~inside] = 0
+    assert np.array_equal(semantics._geodesic_regions(markers, inside), _geodesic_reference(markers, inside))
+    assert np.array_equal(semantics._geodesic_regions(markers, inside, max_iter=3),
+                          _geodesic_reference(markers, inside, max_iter=3))
