@@ -10,16 +10,18 @@ Public API
     role ``name`` | ``number`` | ``ignored``; reason says why (``dimension``, ``area``, ``elevation``,
     ``door/window code``, ``axis``, ``stair arrow``, ``note``, ``title``, ``title block``, ``empty``...).
     ``text`` may be a ``CadText`` (its layer, block and ATTRIB tag are then used).
-``room_name_points(texts, rules=None) -> [(x, y, text)]``
+``room_name_points(texts, rules=None, classified=None) -> [(x, y, text)]``
     Where the room names (and numbers) of a drawing are: evidence that a space is inside the building.
 ``assign_names(areas, texts, level, rules=None, progress=None, grid=None, labels=None, passages=None,
-split=True) -> NamesReport``
+split=True, classified=None) -> NamesReport``
     Scores every room text against every area exactly as the paper (below), gives each text to its
     best-scoring area, joins name + number, splits areas holding two different room names when a
     narrowing separates them (else ``label_conflict``), suffixes duplicate names, gives unnamed areas
     a stable id ``<level>-<id>`` and types areas from keywords, codes and geometry. Areas are changed in
     place (``name``, ``ref``, ``type``, ``tags``); split pieces and their passages are appended to
     ``areas`` / ``passages``.
+``classified``: ``classify_labels(texts, rules)`` computed once by the caller (``pipeline.process_floor``
+classifies a drawing's texts once and passes it to every function that needs it).
 
 Score (Zhang et al., "CAD to osmAG", text-to-room association): with the text point p, the area's
 centroid c and area A (m²), S = sqrt(A / pi), rho = |p - c| / S, d_b = distance from p to the boundary:
