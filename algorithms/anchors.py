@@ -88,20 +88,18 @@ def _box_polygon(c, u, v, lo, hi) -> Polygon:
 def _wall_distances(boundary, starts: np.ndarray, direction: np.ndarray, reach: float) -> np.ndarray:
     """Distance from each start point along ``direction`` to the first crossing of ``boundary`` (inf when
     none within ``reach``)."""
+    import shapely
+
     out = np.full(len(starts), np.inf)
-    for k, p in enumerate(starts):
-        ray = LineString([tuple(p), tuple(p + direction * reach)])
-        hit = ray.intersection(boundary)
-        if hit.is_empty:
-            continue
-        pts = []
-        for g in getattr(hit, "geoms", [hit]):
-            if g.geom_type == "Point":
-                pts.append((g.x, g.y))
-            else:
-                pts.extend(np.asarray(g.coords)[:, :2].tolist())
-        if pts:
-            out[k] = float(np.min(np.hypot(*(np.asarray(pts) - p).T)))
+    if not len(starts):
+        return out
+    starts = np.asarray(starts, dtype=float)
+    # every ray in one vectorised intersection (the crossings' coordinates, points and overlaps alike)
+    rays = shapely.linestrings(np.stack([starts, starts + direction * reach], axis=1))
+    xy, idx = shapely.get_coordinates(shapely.intersection(rays, boundary), return_index=True)
+    for k in np.unique(idx).tolist():
+        pts = xy[idx == k]
+        out[k] = float(np.min(np.hypot(*(pts - starts[k]).T)))
     return out
 
 

@@ -426,3 +426,37 @@ def test_geodesic_regions_equal_the_masked_assignment_loop(seed):
     assert np.array_equal(semantics._geodesic_regions(markers, inside), _geodesic_reference(markers, inside))
     assert np.array_equal(semantics._geodesic_regions(markers, inside, max_iter=3),
                           _geodesic_reference(markers, inside, max_iter=3))
+
+
+# ------------------------------------------------------------------ carve: rays to the walls
+def _wall_distances_reference(boundary, starts, direction, reach):
+    out = np.full(len(starts), np.inf)
+    for k, p in enumerate(starts):
+        hit = LineString([tuple(p), tuple(p + direction * reach)]).intersection(boundary)
+        if hit.is_empty:
+            continue
+        pts = []
+        for g in getattr(hit, "geoms", [hit]):
+            if g.geom_type == "Point":
+                pts.append((g.x, g.y))
+            else:
+                pts.extend(np.asarray(g.coords)[:, :2].tolist())
+        if pts:
+            out[k] = float(np.min(np.hypot(*(np.asarray(pts) - p).T)))
+    return out
+
+
+@pytest.mark.parametrize("seed", range(4))
+def test_wall_distances_in_one_call_equal_the_ray_loop(seed):
+    from algorithms import anchors
+
+    rng = np.random.default_rng(seed)
+    host = Polygon(MultiPoint(rng.uniform(0, 10, (9, 2))).convex_hull.exterior, [box(4, 4, 5, 5).exterior.coords])
+    boundary = host.boundary
+    starts = rng.uniform(-1, 11, (25, 2))
+    starts[0] = (4.0, 3.0)  # a ray along a hole's side: an overlap, not a point
+    for direction in (np.array([1.0, 0.0]), np.array([0.0, 1.0]), np.array([-0.6, 0.8])):
+        got = anchors._wall_distances(boundary, starts, direction, 3.0)
+        ref = _wall_distances_reference(boundary, starts, direction, 3.0)
+        assert np.array_equal(got, ref) and np.isfinite(ref).sum() >= 3
+    assert anchors._wall_distances(boundary, starts[:0], np.array([1.0, 0.0]), 1.0).shape == (0,)
