@@ -88,20 +88,18 @@ def _box_polygon(c, u, v, lo, hi) -> Polygon:
 def _wall_distances(boundary, starts: np.ndarray, direction: np.ndarray, reach: float) -> np.ndarray:
     """Distance from each start point along ``direction`` to the first crossing of ``boundary`` (inf when
     none within ``reach``)."""
+    import shapely
+
     out = np.full(len(starts), np.inf)
-    for k, p in enumerate(starts):
-        ray = LineString([tuple(p), tuple(p + direction * reach)])
-        hit = ray.intersection(boundary)
-        if hit.is_empty:
-            continue
-        pts = []
-        for g in getattr(hit, "geoms", [hit]):
-            if g.geom_type == "Point":
-                pts.append((g.x, g.y))
-            else:
-                pts.extend(np.asarray(g.coords)[:, :2].tolist())
-        if pts:
-            out[k] = float(np.min(np.hypot(*(np.asarray(pts) - p).T)))
+    if not len(starts):
+        return out
+    starts = np.asarray(starts, dtype=float)
+    # every ray in one vectorised intersection (the crossings' coordinates, points and overlaps alike)
+    rays = shapely.linestrings(np.stack([starts, starts + direction * reach], axis=1))
+    xy, idx = shapely.get_coordinates(shapely.intersection(rays, boundary), return_index=True)
+    for k in np.unique(idx).tolist():
+        pts = xy[idx == k]
+        out[k] = float(np.min(np.hypot(*(pts - starts[k]).T)))
     return out
 
 
@@ -221,18 +219,23 @@ def _groups(shapes: Sequence[Polygon], gap: float, angles=None, flight_gap: floa
     return out
 
 
-def find_anchor_symbols(geometries: Sequence[CadGeometry]) -> List[Tuple[str, Polygon, tuple, bool]]:
+def find_anchor_symbols(geometries: Sequence[CadGeometry], shapes=None) -> List[Tuple[str, Polygon, tuple, bool]]:
     """Stair footprints' cores (runs of treads, flights of one stair grouped) and lift groups (crosses)
     the drawing shows, on any layer: [(kind, hull, tread angles (stairs; radians modulo pi), whether treads
-    continue beyond the hull (a curved flight))]."""
+    continue beyond the hull (a curved flight))]. ``shapes``: the drawing's ``area_types.Symbols`` (segments,
+    runs and crosses found once for the typing), used when they are of the same geometries."""
     geoms = [g for g in geometries if g.kind != "boundary"]
-    segs = _segments(geoms)
-    runs = stair_runs(geoms, segments=segs)
+    if shapes is None or not shapes.same(geoms):
+        from .area_types import Symbols
+
+        shapes = Symbols(geoms)
+    segs = shapes.segments
+    runs = shapes.runs
     groups = _groups([r for r, _ in runs], GROUP_GAP["stairs"], [a for _, a in runs], FLIGHT_GAP, LANDING_GAP)
     out = [("stairs", g, a) for g, a in groups]
     curved = _continuing(groups, segs)
     # a cross on or beside a flight is its break line (the cut of the plan through the flight), not a lift car
-    crosses = [b for b in find_lift_crosses(geoms, segments=segs) if not any(b.distance(r) < BREAK_GAP for r, _ in runs)]
+    crosses = [b for b in shapes.crosses if not any(b.distance(r) < BREAK_GAP for r, _ in runs)]
     out += [("elevator", g, ()) for g, _ in _groups(crosses, GROUP_GAP["elevator"])]
     return [(k, g, a, i < len(groups) and curved[i]) for i, (k, g, a) in enumerate(out)]
 
@@ -383,6 +386,16 @@ def _on_border(pt, a: Polygon, b: Polygon):
     return (q.x, q.y)
 
 
+def _intersecting(areas: Sequence[Area], geom) -> List[Area]:
+    """The areas whose polygon intersects ``geom``, in order (one vectorised predicate, not one call per area)."""
+    import shapely
+
+    if not areas:
+        return []
+    hit = shapely.intersects(np.array([a.polygon for a in areas], dtype=object), geom)
+    return [a for a, h in zip(areas, hit.tolist()) if h]
+
+
 def carve_anchors(areas: List[Area], passages: List[Passage], geometries: Sequence[CadGeometry],
                   progress=None, symbols=None) -> Dict[str, object]:
     """Carve every stair and lift the drawing shows inside a larger area into a typed area of its own (in
@@ -407,7 +420,7 @@ def carve_anchors(areas: List[Area], passages: List[Passage], geometries: Sequen
     for k, (kind, sym, angles, continues) in enumerate(order):
         progress.check()
         progress.step(100.0 * k / len(order))
-        cand = [a for a in areas if a.type != "structure" and a.polygon is not None and a.polygon.intersects(sym)]
+        cand = _intersecting([a for a in areas if a.type != "structure" and a.polygon is not None], sym)
         if not cand:
             skip("outside every area")
             continue
@@ -426,7 +439,7 @@ def carve_anchors(areas: List[Area], passages: List[Passage], geometries: Sequen
             continue
         fpoly, _walls = fp
         hpoly = host.polygon
-        others = [a.polygon for a in areas if a is not host and a.type != "structure" and a.polygon.intersects(fpoly)]
+        others = [a.polygon for a in _intersecting([a for a in areas if a is not host and a.type != "structure"], fpoly)]
         if others:  # the closed walls never reach into a neighbour
             cut = fpoly.difference(unary_union(others))
             cut = max(getattr(cut, "geoms", [cut]), key=lambda g: g.area) if not cut.is_empty else cut
@@ -523,6 +536,19 @@ def carve_anchors(areas: List[Area], passages: List[Passage], geometries: Sequen
             carved_ids.discard(b.id)
         pieces_by_id = {host.id: host.polygon, new.id: fpoly}
         pieces_by_id.update({e.id: e.polygon for e in extra})
+        rims: Dict[int, object] = {}  # each piece (and its border) buffered once, not once per passage of the host
+        grown: Dict[int, object] = {}
+
+        def rim(i):
+            if i not in rims:
+                rims[i] = pieces_by_id[i].boundary.buffer(1e-3)
+            return rims[i]
+
+        def grown_piece(i):
+            if i not in grown:
+                grown[i] = pieces_by_id[i].buffer(1e-4)
+            return grown[i]
+
         # the host's passages go to the piece they lie on; one that spans two pieces (a door the cut runs
         # through) is split at the cut, one part per piece
         for p in list(passages):
@@ -534,7 +560,7 @@ def carve_anchors(areas: List[Area], passages: List[Passage], geometries: Sequen
             for i, poly in pieces_by_id.items():
                 if i == other:
                     continue
-                seg = p.line.intersection(poly.buffer(1e-4))
+                seg = p.line.intersection(grown_piece(i))
                 if seg.geom_type == "LineString" and seg.length >= 0.2 and seg.length < p.line.length - 1e-3:
                     parts.append((i, seg))
             if len(parts) >= 2:
@@ -553,7 +579,7 @@ def carve_anchors(areas: List[Area], passages: List[Passage], geometries: Sequen
                         next_pass += 1
                 continue
             # the piece whose border holds most of the passage (its midpoint may lie on two borders)
-            best = max(pieces_by_id, key=lambda i: (p.line.intersection(pieces_by_id[i].boundary.buffer(1e-3)).length,
+            best = max(pieces_by_id, key=lambda i: (p.line.intersection(rim(i)).length,
                                                     -pieces_by_id[i].distance(p.line.interpolate(0.5, normalized=True))))
             if best != other:
                 setattr(p, end, best)
@@ -591,11 +617,18 @@ def relabel(labels: Optional[np.ndarray], grid, areas: Sequence[Area], stats) ->
             a = by_id.get(aid)
             if a is None:
                 continue
-            m = np.zeros((rows, cols), np.uint8)
             xs, ys = np.asarray(a.polygon.exterior.coords).T
             c, r = grid.world_to_pixel(xs, ys)
-            cv2.fillPoly(m, [np.round(np.column_stack((c, r)) * 8).astype(np.int32)], 1, shift=3)
-            labels[(labels == host_id) & m.astype(bool)] = a.id
+            pts = np.round(np.column_stack((c, r)) * 8).astype(np.int32)
+            # only the window of the polygon's pixels (a mask of the whole raster per piece was most of this)
+            c0, r0 = max(int(pts[:, 0].min()) >> 3, 0), max(int(pts[:, 1].min()) >> 3, 0)
+            c1, r1 = min((int(pts[:, 0].max()) >> 3) + 2, cols), min((int(pts[:, 1].max()) >> 3) + 2, rows)
+            if c1 <= c0 or r1 <= r0:
+                continue
+            m = np.zeros((r1 - r0, c1 - c0), np.uint8)
+            cv2.fillPoly(m, [pts - np.array([c0 << 3, r0 << 3], np.int32)], 1, shift=3)
+            win = labels[r0:r1, c0:c1]
+            win[(win == host_id) & m.astype(bool)] = a.id
 
 
 __all__ = ["carve_anchors", "relabel", "find_anchor_symbols", "footprint"]

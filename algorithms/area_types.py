@@ -39,21 +39,62 @@ KIND_TO_TYPE = {"stair": "stairs", "elevator": "elevator"}
 
 
 def _lines(geometries: Sequence[CadGeometry], kind: str):
-    out = []
+    """The geometries of ``kind`` as LineStrings (NaN ring separators dropped, closed ones closed),
+    built in one vectorised call."""
+    import shapely
+
+    arrs = []
     for g in geometries:
         if g.kind != kind or len(g.coords) < 2:
             continue
         c = g.coords[~(g.coords != g.coords).any(axis=1)]  # drop NaN ring separators
         if len(c) >= 2:
-            pts = list(map(tuple, c)) + ([tuple(c[0])] if g.closed else [])
-            out.append(LineString(pts))
-    return out
+            arrs.append(np.concatenate([c[:, :2], c[:1, :2]]) if g.closed else c[:, :2])
+    if not arrs:
+        return []
+    xy = np.concatenate(arrs).astype(np.float64, copy=False)
+    idx = np.repeat(np.arange(len(arrs)), [len(a) for a in arrs])
+    return list(shapely.linestrings(xy, indices=idx))
+
+
+class Symbols:
+    """Straight segments, stair runs and lift crosses of one drawing's geometries, each found once and
+    shared by the stair/lift typing (``classify_by_symbol_shapes``) and the carve (``anchors``)."""
+
+    def __init__(self, geometries: Sequence[CadGeometry]):
+        self.geometries = list(geometries)
+        self._segments = self._runs = self._crosses = None
+
+    def same(self, geometries: Sequence[CadGeometry]) -> bool:
+        """``geometries`` are this drawing's (the very same objects, in order)."""
+        return len(geometries) == len(self.geometries) and all(a is b for a, b in zip(geometries, self.geometries))
+
+    @property
+    def segments(self) -> np.ndarray:
+        if self._segments is None:
+            self._segments = _segments(self.geometries)
+        return self._segments
+
+    @property
+    def runs(self):
+        """``stair_runs`` of the geometries: [(rectangle, tread angle)]."""
+        if self._runs is None:
+            self._runs = stair_runs(self.geometries, segments=self.segments)
+        return self._runs
+
+    @property
+    def crosses(self) -> List[Polygon]:
+        if self._crosses is None:
+            self._crosses = find_lift_crosses(self.geometries, segments=self.segments)
+        return self._crosses
 
 
 def classify_vertical_areas(areas: Sequence[Area], geometries: Sequence[CadGeometry],
-                            density: Dict[str, float] = None, shapes: bool = True) -> Dict[int, str]:
+                            density: Dict[str, float] = None, shapes: bool = True,
+                            symbols: "Symbols" = None) -> Dict[int, str]:
     """Set ``type`` to "stairs"/"elevator" on areas dense in stair/lift symbols (symbol layers), then,
-    with ``shapes``, on areas holding a stair run or a lift cross drawn on any layer. Returns {id: type}."""
+    with ``shapes``, on areas holding a stair run or a lift cross drawn on any layer. Returns {id: type}.
+    ``symbols``: the drawing's ``Symbols`` of ``geometries`` when the caller shares them with the carve."""
     density = dict(DENSITY, **(density or {}))
     changed: Dict[int, str] = {}
     runs = None
@@ -83,7 +124,7 @@ def classify_vertical_areas(areas: Sequence[Area], geometries: Sequence[CadGeome
                 a.type = typ
                 changed[a.id] = typ
     if shapes:
-        changed.update(classify_by_symbol_shapes(areas, geometries))
+        changed.update(classify_by_symbol_shapes(areas, geometries, symbols=symbols))
     return changed
 
 
@@ -141,6 +182,7 @@ def find_stair_runs(geometries: Sequence[CadGeometry], min_treads: int = MIN_TRE
 def stair_runs(geometries: Sequence[CadGeometry], min_treads: int = MIN_TREADS, segments=None):
     """``find_stair_runs`` with each run's tread direction: [(rectangle, angle of the treads in radians,
     modulo pi)]. A flight is entered and left across its treads' direction (its first and last tread)."""
+    import shapely
     from scipy.sparse import coo_matrix
     from scipy.sparse.csgraph import connected_components
     from scipy.spatial import cKDTree
@@ -171,10 +213,13 @@ def stair_runs(geometries: Sequence[CadGeometry], min_treads: int = MIN_TREADS, 
     n = len(S)
     _, lab = connected_components(coo_matrix((np.ones(int(ok.sum())), (i[ok], j[ok])), shape=(n, n)), directed=False)
     runs = []
-    for c in np.unique(lab):
-        idx = np.where(lab == c)[0]
-        if len(idx) < min_treads:
-            continue
+    # only components of >= min_treads segments, in label order, each with its indices ascending (one
+    # np.where per component over every segment was quadratic: most segments are components of their own)
+    sizes = np.bincount(lab)
+    order = np.argsort(lab, kind="stable")
+    starts = np.concatenate([[0], np.cumsum(sizes)])
+    for c in np.flatnonzero(sizes >= min_treads).tolist():
+        idx = order[starts[c]:starts[c + 1]]
         # regular spacing: offsets along the run's normal, sorted, have a steady step
         a0 = ang[idx[0]]
         normal = np.array([-math.sin(a0), math.cos(a0)])
@@ -183,7 +228,8 @@ def stair_runs(geometries: Sequence[CadGeometry], min_treads: int = MIN_TREADS, 
         steps = steps[steps > 0.05]
         if len(steps) < min_treads - 1 or np.std(steps) > 0.25 * np.mean(steps):
             continue
-        runs.append((MultiPoint(S[idx].reshape(-1, 2)).minimum_rotated_rectangle, float(a0)))
+        # the points in one vectorised call (MultiPoint() of an array builds a Point per row in Python)
+        runs.append((shapely.multipoints(S[idx].reshape(-1, 2)).minimum_rotated_rectangle, float(a0)))
     return runs
 
 
@@ -202,6 +248,12 @@ def find_lift_crosses(geometries: Sequence[CadGeometry], segments=None) -> List[
         return []
     mid = S.mean(axis=1)
     pairs = cKDTree(mid).query_pairs(0.15 * CROSS_LENGTH[1], output_type="ndarray")
+    if len(pairs):
+        # the tests below that need no state, on every pair at once (same arithmetic); the loop keeps the rest
+        pi, pj = pairs[:, 0], pairs[:, 1]
+        ok = ~(np.abs(L[pi] - L[pj]) > 0.15 * np.maximum(L[pi], L[pj]))
+        ok &= ~(np.hypot(*(mid[pi] - mid[pj]).T) > 0.1 * np.minimum(L[pi], L[pj]))
+        pairs = pairs[ok]
     out, used = [], set()
     for i, j in pairs.tolist():
         if i in used or j in used:
@@ -222,7 +274,8 @@ def find_lift_crosses(geometries: Sequence[CadGeometry], segments=None) -> List[
     return out
 
 
-def classify_by_symbol_shapes(areas: Sequence[Area], geometries: Sequence[CadGeometry]) -> Dict[int, str]:
+def classify_by_symbol_shapes(areas: Sequence[Area], geometries: Sequence[CadGeometry],
+                              symbols: "Symbols" = None) -> Dict[int, str]:
     """Type areas from stair runs and lift crosses found by shape on any layer (see the module doc).
     Areas already typed stairs/elevator are left alone. Returns {id: type}."""
     changed: Dict[int, str] = {}
@@ -230,8 +283,9 @@ def classify_by_symbol_shapes(areas: Sequence[Area], geometries: Sequence[CadGeo
     if not cand:
         return changed
     tree = STRtree([a.polygon for a in cand])
-    segs = _segments(geometries)
-    for run in find_stair_runs(geometries, segments=segs):
+    if symbols is None or not symbols.same(geometries):
+        symbols = Symbols(geometries)
+    for run in [r for r, _ in symbols.runs]:
         hits = tree.query(run, predicate="intersects")
         best, share = None, 0.0
         for h in hits:
@@ -243,7 +297,7 @@ def classify_by_symbol_shapes(areas: Sequence[Area], geometries: Sequence[CadGeo
         if best is not None and share >= 0.5 * run.area and share >= 0.25 * best.polygon.area:
             best.type = "stairs"
             changed[best.id] = "stairs"
-    for box in find_lift_crosses(geometries, segments=segs):
+    for box in symbols.crosses:
         c = box.centroid
         hits = [cand[int(h)] for h in tree.query(c, predicate="intersects")]
         hits = [a for a in hits if a.id not in changed and a.polygon.area <= 4.0 * box.area]

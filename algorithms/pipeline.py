@@ -17,7 +17,7 @@ from shapely.geometry import Polygon
 from shapely.ops import unary_union
 
 from . import anchors, cad_import, osmag, rasterize, refine, segmentation, semantics
-from .area_types import classify_vertical_areas
+from .area_types import Symbols, classify_vertical_areas
 from .georef import LocalFrame
 from .errors import Canceled, InputError
 from .model import Area, AreaGraph, CadDrawing, OccupancyGrid
@@ -50,10 +50,18 @@ def floor_outline(areas: Sequence[Area], wall_gap: float = 0.8) -> Optional[Poly
     import shapely
 
     arr = np.asarray(polys, dtype=object)
-    exact = shapely.union_all(arr)  # containment is exact, whatever the buffers rounded
+    exact = None
+    reach = _OutlineReach(arr)
     gap = wall_gap
     while True:
         half = gap / 2.0
+        if gap < 8.0 and reach.apart(half):
+            # the buffered areas cannot all meet at this gap: the result would not be one polygon (the mitre
+            # buffers of a floor with a far piece were ~2/3 of this step on SIST-F1.dwg)
+            gap *= 2.0
+            continue
+        if exact is None:
+            exact = shapely.union_all(arr)  # containment is exact, whatever the buffers rounded
         # one vectorised buffer of every area and one union (the loop of buffers was ~1/3 of this step)
         merged = shapely.union_all(shapely.buffer(arr, half, join_style="mitre")).buffer(-half / 2.0, join_style=2)
         merged = unary_union([merged, exact])
@@ -62,6 +70,60 @@ def floor_outline(areas: Sequence[Area], wall_gap: float = 0.8) -> Optional[Poly
         if gap >= 8.0:
             return Polygon(merged.convex_hull.exterior)
         gap *= 2.0
+
+
+_MITRE_LIMIT = 5.0  # shapely's default mitre_limit: a mitred corner reaches at most this many distances out
+
+
+class _OutlineReach:
+    """Which areas' mitre buffers (``floor_outline``) can meet: the buffer of polygon P by h lies within
+    h * f(P) of P, f(P) = 1 / sin(phi / 2) over its sharpest corner phi (capped by the mitre limit), so
+    two buffers meet only where dist(P, Q) <= h * (f(P) + f(Q)). When the areas fall into several groups
+    at that reach, the union of the buffers has several pieces, and so does the eroded outline (each
+    piece still holds its areas grown by h / 2): ``floor_outline`` goes to the next gap without buffering."""
+
+    def __init__(self, arr):
+        import numpy as np
+        import shapely
+
+        self.arr = arr
+        self.f = np.array([self._factor(p) for p in arr], dtype=float)
+        self.tree = shapely.STRtree(arr)
+
+    @staticmethod
+    def _factor(poly) -> float:
+        import numpy as np
+        import shapely
+
+        f = 1.0
+        for ring in [poly.exterior] + list(poly.interiors):
+            xy = shapely.get_coordinates(ring)[:-1]
+            if len(xy) < 3:
+                return _MITRE_LIMIT * 1.01
+            a, b = np.roll(xy, 1, axis=0) - xy, np.roll(xy, -1, axis=0) - xy
+            na, nb = np.hypot(a[:, 0], a[:, 1]), np.hypot(b[:, 0], b[:, 1])
+            if not ((na > 0) & (nb > 0)).all():
+                return _MITRE_LIMIT * 1.01  # a repeated vertex: assume the sharpest corner
+            cos = np.clip((a * b).sum(axis=1) / (na * nb), -1.0, 1.0)
+            s = float(np.sin(np.arccos(cos) / 2.0).min())
+            f = max(f, 1.0 / s if s > 0 else _MITRE_LIMIT)
+        return min(_MITRE_LIMIT, f) * 1.01 + 1e-9  # a margin for rounding: only ever buffers more often
+
+    def apart(self, half: float) -> bool:
+        """The areas fall into more than one group at the reach of buffers by ``half``."""
+        import numpy as np
+        import shapely
+        from scipy.sparse import coo_matrix
+        from scipy.sparse.csgraph import connected_components
+
+        n = len(self.arr)
+        if n < 2:
+            return False
+        i, j = self.tree.query(self.arr, predicate="dwithin", distance=2.0 * half * float(self.f.max()))
+        near = shapely.distance(self.arr[i], self.arr[j]) <= half * (self.f[i] + self.f[j])
+        k, _ = connected_components(coo_matrix((np.ones(int(near.sum())), (i[near], j[near])), shape=(n, n)),
+                                    directed=False)
+        return k > 1
 
 
 def process_floor(dxf_path: str, *, rules=None, layers=None, units=None, include_doors: bool = False, plan=None,
@@ -98,28 +160,32 @@ def process_floor(dxf_path: str, *, rules=None, layers=None, units=None, include
     # projection lines no rule keeps count for the extent (a corridor closed by one lies beyond the walls)
     grid = timed("rasterize", 25, 35, rasterize.rasterize, drawing.geometries + drawing.boundary,
                  resolution=resolution, extent=extent, door_hints=drawing.doors)
+    # the drawing's texts are classified once (segmentation's evidence, protected rooms, names, outdoor spaces)
+    classified = semantics.classify_labels(drawing.texts, name_rules)
     seg = timed("segment", 35, 80, segmentation.segment, grid, door_width=door_width,
                 corridor_width=corridor_width, delta=delta, prune=prune,
-                inside_points=segmentation.room_name_points(drawing.texts, name_rules), door_hints=drawing.doors, footprint=True,
+                inside_points=_inside_points(drawing, name_rules, classified), door_hints=drawing.doors, footprint=True,
                 boundary=rasterize.boundary_mask(drawing.boundary, grid))
     t0, c0 = time.perf_counter(), time.process_time()
-    vertical = classify_vertical_areas(seg.areas, drawing.geometries)
+    symbols = Symbols(drawing.geometries)  # segments, stair runs and lift crosses: found once, typing and carve
+    vertical = classify_vertical_areas(seg.areas, drawing.geometries, symbols=symbols)
     if vertical:
         progress.info(f"{len(vertical)} stair/lift areas recognised from their symbols")
-    protected = semantics.protect_labelled_areas(seg.areas, drawing.texts, min_area, name_rules) if names else {}
+    protected = semantics.protect_labelled_areas(seg.areas, drawing.texts, min_area, name_rules,
+                                                 classified=classified) if names else {}
     timings["types"], cpu["types"] = time.perf_counter() - t0, time.process_time() - c0
     refined, rstats = timed("refine", 80, 95, refine.refine, seg, grid.resolution, epsilon_px=epsilon_px,
                             min_area=min_area, keep_types=refine.KEEP_TYPES + (semantics.PROTECTED_TYPE,))
     semantics.restore_types(protected, seg.areas, refined.areas)
     if carve:  # stairs and lifts swallowed by a larger area become areas of their own (before names: codes name them)
-        _carve_anchors(refined, drawing, grid, timings, cpu, progress)
+        _carve_anchors(refined, drawing, grid, timings, cpu, progress, symbols)
     names_report = None
     if names:
         names_report = timed("names", 95, 98, semantics.assign_names, refined.areas, drawing.texts, level,
                              rules=name_rules, grid=grid, passages=refined.passages,
-                             hidden_texts=getattr(drawing, "hidden_texts", None))
+                             hidden_texts=getattr(drawing, "hidden_texts", None), classified=classified)
         progress.info(names_report.summary())
-    closed, share = _closed_spaces(refined, drawing, name_rules, rstats, progress)
+    closed, share = _closed_spaces(refined, drawing, name_rules, rstats, progress, classified)
     t0, c0 = time.perf_counter(), time.process_time()
     outline = floor_outline(refined.areas)
     timings["outline"], cpu["outline"] = time.perf_counter() - t0, time.process_time() - c0
@@ -138,10 +204,20 @@ def process_floor(dxf_path: str, *, rules=None, layers=None, units=None, include
     return FloorResult(drawing, grid, seg, refined, floor_area, stats, names_report)
 
 
-def _carve_anchors(refined: AreaGraph, drawing: CadDrawing, grid, timings, cpu, progress) -> None:
+def _inside_points(drawing: CadDrawing, name_rules, classified):
+    """``segmentation.room_name_points`` of the drawing from its classified texts (an (n, 2) array)."""
+    import numpy as np
+
+    pts = [(x, y) for x, y, _ in semantics.room_name_points(drawing.texts, name_rules, classified=classified)]
+    return np.asarray(pts, dtype=np.float64).reshape(-1, 2)
+
+
+def _carve_anchors(refined: AreaGraph, drawing: CadDrawing, grid, timings, cpu, progress, symbols=None) -> None:
     """``anchors.carve_anchors`` on the refined graph (labels repainted), timed with stage "types"."""
     t0, c0 = time.perf_counter(), time.process_time()
-    st = anchors.carve_anchors(refined.areas, refined.passages, drawing.geometries, progress=progress.sub(95, 95))
+    found = anchors.find_anchor_symbols(drawing.geometries, shapes=symbols)
+    st = anchors.carve_anchors(refined.areas, refined.passages, drawing.geometries, progress=progress.sub(95, 95),
+                               symbols=found)
     anchors.relabel(refined.labels, grid, refined.areas, st)
     if st["carved"]:
         progress.info(f"{len(st['carved'])} stair/lift area(s) carved out of the areas that swallowed them ("
@@ -151,17 +227,19 @@ def _carve_anchors(refined: AreaGraph, drawing: CadDrawing, grid, timings, cpu, 
     cpu["types"] = cpu.get("types", 0.0) + time.process_time() - c0
 
 
-def _closed_spaces(refined: AreaGraph, drawing: CadDrawing, name_rules, rstats, progress):
+def _closed_spaces(refined: AreaGraph, drawing: CadDrawing, name_rules, rstats, progress, classified=None):
     """Wall cavities, ducts and shafts the drawing closes on all sides (``segmentation.closed_spaces``):
     tagged ``cad2osmag:closed=yes`` and counted out of the largest component's share (issue 8, item 6)."""
     if rstats.get("components", 1) <= 1:
         return [], rstats.get("largest_component_share", 1.0)
-    pts = semantics.room_name_points(drawing.texts, name_rules)
+    if classified is None:
+        classified = semantics.classify_labels(drawing.texts, name_rules)
+    pts = semantics.room_name_points(drawing.texts, name_rules, classified=classified)
     closed = segmentation.closed_spaces(refined.areas, refined.passages, pts)
     _count_out(refined, closed, "cad2osmag:closed", "closed space(s) no passage reaches and no room name labels "
                "(wall cavities, ducts, shafts", progress)
     roofs = _roof_spaces(refined, drawing, closed, rstats, progress)
-    outdoor = _outdoor_spaces(refined, drawing, name_rules, list(closed) + roofs, rstats, progress)
+    outdoor = _outdoor_spaces(refined, drawing, name_rules, list(closed) + roofs, rstats, progress, classified)
     return closed, segmentation.connected_share(refined.areas, list(closed) + roofs + outdoor)
 
 
@@ -186,11 +264,14 @@ def _count_out(refined: AreaGraph, ids, tag: str, what: str, progress) -> None:
                       "out of the connectivity")
 
 
-def _outdoor_spaces(refined: AreaGraph, drawing: CadDrawing, name_rules, counted_out, rstats, progress):
+def _outdoor_spaces(refined: AreaGraph, drawing: CadDrawing, name_rules, counted_out, rstats, progress,
+                    classified=None):
     """Terraces and landscape outside the facade no passage reaches and no room name labels
     (``segmentation.outdoor_spaces``): tagged ``cad2osmag:outdoor=yes``, listed in ``rstats['outdoor_spaces']``
     and counted out of the share, like roofs."""
-    names = [(x, y, lab.text) for lab in semantics.classify_labels(drawing.texts, name_rules)
+    if classified is None:
+        classified = semantics.classify_labels(drawing.texts, name_rules)
+    names = [(x, y, lab.text) for lab in classified
              if lab.role in ("name", "number") for x, y in [(lab.x, lab.y)] + list(lab.alts)]
     outdoor = segmentation.outdoor_spaces(refined.areas, refined.passages, names, counted_out)
     rstats["outdoor_spaces"] = outdoor

@@ -10,16 +10,18 @@ Public API
     role ``name`` | ``number`` | ``ignored``; reason says why (``dimension``, ``area``, ``elevation``,
     ``door/window code``, ``axis``, ``stair arrow``, ``note``, ``title``, ``title block``, ``empty``...).
     ``text`` may be a ``CadText`` (its layer, block and ATTRIB tag are then used).
-``room_name_points(texts, rules=None) -> [(x, y, text)]``
+``room_name_points(texts, rules=None, classified=None) -> [(x, y, text)]``
     Where the room names (and numbers) of a drawing are: evidence that a space is inside the building.
 ``assign_names(areas, texts, level, rules=None, progress=None, grid=None, labels=None, passages=None,
-split=True) -> NamesReport``
+split=True, classified=None) -> NamesReport``
     Scores every room text against every area exactly as the paper (below), gives each text to its
     best-scoring area, joins name + number, splits areas holding two different room names when a
     narrowing separates them (else ``label_conflict``), suffixes duplicate names, gives unnamed areas
     a stable id ``<level>-<id>`` and types areas from keywords, codes and geometry. Areas are changed in
     place (``name``, ``ref``, ``type``, ``tags``); split pieces and their passages are appended to
     ``areas`` / ``passages``.
+``classified``: ``classify_labels(texts, rules)`` computed once by the caller (``pipeline.process_floor``
+classifies a drawing's texts once and passes it to every function that needs it).
 
 Score (Zhang et al., "CAD to osmAG", text-to-room association): with the text point p, the area's
 centroid c and area A (m²), S = sqrt(A / pi), rho = |p - c| / S, d_b = distance from p to the boundary:
@@ -345,7 +347,7 @@ def _is_elevation(low: str, rules: NameRules) -> bool:
 def _type_entry(low: str, rules: NameRules):
     """(keyword, entry) of the longest type keyword in the text, or None."""
     for kw, rx, entry in rules._type_keywords:
-        if rx.search(low):
+        if kw in low and rx.search(low):  # every keyword regex matches the keyword itself: test that first
             return kw, entry
     return None
 
@@ -395,12 +397,14 @@ def _est_width(s: str, h: float) -> float:
 _NO_JOIN = ("elevation", "area", "dimension", "axis", "door/window code", "scale", "stair arrow", "empty")
 
 
-def group_lines(texts: Sequence[CadText], rules=None) -> List[Label]:
+def group_lines(texts: Sequence[CadText], rules=None, _memo=None) -> List[Label]:
     """Join the lines of multi-line labels drawn as separate TEXTs: same layer, height (+-15 %) and
     rotation, the next line 0.5-2.7 heights below the previous one and overlapping it horizontally.
     Each text belongs to at most one label; ATTRIBs and MTEXTs stay alone (they carry their own lines)."""
     labels: List[Label] = []
     cand = []
+    memo = {} if _memo is None else _memo
+    rules_ = _resolve(rules)
     for k, t in enumerate(texts):
         s = normalize_text(t.text)
         lab = Label([_text_id(t, k)], s, float(t.x), float(t.y), float(t.height or 0.0), t.layer or "",
@@ -408,8 +412,7 @@ def group_lines(texts: Sequence[CadText], rules=None) -> List[Label]:
         labels.append(lab)
         if t.entity == "TEXT" and s and t.height and t.height > 0 and abs(((t.rotation or 0) + 1) % 180 - 1) < 1 \
                 and math.isfinite(lab.x) and math.isfinite(lab.y):
-            role, reason = classify_text(s, rules, layer=lab.layer, block=lab.block, tag=lab.tag)
-            rules_ = _resolve(rules)
+            role, reason = _classify_memo(memo, s, rules_, lab.layer, lab.block, lab.tag)
             callout = rules_.callout is not None and rules_.callout.match(s.casefold()) is not None
             # numbers, elevations, areas... are lines of their own: "Office" over "101" is name + number;
             # so is a detail callout ("E1-ST-01详见…" stacked over "E1-ST-02详见…" are two callouts)
@@ -475,7 +478,8 @@ def classify_labels(texts: Sequence[CadText], rules=None) -> List[Label]:
     ``classify_text``: a detail callout ('E1-ST-01详见建施(A-E-40-01)', 'P2 see 5/A-501') is the room
     number it names; a name ending in a room code ('研究室 E1a-F4-06') is split into name + number."""
     rules = _resolve(rules)
-    labels = group_lines(texts, rules)
+    memo: Dict[tuple, Tuple[str, str]] = {}  # one drawing repeats its texts (door codes, tags): classify each once
+    labels = group_lines(texts, rules, _memo=memo)
     out: List[Label] = []
     for lab in labels:
         m = rules.callout.match(lab.text.casefold()) if rules.callout is not None and lab.text else None
@@ -488,7 +492,7 @@ def classify_labels(texts: Sequence[CadText], rules=None) -> List[Label]:
             m = rules.callout_tail.search(lab.text)
             if m and m.start() > 0 and _has_letter(lab.text[:m.start()]):
                 lab.text = lab.text[:m.start()].strip()
-        lab.role, lab.reason = classify_text(lab.text, rules, layer=lab.layer, block=lab.block, tag=lab.tag)
+        lab.role, lab.reason = _classify_memo(memo, lab.text, rules, lab.layer, lab.block, lab.tag)
         parts = lab.text.rsplit(" ", 1)
         if lab.role == "name" and len(parts) == 2 and "-" in parts[1] and _has_letter(parts[0]) and \
                 any(p.search(parts[1].casefold()) for p in rules.number_patterns):
@@ -499,6 +503,16 @@ def classify_labels(texts: Sequence[CadText], rules=None) -> List[Label]:
             continue
         out.append(lab)
     return _merge_copies(out)
+
+
+def _classify_memo(memo: Dict[tuple, Tuple[str, str]], text: str, rules: NameRules, layer: str, block: str,
+                   tag: str) -> Tuple[str, str]:
+    """``classify_text`` remembered in ``memo`` (one call of ``classify_labels``: the rules do not change)."""
+    key = (text, layer, block, tag)
+    hit = memo.get(key)
+    if hit is None:
+        hit = memo[key] = classify_text(text, rules, layer=layer, block=block, tag=tag)
+    return hit
 
 
 def _merge_copies(labels: List[Label]) -> List[Label]:
@@ -532,13 +546,15 @@ def _merge_copies(labels: List[Label]) -> List[Label]:
     return keep
 
 
-def room_name_points(texts: Sequence[CadText], rules=None) -> List[Tuple[float, float, str]]:
+def room_name_points(texts: Sequence[CadText], rules=None, classified: Optional[List[Label]] = None
+                     ) -> List[Tuple[float, float, str]]:
     """(x, y, text) of every room name and room number of a drawing (CAD frame, metres). Segmentation
     uses them as evidence that the space around them is inside the building. Door and window tags of
     tag blocks ('1522' in ECADI-TAG-DOOR) are no names but mark the building's doorways: they count as
-    evidence too (without them SIST-F3's largest component fell from 98 % to 80 % of the floor)."""
+    evidence too (without them SIST-F3's largest component fell from 98 % to 80 % of the floor).
+    ``classified``: ``classify_labels(texts, rules)`` when the caller has it (classify a drawing once)."""
     out = []
-    for lab in classify_labels(texts, rules):
+    for lab in (classify_labels(texts, rules) if classified is None else classified):
         if lab.role in ("name", "number") or lab.reason == "door/window code (block)":
             out.append((lab.x, lab.y, lab.text))
             out.extend((x, y, lab.text) for x, y in lab.alts)  # every copy of a label drawn twice
@@ -549,13 +565,15 @@ PROTECTED_TYPE = "room:labelled"  # temporary type that keeps refinement from me
 
 
 def protect_labelled_areas(areas: Sequence[Area], texts: Sequence[CadText], min_area: float, rules=None,
-                           smallest: float = 1.0) -> Dict[int, str]:
+                           smallest: float = 1.0, classified: Optional[List[Label]] = None) -> Dict[int, str]:
     """Before refinement: areas smaller than ``min_area`` (but at least ``smallest`` m²) that hold a room
     name or number get the temporary type ``PROTECTED_TYPE`` so that the small-area merge keeps them (a
     labelled WC or store room is a room, however small); so do those a room name lies beside, in the
     wall, outside every area (within ``PROTECT_REACH``). Returns {area id: original type} for
-    ``restore_types``."""
-    pts = room_name_points(texts, rules)
+    ``restore_types``. ``classified``: ``classify_labels(texts, rules)`` when the caller has it."""
+    if classified is None:
+        classified = classify_labels(texts, rules)
+    pts = room_name_points(texts, rules, classified=classified)
     if not pts:
         return {}
     small = [a for a in areas if smallest <= a.polygon.area < min_area and a.type in ("room", "corridor")]
@@ -574,7 +592,7 @@ def protect_labelled_areas(areas: Sequence[Area], texts: Sequence[CadText], min_
     # which the merge then gave to the boiled-water room next door
     all_polys = [a.polygon for a in areas if a.polygon is not None and not a.polygon.is_empty]
     any_tree = STRtree(all_polys)
-    for lab in classify_labels(texts, rules):
+    for lab in classified:
         if lab.role != "name":
             continue
         for x, y in [(lab.x, lab.y)] + list(lab.alts):
@@ -784,20 +802,22 @@ def auto_id(level: str, area_id: int) -> str:
 def assign_names(areas: List[Area], texts: Sequence[CadText], level="1", rules=None, progress=None,
                  grid=None, labels=None, passages: Optional[List[Passage]] = None, split: bool = True,
                  rho_max: float = RHO_MAX, d_max: float = D_MAX, inside_first: bool = True,
-                 hidden_texts: Optional[Sequence[CadText]] = None) -> NamesReport:
+                 hidden_texts: Optional[Sequence[CadText]] = None,
+                 classified: Optional[List[Label]] = None) -> NamesReport:
     """Name, number and type ``areas`` (in place) from ``texts``; see the module doc. ``grid`` gives
     the resolution of the split raster, ``labels`` (the label raster on ``grid``) is updated for split
     areas, ``passages`` get the split cuts and follow the pieces. ``hidden_texts``: texts on frozen / off
     layers (``CadDrawing.hidden_texts``): their room names and codes name only areas that no visible text
     names (a sheet often freezes one wing's annotation layer; the names are still the building's), they
-    never split an area nor compete with a visible name. Never raises on odd texts."""
+    never split an area nor compete with a visible name. ``classified``: ``classify_labels(texts, rules)``
+    when the caller has it (a drawing's texts are classified once). Never raises on odd texts."""
     progress = ensure(progress)
     rules = _resolve(rules)
     report = NamesReport()
     level = str(level).strip() or "1"
     progress.step(0, "classifying texts")
-    labs = classify_labels(list(texts or []), rules)
-    records = [TextRecord(l.ids, l.text, l.x, l.y, l.layer, l.role, l.reason, alts=list(l.alts)) for l in labs]
+    labs = classify_labels(list(texts or []), rules) if classified is None else classified
+    records = [TextRecord(list(l.ids), l.text, l.x, l.y, l.layer, l.role, l.reason, alts=list(l.alts)) for l in labs]
     report.texts = records
     areas_ok = [a for a in areas if a.polygon is not None and not a.polygon.is_empty and a.polygon.area > 0
                 and a.type != "structure"]
@@ -1430,7 +1450,7 @@ def _split_area(a: Area, recs: List[TextRecord], names: Dict[str, TextRecord], g
         return None
     t, reg, present, owner = found
     # cells tiling the window: every pixel takes the region of the nearest area pixel
-    _, (ir, ic) = ndimage.distance_transform_edt(reg == 0, return_indices=True)
+    ir, ic = ndimage.distance_transform_edt(reg == 0, return_distances=False, return_indices=True)
     cells = reg[ir, ic].astype(np.int32)
     cell_polys = label_polygons(cells, OccupancyGrid(cells, ox, oy, res))
     pieces = []
@@ -1475,13 +1495,14 @@ def _geodesic_regions(markers: np.ndarray, inside: np.ndarray, max_iter: int = 5
     # cross and square steps alternate: an octagonal metric, close to the Euclidean one
     kernels = (cv2.getStructuringElement(cv2.MORPH_CROSS, (3, 3)), np.ones((3, 3), np.uint8))
     todo = inside & (lab == 0)
+    new = np.empty_like(todo)
     for it in range(max_iter):
         grown = cv2.dilate(lab, kernels[it % 2])
-        new = todo & (grown > 0)
+        np.logical_and(todo, grown > 0, out=new)
         if not new.any():
             break
-        lab[new] = grown[new]
-        todo &= ~new
+        np.copyto(lab, grown, where=new)  # as lab[new] = grown[new], without gathering the pixels
+        todo ^= new  # new lies in todo: as todo &= ~new
     return lab.astype(np.int32)
 
 
@@ -1586,11 +1607,17 @@ def _relabel(labels: np.ndarray, grid, old_id: int, pieces: List[Area]) -> None:
     if not sel.any():
         return
     for b in pieces[1:]:
-        m = np.zeros((rows, cols), np.uint8)
         xs, ys = np.asarray(b.polygon.exterior.coords).T
         c, r = grid.world_to_pixel(xs, ys)
-        cv2.fillPoly(m, [np.round(np.column_stack((c, r)) * 8).astype(np.int32)], 1, shift=3)
-        labels[sel & m.astype(bool)] = b.id
+        pts = np.round(np.column_stack((c, r)) * 8).astype(np.int32)
+        # the window of the piece's pixels only (not a mask of the whole raster per piece)
+        c0, r0 = max(int(pts[:, 0].min()) >> 3, 0), max(int(pts[:, 1].min()) >> 3, 0)
+        c1, r1 = min((int(pts[:, 0].max()) >> 3) + 2, cols), min((int(pts[:, 1].max()) >> 3) + 2, rows)
+        if c1 <= c0 or r1 <= r0:
+            continue
+        m = np.zeros((r1 - r0, c1 - c0), np.uint8)
+        cv2.fillPoly(m, [pts - np.array([c0 << 3, r0 << 3], np.int32)], 1, shift=3)
+        labels[r0:r1, c0:c1][sel[r0:r1, c0:c1] & m.astype(bool)] = b.id
 
 
 __all__ = ["NameRules", "load_name_rules", "default_name_rules", "normalize_text", "strip_xref", "classify_text",
