@@ -399,6 +399,11 @@ def carve_anchors(areas: List[Area], passages: List[Passage], geometries: Sequen
     def skip(reason):
         stats["skipped"][reason] = stats["skipped"].get(reason, 0) + 1
 
+    stats["retyped"] = retype_break_line_lifts(areas, symbols)
+    if stats["retyped"]:
+        progress.info(f"{len(stats['retyped'])} area(s) typed elevator hold a stair run and no lift car (the cross is "
+                      f"the flight's break line): stairs (areas {', '.join(map(str, stats['retyped']))})")
+
     carved_ids = set()
     next_area = max([a.id for a in areas] + [0]) + 1
     next_pass = max([p.id for p in passages] + [0]) + 1
@@ -574,6 +579,30 @@ def carve_anchors(areas: List[Area], passages: List[Passage], geometries: Sequen
         carved_ids.add(new.id)
     progress.step(100)
     return stats
+
+
+def retype_break_line_lifts(areas: Sequence[Area], symbols) -> List[int]:
+    """Areas typed elevator (``area_types``: a cross, or density of a lift layer) that hold most of a stair
+    run and no lift cross of their own are stair cores: the cross they hold is the break line drawn across
+    the flight where the plan cuts it (``find_anchor_symbols`` drops crosses within ``BREAK_GAP`` of a run),
+    not a lift car. Typed stairs in place; returns their ids. (SIST-F4: the E1-ST-02 core was an
+    'elevator', so its detail callout named the next stair core, E1-ST-05, and E1-ST-05's none.)"""
+    stairs = [s for k, s, _a, _c in symbols if k == "stairs"]
+    lifts = [s for k, s, _a, _c in symbols if k == "elevator"]
+    out: List[int] = []
+    if not stairs:
+        return out
+    for a in areas:
+        if a.type != "elevator" or a.polygon is None or a.polygon.is_empty:
+            continue
+        poly = a.polygon
+        if not any(s.intersects(poly) and poly.intersection(s).area >= 0.5 * s.area for s in stairs):
+            continue
+        if any(c.intersects(poly) and poly.intersection(c).area >= 0.5 * c.area for c in lifts):
+            continue
+        a.type = "stairs"
+        out.append(a.id)
+    return out
 
 
 def relabel(labels: Optional[np.ndarray], grid, areas: Sequence[Area], stats) -> None:

@@ -811,6 +811,7 @@ def assign_names(areas: List[Area], texts: Sequence[CadText], level="1", rules=N
     progress.step(50, "naming areas")
     _demote_shafts_and_outdoor(best_by_area, records, rules)
     by_id = {a.id: a for a in areas}
+    _demote_shafts_in_anchors(best_by_area, by_id, rules)
     # ---- split areas holding several different names
     if split:
         # a piece still holding two names is split again (a hall with a lift lobby at one end and a round
@@ -1113,6 +1114,22 @@ def _demote_shafts_and_outdoor(best_by_area: Dict[int, List[TextRecord]], record
                 r.role, r.reason = "ignored", "shaft label"
         elif outdoor and r.match != "inside" and _matches(outdoor, r.text):
             r.role, r.reason = "ignored", "outdoor"
+
+
+def _demote_shafts_in_anchors(best_by_area: Dict[int, List[TextRecord]], by_id: Dict[int, Area],
+                              rules: NameRules) -> None:
+    """An MEP shaft label (暖, 水井, duct) inside an area typed stairs / elevator from its symbols labels the
+    duct in the core's wall, not the stair or lift: ignored ('shaft label'), so the stair or lift keeps the
+    name its code gives (SIST-F4: the E1-ST-01 core was named '暖')."""
+    if not rules.shaft_keywords:
+        return
+    for aid, recs in best_by_area.items():
+        a = by_id.get(aid)
+        if a is None or a.type not in ("stairs", "elevator"):
+            continue
+        for r in recs:
+            if r.role == "name" and _matches(rules.shaft_keywords, r.text):
+                r.role, r.reason = "ignored", "shaft label"
 
 
 def _demote_zones(best_by_area: Dict[int, List[TextRecord]], rules: NameRules, progress) -> None:

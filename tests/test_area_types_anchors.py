@@ -233,3 +233,21 @@ def test_dxftoosmag_headless_carves_the_open_stair_and_lift(tmp_path):
     for a in typed:
         assert any(a.id in (p.from_id, p.to_id) for p in passages), a.name
     assert report["dangling_refs"] == [] and res["AREA_COUNT"] == len(areas) - 1
+
+
+def test_a_stair_core_typed_elevator_by_its_break_line_cross_is_a_stair():
+    """A 3 x 7 m stair core whose flight is cut by a break line drawn as a cross (SIST-F4 E1-ST-02: the
+    symbol typing read the cross as a lift car and typed the core elevator, so the core's detail callout
+    named the next stair): the core holds a stair run and no lift car of its own, so it is a stair. A lift
+    shaft with a car cross and no treads stays a lift; a lift beside a stair keeps its type."""
+    core = Area(id=1, polygon=box(0, 0, 3, 7), type="elevator")
+    shaft = Area(id=2, polygon=box(5, 0, 7.2, 2.2), type="elevator")
+    flight = _flight(0.3, 1.0, width=1.2, n=14)
+    geoms = flight + _cross(0.3, 2.6, 1.5, 3.4) + _cross(5.2, 0.2, 7.0, 2.0)
+    st = anchors.carve_anchors([core, shaft], [], geoms)
+    assert st["retyped"] == [1] and core.type == "stairs" and shaft.type == "elevator"
+    assert not st["carved"]  # the core is its own area: only retyped
+    # the same core with a real lift car beside the flight inside it: not retyped
+    both = Area(id=3, polygon=box(0, 0, 6, 7), type="elevator")
+    st = anchors.carve_anchors([both], [], flight + _cross(3.8, 0.5, 5.6, 2.3))
+    assert st["retyped"] == []

@@ -726,3 +726,38 @@ def test_a_zone_of_an_open_space_is_no_second_room():
     areas = [Area(id=1, polygon=box(0, 0, 12, 5))]
     rep = S.assign_names(areas, [T("会议室", 3, 2.5), T("办公室", 9, 2.5)])
     assert rep.conflicts == [1]
+
+
+def test_a_shaft_label_in_a_stair_core_is_not_its_name():
+    # '暖' (heating duct) written inside a stair core typed from its treads labels the duct in the core's
+    # wall: the stair keeps the code its callout gives (SIST-F4: the E1-ST-01 core was named '暖')
+    core = Area(id=1, polygon=box(0, 0, 8, 5), type="stairs")
+    office = Area(id=2, polygon=box(8.2, 0, 14, 5))
+    rep = S.assign_names([core, office], [T("暖", 7.5, 4.5), T("风井", 13.5, 4.5), T("办公室", 11, 2.5)],
+                         hidden_texts=[T("E1-ST-01详见建施(A-E-40-01)", 4, -3, layer="A-TEXT")])
+    assert (core.name, core.ref, core.type) == ("E1-ST-01", "E1-ST-01", "stairs")
+    reasons = {r.text: r.reason for r in rep.texts}
+    assert reasons["暖"] == "shaft label" and office.name == "办公室"
+    # a shaft segmentation made an area of keeps its label; so does a lift lobby named '电梯厅'
+    shaft = Area(id=3, polygon=box(0, 0, 1, 1))
+    S.assign_names([shaft], [T("暖", 0.5, 0.5)])
+    assert shaft.name == "暖"
+
+
+def test_stair_callouts_beside_the_plan_are_kept():
+    # frozen-layer callouts hang at the end of leaders drawn out of the plan: 2 m below it (SIST-F4 E1-ST-01)
+    # is the plan's; a room name there, or a callout 20 m away (another view), is not
+    from algorithms import cad_import
+
+    raw = [(50.0, -2.0, "E1-ST-01详见建施(A-E-40-01)", 0.35, 0.0, "A-TEXT", "TEXT", "", ""),
+           (50.0, -3.0, "办公室", 0.35, 0.0, "A-TEXT", "TEXT", "", ""),
+           (50.0, -20.0, "E1-ST-09详见建施(A-E-40-09)", 0.35, 0.0, "A-TEXT", "TEXT", "", ""),
+           (105.0, 30.0, "E2-P1详见建施(A-E-40-19)", 0.35, 0.0, "A-TEXT", "MTEXT", "*U5", ""),
+           (50.0, 20.0, "E1-ST-02详见建施(A-E-40-02)", 0.35, 0.0, "A-TEXT", "TEXT", "", "")]
+    extent = (0.0, 0.0, 100.0, 60.0)
+    inside = cad_import._hidden_texts(raw, 1.0, extent, 10)
+    beside = cad_import._callouts_beside_plan(raw, 1.0, extent, 10 + len(inside))
+    assert [t.text for t in inside] == ["E1-ST-02详见建施(A-E-40-02)"]
+    assert sorted(t.text[:8] for t in beside) == ["E1-ST-01", "E2-P1详见建"]
+    assert sorted(t.id for t in beside) == [11, 12]
+    assert cad_import._callouts_beside_plan(raw, 1.0, None, 0) == []  # no plan picked: every text is kept anyway
