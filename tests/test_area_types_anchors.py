@@ -251,3 +251,36 @@ def test_a_stair_core_typed_elevator_by_its_break_line_cross_is_a_stair():
     both = Area(id=3, polygon=box(0, 0, 6, 7), type="elevator")
     st = anchors.carve_anchors([both], [], flight + _cross(3.8, 0.5, 5.6, 2.3))
     assert st["retyped"] == []
+
+
+def test_a_named_stair_outside_every_area_becomes_a_stair_of_its_own():
+    """An outdoor fire-escape stair along the facade (SIST-F4 E1-ST-07: its treads stand beyond the glazing,
+    its detail callout beside it): a stairs area of its own, named by its code; the same flight with no
+    stair name near it (entrance steps, a detail view's stair) is left out; a flight touching an area (its
+    landing) is joined to it by a passage."""
+    from algorithms.model import CadText
+    from algorithms import semantics
+
+    hall = Area(id=1, polygon=box(0, 0, 10, 10))
+    flight = _flight(11.0, 2.0, width=1.4, n=12)
+    callout = CadText(x=14.0, y=4.0, text="E1-ST-07详见建施(A-E-40-07)", height=0.35, rotation=0.0, layer="A-TEXT")
+    areas, passages = [hall], []
+    st = anchors.carve_anchors(areas, passages, flight)
+    assert st.get("outdoor") is None and len(areas) == 1  # no texts given: nothing
+    st = anchors.carve_anchors(areas, passages, flight,
+                               texts=[CadText(x=30, y=4, text="E1-ST-07", height=0.35, rotation=0.0, layer="A")])
+    assert st["outdoor"] == [] and len(areas) == 1  # the code 16 m away names another stair
+    st = anchors.carve_anchors(areas, passages, flight, texts=[callout])
+    _graph_ok(areas, passages)
+    assert len(st["outdoor"]) == 1 and not passages
+    stair = areas[-1]
+    assert stair.type == "stairs" and stair.polygon.area == pytest.approx(1.4 * 12 * 0.28, rel=0.1)
+    semantics.assign_names(areas, [], hidden_texts=[callout])
+    assert (stair.ref, stair.type) == ("E1-ST-07", "stairs")
+    # a flight standing against the hall's border: a passage across the common border
+    hall = Area(id=1, polygon=box(0, 0, 10, 10))
+    areas, passages = [hall], []
+    st = anchors.carve_anchors(areas, passages, _flight(10.0, 2.0, width=1.4, n=12, going=0.28), texts=[callout])
+    # treads from x = 10 (the hall's wall) to 11.4: the box touches the hall along its whole height
+    assert len(st["outdoor"]) == 1 and len(passages) >= 1
+    assert all({p.from_id, p.to_id} == {1, st["outdoor"][0]} for p in passages)

@@ -440,8 +440,15 @@ DWG_VERTICAL = {
 }
 
 
-TYPED_AT_LEAST = {"sist-original/SIST-F4.dwg": 13, "sist-original/SIST-F1.dwg": 20, "sist-original/SIST-F3.dwg": 19,
-                  "library/A-A3-10-06.dwg": 7}  # codes that name a stair/lift area (measured 2026-12-02)
+# codes that name a stair/lift area (measured 2026-12-02, session 5: F4 13 -> 16, F1 20 -> 21 and F3 19 -> 20, i.e.
+# every code of F1 and F3). SIST-F4's two left, with the evidence: E2-ST-02's callout hangs 6.7 m north of the
+# plan (11766.6, -6071.7) and no stair is drawn within 8 m of it nor where F3's E2-ST-02 registers on F4 (one
+# degenerate 0-length line on A-FLOR-STRS; the wing ends at x 11770): the code names a stair of another floor's
+# detail; E1-P2's shaft is drawn as an empty box of walls (no car cross, no lift-layer entity: 47 wall lines in
+# 11770.3..11774.2 x -6178.3..-6175.2, where F3's E1-P2 registers) opening without a door onto corridor 1-107:
+# no symbol tells it from a niche, so it stays part of the corridor
+TYPED_AT_LEAST = {"sist-original/SIST-F4.dwg": 16, "sist-original/SIST-F1.dwg": 21, "sist-original/SIST-F3.dwg": 20,
+                  "library/A-A3-10-06.dwg": 7}
 
 
 def _dwg_reader():
@@ -487,9 +494,10 @@ def test_dwg_stairs_and_lifts_become_typed_areas(shared_data, sheet, floor_cache
     assert plan or not (want_st | want_el), "no stair or lift of the sheet named an area"
     for code in plan:
         assert typed[code] <= ({"stairs"} if code in want_st else {"elevator"}), (code, typed[code])
-    # measured: on SIST-F4 13 of the 18 codes name a stair/lift area (9 before stairs and lifts swallowed by a
-    # larger area were carved out, anchors.carve_anchors); the rest (E1-ST-01, -05, -07, E2-ST-02, E1-P2) are
-    # open stairs outdoors or shafts the segmentation merged beyond the carve's reach
+    # measured: on SIST-F4 16 of the 18 codes name a stair/lift area (9 before stairs and lifts swallowed by a
+    # larger area were carved out, anchors.carve_anchors; 13 before a core typed elevator by its break-line
+    # cross became a stair (E1-ST-02, -05), callouts just outside the plan were kept (E1-ST-01) and named
+    # outdoor stairs became areas (E1-ST-07)); E2-ST-02 and E1-P2: see TYPED_AT_LEAST
     print(sheet, "codes naming a stair/lift area:", len(plan), sorted(plan))
     assert len(plan) >= TYPED_AT_LEAST.get(sheet, 0), sorted(plan)
     for a in floor.refined.areas:  # a code never makes an atrium a stair
@@ -502,17 +510,20 @@ def test_dwg_stairs_and_lifts_become_typed_areas(shared_data, sheet, floor_cache
 # Issue 8/9 figures per DWG sheet (make evaluate-cad): >= 95 % of the room-name texts inside an area and
 # >= 90 % naming an area of their own, per plan. Below it, with the evidence (a picture and the texts):
 DWG_NAMES_KNOWN_BELOW = {
-    "library/A-A3-10-06.dwg": "segmentation, not names: the six '中庭回廊' (atrium gallery) tags lie in the gallery "
-                              "between the two wings, open to the south-west, which the envelope leaves outside: "
-                              "four in no area, two just outside the rooms beside it; 82.9 % (29 of 35)",
+    "library/A-A3-10-06.dwg": "segmentation, not names (re-checked 2026-12-02: 88.6 %, 31 of 35): the atrium gallery "
+                              "'中庭回廊' is two areas now (two of its six tags name them), the four misses are all "
+                              "gallery tags: two (11901, -6395 / -6407) lie in the gallery's west part between the "
+                              "oval void and the south-west facade, open to the outside, which the envelope leaves "
+                              "outside (no area); two (11932.6, -6398.0 and 11956.0, -6404.5) lie on the gallery's "
+                              "north edge just outside it, nearest the rooms beside it (空调机房, 电脑活动交流室)",
 }
 # measured 2026-12-01 (session 4): (inside %, own %, conflicts at most), kept as floors against regressions;
 # SIST-F1: the passage 通道 between the wings is an area since the named-passage rule, holding two labels (通道,
 # 残疾人出入口): inside 96.4 -> 98.2 %, own 93.6 -> 92.7 %, conflicts 3 -> 4
 DWG_NAMES_FLOORS = {
     "library/A-A3-10-04.dwg": (100.0, 100.0, 0), "library/A-A3-10-05.dwg": (100.0, 100.0, 0),
-    "library/A-A3-10-06.dwg": (82.0, 82.0, 0), "sist-original/SIST-F1.dwg": (98.0, 92.0, 4),
-    "sist-original/SIST-F3.dwg": (97.0, 95.0, 2), "sist-original/SIST-F4.dwg": (98.0, 98.0, 1),
+    "library/A-A3-10-06.dwg": (88.0, 88.0, 0), "sist-original/SIST-F1.dwg": (98.0, 92.0, 4),
+    "sist-original/SIST-F3.dwg": (97.0, 95.0, 2), "sist-original/SIST-F4.dwg": (99.0, 98.0, 1),
     "sist-original/SIST-F5.dwg": (97.0, 98.0, 0),
 }
 
