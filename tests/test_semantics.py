@@ -372,21 +372,24 @@ def test_archweb_texts_classified_as_read_by_hand(shared_data, plan):
 
 # known defects, reported as expected failures until fixed (the floor stays the target)
 NAMES_KNOWN_BELOW = {
-    "schema-ufficio-1.dxf": "segmentation, not names (73.7 %, 14 of 19): the 2.9 m² washroom is part of the bar's "
-                            "area before refinement (segmentation area of 179 m²: its door swing opened the doorway "
-                            "and the strip, 1.2 m wide, opens onto the bar over its whole width, so no narrowing "
-                            "splits it off); 'area bar' / 'wine & water bar' name one open bar space and the two "
-                            "general secretaries' desks share one room with no partition: honest conflicts",
+    "schema-ufficio-1.dxf": "honest conflicts, not segmentation (78.9 %, 15 of 19, since a door-wide opening splits the "
+                            "2.9 m² washroom off the bar's back room: 73.7 % before): 'area bar' / 'wine & water "
+                            "bar' name one open bar space (the wine bar's counter, 'bancone refrigerato per "
+                            "esposizione vini', is furniture, and the octagonal showroom behind it opens onto the bar "
+                            "over its whole width: no wall, no narrowing); the two general secretaries share one "
+                            "25.6 m² room whose folding partition is drawn folded at both ends (zig-zags at x 325), "
+                            "open: one space with two desks and two doors",
 }
 
 
 @pytest.mark.slow
 @pytest.mark.parametrize("plan,floors", [
     # measured figures (make evaluate-cad), kept as floors against regressions; see README for the targets
-    # (2026-12-01 session 4: ufficio 100 / 73.7 / 100 / 2, museum 97.0 / 93.9 / 96.8 / 0 since the hall and
+    # (2026-12-02 session 5: ufficio 100 / 78.9 / 100 / 2 since the washroom splits off at its door;
+    # 2026-12-01 session 4: ufficio 100 / 73.7 / 100 / 2, museum 97.0 / 93.9 / 96.8 / 0 since the hall and
     # the void split at their narrowing, Aule 100 / 100 / 100 / 0, CASONA 100 / 100 / 100 / 0 since a label on a
     # pillar is inside its room)
-    ("schema-ufficio-1.dxf", {"inside_pct": 95, "own_area_pct": 75, "semantic_accuracy_pct": 95, "max_conflicts": 2}),
+    ("schema-ufficio-1.dxf", {"inside_pct": 95, "own_area_pct": 78, "semantic_accuracy_pct": 95, "max_conflicts": 2}),
     ("historical_museum.dxf", {"inside_pct": 95, "own_area_pct": 90, "semantic_accuracy_pct": 95, "max_conflicts": 1}),
     ("Aule-scolastiche-pianta-1.dxf", {"inside_pct": 95, "own_area_pct": 95, "semantic_accuracy_pct": 95, "max_conflicts": 0}),
     ("CASONA_DE_YANAHUARA.dxf", {"inside_pct": 95, "own_area_pct": 95, "semantic_accuracy_pct": 95, "max_conflicts": 0}),
@@ -772,3 +775,21 @@ def test_stair_callouts_beside_the_plan_are_kept():
     assert sorted(t.text[:8] for t in beside) == ["E1-ST-01", "E2-P1详见建"]
     assert sorted(t.id for t in beside) == [11, 12]
     assert cad_import._callouts_beside_plan(raw, 1.0, None, 0) == []  # no plan picked: every text is kept anyway
+
+
+def test_a_washroom_behind_its_door_splits_off_the_room_it_opens_onto():
+    # schema-ufficio-1: a 2.1 x 1.3 m washroom entered through a 0.85 m door from the bar's back room, one
+    # area with it: the door takes 65 % of the washroom's width (more than the 60 % a wide opening may), but an
+    # opening no wider than a door is a doorway up to 80 % of the pieces' width
+    big = box(0, 0, 10, 8)
+    wash = box(10.2, 3.0, 12.3, 4.3).union(box(9.9, 3.225, 10.3, 4.075))  # 0.85 m door in a 0.2 m wall
+    poly = big.union(wash)
+    areas = [Area(id=1, polygon=poly)]
+    rep = S.assign_names(areas, [T("area bar", 5, 4), T("washroom", 11.3, 3.65)])
+    by_name = {a.name: a for a in areas}
+    assert set(by_name) == {"area bar", "washroom"} and not rep.conflicts and len(rep.splits) == 1
+    assert by_name["washroom"].polygon.area == pytest.approx(2.1 * 1.3, rel=0.15)
+    # the same washroom open over its whole width (no door) stays one area with the room: a conflict
+    areas = [Area(id=1, polygon=big.union(box(10, 3.0, 12.3, 4.3)))]
+    rep = S.assign_names(areas, [T("area bar", 5, 4), T("washroom", 11.3, 3.65)])
+    assert not rep.splits and rep.conflicts == [1]
