@@ -284,3 +284,34 @@ def test_a_named_stair_outside_every_area_becomes_a_stair_of_its_own():
     # treads from x = 10 (the hall's wall) to 11.4: the box touches the hall along its whole height
     assert len(st["outdoor"]) == 1 and len(passages) >= 1
     assert all({p.from_id, p.to_id} == {1, st["outdoor"][0]} for p in passages)
+
+
+@pytest.mark.qgis_process
+def test_dxftoosmag_headless_makes_a_named_outdoor_stair_an_area(tmp_path):
+    """``cad2osmag:dxftoosmag`` through qgis_process on the open-anchors sample with an outdoor flight added
+    1.5 m beyond its east wall and its code 'E1-ST-07' written beside it: the osmAG file holds a stairs area
+    with that ref, and the log says it was drawn outside every area."""
+    import ezdxf
+    from shapely.ops import unary_union as union
+
+    from algorithms import osmag, sample_building
+
+    from .qgis_process import run_alg
+
+    info = sample_building.generate_open_anchors(str(tmp_path))
+    x0, y0, x1, y1 = union(list(info["rooms"].values())).bounds
+    doc = ezdxf.readfile(info["dxf"])
+    msp = doc.modelspace()
+    fx = x1 + 1.5
+    for k in range(13):
+        msp.add_line((fx, y0 + 1 + 0.28 * k), (fx + 1.2, y0 + 1 + 0.28 * k), dxfattribs={"layer": "A-STAIR"})
+    msp.add_text("E1-ST-07", height=0.3, dxfattribs={"layer": "A-ANNO-TEXT"}).set_placement((fx + 2.5, y0 + 2.5))
+    src = tmp_path / "outdoor-stair.dxf"
+    doc.saveas(str(src))
+    out = tmp_path / "outdoor-stair.osm"
+    _, res, log = run_alg("dxftoosmag", {"INPUT": str(src), "OUTPUT": str(out), "LEVEL": 1})
+    assert "drawn outside every area (outdoor)" in log
+    areas, _passages, _root, report = osmag.read_osmag(str(out))
+    outdoor = [a for a in areas if a.type == "stairs" and "E1-ST-07" in (a.tags.get("ref", ""), a.name)]
+    assert len(outdoor) == 1 and len(outdoor[0].polygon.exterior.coords) >= 5  # (read back in lon/lat)
+    assert report["dangling_refs"] == [] and res["AREA_COUNT"] == len(areas) - 1
