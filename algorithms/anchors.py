@@ -397,7 +397,7 @@ def _intersecting(areas: Sequence[Area], geom) -> List[Area]:
 
 
 def carve_anchors(areas: List[Area], passages: List[Passage], geometries: Sequence[CadGeometry],
-                  progress=None, symbols=None) -> Dict[str, object]:
+                  progress=None, symbols=None, texts=None) -> Dict[str, object]:
     """Carve every stair and lift the drawing shows inside a larger area into a typed area of its own (in
     place: ``areas`` and ``passages`` are extended and updated; see the module doc). Returns figures:
     ``carved`` [(kind, new area id, host id, m²)], ``pieces`` {new area id: ids of the host's other
@@ -412,7 +412,13 @@ def carve_anchors(areas: List[Area], passages: List[Passage], geometries: Sequen
     def skip(reason):
         stats["skipped"][reason] = stats["skipped"].get(reason, 0) + 1
 
+    stats["retyped"] = retype_break_line_lifts(areas, symbols)
+    if stats["retyped"]:
+        progress.info(f"{len(stats['retyped'])} area(s) typed elevator hold a stair run and no lift car (the cross is "
+                      f"the flight's break line): stairs (areas {', '.join(map(str, stats['retyped']))})")
+
     carved_ids = set()
+    outdoor: List[Tuple[Polygon, tuple]] = []  # stairs drawn outside every area (outdoor stairs)
     next_area = max([a.id for a in areas] + [0]) + 1
     next_pass = max([p.id for p in passages] + [0]) + 1
     # stairs first (larger), then lifts; larger symbols first
@@ -422,10 +428,17 @@ def carve_anchors(areas: List[Area], passages: List[Passage], geometries: Sequen
         progress.step(100.0 * k / len(order))
         cand = _intersecting([a for a in areas if a.type != "structure" and a.polygon is not None], sym)
         if not cand:
+            if kind == "stairs" and texts:
+                outdoor.append((sym, angles))
             skip("outside every area")
             continue
         host = max(cand, key=lambda a: a.polygon.intersection(sym).area)
         inside = host.polygon.intersection(sym).area
+        if inside <= 1e-9:  # touching areas only: outside them all
+            if kind == "stairs" and texts:
+                outdoor.append((sym, angles))
+            skip("outside every area")
+            continue
         if inside < 0.5 * sym.area:
             skip("symbol across areas")
             continue
@@ -598,8 +611,82 @@ def carve_anchors(areas: List[Area], passages: List[Passage], geometries: Sequen
                     next_pass += 1
         stats["carved"].append((kind, new.id, host.id, round(fpoly.area, 2)))
         carved_ids.add(new.id)
+    if outdoor:
+        stats["outdoor"] = named_outdoor_stairs(areas, passages, outdoor, texts)
     progress.step(100)
     return stats
+
+
+OUTDOOR_STAIR_REACH = 1.0  # m: areas this close to an outdoor stair are cut from its box
+
+
+def named_outdoor_stairs(areas: List[Area], passages: List[Passage], stairs, texts) -> List[int]:
+    """Stairs drawn outside every area (an outdoor fire-escape stair along the facade: its treads stand beyond
+    the walls) become stairs areas of their own when the drawing names them: a stair code or keyword
+    (``semantics``: 'E1-ST-07', its detail callout, 'scala esterna') within ``semantics.CALLOUT_REACH`` of
+    the flight. The area is the flight's box (less any area it overlaps); it is joined by a passage to an area
+    it touches (the landing it leads from), else it stays on its own (behind a facade no door crosses on
+    this plan), reported by the connectivity figures like any unreached space. An unnamed stair
+    outside the plan's areas (entrance steps, a stair of a detail view) is left out. Returns the new ids."""
+    from shapely.geometry import Point
+
+    from . import semantics
+
+    labs = semantics.classify_labels(list(texts or []))
+    codes = [Point(l.x, l.y) for l in labs if l.role in ("name", "number")
+             and (semantics.type_of_name(l.text, l.text) or {}).get("type") == "stairs"]
+    if not codes:
+        return []
+    out: List[int] = []
+    next_area = max([a.id for a in areas] + [0]) + 1
+    next_pass = max([p.id for p in passages] + [0]) + 1
+    for sym, angles in stairs:
+        if not any(sym.distance(c) <= semantics.CALLOUT_REACH for c in codes):
+            continue
+        poly = sym
+        near = [a for a in areas if a.type != "structure" and a.polygon is not None
+                and a.polygon.distance(sym) <= OUTDOOR_STAIR_REACH]
+        for a in near:
+            poly = poly.difference(a.polygon)
+        if poly.is_empty:
+            continue
+        poly = max(getattr(poly, "geoms", [poly]), key=lambda g: g.area)
+        if poly.geom_type != "Polygon" or poly.area < MIN_PIECE_AREA:
+            continue
+        new = Area(id=next_area, polygon=poly, type="stairs")
+        next_area += 1
+        areas.append(new)
+        out.append(new.id)
+        for a in near:  # it touches an area (the landing it leads from): a passage across the common border
+            if _touch(poly, a.polygon):
+                for ln in _passage_lines(a.polygon, poly):
+                    passages.append(Passage(id=next_pass, from_id=a.id, to_id=new.id, line=ln))
+                    next_pass += 1
+    return out
+
+
+def retype_break_line_lifts(areas: Sequence[Area], symbols) -> List[int]:
+    """Areas typed elevator (``area_types``: a cross, or density of a lift layer) that hold most of a stair
+    run and no lift cross of their own are stair cores: the cross they hold is the break line drawn across
+    the flight where the plan cuts it (``find_anchor_symbols`` drops crosses within ``BREAK_GAP`` of a run),
+    not a lift car. Typed stairs in place; returns their ids. (SIST-F4: the E1-ST-02 core was an
+    'elevator', so its detail callout named the next stair core, E1-ST-05, and E1-ST-05's none.)"""
+    stairs = [s for k, s, _a, _c in symbols if k == "stairs"]
+    lifts = [s for k, s, _a, _c in symbols if k == "elevator"]
+    out: List[int] = []
+    if not stairs:
+        return out
+    for a in areas:
+        if a.type != "elevator" or a.polygon is None or a.polygon.is_empty:
+            continue
+        poly = a.polygon
+        if not any(s.intersects(poly) and poly.intersection(s).area >= 0.5 * s.area for s in stairs):
+            continue
+        if any(c.intersects(poly) and poly.intersection(c).area >= 0.5 * c.area for c in lifts):
+            continue
+        a.type = "stairs"
+        out.append(a.id)
+    return out
 
 
 def relabel(labels: Optional[np.ndarray], grid, areas: Sequence[Area], stats) -> None:

@@ -206,6 +206,39 @@ def _hidden_texts(raw_texts, scale: float, extent, first_id: int) -> List[CadTex
     return out
 
 
+def _callouts_beside_plan(raw_texts, scale: float, extent, first_id: int) -> List[CadText]:
+    """Stair / lift detail callouts of frozen / off layers ("E1-ST-01详见建施(A-E-40-01)") hanging just outside
+    the kept plan's extent (beyond its 1 m margin, within ``semantics.CALLOUT_REACH``): written at the end of a
+    leader drawn out of the plan from the stair they name (SIST-F4: E1-ST-01 2 m below the plan), they are
+    the plan's. Only callouts naming a stair or lift code are kept; ids continue after ``first_id``."""
+    if extent is None or not raw_texts:
+        return []
+    from . import semantics
+
+    reach = semantics.CALLOUT_REACH
+    x0, y0, x1, y1 = extent
+    cand: List[CadText] = []
+    for t in raw_texts:
+        x, y = t[0] * scale, t[1] * scale
+        if not (math.isfinite(x) and math.isfinite(y)):
+            continue
+        if x0 - 1 <= x <= x1 + 1 and y0 - 1 <= y <= y1 + 1:
+            continue  # kept by _hidden_texts
+        if not (x0 - reach <= x <= x1 + reach and y0 - reach <= y <= y1 + reach):
+            continue
+        cand.append(CadText(x=x, y=y, text=t[2], height=t[3] * scale, rotation=t[4], layer=t[5], entity=t[6],
+                            block=innermost_block(t[7]), tag=t[8]))
+    out: List[CadText] = []
+    for lab in semantics.classify_labels(cand) if cand else []:
+        code = semantics.type_of_name("", lab.text) if lab.role == "number" and lab.reason == "callout" else None
+        if code and code.get("type") in ("stairs", "elevator"):
+            for i in lab.ids:
+                c = cand[i]
+                c.id = first_id + len(out)
+                out.append(c)
+    return out
+
+
 def import_dxf(path: str, rules=None, layers: Optional[Sequence[str]] = None, units: Optional[str] = None,
                include_doors: bool = False, fallback_walls: bool = True, drop_door_swings: bool = True,
                plan=None, classify: bool = True, progress=None) -> CadDrawing:
@@ -395,6 +428,8 @@ def _import(path, rules, layers, units, include_doors, fallback_walls, drop_door
         t.id = k
     box = sel.extent if sel is not None else parse_plan(plan)
     hidden = _hidden_texts(p.hidden_texts, scale, box if isinstance(box, tuple) else None, len(texts))
+    hidden += _callouts_beside_plan(p.hidden_texts, scale, box if isinstance(box, tuple) else None,
+                                    len(texts) + len(hidden))
     if sel is not None:
         x0, y0, x1, y1 = sel.extent
         doors = [d for d in doors if x0 - 1 <= (d.x0 + d.x1) / 2 <= x1 + 1 and y0 - 1 <= (d.y0 + d.y1) / 2 <= y1 + 1]

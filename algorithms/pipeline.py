@@ -217,8 +217,12 @@ def _carve_anchors(refined: AreaGraph, drawing: CadDrawing, grid, timings, cpu, 
     t0, c0 = time.perf_counter(), time.process_time()
     found = anchors.find_anchor_symbols(drawing.geometries, shapes=symbols)
     st = anchors.carve_anchors(refined.areas, refined.passages, drawing.geometries, progress=progress.sub(95, 95),
-                               symbols=found)
+                               symbols=found,
+                               texts=list(drawing.texts) + list(getattr(drawing, "hidden_texts", None) or []))
     anchors.relabel(refined.labels, grid, refined.areas, st)
+    if st.get("outdoor"):
+        progress.info(f"{len(st['outdoor'])} named stair(s) drawn outside every area (outdoor) made areas of their own: "
+                      + ", ".join(map(str, st["outdoor"])))
     if st["carved"]:
         progress.info(f"{len(st['carved'])} stair/lift area(s) carved out of the areas that swallowed them ("
                       + ", ".join(f"{k} {m2:.0f} m² from area {h}" for k, _n, h, m2 in st["carved"][:12]) + ")")

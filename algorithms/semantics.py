@@ -831,6 +831,7 @@ def assign_names(areas: List[Area], texts: Sequence[CadText], level="1", rules=N
     progress.step(50, "naming areas")
     _demote_shafts_and_outdoor(best_by_area, records, rules)
     by_id = {a.id: a for a in areas}
+    _demote_shafts_in_anchors(best_by_area, by_id, rules)
     # ---- split areas holding several different names
     if split:
         # a piece still holding two names is split again (a hall with a lift lobby at one end and a round
@@ -1135,6 +1136,22 @@ def _demote_shafts_and_outdoor(best_by_area: Dict[int, List[TextRecord]], record
             r.role, r.reason = "ignored", "outdoor"
 
 
+def _demote_shafts_in_anchors(best_by_area: Dict[int, List[TextRecord]], by_id: Dict[int, Area],
+                              rules: NameRules) -> None:
+    """An MEP shaft label (暖, 水井, duct) inside an area typed stairs / elevator from its symbols labels the
+    duct in the core's wall, not the stair or lift: ignored ('shaft label'), so the stair or lift keeps the
+    name its code gives (SIST-F4: the E1-ST-01 core was named '暖')."""
+    if not rules.shaft_keywords:
+        return
+    for aid, recs in best_by_area.items():
+        a = by_id.get(aid)
+        if a is None or a.type not in ("stairs", "elevator"):
+            continue
+        for r in recs:
+            if r.role == "name" and _matches(rules.shaft_keywords, r.text):
+                r.role, r.reason = "ignored", "shaft label"
+
+
 def _demote_zones(best_by_area: Dict[int, List[TextRecord]], rules: NameRules, progress) -> None:
     """A zone of an open space ('阅览区(随意开放性坐区)', a reading zone with free seating in the atrium
     gallery of library sheet A-A3-10-04; 'open space', 'zona relax') that shares its area with another
@@ -1353,7 +1370,8 @@ def _split_area(a: Area, recs: List[TextRecord], names: Dict[str, TextRecord], g
     half the widest door, 1.4 m): the first t at which two names fall into different cores is where
     the narrowings are. Every core bigger than 2 m² (named or not: a corridor joining the rooms becomes
     its own area) seeds a watershed of the clearance inside the area; a split is kept only when the
-    opening (2 t) is at most NARROWING_RATIO of the width of every piece. Returns the pieces (``a``
+    opening (2 t, or twice the clearance on the cut) is at most NARROWING_RATIO of the width of every piece
+    (NARROWING_RATIO_DOOR for a door-wide opening: ``_narrow_enough``). Returns the pieces (``a``
     first, changed in place, the others appended to ``areas``) or None (no narrowing: a conflict)."""
     from scipy import ndimage
     import cv2
@@ -1442,7 +1460,7 @@ def _split_area(a: Area, recs: List[TextRecord], names: Dict[str, TextRecord], g
             continue
         # the opening must be clearly narrower than every piece; if not, a wider threshold may still
         # find the narrowing between the names (the first separation can be a bay of one room)
-        if any(2 * t > NARROWING_RATIO * 2.0 * float(clearance[reg == k].max()) for k in present):
+        if not _narrow_enough(t, reg, present, clearance, inside):
             continue
         found = (t, reg, present, owner)
         break
@@ -1482,6 +1500,29 @@ def _split_area(a: Area, recs: List[TextRecord], names: Dict[str, TextRecord], g
             pieces[j] = (merged, pieces[j][1])
     pieces = _straighten(pieces, res)
     return _finish(a, pieces, areas, passages, labels, grid, recs, t)
+
+
+DOOR_OPENING = 1.0  # m: an opening no wider than one door leaf is a doorway (NARROWING_RATIO_DOOR)
+NARROWING_RATIO_DOOR = 0.8  # a doorway must be at most this share of the width of the pieces it joins
+
+
+def _narrow_enough(t: float, reg: np.ndarray, present, clearance: np.ndarray, inside: np.ndarray) -> bool:
+    """The opening between the pieces ``present`` of ``reg`` is clearly narrower than every piece: its width
+    (twice the highest clearance on the pieces' common border, at most 2 t) is at most NARROWING_RATIO of
+    the piece's width (twice its largest clearance). An opening no wider than a door (DOOR_OPENING) may take
+    up to NARROWING_RATIO_DOOR of it: a WC or washroom 1.2-1.4 m wide is entered through a 0.7-0.9 m door
+    (schema-ufficio-1: the 2.9 m² washroom opening onto the bar's back room stayed part of it)."""
+    from scipy import ndimage
+
+    for k in present:
+        m = reg == k
+        width = 2.0 * float(clearance[m].max())
+        rim = m & ndimage.binary_dilation((reg != k) & inside)
+        opening = 2.0 * min(t, float(clearance[rim].max())) if rim.any() else 2.0 * t
+        ratio = NARROWING_RATIO_DOOR if opening <= DOOR_OPENING else NARROWING_RATIO
+        if opening > ratio * width:
+            return False
+    return True
 
 
 def _geodesic_regions(markers: np.ndarray, inside: np.ndarray, max_iter: int = 5000) -> np.ndarray:

@@ -233,3 +233,85 @@ def test_dxftoosmag_headless_carves_the_open_stair_and_lift(tmp_path):
     for a in typed:
         assert any(a.id in (p.from_id, p.to_id) for p in passages), a.name
     assert report["dangling_refs"] == [] and res["AREA_COUNT"] == len(areas) - 1
+
+
+def test_a_stair_core_typed_elevator_by_its_break_line_cross_is_a_stair():
+    """A 3 x 7 m stair core whose flight is cut by a break line drawn as a cross (SIST-F4 E1-ST-02: the
+    symbol typing read the cross as a lift car and typed the core elevator, so the core's detail callout
+    named the next stair): the core holds a stair run and no lift car of its own, so it is a stair. A lift
+    shaft with a car cross and no treads stays a lift; a lift beside a stair keeps its type."""
+    core = Area(id=1, polygon=box(0, 0, 3, 7), type="elevator")
+    shaft = Area(id=2, polygon=box(5, 0, 7.2, 2.2), type="elevator")
+    flight = _flight(0.3, 1.0, width=1.2, n=14)
+    geoms = flight + _cross(0.3, 2.6, 1.5, 3.4) + _cross(5.2, 0.2, 7.0, 2.0)
+    st = anchors.carve_anchors([core, shaft], [], geoms)
+    assert st["retyped"] == [1] and core.type == "stairs" and shaft.type == "elevator"
+    assert not st["carved"]  # the core is its own area: only retyped
+    # the same core with a real lift car beside the flight inside it: not retyped
+    both = Area(id=3, polygon=box(0, 0, 6, 7), type="elevator")
+    st = anchors.carve_anchors([both], [], flight + _cross(3.8, 0.5, 5.6, 2.3))
+    assert st["retyped"] == []
+
+
+def test_a_named_stair_outside_every_area_becomes_a_stair_of_its_own():
+    """An outdoor fire-escape stair along the facade (SIST-F4 E1-ST-07: its treads stand beyond the glazing,
+    its detail callout beside it): a stairs area of its own, named by its code; the same flight with no
+    stair name near it (entrance steps, a detail view's stair) is left out; a flight touching an area (its
+    landing) is joined to it by a passage."""
+    from algorithms.model import CadText
+    from algorithms import semantics
+
+    hall = Area(id=1, polygon=box(0, 0, 10, 10))
+    flight = _flight(11.0, 2.0, width=1.4, n=12)
+    callout = CadText(x=14.0, y=4.0, text="E1-ST-07详见建施(A-E-40-07)", height=0.35, rotation=0.0, layer="A-TEXT")
+    areas, passages = [hall], []
+    st = anchors.carve_anchors(areas, passages, flight)
+    assert st.get("outdoor") is None and len(areas) == 1  # no texts given: nothing
+    st = anchors.carve_anchors(areas, passages, flight,
+                               texts=[CadText(x=30, y=4, text="E1-ST-07", height=0.35, rotation=0.0, layer="A")])
+    assert st["outdoor"] == [] and len(areas) == 1  # the code 16 m away names another stair
+    st = anchors.carve_anchors(areas, passages, flight, texts=[callout])
+    _graph_ok(areas, passages)
+    assert len(st["outdoor"]) == 1 and not passages
+    stair = areas[-1]
+    assert stair.type == "stairs" and stair.polygon.area == pytest.approx(1.4 * 12 * 0.28, rel=0.1)
+    semantics.assign_names(areas, [], hidden_texts=[callout])
+    assert (stair.ref, stair.type) == ("E1-ST-07", "stairs")
+    # a flight standing against the hall's border: a passage across the common border
+    hall = Area(id=1, polygon=box(0, 0, 10, 10))
+    areas, passages = [hall], []
+    st = anchors.carve_anchors(areas, passages, _flight(10.0, 2.0, width=1.4, n=12, going=0.28), texts=[callout])
+    # treads from x = 10 (the hall's wall) to 11.4: the box touches the hall along its whole height
+    assert len(st["outdoor"]) == 1 and len(passages) >= 1
+    assert all({p.from_id, p.to_id} == {1, st["outdoor"][0]} for p in passages)
+
+
+@pytest.mark.qgis_process
+def test_dxftoosmag_headless_makes_a_named_outdoor_stair_an_area(tmp_path):
+    """``cad2osmag:dxftoosmag`` through qgis_process on the open-anchors sample with an outdoor flight added
+    1.5 m beyond its east wall and its code 'E1-ST-07' written beside it: the osmAG file holds a stairs area
+    with that ref, and the log says it was drawn outside every area."""
+    import ezdxf
+    from shapely.ops import unary_union as union
+
+    from algorithms import osmag, sample_building
+
+    from .qgis_process import run_alg
+
+    info = sample_building.generate_open_anchors(str(tmp_path))
+    x0, y0, x1, y1 = union(list(info["rooms"].values())).bounds
+    doc = ezdxf.readfile(info["dxf"])
+    msp = doc.modelspace()
+    fx = x1 + 1.5
+    for k in range(13):
+        msp.add_line((fx, y0 + 1 + 0.28 * k), (fx + 1.2, y0 + 1 + 0.28 * k), dxfattribs={"layer": "A-STAIR"})
+    msp.add_text("E1-ST-07", height=0.3, dxfattribs={"layer": "A-ANNO-TEXT"}).set_placement((fx + 2.5, y0 + 2.5))
+    src = tmp_path / "outdoor-stair.dxf"
+    doc.saveas(str(src))
+    out = tmp_path / "outdoor-stair.osm"
+    _, res, log = run_alg("dxftoosmag", {"INPUT": str(src), "OUTPUT": str(out), "LEVEL": 1})
+    assert "drawn outside every area (outdoor)" in log
+    areas, _passages, _root, report = osmag.read_osmag(str(out))
+    outdoor = [a for a in areas if a.type == "stairs" and "E1-ST-07" in (a.tags.get("ref", ""), a.name)]
+    assert len(outdoor) == 1 and len(outdoor[0].polygon.exterior.coords) >= 5  # (read back in lon/lat)
+    assert report["dangling_refs"] == [] and res["AREA_COUNT"] == len(areas) - 1

@@ -372,21 +372,24 @@ def test_archweb_texts_classified_as_read_by_hand(shared_data, plan):
 
 # known defects, reported as expected failures until fixed (the floor stays the target)
 NAMES_KNOWN_BELOW = {
-    "schema-ufficio-1.dxf": "segmentation, not names (73.7 %, 14 of 19): the 2.9 m² washroom is part of the bar's "
-                            "area before refinement (segmentation area of 179 m²: its door swing opened the doorway "
-                            "and the strip, 1.2 m wide, opens onto the bar over its whole width, so no narrowing "
-                            "splits it off); 'area bar' / 'wine & water bar' name one open bar space and the two "
-                            "general secretaries' desks share one room with no partition: honest conflicts",
+    "schema-ufficio-1.dxf": "honest conflicts, not segmentation (78.9 %, 15 of 19, since a door-wide opening splits the "
+                            "2.9 m² washroom off the bar's back room: 73.7 % before): 'area bar' / 'wine & water "
+                            "bar' name one open bar space (the wine bar's counter, 'bancone refrigerato per "
+                            "esposizione vini', is furniture, and the octagonal showroom behind it opens onto the bar "
+                            "over its whole width: no wall, no narrowing); the two general secretaries share one "
+                            "25.6 m² room whose folding partition is drawn folded at both ends (zig-zags at x 325), "
+                            "open: one space with two desks and two doors",
 }
 
 
 @pytest.mark.slow
 @pytest.mark.parametrize("plan,floors", [
     # measured figures (make evaluate-cad), kept as floors against regressions; see README for the targets
-    # (2026-12-01 session 4: ufficio 100 / 73.7 / 100 / 2, museum 97.0 / 93.9 / 96.8 / 0 since the hall and
+    # (2026-12-02 session 5: ufficio 100 / 78.9 / 100 / 2 since the washroom splits off at its door;
+    # 2026-12-01 session 4: ufficio 100 / 73.7 / 100 / 2, museum 97.0 / 93.9 / 96.8 / 0 since the hall and
     # the void split at their narrowing, Aule 100 / 100 / 100 / 0, CASONA 100 / 100 / 100 / 0 since a label on a
     # pillar is inside its room)
-    ("schema-ufficio-1.dxf", {"inside_pct": 95, "own_area_pct": 75, "semantic_accuracy_pct": 95, "max_conflicts": 2}),
+    ("schema-ufficio-1.dxf", {"inside_pct": 95, "own_area_pct": 78, "semantic_accuracy_pct": 95, "max_conflicts": 2}),
     ("historical_museum.dxf", {"inside_pct": 95, "own_area_pct": 90, "semantic_accuracy_pct": 95, "max_conflicts": 1}),
     ("Aule-scolastiche-pianta-1.dxf", {"inside_pct": 95, "own_area_pct": 95, "semantic_accuracy_pct": 95, "max_conflicts": 0}),
     ("CASONA_DE_YANAHUARA.dxf", {"inside_pct": 95, "own_area_pct": 95, "semantic_accuracy_pct": 95, "max_conflicts": 0}),
@@ -440,8 +443,15 @@ DWG_VERTICAL = {
 }
 
 
-TYPED_AT_LEAST = {"sist-original/SIST-F4.dwg": 13, "sist-original/SIST-F1.dwg": 20, "sist-original/SIST-F3.dwg": 19,
-                  "library/A-A3-10-06.dwg": 7}  # codes that name a stair/lift area (measured 2026-12-02)
+# codes that name a stair/lift area (measured 2026-12-02, session 5: F4 13 -> 16, F1 20 -> 21 and F3 19 -> 20, i.e.
+# every code of F1 and F3). SIST-F4's two left, with the evidence: E2-ST-02's callout hangs 6.7 m north of the
+# plan (11766.6, -6071.7) and no stair is drawn within 8 m of it nor where F3's E2-ST-02 registers on F4 (one
+# degenerate 0-length line on A-FLOR-STRS; the wing ends at x 11770): the code names a stair of another floor's
+# detail; E1-P2's shaft is drawn as an empty box of walls (no car cross, no lift-layer entity: 47 wall lines in
+# 11770.3..11774.2 x -6178.3..-6175.2, where F3's E1-P2 registers) opening without a door onto corridor 1-107:
+# no symbol tells it from a niche, so it stays part of the corridor
+TYPED_AT_LEAST = {"sist-original/SIST-F4.dwg": 16, "sist-original/SIST-F1.dwg": 21, "sist-original/SIST-F3.dwg": 20,
+                  "library/A-A3-10-06.dwg": 7}
 
 
 def _dwg_reader():
@@ -487,9 +497,10 @@ def test_dwg_stairs_and_lifts_become_typed_areas(shared_data, sheet, floor_cache
     assert plan or not (want_st | want_el), "no stair or lift of the sheet named an area"
     for code in plan:
         assert typed[code] <= ({"stairs"} if code in want_st else {"elevator"}), (code, typed[code])
-    # measured: on SIST-F4 13 of the 18 codes name a stair/lift area (9 before stairs and lifts swallowed by a
-    # larger area were carved out, anchors.carve_anchors); the rest (E1-ST-01, -05, -07, E2-ST-02, E1-P2) are
-    # open stairs outdoors or shafts the segmentation merged beyond the carve's reach
+    # measured: on SIST-F4 16 of the 18 codes name a stair/lift area (9 before stairs and lifts swallowed by a
+    # larger area were carved out, anchors.carve_anchors; 13 before a core typed elevator by its break-line
+    # cross became a stair (E1-ST-02, -05), callouts just outside the plan were kept (E1-ST-01) and named
+    # outdoor stairs became areas (E1-ST-07)); E2-ST-02 and E1-P2: see TYPED_AT_LEAST
     print(sheet, "codes naming a stair/lift area:", len(plan), sorted(plan))
     assert len(plan) >= TYPED_AT_LEAST.get(sheet, 0), sorted(plan)
     for a in floor.refined.areas:  # a code never makes an atrium a stair
@@ -502,17 +513,20 @@ def test_dwg_stairs_and_lifts_become_typed_areas(shared_data, sheet, floor_cache
 # Issue 8/9 figures per DWG sheet (make evaluate-cad): >= 95 % of the room-name texts inside an area and
 # >= 90 % naming an area of their own, per plan. Below it, with the evidence (a picture and the texts):
 DWG_NAMES_KNOWN_BELOW = {
-    "library/A-A3-10-06.dwg": "segmentation, not names: the six '中庭回廊' (atrium gallery) tags lie in the gallery "
-                              "between the two wings, open to the south-west, which the envelope leaves outside: "
-                              "four in no area, two just outside the rooms beside it; 82.9 % (29 of 35)",
+    "library/A-A3-10-06.dwg": "segmentation, not names (re-checked 2026-12-02: 88.6 %, 31 of 35): the atrium gallery "
+                              "'中庭回廊' is two areas now (two of its six tags name them), the four misses are all "
+                              "gallery tags: two (11901, -6395 / -6407) lie in the gallery's west part between the "
+                              "oval void and the south-west facade, open to the outside, which the envelope leaves "
+                              "outside (no area); two (11932.6, -6398.0 and 11956.0, -6404.5) lie on the gallery's "
+                              "north edge just outside it, nearest the rooms beside it (空调机房, 电脑活动交流室)",
 }
 # measured 2026-12-01 (session 4): (inside %, own %, conflicts at most), kept as floors against regressions;
 # SIST-F1: the passage 通道 between the wings is an area since the named-passage rule, holding two labels (通道,
 # 残疾人出入口): inside 96.4 -> 98.2 %, own 93.6 -> 92.7 %, conflicts 3 -> 4
 DWG_NAMES_FLOORS = {
     "library/A-A3-10-04.dwg": (100.0, 100.0, 0), "library/A-A3-10-05.dwg": (100.0, 100.0, 0),
-    "library/A-A3-10-06.dwg": (82.0, 82.0, 0), "sist-original/SIST-F1.dwg": (98.0, 92.0, 4),
-    "sist-original/SIST-F3.dwg": (97.0, 95.0, 2), "sist-original/SIST-F4.dwg": (98.0, 98.0, 1),
+    "library/A-A3-10-06.dwg": (88.0, 88.0, 0), "sist-original/SIST-F1.dwg": (98.0, 92.0, 4),
+    "sist-original/SIST-F3.dwg": (97.0, 95.0, 2), "sist-original/SIST-F4.dwg": (99.0, 98.0, 1),
     "sist-original/SIST-F5.dwg": (97.0, 98.0, 0),
 }
 
@@ -726,3 +740,56 @@ def test_a_zone_of_an_open_space_is_no_second_room():
     areas = [Area(id=1, polygon=box(0, 0, 12, 5))]
     rep = S.assign_names(areas, [T("会议室", 3, 2.5), T("办公室", 9, 2.5)])
     assert rep.conflicts == [1]
+
+
+def test_a_shaft_label_in_a_stair_core_is_not_its_name():
+    # '暖' (heating duct) written inside a stair core typed from its treads labels the duct in the core's
+    # wall: the stair keeps the code its callout gives (SIST-F4: the E1-ST-01 core was named '暖')
+    core = Area(id=1, polygon=box(0, 0, 8, 5), type="stairs")
+    office = Area(id=2, polygon=box(8.2, 0, 14, 5))
+    rep = S.assign_names([core, office], [T("暖", 7.5, 4.5), T("风井", 13.5, 4.5), T("办公室", 11, 2.5)],
+                         hidden_texts=[T("E1-ST-01详见建施(A-E-40-01)", 4, -3, layer="A-TEXT")])
+    assert (core.name, core.ref, core.type) == ("E1-ST-01", "E1-ST-01", "stairs")
+    reasons = {r.text: r.reason for r in rep.texts}
+    assert reasons["暖"] == "shaft label" and office.name == "办公室"
+    # a shaft segmentation made an area of keeps its label; so does a lift lobby named '电梯厅'
+    shaft = Area(id=3, polygon=box(0, 0, 1, 1))
+    S.assign_names([shaft], [T("暖", 0.5, 0.5)])
+    assert shaft.name == "暖"
+
+
+def test_stair_callouts_beside_the_plan_are_kept():
+    # frozen-layer callouts hang at the end of leaders drawn out of the plan: 2 m below it (SIST-F4 E1-ST-01)
+    # is the plan's; a room name there, or a callout 20 m away (another view), is not
+    from algorithms import cad_import
+
+    raw = [(50.0, -2.0, "E1-ST-01详见建施(A-E-40-01)", 0.35, 0.0, "A-TEXT", "TEXT", "", ""),
+           (50.0, -3.0, "办公室", 0.35, 0.0, "A-TEXT", "TEXT", "", ""),
+           (50.0, -20.0, "E1-ST-09详见建施(A-E-40-09)", 0.35, 0.0, "A-TEXT", "TEXT", "", ""),
+           (105.0, 30.0, "E2-P1详见建施(A-E-40-19)", 0.35, 0.0, "A-TEXT", "MTEXT", "*U5", ""),
+           (50.0, 20.0, "E1-ST-02详见建施(A-E-40-02)", 0.35, 0.0, "A-TEXT", "TEXT", "", "")]
+    extent = (0.0, 0.0, 100.0, 60.0)
+    inside = cad_import._hidden_texts(raw, 1.0, extent, 10)
+    beside = cad_import._callouts_beside_plan(raw, 1.0, extent, 10 + len(inside))
+    assert [t.text for t in inside] == ["E1-ST-02详见建施(A-E-40-02)"]
+    assert sorted(t.text[:8] for t in beside) == ["E1-ST-01", "E2-P1详见建"]
+    assert sorted(t.id for t in beside) == [11, 12]
+    assert cad_import._callouts_beside_plan(raw, 1.0, None, 0) == []  # no plan picked: every text is kept anyway
+
+
+def test_a_washroom_behind_its_door_splits_off_the_room_it_opens_onto():
+    # schema-ufficio-1: a 2.1 x 1.3 m washroom entered through a 0.85 m door from the bar's back room, one
+    # area with it: the door takes 65 % of the washroom's width (more than the 60 % a wide opening may), but an
+    # opening no wider than a door is a doorway up to 80 % of the pieces' width
+    big = box(0, 0, 10, 8)
+    wash = box(10.2, 3.0, 12.3, 4.3).union(box(9.9, 3.225, 10.3, 4.075))  # 0.85 m door in a 0.2 m wall
+    poly = big.union(wash)
+    areas = [Area(id=1, polygon=poly)]
+    rep = S.assign_names(areas, [T("area bar", 5, 4), T("washroom", 11.3, 3.65)])
+    by_name = {a.name: a for a in areas}
+    assert set(by_name) == {"area bar", "washroom"} and not rep.conflicts and len(rep.splits) == 1
+    assert by_name["washroom"].polygon.area == pytest.approx(2.1 * 1.3, rel=0.15)
+    # the same washroom open over its whole width (no door) stays one area with the room: a conflict
+    areas = [Area(id=1, polygon=big.union(box(10, 3.0, 12.3, 4.3)))]
+    rep = S.assign_names(areas, [T("area bar", 5, 4), T("washroom", 11.3, 3.65)])
+    assert not rep.splits and rep.conflicts == [1]
