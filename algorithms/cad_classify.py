@@ -760,61 +760,109 @@ def _touching_groups(lines, tree) -> Dict[int, List[int]]:
     return groups
 
 
+def _linestrings(coords: Sequence[np.ndarray]) -> np.ndarray:
+    """LineStrings of (n_i, 2) coordinate arrays (n_i >= 2, finite) built in one vectorised call."""
+    import shapely
+
+    if not len(coords):
+        return np.empty(0, dtype=object)
+    lens = np.fromiter((len(c) for c in coords), dtype=np.int64, count=len(coords))
+    return shapely.linestrings(np.concatenate(coords), indices=np.repeat(np.arange(len(coords)), lens))
+
+
 def floor_markings(geoms: Sequence[CadGeometry], cls: List[str], weak: set) -> int:
     """Markings drawn on the floor (a sports court's lines, circles and arcs; a painted play area) on the
     same layer as the walls ("0", fallback layers): a group of lines on ``weak`` layers that touches no other
     geometry (it closes no space with the walls), is larger than furniture (MARKING_MIN_SPAN), lies inside
     the extent of the drawing's largest group, and has no two lines at a wall's thickness apart (single
-    lines only: no wall). Marked class "marking" in ``cls`` (left out like furniture). Returns how many."""
-    from shapely import STRtree
-    from shapely.geometry import LineString
+    lines only: no wall). Marked class "marking" in ``cls`` (left out like furniture). Returns how many.
 
-    idx, lines = [], []
+    Only lines on weak layers can be markings: their groups are found among themselves first, and the
+    touching groups of the whole drawing (its largest group) are computed only when one of them passes
+    every other test (a drawing with walls on named layers has few such lines; SIST-F5: 142 of 15,308)."""
+    import shapely
+    from shapely import STRtree
+
+    idx, coords = [], []
     for i, g in enumerate(geoms):
         if cls[i] or g.filled or g.kind in ("column", "stair", "elevator", "boundary", AUX_KIND):
             continue
-        c = g.coords[np.isfinite(g.coords).all(axis=1)]
+        c = g.coords
+        fin = np.isfinite(c).all(axis=1)
+        if not fin.all():
+            c = c[fin]
         if len(c) >= 2:
             idx.append(i)
-            lines.append(LineString(c))
+            coords.append(c)
     if len(idx) < 4:
         return 0
-    tree = STRtree(lines)
-    groups = _touching_groups(lines, tree)
-    if len(groups) < 2:
+    cand = [k for k, i in enumerate(idx) if geoms[i].layer in weak and geoms[i].entity in MARKING_TYPES]
+    if len(cand) < 3:
         return 0
-    glen = {r: sum(lines[k].length for k in ks) for r, ks in groups.items()}
-    main = max(glen, key=glen.get)
-    mb = np.array([lines[k].bounds for k in groups[main]])
-    box = (mb[:, 0].min(), mb[:, 1].min(), mb[:, 2].max(), mb[:, 3].max())
-    n = 0
-    for r, ks in groups.items():
-        if r == main or len(ks) < 3:
+    cand_lines = _linestrings([coords[k] for k in cand])
+    cand_bounds = shapely.bounds(cand_lines)
+    local = []  # groups of weak lines (positions in ``cand``) large enough to be a marking
+    for ks in _touching_groups(cand_lines, STRtree(cand_lines)).values():
+        if len(ks) < 3:
             continue
+        b = cand_bounds[ks]
+        if max(b[:, 2].max() - b[:, 0].min(), b[:, 3].max() - b[:, 1].min()) < MARKING_MIN_SPAN:
+            continue
+        local.append(ks)
+    if not local:
+        return 0
+    lines = _linestrings(coords)
+    tree = STRtree(lines)
+    in_cand = np.zeros(len(idx), dtype=bool)
+    in_cand[cand] = True
+    cand_arr = np.asarray(cand)
+    groups = []  # (member positions in ``idx``) of weak groups that touch no other line: whole groups
+    for ks in local:
+        ks_all = cand_arr[ks]
+        hit = tree.query(lines[ks_all], predicate="dwithin", distance=TOUCH)[1]
+        if not in_cand[hit].all():
+            continue  # touches a line of another layer or type: part of a larger group
+        groups.append(ks_all.tolist())
+    passing = []
+    for ks in groups:
         members = [idx[k] for k in ks]
-        if any(geoms[i].layer not in weak or geoms[i].entity not in MARKING_TYPES for i in members):
-            continue
-        b = np.array([lines[k].bounds for k in ks])
-        x0, y0, x1, y1 = b[:, 0].min(), b[:, 1].min(), b[:, 2].max(), b[:, 3].max()
-        if max(x1 - x0, y1 - y0) < MARKING_MIN_SPAN:
-            continue
-        if x0 < box[0] or y0 < box[1] or x1 > box[2] or y1 > box[3]:
-            continue
         straight = [geoms[i] for i in members if geoms[i].entity in ("LINE", "LWPOLYLINE", "POLYLINE")]
         segs = np.concatenate([_segments(g.coords, g.closed) for g in straight]) if straight else np.zeros((0, 2, 2))
         if len(segs):
             # the other face of a wall may be a line of another group (two closed outlines that never touch)
             mine = set(members)
-            near = {idx[k] for k in tree.query([lines[k] for k in ks], predicate="dwithin",
+            near = {idx[k] for k in tree.query(lines[ks], predicate="dwithin",
                                                distance=WALL_PAIR[1])[1].tolist()} - mine
             others = [_segments(geoms[j].coords, geoms[j].closed) for j in near
                       if geoms[j].entity in ("LINE", "LWPOLYLINE", "POLYLINE")]
             others = np.concatenate(others) if others else None
             if _has_wall_pair(segs, others):
                 continue
-        for i in members:
-            cls[i] = "marking"
-        n += len(members)
+        passing.append(ks)
+    if not passing:
+        return 0
+    # the drawing's largest group (by length) and its extent: a marking lies inside it and is not it
+    full = _touching_groups(lines, tree)
+    if len(full) < 2:
+        return 0
+    length = shapely.length(lines).tolist()
+    glen = {r: sum(length[k] for k in ks) for r, ks in full.items()}
+    main = max(glen, key=glen.get)
+    main_set = set(full[main])
+    bounds = shapely.bounds(lines)
+    mb = bounds[full[main]]
+    box = (mb[:, 0].min(), mb[:, 1].min(), mb[:, 2].max(), mb[:, 3].max())
+    n = 0
+    for ks in passing:
+        if ks[0] in main_set:
+            continue
+        b = bounds[ks]
+        x0, y0, x1, y1 = b[:, 0].min(), b[:, 1].min(), b[:, 2].max(), b[:, 3].max()
+        if x0 < box[0] or y0 < box[1] or x1 > box[2] or y1 > box[3]:
+            continue
+        for k in ks:
+            cls[idx[k]] = "marking"
+        n += len(ks)
     return n
 
 
