@@ -145,10 +145,9 @@ def _swings(geoms: Sequence[CadGeometry], leaf_required: bool):
     # closed leaf lies; the open end stands in the room. Such arcs are doors with a hint.
     lone = [a for k, a in enumerate(arcs) if a[0] not in with_leaf and k not in wide]
     if lone:
-        ends = [g.coords[[0, -1]] for i, g in enumerate(geoms) if i not in arc_set and len(g.coords) >= 2
-                and np.isfinite(g.coords[[0, -1]]).all()]
-        if ends:
-            etree = cKDTree(np.concatenate(ends))
+        ends = _end_points([g.coords for i, g in enumerate(geoms) if i not in arc_set and len(g.coords) >= 2])
+        if len(ends):
+            etree = cKDTree(ends)
             for ai, cx, cy, r, e0, e1 in lone:
                 tol = 0.1 * r
                 if not etree.query_ball_point((cx, cy), tol):
@@ -162,6 +161,16 @@ def _swings(geoms: Sequence[CadGeometry], leaf_required: bool):
              or (geoms[i].kind != "wall" and not leaf_required and i not in wide_idx)}
     drop |= set(combined)
     return sorted(drop), hints + list(combined.values())
+
+
+def _end_points(coords: Sequence[np.ndarray]) -> np.ndarray:
+    """(2k, 2) first and last vertex of each array (>= 2 rows) whose two ends are finite, in order."""
+    if not coords:
+        return np.zeros((0, 2))
+    first = np.array([c[0] for c in coords], dtype=np.float64)
+    last = np.array([c[-1] for c in coords], dtype=np.float64)
+    ok = np.isfinite(first).all(axis=1) & np.isfinite(last).all(axis=1)
+    return np.stack([first[ok], last[ok]], axis=1).reshape(-1, 2)
 
 
 def _leaf_and_arc(c: np.ndarray):
@@ -448,7 +457,7 @@ def _curved_treads(geoms: Sequence[CadGeometry], keep) -> int:
 
 def _free_furniture(geoms: Sequence[CadGeometry], cls: List[str], weak: set) -> None:
     from shapely import STRtree
-    from shapely.geometry import LineString, Polygon
+    from shapely.geometry import Polygon
 
     cand = []
     for i, g in enumerate(geoms):
@@ -462,13 +471,20 @@ def _free_furniture(geoms: Sequence[CadGeometry], cls: List[str], weak: set) -> 
             cand.append(i)
     if not cand:
         return
-    lines, idx = [], []
+    coords, idx = [], []
     for i, g in enumerate(geoms):
-        c = g.coords[np.isfinite(g.coords).all(axis=1)]
-        if len(c) >= 2 and not cls[i]:
-            lines.append(LineString(c))
+        if cls[i]:
+            continue
+        c = g.coords
+        fin = np.isfinite(c).all(axis=1)
+        if not fin.all():
+            c = c[fin]
+        if len(c) >= 2:
+            coords.append(c)
             idx.append(i)
+    lines = _linestrings(coords)  # one vectorised call (a LineString per entity cost 0.4 s on SIST-F1.dwg)
     tree = STRtree(lines)
+    pos = {i: k for k, i in enumerate(idx)}
     cset = set(cand)
     for i in cand:
         poly = Polygon(geoms[i].coords)
@@ -477,12 +493,12 @@ def _free_furniture(geoms: Sequence[CadGeometry], cls: List[str], weak: set) -> 
         zone = poly.buffer(TOUCH)
         hits = [idx[j] for j in tree.query(zone, predicate="intersects")]
         inside_poly = poly.buffer(-TOUCH) if poly.area > 0 else poly
-        touching = [j for j in hits if j != i and j not in cset and not inside_poly.contains(_line(geoms[j]))]
+        touching = [j for j in hits if j != i and j not in cset and not inside_poly.contains(lines[pos[j]])]
         if touching or any(geoms[j].filled or geoms[j].kind == "column" for j in hits if j != i):
             continue  # a hatched / filled outline is a column, not furniture
         cls[i] = "furniture"
         for j in hits:
-            if j != i and not cls[j] and inside_poly.contains(_line(geoms[j])):
+            if j != i and not cls[j] and inside_poly.contains(lines[pos[j]]):
                 cls[j] = "furniture"
 
 
