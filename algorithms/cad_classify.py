@@ -730,6 +730,35 @@ def _segments(c: np.ndarray, closed: bool = False) -> np.ndarray:
     return np.stack([c[:-1], c[1:]], axis=1) if len(c) >= 2 else np.zeros((0, 2, 2))
 
 
+def _segments_many(coords: Sequence[np.ndarray], closed: Sequence[bool]) -> Tuple[np.ndarray, np.ndarray]:
+    """``_segments`` of many geometries at once: ``(segments (m, 2, 2), owner position (m,))``, each owner's
+    segments in order (its closing segment last), owners in order; the same segments as one call each."""
+    n = len(coords)
+    if not n:
+        return np.zeros((0, 2, 2)), np.zeros(0, dtype=np.int64)
+    lens = np.fromiter((len(c) for c in coords), dtype=np.int64, count=n)
+    allc = np.concatenate(coords).astype(np.float64, copy=False).reshape(-1, 2)
+    own = np.repeat(np.arange(n), lens)
+    fin = np.isfinite(allc).all(axis=1)
+    allc, own = allc[fin], own[fin]
+    cnt = np.bincount(own, minlength=n)  # finite rows per owner
+    start = np.cumsum(cnt) - cnt
+    has = cnt > 0
+    first = np.full((n, 2), np.nan)
+    last = np.full((n, 2), np.nan)
+    first[has] = allc[start[has]]
+    last[has] = allc[start[has] + cnt[has] - 1]
+    close = np.asarray(closed, dtype=bool) & (cnt >= 3)
+    close[close] = ~np.isclose(first[close], last[close]).all(axis=1)  # as np.allclose, per owner
+    # consecutive rows of one owner, then each closing segment (last -> first), sorted back into owner order
+    k = np.flatnonzero(own[1:] == own[:-1])
+    cl = np.flatnonzero(close)
+    seg = np.concatenate([np.stack([allc[k], allc[k + 1]], axis=1), np.stack([last[cl], first[cl]], axis=1)])
+    sown = np.concatenate([own[k], cl])
+    order = np.argsort(sown, kind="stable")
+    return seg[order], sown[order]
+
+
 def _has_wall_pair(segs: np.ndarray, others: Optional[np.ndarray] = None, min_overlap: float = 0.5) -> bool:
     """A straight segment of ``segs`` and another one (of ``segs`` or ``others``), parallel (within 3
     degrees), WALL_PAIR apart and overlapping by ``min_overlap`` m along their direction: two faces of a wall."""
@@ -815,30 +844,43 @@ def floor_markings(geoms: Sequence[CadGeometry], cls: List[str], weak: set) -> i
     cand = [k for k, i in enumerate(idx) if geoms[i].layer in weak and geoms[i].entity in MARKING_TYPES]
     if len(cand) < 3:
         return 0
-    cand_lines = _linestrings([coords[k] for k in cand])
-    cand_bounds = shapely.bounds(cand_lines)
-    local = []  # groups of weak lines (positions in ``cand``) large enough to be a marking
-    for ks in _touching_groups(cand_lines, STRtree(cand_lines)).values():
-        if len(ks) < 3:
-            continue
-        b = cand_bounds[ks]
-        if max(b[:, 2].max() - b[:, 0].min(), b[:, 3].max() - b[:, 1].min()) < MARKING_MIN_SPAN:
-            continue
-        local.append(ks)
-    if not local:
-        return 0
-    lines = _linestrings(coords)
-    tree = STRtree(lines)
     in_cand = np.zeros(len(idx), dtype=bool)
     in_cand[cand] = True
-    cand_arr = np.asarray(cand)
-    groups = []  # (member positions in ``idx``) of weak groups that touch no other line: whole groups
-    for ks in local:
-        ks_all = cand_arr[ks]
-        hit = tree.query(lines[ks_all], predicate="dwithin", distance=TOUCH)[1]
-        if not in_cand[hit].all():
-            continue  # touches a line of another layer or type: part of a larger group
-        groups.append(ks_all.tolist())
+    lines = tree = full = None
+    groups = []  # (member positions in ``idx``) of whole groups of weak lines large enough to be a marking
+    if 2 * len(cand) > len(idx):  # mostly weak lines (a spaghetti drawing): the whole drawing's groups at once
+        lines = _linestrings(coords)
+        tree = STRtree(lines)
+        full = _touching_groups(lines, tree)
+        bounds = shapely.bounds(lines)
+        for ks in full.values():
+            if len(ks) < 3 or not in_cand[ks].all():
+                continue
+            b = bounds[ks]
+            if max(b[:, 2].max() - b[:, 0].min(), b[:, 3].max() - b[:, 1].min()) >= MARKING_MIN_SPAN:
+                groups.append(ks)
+    else:
+        cand_lines = _linestrings([coords[k] for k in cand])
+        cand_bounds = shapely.bounds(cand_lines)
+        local = []  # groups of weak lines (positions in ``cand``) large enough to be a marking
+        for ks in _touching_groups(cand_lines, STRtree(cand_lines)).values():
+            if len(ks) < 3:
+                continue
+            b = cand_bounds[ks]
+            if max(b[:, 2].max() - b[:, 0].min(), b[:, 3].max() - b[:, 1].min()) < MARKING_MIN_SPAN:
+                continue
+            local.append(ks)
+        if not local:
+            return 0
+        lines = _linestrings(coords)
+        tree = STRtree(lines)
+        cand_arr = np.asarray(cand)
+        for ks in local:
+            ks_all = cand_arr[ks]
+            hit = tree.query(lines[ks_all], predicate="dwithin", distance=TOUCH)[1]
+            if not in_cand[hit].all():
+                continue  # touches a line of another layer or type: part of a larger group
+            groups.append(ks_all.tolist())
     passing = []
     for ks in groups:
         members = [idx[k] for k in ks]
@@ -858,7 +900,8 @@ def floor_markings(geoms: Sequence[CadGeometry], cls: List[str], weak: set) -> i
     if not passing:
         return 0
     # the drawing's largest group (by length) and its extent: a marking lies inside it and is not it
-    full = _touching_groups(lines, tree)
+    if full is None:
+        full = _touching_groups(lines, tree)
     if len(full) < 2:
         return 0
     length = shapely.length(lines).tolist()
@@ -902,18 +945,12 @@ def lined_doorways(geoms: Sequence[CadGeometry], cls: List[str], weak: set,
 
     import shapely
 
-    parts, two = [], []
-    for i, g in enumerate(geoms):
-        if cls[i] or g.layer not in weak or g.filled or g.kind in ("column", "stair", "elevator", "boundary", AUX_KIND):
-            continue
-        sg = _segments(g.coords, g.closed)
-        if len(sg):
-            parts.append(sg)
-            two.append(np.full(len(sg), len(g.coords) == 2))
-    if not parts:
+    sel = [g for i, g in enumerate(geoms) if not (cls[i] or g.layer not in weak or g.filled
+                                                   or g.kind in ("column", "stair", "elevator", "boundary", AUX_KIND))]
+    segs, sown = _segments_many([g.coords for g in sel], [g.closed for g in sel])
+    if not len(segs):
         return []
-    segs = np.concatenate(parts)
-    is_two = np.concatenate(two)
+    is_two = np.array([len(g.coords) == 2 for g in sel], dtype=bool)[sown]
     seg_len = np.hypot(*(segs[:, 1] - segs[:, 0]).T)
     ok = seg_len >= 0.02
     segs, is_two, seg_len = segs[ok], is_two[ok], seg_len[ok]
@@ -943,6 +980,7 @@ def lined_doorways(geoms: Sequence[CadGeometry], cls: List[str], weak: set,
     ktree = cKDTree(np.array([((d.x0 + d.x1) / 2, (d.y0 + d.y1) / 2) for d in known])) if known else None
     hints: List[DoorHint] = []
     used = set()
+    ball: Dict[bytes, list] = {}
     for a, b in sorted(map(tuple, pairs.tolist())):
         if a in used or b in used:
             continue
@@ -956,7 +994,10 @@ def lined_doorways(geoms: Sequence[CadGeometry], cls: List[str], weak: set,
         ok = True
         for cap, sign in ((sa, -1.0), (sb, 1.0)):
             for p in cap:
-                near = [end_owner[k] for k in etree.query_ball_point(p, 0.02)]
+                key = p.tobytes()
+                near = ball.get(key)
+                if near is None:  # a cap is in several candidate pairs: look its ends up once
+                    near = ball[key] = [end_owner[k] for k in etree.query_ball_point(p, 0.02)]
                 face = False
                 for k in near:
                     c = segs[k]
