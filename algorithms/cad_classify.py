@@ -532,15 +532,19 @@ def curtain_wall_doors(geoms: Sequence[CadGeometry], keep: Optional[np.ndarray] 
            and (keep is None or keep[i])]
     if len(idx) < 4:
         return []
-    P, Q, own = [], [], []
-    for i in idx:
-        c = geoms[i].coords
-        if geoms[i].closed:
-            c = np.vstack([c, c[:1]])
-        P.append(c[:-1])
-        Q.append(c[1:])
-        own.append(np.full(len(c) - 1, i))
-    P, Q, own = np.concatenate(P), np.concatenate(Q), np.concatenate(own)
+    # every segment of the window pieces (a closed one's closing segment last), in one vectorised pass
+    lens = np.fromiter((len(geoms[i].coords) for i in idx), dtype=np.int64, count=len(idx))
+    allc = np.concatenate([geoms[i].coords for i in idx])
+    row_own = np.repeat(np.arange(len(idx)), lens)
+    k = np.flatnonzero(row_own[1:] == row_own[:-1])
+    shut = np.flatnonzero(np.fromiter((geoms[i].closed for i in idx), dtype=bool, count=len(idx)))
+    start = np.cumsum(lens) - lens
+    P = np.concatenate([allc[k], allc[start[shut] + lens[shut] - 1]])
+    Q = np.concatenate([allc[k + 1], allc[start[shut]]])
+    pos = np.concatenate([row_own[k], shut])
+    order = np.argsort(pos, kind="stable")
+    P, Q = P[order], Q[order]
+    own = np.asarray(idx, dtype=np.int64)[pos[order]]
     L = np.hypot(*(Q - P).T)
     ok = np.isfinite(L) & (L > 0.01)
     P, Q, own, L = P[ok], Q[ok], own[ok], L[ok]

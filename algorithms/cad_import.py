@@ -223,6 +223,30 @@ def _hidden_texts(raw_texts, scale: float, extent, first_id: int) -> List[CadTex
     return out
 
 
+def _unusable(pieces: _Pieces, idx: Sequence[int], scale: float) -> np.ndarray:
+    """Per piece of ``idx``: it holds a NaN/inf coordinate or one beyond 1e15 m once scaled (a filled piece's
+    all-NaN rows only separate its rings), tested on all vertices at once."""
+    coords = [pieces.coords[i] for i in idx]
+    if not coords:
+        return np.zeros(0, dtype=bool)
+    if not all(c.ndim == 2 and c.shape[1] == 2 for c in coords):  # unusual arrays: one at a time
+        out = []
+        for i, c in zip(idx, coords):
+            sep = np.isnan(c).all(axis=1) if pieces.filled[i] else np.zeros(len(c), bool)
+            v = c[~sep]
+            out.append(not bool(np.isfinite(v).all()) or abs(scale) * float(np.abs(v).max(initial=0.0)) > 1e15)
+        return np.array(out, dtype=bool)
+    lens = np.fromiter((len(c) for c in coords), dtype=np.int64, count=len(coords))
+    allc = np.concatenate(coords)
+    owner = np.repeat(np.arange(len(coords)), lens)
+    filled = np.fromiter((bool(pieces.filled[i]) for i in idx), dtype=bool, count=len(idx))
+    with np.errstate(invalid="ignore", over="ignore"):
+        sep = filled[owner] & np.isnan(allc).all(axis=1)
+        # abs(scale) * max(|v|) > 1e15 of the whole piece <=> of one of its vertices (scaling is monotonic)
+        bad = ~sep & (~np.isfinite(allc).all(axis=1) | (abs(scale) * np.abs(allc).max(axis=1) > 1e15))
+    return np.bincount(owner[bad], minlength=len(coords)) > 0
+
+
 def import_dxf(path: str, rules=None, layers: Optional[Sequence[str]] = None, units: Optional[str] = None,
                include_doors: bool = False, fallback_walls: bool = True, drop_door_swings: bool = True,
                plan=None, classify: bool = True, progress=None) -> CadDrawing:
@@ -342,13 +366,11 @@ def _import(path, rules, layers, units, include_doors, fallback_walls, drop_door
     chains = []
     nonfinite = 0
     dashed_was: Dict[int, str] = {}  # dashed lines on wall layers (projections) -> their layer's kind
-    for i in idx:
+    idx = [i for i in idx if len(p.coords[i]) >= 2 or p.filled[i]]
+    bad = _unusable(p, idx, scale)
+    for i, broken in zip(idx, bad):
         c = p.coords[i]
-        if len(c) < 2 and not p.filled[i]:
-            continue
-        sep = np.isnan(c).all(axis=1) if p.filled[i] else np.zeros(len(c), bool)  # NaN rows separate rings
-        v = c[~sep]
-        if not bool(np.isfinite(v).all()) or abs(scale) * float(np.abs(v).max(initial=0.0)) > 1e15:
+        if broken:
             # NaN/inf, or a coordinate beyond any building (1e15 m) that overflows downstream
             nonfinite += 1
             continue

@@ -151,3 +151,72 @@ if __name__ == "__main__":  # print the digests to re-pin after an intended rule
         src = REAL[name] if name in REAL else _synthetic(name, tmp)
         d = cad_import.import_dxf(str(src))
         print(f'    "{name}": "{drawing_digest(d)}",  # {_figures(d)}', flush=True)
+
+
+# ---------------------------------------------------------------- rewritten helpers against their plain versions
+def test_segments_many_equals_one_call_per_geometry():
+    from algorithms.cad_classify import _segments, _segments_many
+
+    rng = np.random.default_rng(0)
+    coords, closed = [], []
+    for _ in range(400):
+        n = int(rng.integers(0, 7))
+        c = np.round(rng.normal(size=(n, 2)), 1)
+        if n and rng.random() < 0.2:
+            c[rng.integers(n)] = np.nan  # a broken vertex: dropped, its neighbours joined
+        if n >= 3 and rng.random() < 0.3:
+            c[-1] = c[0] + (1e-9 if rng.random() < 0.5 else 0.0)  # closed by a repeated vertex
+        coords.append(c)
+        closed.append(bool(rng.random() < 0.5))
+    segs, owner = _segments_many(coords, closed)
+    plain = [_segments(c, z) for c, z in zip(coords, closed)]
+    assert np.array_equal(segs, np.concatenate(plain))
+    assert np.array_equal(owner, np.repeat(np.arange(len(plain)), [len(p) for p in plain]))
+
+
+def test_unusable_pieces_as_the_per_piece_rule():
+    """NaN / inf vertices, a vertex beyond 1e15 m once scaled, a filled piece's NaN ring separators (allowed)."""
+    from algorithms.cad_explode import _Pieces
+    from algorithms.cad_import import _unusable
+
+    p = _Pieces()
+    sep = np.full((1, 2), np.nan)
+    ring = np.array([[0.0, 0.0], [1.0, 0.0], [1.0, 1.0]])
+    p.add(ring, "A", "LINE")  # fine
+    p.add(np.array([[0.0, 0.0], [np.nan, 1.0]]), "A", "LINE")  # half a NaN vertex
+    p.add(np.vstack([ring, sep, ring + 5]), "A", "HATCH", True, True)  # two rings: fine
+    p.add(np.vstack([ring, sep, ring + 5]), "A", "LWPOLYLINE")  # the same NaN row on a line: broken
+    p.add(np.array([[0.0, 0.0], [np.inf, 0.0]]), "A", "LINE")
+    p.add(np.array([[0.0, 0.0], [2e15, 0.0]]), "A", "LINE")  # beyond 1e15 m at scale 1
+    p.add(np.zeros((0, 2)), "A", "SOLID", True, True)  # empty filled piece: nothing wrong with it
+    assert _unusable(p, range(len(p)), 1.0).tolist() == [False, True, False, True, True, True, False]
+    assert _unusable(p, [5], 1e-3).tolist() == [False]  # 2e12 m: far, but a number
+    assert _unusable(p, [0, 5], -1.0).tolist() == [False, True]
+
+
+def test_floor_markings_same_on_both_paths():
+    """A court of single lines on layer "0" inside a hall of two-line walls on a named layer: found whether
+    the weak lines are few (their groups first) or most of the drawing (the whole drawing's groups at once)."""
+    from algorithms.cad_classify import floor_markings
+    from algorithms.model import CadGeometry
+
+    def g(coords, layer, entity="LINE", closed=False):
+        return CadGeometry(layer=layer, kind="wall", coords=np.asarray(coords, dtype=float), closed=closed,
+                           entity=entity)
+
+    def hall(layer):
+        out = []
+        for inset in (0.0, 0.3):  # two faces of the hall's wall: a wall, never a marking
+            a, b = inset, 30.0 - inset
+            out.append(g([[a, a], [b, a], [b, b], [a, b]], layer, "LWPOLYLINE", True))
+        return out
+
+    court = [g([[5, 5], [20, 5]], "0"), g([[20, 5], [20, 15]], "0"), g([[20, 15], [5, 15]], "0"),
+             g([[5, 15], [5, 5]], "0"), g([[12.5, 5], [12.5, 15]], "0")]
+    tied = [g([[22, 5], [22, 15]], "0"), g([[22, 15], [29.7, 15]], "0"), g([[22, 5], [26, 5]], "0")]  # to the wall
+    for walls in (hall("A-WALL") + [g([[1, 1], [1.5 + k, 1]], "A-WALL") for k in range(12)], hall("0")):
+        geoms = walls + court + tied
+        cls = [""] * len(geoms)
+        n = floor_markings(geoms, cls, {"0"})
+        assert n == len(court), (n, cls)
+        assert [c == "marking" for c in cls] == [False] * len(walls) + [True] * len(court) + [False] * len(tied)
