@@ -472,10 +472,7 @@ def read_dwg(path: str, progress=None):
 
     # ---- object map: every entity's type (for the undecoded report) and the file's integrity
     headers = _guard(base, "object map", raw.list_object_headers_with_type, p)
-    etype_of: Dict[int, str] = {}
-    for row in headers:
-        if len(row) >= 6 and row[5] == "E":
-            etype_of[int(row[0])] = str(row[4])
+    etype_of: Dict[int, str] = {int(row[0]): str(row[4]) for row in headers if len(row) >= 6 and row[5] == "E"}
     if not etype_of:
         raise InputError(f"'{base}' holds no entities that the DWG reader can find (a damaged or truncated file, "
                          "or an empty drawing); open it in a CAD program and save it again, or export it as DXF")
@@ -527,17 +524,13 @@ def read_dwg(path: str, progress=None):
             doc.blocks.add(blk)
             doc._base_points[name.lower()] = bp
         block_of_handle[h] = blk
-    placements = {}
-    for row in _guard(base, "entity placement", raw.decode_entity_placements, p):
-        placements[int(row[0])] = (int(row[1]), int(row[2]))
-    layer_of: Dict[int, str] = {}
-    for row in _soft(raw.decode_entity_linetypes, p, default=[]) or []:
-        lay = layer_names.get(row[1])
-        if lay is not None:
-            layer_of[int(row[0])] = lay
-    geom = {}
-    for row in _soft(raw.decode_write_geometry, p, default=[]) or []:
-        geom[int(row[0])] = row  # (handle, thickness, extrusion, elevation)
+    placements = {int(row[0]): (int(row[1]), int(row[2]))
+                  for row in _guard(base, "entity placement", raw.decode_entity_placements, p)}
+    lname = layer_names.get
+    layer_of: Dict[int, str] = {int(row[0]): lname(row[1]) for row in
+                                _soft(raw.decode_entity_linetypes, p, default=[]) or [] if lname(row[1]) is not None}
+    # (handle, thickness, extrusion, elevation)
+    geom = {int(row[0]): row for row in _soft(raw.decode_write_geometry, p, default=[]) or []}
     doc.timings["tables"] = time.perf_counter() - t0
     progress.step(20, "decoding entities")
 
