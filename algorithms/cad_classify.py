@@ -458,8 +458,8 @@ def _curved_treads(geoms: Sequence[CadGeometry], keep) -> int:
 
 
 def _free_furniture(geoms: Sequence[CadGeometry], cls: List[str], weak: set) -> None:
+    import shapely
     from shapely import STRtree
-    from shapely.geometry import Polygon
 
     cand = []
     for i, g in enumerate(geoms):
@@ -486,22 +486,32 @@ def _free_furniture(geoms: Sequence[CadGeometry], cls: List[str], weak: set) -> 
             idx.append(i)
     lines = _linestrings(coords)  # one vectorised call (a LineString per entity cost 0.4 s on SIST-F1.dwg)
     tree = STRtree(lines)
-    pos = {i: k for k, i in enumerate(idx)}
-    cset = set(cand)
-    for i in cand:
-        poly = Polygon(geoms[i].coords)
-        if not poly.is_valid:
-            poly = poly.buffer(0)
-        zone = poly.buffer(TOUCH)
-        hits = [idx[j] for j in tree.query(zone, predicate="intersects")]
-        inside_poly = poly.buffer(-TOUCH) if poly.area > 0 else poly
-        touching = [j for j in hits if j != i and j not in cset and not inside_poly.contains(lines[pos[j]])]
-        if touching or any(geoms[j].filled or geoms[j].kind == "column" for j in hits if j != i):
-            continue  # a hatched / filled outline is a column, not furniture
-        cls[i] = "furniture"
-        for j in hits:
-            if j != i and not cls[j] and inside_poly.contains(lines[pos[j]]):
-                cls[j] = "furniture"
+    # every candidate at once (the outcome of one does not depend on another's): its outline, the zone
+    # TOUCH around it, its inside TOUCH in from it, the lines the zone meets and which of them lie inside
+    lens = np.fromiter((len(geoms[i].coords) for i in cand), dtype=np.int64, count=len(cand))
+    polys = shapely.polygons(shapely.linearrings(np.concatenate([geoms[i].coords for i in cand]),
+                                                 indices=np.repeat(np.arange(len(cand)), lens)))
+    for k in np.flatnonzero(~shapely.is_valid(polys)):
+        polys[k] = polys[k].buffer(0)
+    zones = shapely.buffer(polys, TOUCH, quad_segs=16)  # quad_segs as BaseGeometry.buffer's default
+    inside = polys.copy()
+    solid = shapely.area(polys) > 0
+    inside[solid] = shapely.buffer(polys[solid], -TOUCH, quad_segs=16)
+    qc, ql = tree.query(zones, predicate="intersects")
+    hit = np.asarray(idx, dtype=np.int64)[ql]
+    cand_arr = np.asarray(cand, dtype=np.int64)
+    other = hit != cand_arr[qc]
+    contained = shapely.contains(inside[qc], lines[ql])
+    in_cand = np.zeros(len(geoms), dtype=bool)
+    in_cand[cand_arr] = True
+    stiff = np.array([g.filled or g.kind == "column" for g in geoms], dtype=bool)
+    # touching a line that is no candidate and not inside, or a hatched / filled outline (a column): no furniture
+    veto = other & ((~in_cand[hit] & ~contained) | stiff[hit])
+    free = np.bincount(qc[veto], minlength=len(cand)) == 0
+    for k in np.flatnonzero(free):
+        cls[cand[k]] = "furniture"
+    for j in hit[free[qc] & other & contained].tolist():
+        cls[j] = "furniture"  # what lies inside it (only unclassified lines are in the tree)
 
 
 def _line(g: CadGeometry):
