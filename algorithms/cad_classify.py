@@ -473,14 +473,9 @@ def _free_furniture(geoms: Sequence[CadGeometry], cls: List[str], weak: set) -> 
             cand.append(i)
     if not cand:
         return
+    sel = [i for i in range(len(geoms)) if not cls[i]]
     coords, idx = [], []
-    for i, g in enumerate(geoms):
-        if cls[i]:
-            continue
-        c = g.coords
-        fin = np.isfinite(c).all(axis=1)
-        if not fin.all():
-            c = c[fin]
+    for i, c in zip(sel, _finite_rows([geoms[i].coords for i in sel])):
         if len(c) >= 2:
             coords.append(c)
             idx.append(i)
@@ -833,6 +828,20 @@ def _linestrings(coords: Sequence[np.ndarray]) -> np.ndarray:
     return shapely.linestrings(np.concatenate(coords), indices=np.repeat(np.arange(len(coords)), lens))
 
 
+def _finite_rows(coords: List[np.ndarray]) -> List[np.ndarray]:
+    """Each array without its non-finite rows (the array itself when all are finite), tested all at once."""
+    if not coords:
+        return []
+    lens = np.fromiter((len(c) for c in coords), dtype=np.int64, count=len(coords))
+    fin = np.isfinite(np.concatenate(coords)).all(axis=1)
+    if fin.all():
+        return list(coords)
+    out = list(coords)
+    for k in np.unique(np.repeat(np.arange(len(coords)), lens)[~fin]).tolist():
+        out[k] = coords[k][np.isfinite(coords[k]).all(axis=1)]
+    return out
+
+
 def floor_markings(geoms: Sequence[CadGeometry], cls: List[str], weak: set) -> int:
     """Markings drawn on the floor (a sports court's lines, circles and arcs; a painted play area) on the
     same layer as the walls ("0", fallback layers): a group of lines on ``weak`` layers that touches no other
@@ -846,14 +855,10 @@ def floor_markings(geoms: Sequence[CadGeometry], cls: List[str], weak: set) -> i
     import shapely
     from shapely import STRtree
 
+    sel = [i for i, g in enumerate(geoms)
+           if not (cls[i] or g.filled or g.kind in ("column", "stair", "elevator", "boundary", AUX_KIND))]
     idx, coords = [], []
-    for i, g in enumerate(geoms):
-        if cls[i] or g.filled or g.kind in ("column", "stair", "elevator", "boundary", AUX_KIND):
-            continue
-        c = g.coords
-        fin = np.isfinite(c).all(axis=1)
-        if not fin.all():
-            c = c[fin]
+    for i, c in zip(sel, _finite_rows([geoms[i].coords for i in sel])):
         if len(c) >= 2:
             idx.append(i)
             coords.append(c)
