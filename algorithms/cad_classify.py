@@ -602,15 +602,32 @@ def _unblocked_gaps(geoms, gaps, rails) -> List[DoorHint]:
     inb = (rmax >= lo).all(axis=1) & (rmin <= hi).all(axis=1)
     rails = rails[inb]
     rail_tree = STRtree([LineString(r) for r in rails])
+    # walls and columns near the gaps (bounds of all of them at once), as polygons / lines built vectorised
+    import shapely
+
+    wc = [g for g in geoms if g.kind in ("wall", "column") and len(g.coords) >= 2]
     solid = []
-    for g in geoms:
-        if g.kind not in ("wall", "column") or len(g.coords) < 2:
-            continue
-        c = g.coords
-        if (c[:, 0].max() < lo[0] or c[:, 0].min() > hi[0] or c[:, 1].max() < lo[1] or c[:, 1].min() > hi[1]
-                or not np.isfinite(c).all()):
-            continue
-        solid.append(Polygon(c) if g.filled and len(c) >= 3 else LineString(np.vstack([c, c[:1]]) if g.closed else c))
+    if wc:
+        lens = np.fromiter((len(g.coords) for g in wc), dtype=np.int64, count=len(wc))
+        allc = np.concatenate([g.coords for g in wc])
+        at = np.cumsum(lens) - lens
+        with np.errstate(invalid="ignore"):
+            gmin, gmax = np.minimum.reduceat(allc, at), np.maximum.reduceat(allc, at)  # NaN where a vertex is
+            near = ~((gmax[:, 0] < lo[0]) | (gmin[:, 0] > hi[0]) | (gmax[:, 1] < lo[1]) | (gmin[:, 1] > hi[1]))
+        fin = np.bincount(np.repeat(np.arange(len(wc)), lens)[~np.isfinite(allc).all(axis=1)], minlength=len(wc)) == 0
+        polys, lines = [], []
+        for k in np.flatnonzero(near & fin).tolist():
+            g = wc[k]
+            c = g.coords
+            if g.filled and len(c) >= 3:
+                polys.append(c)
+            else:
+                lines.append(np.vstack([c, c[:1]]) if g.closed else c)
+        if polys:
+            plens = np.fromiter((len(c) for c in polys), dtype=np.int64, count=len(polys))
+            solid.extend(shapely.polygons(shapely.linearrings(np.concatenate(polys),
+                                                              indices=np.repeat(np.arange(len(polys)), plens))))
+        solid.extend(_linestrings(lines))
     tree = STRtree(solid) if solid else None
     out: List[DoorHint] = []
     for p, q in gaps:
