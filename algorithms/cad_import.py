@@ -368,15 +368,20 @@ def _import(path, rules, layers, units, include_doors, fallback_walls, drop_door
     dashed_was: Dict[int, str] = {}  # dashed lines on wall layers (projections) -> their layer's kind
     idx = [i for i in idx if len(p.coords[i]) >= 2 or p.filled[i]]
     bad = _unusable(p, idx, scale)
+    inner: Dict[str, str] = {}  # block chain -> its innermost block (a chain repeats for every piece)
     for i, broken in zip(idx, bad):
         c = p.coords[i]
         if broken:
             # NaN/inf, or a coordinate beyond any building (1e15 m) that overflows downstream
             nonfinite += 1
             continue
+        chain = p.block[i]
+        block = inner.get(chain)
+        if block is None:
+            block = inner[chain] = innermost_block(chain)
         geoms.append(CadGeometry(layer=p.layer[i], kind=infos[p.layer[i]].kind, coords=c * scale,
                                  closed=p.closed[i], filled=p.filled[i], width=p.width[i] * scale,
-                                 entity=p.etype[i], block=innermost_block(p.block[i])))
+                                 entity=p.etype[i], block=block))
         chains.append(p.block[i])
         if is_projection_line(geoms[-1], p.dashed[i] if i < len(p.dashed) else False):
             dashed_was[len(geoms) - 1] = geoms[-1].kind
