@@ -267,12 +267,17 @@ class _MText(_Entity):
 
 
 class PolylinePath:
-    """A hatch boundary as ezdwg flattens it (``_boundary_rings`` reads ``vertices`` (x, y, bulge))."""
+    """A hatch boundary as ezdwg flattens it: ``xy``, its (x, y) points (no bulges), which
+    ``cad_explode._boundary_rings`` reads as one array; ``vertices`` (x, y, 0.0) as ezdxf's path has them."""
 
-    __slots__ = ("vertices",)
+    __slots__ = ("xy",)
 
-    def __init__(self, vertices):
-        self.vertices = vertices
+    def __init__(self, xy):
+        self.xy = xy
+
+    @property
+    def vertices(self):
+        return [(x, y, 0.0) for x, y in self.xy]
 
 
 class _Paths:
@@ -614,7 +619,7 @@ def read_dwg(path: str, progress=None):
     progress.step(45)
     # HATCH (boundaries come flattened to polylines)
     for h, name, solid, _assoc, _elev, ex, paths in _guard(base, "hatches", raw.decode_hatch_entities, p):
-        ps = [PolylinePath([(x, y, 0.0) for x, y in pts]) for _closed, pts in paths if len(pts) >= 2]
+        ps = [PolylinePath(pts) for _closed, pts in paths if len(pts) >= 2]
         d = common(h)
         d.update(pattern_name=name, solid_fill=1 if solid else 0, extrusion=ex)
         add(_Hatch(h, d, ps), "HATCH")

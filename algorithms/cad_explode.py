@@ -163,6 +163,10 @@ def _chain(pieces: List[np.ndarray], eps: float) -> List[np.ndarray]:
 
 def _boundary_rings(bpath, tol: float) -> List[np.ndarray]:
     """Closed rings of one HATCH boundary path (edges chained by their end points)."""
+    xy = getattr(bpath, "xy", None)
+    if xy is not None:  # a DWG hatch path (cad_dwg.PolylinePath): flattened points, no bulges
+        v = np.array(xy, dtype=np.float64).reshape(-1, 2)
+        return [v] if len(v) >= 2 else []
     if type(bpath).__name__ == "PolylinePath":
         v = np.array([(p[0], p[1], p[2] if len(p) > 2 else 0.0) for p in bpath.vertices], dtype=np.float64)
         if len(v) < 2:
