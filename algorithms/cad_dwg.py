@@ -462,6 +462,24 @@ def _soft(fn, *args, default=None):
         return default
 
 
+def _unused_block_members(inserts, block_of_handle, placements, model_owners, paper_owners) -> set:
+    """Handles of the entities that belong to a block no INSERT / MINSERT of the drawing names (none when the
+    references cannot be read): exploding never reaches them, so they need not be built."""
+    if inserts is None:
+        return set()
+    try:
+        ins_rows, mins_rows = inserts
+        named = {str(r[8]).lower() for r in ins_rows if len(r) > 8 and r[8]}
+        named |= {str(r[8][4]).lower() for r in mins_rows if len(r) > 8 and r[8] and r[8][4]}
+    except (TypeError, ValueError, IndexError):
+        return set()
+    idle = {h for h, blk in block_of_handle.items() if blk.name.lower() not in named}
+    if not idle:
+        return set()
+    return {int(h) for h, (mode, owner) in placements.items() if mode not in (1, 2) and owner in idle
+            and owner not in model_owners and owner not in paper_owners}
+
+
 def read_dwg(path: str, progress=None):
     """Read a DWG into a ``DwgDocument``. Returns ``(doc, repairs)`` like ``cad_import._read_doc``."""
     import ezdwg  # the pinned reader (requirements.txt); its native core does the decoding
@@ -550,8 +568,16 @@ def read_dwg(path: str, progress=None):
         return g[2] if g is not None and g[2] is not None else None
 
     ents: List[_Entity] = []
+    # entities of blocks that no INSERT names (dimension blocks, purged leftovers: SIST-F5 holds 30k of them)
+    # are counted but never built: nothing explodes them
+    early_inserts = _soft(raw.decode_insert_minsert_entities, p, default=None)
+    unused = _unused_block_members(early_inserts, block_of_handle, placements, model_owners, paper_owners)
 
-    def add(e: _Entity, kind: str):
+    def add(e: Optional[_Entity], kind: str, h: Optional[int] = None):
+        if e is None or (kind != "INSERT" and e._h in unused):  # counted, not built / kept
+            counts[kind] += 1
+            got.add(e._h if e is not None else h)
+            return
         ents.append(e)
         counts[kind] += 1
         got.add(e._h)
@@ -560,8 +586,9 @@ def read_dwg(path: str, progress=None):
     lines, arcs, circles = _guard(base, "lines, arcs and circles", raw.decode_line_arc_circle_entities, p)
     lget = layer_of.get
     for h, sx, sy, sz, ex, ey, ez in lines:
-        ents.append(_Entity("LINE", h, {"layer": lget(h, "0"), "start": (sx, sy), "end": (ex, ey)}))
         got.add(h)
+        if h not in unused:
+            ents.append(_Entity("LINE", h, {"layer": lget(h, "0"), "start": (sx, sy), "end": (ex, ey)}))
     counts["LINE"] += len(lines)
     for h, cx, cy, cz, r, a0, a1 in arcs:
         d = common(h)
@@ -626,18 +653,25 @@ def read_dwg(path: str, progress=None):
     progress.step(55)
     # TEXT / MTEXT
     for h, text, ins, align, ex, metrics, aflags, _style, _owner in _guard(base, "texts", raw.decode_text_entities, p):
+        if h in unused:
+            add(None, "TEXT", h)
+            continue
         d = common(h)
         d.update(text=text or "", insert=ins, align_point=align, extrusion=ex, height=metrics[2],
                  rotation=math.degrees(metrics[3]), halign=aflags[1], valign=aflags[2])
         add(_Text("TEXT", h, d), "TEXT")
     for row in _guard(base, "multiline texts", raw.decode_mtext_entities, p):
         h, text, ins, ex, xdir, _w, th = row[:7]
+        if h in unused:
+            add(None, "MTEXT", h)
+            continue
         d = common(h)
         d.update(text=text or "", insert=ins, extrusion=ex, char_height=th,
                  rotation=math.degrees(math.atan2(xdir[1], xdir[0])) if xdir else 0.0)
         add(_MText(h, d), "MTEXT")
     # INSERT / MINSERT and their ATTRIBs
-    ins_rows, mins_rows = _guard(base, "block references", raw.decode_insert_minsert_entities, p)
+    ins_rows, mins_rows = (early_inserts if early_inserts is not None else
+                           _guard(base, "block references", raw.decode_insert_minsert_entities, p))
     inserts: Dict[int, _Insert] = {}
     nameless = 0
     for row in ins_rows:
@@ -691,10 +725,12 @@ def read_dwg(path: str, progress=None):
         if h in got or tname in _PARTS:
             continue
         if tname in _COUNT_ONLY:
-            ents.append(_Entity(_COUNT_ONLY[tname], h, common(h)))
+            if h not in unused:
+                ents.append(_Entity(_COUNT_ONLY[tname], h, common(h)))
             continue
         undecoded[tname] += 1
-        ents.append(_Entity(tname, h, common(h)))  # the import counts and reports it as unsupported
+        if h not in unused:
+            ents.append(_Entity(tname, h, common(h)))  # the import counts and reports it as unsupported
     # ---- membership
     ents.sort(key=lambda e: e._h)
     for e in ents:
