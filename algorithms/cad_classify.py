@@ -145,10 +145,9 @@ def _swings(geoms: Sequence[CadGeometry], leaf_required: bool):
     # closed leaf lies; the open end stands in the room. Such arcs are doors with a hint.
     lone = [a for k, a in enumerate(arcs) if a[0] not in with_leaf and k not in wide]
     if lone:
-        ends = [g.coords[[0, -1]] for i, g in enumerate(geoms) if i not in arc_set and len(g.coords) >= 2
-                and np.isfinite(g.coords[[0, -1]]).all()]
-        if ends:
-            etree = cKDTree(np.concatenate(ends))
+        ends = _end_points([g.coords for i, g in enumerate(geoms) if i not in arc_set and len(g.coords) >= 2])
+        if len(ends):
+            etree = cKDTree(ends)
             for ai, cx, cy, r, e0, e1 in lone:
                 tol = 0.1 * r
                 if not etree.query_ball_point((cx, cy), tol):
@@ -162,6 +161,16 @@ def _swings(geoms: Sequence[CadGeometry], leaf_required: bool):
              or (geoms[i].kind != "wall" and not leaf_required and i not in wide_idx)}
     drop |= set(combined)
     return sorted(drop), hints + list(combined.values())
+
+
+def _end_points(coords: Sequence[np.ndarray]) -> np.ndarray:
+    """(2k, 2) first and last vertex of each array (>= 2 rows) whose two ends are finite, in order."""
+    if not coords:
+        return np.zeros((0, 2))
+    first = np.array([c[0] for c in coords], dtype=np.float64)
+    last = np.array([c[-1] for c in coords], dtype=np.float64)
+    ok = np.isfinite(first).all(axis=1) & np.isfinite(last).all(axis=1)
+    return np.stack([first[ok], last[ok]], axis=1).reshape(-1, 2)
 
 
 def _leaf_and_arc(c: np.ndarray):
@@ -365,8 +374,8 @@ def free_stair_treads(geoms: Sequence[CadGeometry], keep: Optional[np.ndarray] =
     flight between two parts of a floor, half a level apart, is a way through, not a wall) and the stair
     recognition still sees them. Treads: single straight lines in a run of parallel lines of similar length
     at a regular tread spacing (``area_types.find_stair_runs``). Returns how many lines changed kind."""
+    import shapely
     from shapely import STRtree
-    from shapely.geometry import Point
 
     from .area_types import TREAD_LENGTH, find_stair_runs
 
@@ -387,12 +396,14 @@ def free_stair_treads(geoms: Sequence[CadGeometry], keep: Optional[np.ndarray] =
         return n
     zones = [r.buffer(0.05) for r in runs]
     tree = STRtree(zones)
-    for i in cand:
-        a, b = Point(geoms[i].coords[0]), Point(geoms[i].coords[1])
-        hit = tree.query(a, predicate="intersects")
-        if any(zones[k].intersects(b) for k in hit):
-            geoms[i].kind = "stair"
-            n += 1
+    # both ends of a line in one tread zone (bulk queries: a Point per end cost 0.15 CPU s on kindergarten-1)
+    ends = C[ok]
+    ends_a = tree.query(shapely.points(ends[:, 0]), predicate="intersects")
+    ends_b = tree.query(shapely.points(ends[:, 1]), predicate="intersects")
+    both = set(zip(ends_a[0].tolist(), ends_a[1].tolist())) & set(zip(ends_b[0].tolist(), ends_b[1].tolist()))
+    for k in sorted({p for p, _ in both}):
+        geoms[cand[k]].kind = "stair"
+        n += 1
     return n
 
 
@@ -447,8 +458,8 @@ def _curved_treads(geoms: Sequence[CadGeometry], keep) -> int:
 
 
 def _free_furniture(geoms: Sequence[CadGeometry], cls: List[str], weak: set) -> None:
+    import shapely
     from shapely import STRtree
-    from shapely.geometry import LineString, Polygon
 
     cand = []
     for i, g in enumerate(geoms):
@@ -462,28 +473,40 @@ def _free_furniture(geoms: Sequence[CadGeometry], cls: List[str], weak: set) -> 
             cand.append(i)
     if not cand:
         return
-    lines, idx = [], []
-    for i, g in enumerate(geoms):
-        c = g.coords[np.isfinite(g.coords).all(axis=1)]
-        if len(c) >= 2 and not cls[i]:
-            lines.append(LineString(c))
+    sel = [i for i in range(len(geoms)) if not cls[i]]
+    coords, idx = [], []
+    for i, c in zip(sel, _finite_rows([geoms[i].coords for i in sel])):
+        if len(c) >= 2:
+            coords.append(c)
             idx.append(i)
+    lines = _linestrings(coords)  # one vectorised call (a LineString per entity cost 0.4 s on SIST-F1.dwg)
     tree = STRtree(lines)
-    cset = set(cand)
-    for i in cand:
-        poly = Polygon(geoms[i].coords)
-        if not poly.is_valid:
-            poly = poly.buffer(0)
-        zone = poly.buffer(TOUCH)
-        hits = [idx[j] for j in tree.query(zone, predicate="intersects")]
-        inside_poly = poly.buffer(-TOUCH) if poly.area > 0 else poly
-        touching = [j for j in hits if j != i and j not in cset and not inside_poly.contains(_line(geoms[j]))]
-        if touching or any(geoms[j].filled or geoms[j].kind == "column" for j in hits if j != i):
-            continue  # a hatched / filled outline is a column, not furniture
-        cls[i] = "furniture"
-        for j in hits:
-            if j != i and not cls[j] and inside_poly.contains(_line(geoms[j])):
-                cls[j] = "furniture"
+    # every candidate at once (the outcome of one does not depend on another's): its outline, the zone
+    # TOUCH around it, its inside TOUCH in from it, the lines the zone meets and which of them lie inside
+    lens = np.fromiter((len(geoms[i].coords) for i in cand), dtype=np.int64, count=len(cand))
+    polys = shapely.polygons(shapely.linearrings(np.concatenate([geoms[i].coords for i in cand]),
+                                                 indices=np.repeat(np.arange(len(cand)), lens)))
+    for k in np.flatnonzero(~shapely.is_valid(polys)):
+        polys[k] = polys[k].buffer(0)
+    zones = shapely.buffer(polys, TOUCH, quad_segs=16)  # quad_segs as BaseGeometry.buffer's default
+    inside = polys.copy()
+    solid = shapely.area(polys) > 0
+    inside[solid] = shapely.buffer(polys[solid], -TOUCH, quad_segs=16)
+    qc, ql = tree.query(zones, predicate="intersects")
+    hit = np.asarray(idx, dtype=np.int64)[ql]
+    cand_arr = np.asarray(cand, dtype=np.int64)
+    other = hit != cand_arr[qc]
+    contained = shapely.contains(inside[qc], lines[ql])
+    in_cand = np.zeros(len(geoms), dtype=bool)
+    in_cand[cand_arr] = True
+    stiff = np.array([g.filled or g.kind == "column" for g in geoms], dtype=bool)
+    # touching a line that is no candidate and not inside, or a hatched / filled outline (a column): no furniture
+    veto = other & ((~in_cand[hit] & ~contained) | stiff[hit])
+    free = np.bincount(qc[veto], minlength=len(cand)) == 0
+    for k in np.flatnonzero(free):
+        cls[cand[k]] = "furniture"
+    for j in hit[free[qc] & other & contained].tolist():
+        cls[j] = "furniture"  # what lies inside it (only unclassified lines are in the tree)
 
 
 def _line(g: CadGeometry):
@@ -514,15 +537,19 @@ def curtain_wall_doors(geoms: Sequence[CadGeometry], keep: Optional[np.ndarray] 
            and (keep is None or keep[i])]
     if len(idx) < 4:
         return []
-    P, Q, own = [], [], []
-    for i in idx:
-        c = geoms[i].coords
-        if geoms[i].closed:
-            c = np.vstack([c, c[:1]])
-        P.append(c[:-1])
-        Q.append(c[1:])
-        own.append(np.full(len(c) - 1, i))
-    P, Q, own = np.concatenate(P), np.concatenate(Q), np.concatenate(own)
+    # every segment of the window pieces (a closed one's closing segment last), in one vectorised pass
+    lens = np.fromiter((len(geoms[i].coords) for i in idx), dtype=np.int64, count=len(idx))
+    allc = np.concatenate([geoms[i].coords for i in idx])
+    row_own = np.repeat(np.arange(len(idx)), lens)
+    k = np.flatnonzero(row_own[1:] == row_own[:-1])
+    shut = np.flatnonzero(np.fromiter((geoms[i].closed for i in idx), dtype=bool, count=len(idx)))
+    start = np.cumsum(lens) - lens
+    P = np.concatenate([allc[k], allc[start[shut] + lens[shut] - 1]])
+    Q = np.concatenate([allc[k + 1], allc[start[shut]]])
+    pos = np.concatenate([row_own[k], shut])
+    order = np.argsort(pos, kind="stable")
+    P, Q = P[order], Q[order]
+    own = np.asarray(idx, dtype=np.int64)[pos[order]]
     L = np.hypot(*(Q - P).T)
     ok = np.isfinite(L) & (L > 0.01)
     P, Q, own, L = P[ok], Q[ok], own[ok], L[ok]
@@ -575,15 +602,32 @@ def _unblocked_gaps(geoms, gaps, rails) -> List[DoorHint]:
     inb = (rmax >= lo).all(axis=1) & (rmin <= hi).all(axis=1)
     rails = rails[inb]
     rail_tree = STRtree([LineString(r) for r in rails])
+    # walls and columns near the gaps (bounds of all of them at once), as polygons / lines built vectorised
+    import shapely
+
+    wc = [g for g in geoms if g.kind in ("wall", "column") and len(g.coords) >= 2]
     solid = []
-    for g in geoms:
-        if g.kind not in ("wall", "column") or len(g.coords) < 2:
-            continue
-        c = g.coords
-        if (c[:, 0].max() < lo[0] or c[:, 0].min() > hi[0] or c[:, 1].max() < lo[1] or c[:, 1].min() > hi[1]
-                or not np.isfinite(c).all()):
-            continue
-        solid.append(Polygon(c) if g.filled and len(c) >= 3 else LineString(np.vstack([c, c[:1]]) if g.closed else c))
+    if wc:
+        lens = np.fromiter((len(g.coords) for g in wc), dtype=np.int64, count=len(wc))
+        allc = np.concatenate([g.coords for g in wc])
+        at = np.cumsum(lens) - lens
+        with np.errstate(invalid="ignore"):
+            gmin, gmax = np.minimum.reduceat(allc, at), np.maximum.reduceat(allc, at)  # NaN where a vertex is
+            near = ~((gmax[:, 0] < lo[0]) | (gmin[:, 0] > hi[0]) | (gmax[:, 1] < lo[1]) | (gmin[:, 1] > hi[1]))
+        fin = np.bincount(np.repeat(np.arange(len(wc)), lens)[~np.isfinite(allc).all(axis=1)], minlength=len(wc)) == 0
+        polys, lines = [], []
+        for k in np.flatnonzero(near & fin).tolist():
+            g = wc[k]
+            c = g.coords
+            if g.filled and len(c) >= 3:
+                polys.append(c)
+            else:
+                lines.append(np.vstack([c, c[:1]]) if g.closed else c)
+        if polys:
+            plens = np.fromiter((len(c) for c in polys), dtype=np.int64, count=len(polys))
+            solid.extend(shapely.polygons(shapely.linearrings(np.concatenate(polys),
+                                                              indices=np.repeat(np.arange(len(polys)), plens))))
+        solid.extend(_linestrings(lines))
     tree = STRtree(solid) if solid else None
     out: List[DoorHint] = []
     for p, q in gaps:
@@ -634,28 +678,30 @@ def keep_void_edges(geoms: Sequence[CadGeometry], texts, was: Dict[int, str]) ->
     text naming a void (VOID_WORDS: 'void', 'vuoto', 'Luftraum', '挑空'...). Returns how many were restored."""
     if not was:
         return 0
+    import shapely
     from shapely import STRtree
-    from shapely.geometry import LineString, Point
+    from shapely.geometry import Point
 
     idx = [i for i in was if len(geoms[i].coords) >= 2 and np.isfinite(geoms[i].coords).all()]
-    lines = [LineString(geoms[i].coords) for i in idx]
-    if not lines:
+    lines = _linestrings([geoms[i].coords for i in idx])
+    if not len(lines):
         return 0
     groups = _touching_groups(lines, STRtree(lines))
+    bounds = shapely.bounds(lines)
     void = np.asarray([(t.x, t.y) for t in texts if any(w in (t.text or "").lower() for w in VOID_WORDS)],
                       dtype=float).reshape(-1, 2)
     named = [Point(t.x, t.y) for t in texts if sum(ch.isalpha() for ch in (t.text or "")) >= 3]
     walls = None
     n = 0
     for ks in groups.values():
-        b = np.array([lines[k].bounds for k in ks])
+        b = bounds[ks]
         x0, y0, x1, y1 = b[:, 0].min(), b[:, 1].min(), b[:, 2].max(), b[:, 3].max()
         keep = bool(np.any((void[:, 0] > x0) & (void[:, 0] < x1) & (void[:, 1] > y0) & (void[:, 1] < y1)))
         if not keep and named and len(ks) >= 2:
             if walls is None:
-                walls = [LineString(g.coords) for g in geoms if g.kind in PROJECTION_KINDS and len(g.coords) >= 2
-                         and np.isfinite(g.coords).all()]
-                walls = STRtree(walls) if walls else False
+                walls = _linestrings([g.coords for g in geoms if g.kind in PROJECTION_KINDS and len(g.coords) >= 2
+                                      and np.isfinite(g.coords).all()])  # one vectorised call
+                walls = STRtree(walls) if len(walls) else False
             keep = _zone_outline([lines[k] for k in ks], named, walls)
         if keep:
             for k in ks:
@@ -714,6 +760,35 @@ def _segments(c: np.ndarray, closed: bool = False) -> np.ndarray:
     return np.stack([c[:-1], c[1:]], axis=1) if len(c) >= 2 else np.zeros((0, 2, 2))
 
 
+def _segments_many(coords: Sequence[np.ndarray], closed: Sequence[bool]) -> Tuple[np.ndarray, np.ndarray]:
+    """``_segments`` of many geometries at once: ``(segments (m, 2, 2), owner position (m,))``, each owner's
+    segments in order (its closing segment last), owners in order; the same segments as one call each."""
+    n = len(coords)
+    if not n:
+        return np.zeros((0, 2, 2)), np.zeros(0, dtype=np.int64)
+    lens = np.fromiter((len(c) for c in coords), dtype=np.int64, count=n)
+    allc = np.concatenate(coords).astype(np.float64, copy=False).reshape(-1, 2)
+    own = np.repeat(np.arange(n), lens)
+    fin = np.isfinite(allc).all(axis=1)
+    allc, own = allc[fin], own[fin]
+    cnt = np.bincount(own, minlength=n)  # finite rows per owner
+    start = np.cumsum(cnt) - cnt
+    has = cnt > 0
+    first = np.full((n, 2), np.nan)
+    last = np.full((n, 2), np.nan)
+    first[has] = allc[start[has]]
+    last[has] = allc[start[has] + cnt[has] - 1]
+    close = np.asarray(closed, dtype=bool) & (cnt >= 3)
+    close[close] = ~np.isclose(first[close], last[close]).all(axis=1)  # as np.allclose, per owner
+    # consecutive rows of one owner, then each closing segment (last -> first), sorted back into owner order
+    k = np.flatnonzero(own[1:] == own[:-1])
+    cl = np.flatnonzero(close)
+    seg = np.concatenate([np.stack([allc[k], allc[k + 1]], axis=1), np.stack([last[cl], first[cl]], axis=1)])
+    sown = np.concatenate([own[k], cl])
+    order = np.argsort(sown, kind="stable")
+    return seg[order], sown[order]
+
+
 def _has_wall_pair(segs: np.ndarray, others: Optional[np.ndarray] = None, min_overlap: float = 0.5) -> bool:
     """A straight segment of ``segs`` and another one (of ``segs`` or ``others``), parallel (within 3
     degrees), WALL_PAIR apart and overlapping by ``min_overlap`` m along their direction: two faces of a wall."""
@@ -760,61 +835,133 @@ def _touching_groups(lines, tree) -> Dict[int, List[int]]:
     return groups
 
 
+def _linestrings(coords: Sequence[np.ndarray]) -> np.ndarray:
+    """LineStrings of (n_i, 2) coordinate arrays (n_i >= 2, finite) built in one vectorised call."""
+    import shapely
+
+    if not len(coords):
+        return np.empty(0, dtype=object)
+    lens = np.fromiter((len(c) for c in coords), dtype=np.int64, count=len(coords))
+    return shapely.linestrings(np.concatenate(coords), indices=np.repeat(np.arange(len(coords)), lens))
+
+
+def _finite_rows(coords: List[np.ndarray]) -> List[np.ndarray]:
+    """Each array without its non-finite rows (the array itself when all are finite), tested all at once."""
+    if not coords:
+        return []
+    lens = np.fromiter((len(c) for c in coords), dtype=np.int64, count=len(coords))
+    fin = np.isfinite(np.concatenate(coords)).all(axis=1)
+    if fin.all():
+        return list(coords)
+    out = list(coords)
+    for k in np.unique(np.repeat(np.arange(len(coords)), lens)[~fin]).tolist():
+        out[k] = coords[k][np.isfinite(coords[k]).all(axis=1)]
+    return out
+
+
 def floor_markings(geoms: Sequence[CadGeometry], cls: List[str], weak: set) -> int:
     """Markings drawn on the floor (a sports court's lines, circles and arcs; a painted play area) on the
     same layer as the walls ("0", fallback layers): a group of lines on ``weak`` layers that touches no other
     geometry (it closes no space with the walls), is larger than furniture (MARKING_MIN_SPAN), lies inside
     the extent of the drawing's largest group, and has no two lines at a wall's thickness apart (single
-    lines only: no wall). Marked class "marking" in ``cls`` (left out like furniture). Returns how many."""
-    from shapely import STRtree
-    from shapely.geometry import LineString
+    lines only: no wall). Marked class "marking" in ``cls`` (left out like furniture). Returns how many.
 
-    idx, lines = [], []
-    for i, g in enumerate(geoms):
-        if cls[i] or g.filled or g.kind in ("column", "stair", "elevator", "boundary", AUX_KIND):
-            continue
-        c = g.coords[np.isfinite(g.coords).all(axis=1)]
+    Only lines on weak layers can be markings: their groups are found among themselves first, and the
+    touching groups of the whole drawing (its largest group) are computed only when one of them passes
+    every other test (a drawing with walls on named layers has few such lines; SIST-F5: 142 of 15,308)."""
+    import shapely
+    from shapely import STRtree
+
+    sel = [i for i, g in enumerate(geoms)
+           if not (cls[i] or g.filled or g.kind in ("column", "stair", "elevator", "boundary", AUX_KIND))]
+    idx, coords = [], []
+    for i, c in zip(sel, _finite_rows([geoms[i].coords for i in sel])):
         if len(c) >= 2:
             idx.append(i)
-            lines.append(LineString(c))
+            coords.append(c)
     if len(idx) < 4:
         return 0
-    tree = STRtree(lines)
-    groups = _touching_groups(lines, tree)
-    if len(groups) < 2:
+    cand = [k for k, i in enumerate(idx) if geoms[i].layer in weak and geoms[i].entity in MARKING_TYPES]
+    if len(cand) < 3:
         return 0
-    glen = {r: sum(lines[k].length for k in ks) for r, ks in groups.items()}
-    main = max(glen, key=glen.get)
-    mb = np.array([lines[k].bounds for k in groups[main]])
-    box = (mb[:, 0].min(), mb[:, 1].min(), mb[:, 2].max(), mb[:, 3].max())
-    n = 0
-    for r, ks in groups.items():
-        if r == main or len(ks) < 3:
-            continue
+    in_cand = np.zeros(len(idx), dtype=bool)
+    in_cand[cand] = True
+    lines = tree = full = None
+    groups = []  # (member positions in ``idx``) of whole groups of weak lines large enough to be a marking
+    if 2 * len(cand) > len(idx):  # mostly weak lines (a spaghetti drawing): the whole drawing's groups at once
+        lines = _linestrings(coords)
+        tree = STRtree(lines)
+        full = _touching_groups(lines, tree)
+        bounds = shapely.bounds(lines)
+        for ks in full.values():
+            if len(ks) < 3 or not in_cand[ks].all():
+                continue
+            b = bounds[ks]
+            if max(b[:, 2].max() - b[:, 0].min(), b[:, 3].max() - b[:, 1].min()) >= MARKING_MIN_SPAN:
+                groups.append(ks)
+    else:
+        cand_lines = _linestrings([coords[k] for k in cand])
+        cand_bounds = shapely.bounds(cand_lines)
+        local = []  # groups of weak lines (positions in ``cand``) large enough to be a marking
+        for ks in _touching_groups(cand_lines, STRtree(cand_lines)).values():
+            if len(ks) < 3:
+                continue
+            b = cand_bounds[ks]
+            if max(b[:, 2].max() - b[:, 0].min(), b[:, 3].max() - b[:, 1].min()) < MARKING_MIN_SPAN:
+                continue
+            local.append(ks)
+        if not local:
+            return 0
+        lines = _linestrings(coords)
+        tree = STRtree(lines)
+        cand_arr = np.asarray(cand)
+        for ks in local:
+            ks_all = cand_arr[ks]
+            hit = tree.query(lines[ks_all], predicate="dwithin", distance=TOUCH)[1]
+            if not in_cand[hit].all():
+                continue  # touches a line of another layer or type: part of a larger group
+            groups.append(ks_all.tolist())
+    passing = []
+    for ks in groups:
         members = [idx[k] for k in ks]
-        if any(geoms[i].layer not in weak or geoms[i].entity not in MARKING_TYPES for i in members):
-            continue
-        b = np.array([lines[k].bounds for k in ks])
-        x0, y0, x1, y1 = b[:, 0].min(), b[:, 1].min(), b[:, 2].max(), b[:, 3].max()
-        if max(x1 - x0, y1 - y0) < MARKING_MIN_SPAN:
-            continue
-        if x0 < box[0] or y0 < box[1] or x1 > box[2] or y1 > box[3]:
-            continue
         straight = [geoms[i] for i in members if geoms[i].entity in ("LINE", "LWPOLYLINE", "POLYLINE")]
         segs = np.concatenate([_segments(g.coords, g.closed) for g in straight]) if straight else np.zeros((0, 2, 2))
         if len(segs):
             # the other face of a wall may be a line of another group (two closed outlines that never touch)
             mine = set(members)
-            near = {idx[k] for k in tree.query([lines[k] for k in ks], predicate="dwithin",
+            near = {idx[k] for k in tree.query(lines[ks], predicate="dwithin",
                                                distance=WALL_PAIR[1])[1].tolist()} - mine
             others = [_segments(geoms[j].coords, geoms[j].closed) for j in near
                       if geoms[j].entity in ("LINE", "LWPOLYLINE", "POLYLINE")]
             others = np.concatenate(others) if others else None
             if _has_wall_pair(segs, others):
                 continue
-        for i in members:
-            cls[i] = "marking"
-        n += len(members)
+        passing.append(ks)
+    if not passing:
+        return 0
+    # the drawing's largest group (by length) and its extent: a marking lies inside it and is not it
+    if full is None:
+        full = _touching_groups(lines, tree)
+    if len(full) < 2:
+        return 0
+    length = shapely.length(lines).tolist()
+    glen = {r: sum(length[k] for k in ks) for r, ks in full.items()}
+    main = max(glen, key=glen.get)
+    main_set = set(full[main])
+    bounds = shapely.bounds(lines)
+    mb = bounds[full[main]]
+    box = (mb[:, 0].min(), mb[:, 1].min(), mb[:, 2].max(), mb[:, 3].max())
+    n = 0
+    for ks in passing:
+        if ks[0] in main_set:
+            continue
+        b = bounds[ks]
+        x0, y0, x1, y1 = b[:, 0].min(), b[:, 1].min(), b[:, 2].max(), b[:, 3].max()
+        if x0 < box[0] or y0 < box[1] or x1 > box[2] or y1 > box[3]:
+            continue
+        for k in ks:
+            cls[idx[k]] = "marking"
+        n += len(ks)
     return n
 
 
@@ -838,18 +985,12 @@ def lined_doorways(geoms: Sequence[CadGeometry], cls: List[str], weak: set,
 
     import shapely
 
-    parts, two = [], []
-    for i, g in enumerate(geoms):
-        if cls[i] or g.layer not in weak or g.filled or g.kind in ("column", "stair", "elevator", "boundary", AUX_KIND):
-            continue
-        sg = _segments(g.coords, g.closed)
-        if len(sg):
-            parts.append(sg)
-            two.append(np.full(len(sg), len(g.coords) == 2))
-    if not parts:
+    sel = [g for i, g in enumerate(geoms) if not (cls[i] or g.layer not in weak or g.filled
+                                                   or g.kind in ("column", "stair", "elevator", "boundary", AUX_KIND))]
+    segs, sown = _segments_many([g.coords for g in sel], [g.closed for g in sel])
+    if not len(segs):
         return []
-    segs = np.concatenate(parts)
-    is_two = np.concatenate(two)
+    is_two = np.array([len(g.coords) == 2 for g in sel], dtype=bool)[sown]
     seg_len = np.hypot(*(segs[:, 1] - segs[:, 0]).T)
     ok = seg_len >= 0.02
     segs, is_two, seg_len = segs[ok], is_two[ok], seg_len[ok]
@@ -879,6 +1020,7 @@ def lined_doorways(geoms: Sequence[CadGeometry], cls: List[str], weak: set,
     ktree = cKDTree(np.array([((d.x0 + d.x1) / 2, (d.y0 + d.y1) / 2) for d in known])) if known else None
     hints: List[DoorHint] = []
     used = set()
+    ball: Dict[bytes, list] = {}
     for a, b in sorted(map(tuple, pairs.tolist())):
         if a in used or b in used:
             continue
@@ -892,7 +1034,10 @@ def lined_doorways(geoms: Sequence[CadGeometry], cls: List[str], weak: set,
         ok = True
         for cap, sign in ((sa, -1.0), (sb, 1.0)):
             for p in cap:
-                near = [end_owner[k] for k in etree.query_ball_point(p, 0.02)]
+                key = p.tobytes()
+                near = ball.get(key)
+                if near is None:  # a cap is in several candidate pairs: look its ends up once
+                    near = ball[key] = [end_owner[k] for k in etree.query_ball_point(p, 0.02)]
                 face = False
                 for k in near:
                     c = segs[k]

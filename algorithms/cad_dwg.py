@@ -267,12 +267,17 @@ class _MText(_Entity):
 
 
 class PolylinePath:
-    """A hatch boundary as ezdwg flattens it (``_boundary_rings`` reads ``vertices`` (x, y, bulge))."""
+    """A hatch boundary as ezdwg flattens it: ``xy``, its (x, y) points (no bulges), which
+    ``cad_explode._boundary_rings`` reads as one array; ``vertices`` (x, y, 0.0) as ezdxf's path has them."""
 
-    __slots__ = ("vertices",)
+    __slots__ = ("xy",)
 
-    def __init__(self, vertices):
-        self.vertices = vertices
+    def __init__(self, xy):
+        self.xy = xy
+
+    @property
+    def vertices(self):
+        return [(x, y, 0.0) for x, y in self.xy]
 
 
 class _Paths:
@@ -457,6 +462,24 @@ def _soft(fn, *args, default=None):
         return default
 
 
+def _unused_block_members(inserts, block_of_handle, placements, model_owners, paper_owners) -> set:
+    """Handles of the entities that belong to a block no INSERT / MINSERT of the drawing names (none when the
+    references cannot be read): exploding never reaches them, so they need not be built."""
+    if inserts is None:
+        return set()
+    try:
+        ins_rows, mins_rows = inserts
+        named = {str(r[8]).lower() for r in ins_rows if len(r) > 8 and r[8]}
+        named |= {str(r[8][4]).lower() for r in mins_rows if len(r) > 8 and r[8] and r[8][4]}
+    except (TypeError, ValueError, IndexError):
+        return set()
+    idle = {h for h, blk in block_of_handle.items() if blk.name.lower() not in named}
+    if not idle:
+        return set()
+    return {int(h) for h, (mode, owner) in placements.items() if mode not in (1, 2) and owner in idle
+            and owner not in model_owners and owner not in paper_owners}
+
+
 def read_dwg(path: str, progress=None):
     """Read a DWG into a ``DwgDocument``. Returns ``(doc, repairs)`` like ``cad_import._read_doc``."""
     import ezdwg  # the pinned reader (requirements.txt); its native core does the decoding
@@ -472,10 +495,7 @@ def read_dwg(path: str, progress=None):
 
     # ---- object map: every entity's type (for the undecoded report) and the file's integrity
     headers = _guard(base, "object map", raw.list_object_headers_with_type, p)
-    etype_of: Dict[int, str] = {}
-    for row in headers:
-        if len(row) >= 6 and row[5] == "E":
-            etype_of[int(row[0])] = str(row[4])
+    etype_of: Dict[int, str] = {int(row[0]): str(row[4]) for row in headers if len(row) >= 6 and row[5] == "E"}
     if not etype_of:
         raise InputError(f"'{base}' holds no entities that the DWG reader can find (a damaged or truncated file, "
                          "or an empty drawing); open it in a CAD program and save it again, or export it as DXF")
@@ -527,17 +547,13 @@ def read_dwg(path: str, progress=None):
             doc.blocks.add(blk)
             doc._base_points[name.lower()] = bp
         block_of_handle[h] = blk
-    placements = {}
-    for row in _guard(base, "entity placement", raw.decode_entity_placements, p):
-        placements[int(row[0])] = (int(row[1]), int(row[2]))
-    layer_of: Dict[int, str] = {}
-    for row in _soft(raw.decode_entity_linetypes, p, default=[]) or []:
-        lay = layer_names.get(row[1])
-        if lay is not None:
-            layer_of[int(row[0])] = lay
-    geom = {}
-    for row in _soft(raw.decode_write_geometry, p, default=[]) or []:
-        geom[int(row[0])] = row  # (handle, thickness, extrusion, elevation)
+    placements = {int(row[0]): (int(row[1]), int(row[2]))
+                  for row in _guard(base, "entity placement", raw.decode_entity_placements, p)}
+    lname = layer_names.get
+    layer_of: Dict[int, str] = {int(row[0]): lname(row[1]) for row in
+                                _soft(raw.decode_entity_linetypes, p, default=[]) or [] if lname(row[1]) is not None}
+    # (handle, thickness, extrusion, elevation)
+    geom = {int(row[0]): row for row in _soft(raw.decode_write_geometry, p, default=[]) or []}
     doc.timings["tables"] = time.perf_counter() - t0
     progress.step(20, "decoding entities")
 
@@ -552,8 +568,16 @@ def read_dwg(path: str, progress=None):
         return g[2] if g is not None and g[2] is not None else None
 
     ents: List[_Entity] = []
+    # entities of blocks that no INSERT names (dimension blocks, purged leftovers: SIST-F5 holds 30k of them)
+    # are counted but never built: nothing explodes them
+    early_inserts = _soft(raw.decode_insert_minsert_entities, p, default=None)
+    unused = _unused_block_members(early_inserts, block_of_handle, placements, model_owners, paper_owners)
 
-    def add(e: _Entity, kind: str):
+    def add(e: Optional[_Entity], kind: str, h: Optional[int] = None):
+        if e is None or (kind != "INSERT" and e._h in unused):  # counted, not built / kept
+            counts[kind] += 1
+            got.add(e._h if e is not None else h)
+            return
         ents.append(e)
         counts[kind] += 1
         got.add(e._h)
@@ -562,8 +586,9 @@ def read_dwg(path: str, progress=None):
     lines, arcs, circles = _guard(base, "lines, arcs and circles", raw.decode_line_arc_circle_entities, p)
     lget = layer_of.get
     for h, sx, sy, sz, ex, ey, ez in lines:
-        ents.append(_Entity("LINE", h, {"layer": lget(h, "0"), "start": (sx, sy), "end": (ex, ey)}))
         got.add(h)
+        if h not in unused:
+            ents.append(_Entity("LINE", h, {"layer": lget(h, "0"), "start": (sx, sy), "end": (ex, ey)}))
     counts["LINE"] += len(lines)
     for h, cx, cy, cz, r, a0, a1 in arcs:
         d = common(h)
@@ -621,25 +646,32 @@ def read_dwg(path: str, progress=None):
     progress.step(45)
     # HATCH (boundaries come flattened to polylines)
     for h, name, solid, _assoc, _elev, ex, paths in _guard(base, "hatches", raw.decode_hatch_entities, p):
-        ps = [PolylinePath([(x, y, 0.0) for x, y in pts]) for _closed, pts in paths if len(pts) >= 2]
+        ps = [PolylinePath(pts) for _closed, pts in paths if len(pts) >= 2]
         d = common(h)
         d.update(pattern_name=name, solid_fill=1 if solid else 0, extrusion=ex)
         add(_Hatch(h, d, ps), "HATCH")
     progress.step(55)
     # TEXT / MTEXT
     for h, text, ins, align, ex, metrics, aflags, _style, _owner in _guard(base, "texts", raw.decode_text_entities, p):
+        if h in unused:
+            add(None, "TEXT", h)
+            continue
         d = common(h)
         d.update(text=text or "", insert=ins, align_point=align, extrusion=ex, height=metrics[2],
                  rotation=math.degrees(metrics[3]), halign=aflags[1], valign=aflags[2])
         add(_Text("TEXT", h, d), "TEXT")
     for row in _guard(base, "multiline texts", raw.decode_mtext_entities, p):
         h, text, ins, ex, xdir, _w, th = row[:7]
+        if h in unused:
+            add(None, "MTEXT", h)
+            continue
         d = common(h)
         d.update(text=text or "", insert=ins, extrusion=ex, char_height=th,
                  rotation=math.degrees(math.atan2(xdir[1], xdir[0])) if xdir else 0.0)
         add(_MText(h, d), "MTEXT")
     # INSERT / MINSERT and their ATTRIBs
-    ins_rows, mins_rows = _guard(base, "block references", raw.decode_insert_minsert_entities, p)
+    ins_rows, mins_rows = (early_inserts if early_inserts is not None else
+                           _guard(base, "block references", raw.decode_insert_minsert_entities, p))
     inserts: Dict[int, _Insert] = {}
     nameless = 0
     for row in ins_rows:
@@ -693,10 +725,12 @@ def read_dwg(path: str, progress=None):
         if h in got or tname in _PARTS:
             continue
         if tname in _COUNT_ONLY:
-            ents.append(_Entity(_COUNT_ONLY[tname], h, common(h)))
+            if h not in unused:
+                ents.append(_Entity(_COUNT_ONLY[tname], h, common(h)))
             continue
         undecoded[tname] += 1
-        ents.append(_Entity(tname, h, common(h)))  # the import counts and reports it as unsupported
+        if h not in unused:
+            ents.append(_Entity(tname, h, common(h)))  # the import counts and reports it as unsupported
     # ---- membership
     ents.sort(key=lambda e: e._h)
     for e in ents:

@@ -52,7 +52,9 @@ def _arc_points(cx, cy, r, a0, a1, tol, full=False):
             sweep = 2 * math.pi
     n = _n_segments(r, sweep, tol)
     t = a0 + np.linspace(0.0, sweep, n + 1)
-    pts = np.column_stack((cx + r * np.cos(t), cy + r * np.sin(t)))
+    pts = np.empty((len(t), 2))  # as np.column_stack, without its overhead (thousands of arcs)
+    pts[:, 0] = cx + r * np.cos(t)
+    pts[:, 1] = cy + r * np.sin(t)
     if full:
         pts = pts[:-1]
     return pts
@@ -161,6 +163,10 @@ def _chain(pieces: List[np.ndarray], eps: float) -> List[np.ndarray]:
 
 def _boundary_rings(bpath, tol: float) -> List[np.ndarray]:
     """Closed rings of one HATCH boundary path (edges chained by their end points)."""
+    xy = getattr(bpath, "xy", None)
+    if xy is not None:  # a DWG hatch path (cad_dwg.PolylinePath): flattened points, no bulges
+        v = np.array(xy, dtype=np.float64).reshape(-1, 2)
+        return [v] if len(v) >= 2 else []
     if type(bpath).__name__ == "PolylinePath":
         v = np.array([(p[0], p[1], p[2] if len(p) > 2 else 0.0) for p in bpath.vertices], dtype=np.float64)
         if len(v) < 2:
@@ -259,17 +265,31 @@ def _transform_pieces(src: _Pieces, A: np.ndarray, t: np.ndarray, layer: str, ds
     if n:
         lens = np.fromiter((len(c) for c in src.coords), dtype=np.int64, count=n)
         allc = np.concatenate(src.coords, axis=0) @ A.T + t
-        splits = np.split(allc, np.cumsum(lens)[:-1])
+        ends = np.cumsum(lens).tolist()
+        lens = lens.tolist()
         s = math.sqrt(abs(float(np.linalg.det(A))))
-        for i in range(n):
-            lay = src.layer[i]
+        # the pieces kept (layer_ok once per layer and type), appended list by list: a block inserted
+        # hundreds of times made this per-piece loop a tenth of the explosion
+        ok_of: Dict[Tuple[str, str], bool] = {}
+        keep, lays = [], []
+        for i, (lay, et) in enumerate(zip(src.layer, src.etype)):
             if lay == "0":
                 lay = layer
-            if not layer_ok(lay, src.etype[i]):
-                continue
-            w = src.width[i]
-            dst.add(splits[i], lay, src.etype[i], src.closed[i], src.filled[i], w * s if w else 0.0,
-                    _chain_name(name, src.block[i]), src.dashed[i])
+            ok = ok_of.get((lay, et))
+            if ok is None:
+                ok = ok_of[(lay, et)] = bool(layer_ok(lay, et))
+            if ok:
+                keep.append(i)
+                lays.append(lay)
+        if keep:
+            dst.coords.extend(allc[ends[i] - lens[i]:ends[i]] for i in keep)
+            dst.layer.extend(lays)
+            dst.etype.extend(src.etype[i] for i in keep)
+            dst.closed.extend(src.closed[i] for i in keep)
+            dst.filled.extend(src.filled[i] for i in keep)
+            dst.width.extend(src.width[i] * s if src.width[i] else 0.0 for i in keep)
+            dst.block.extend(_chain_name(name, src.block[i]) for i in keep)
+            dst.dashed.extend(src.dashed[i] for i in keep)
     for src_texts, dst_texts in ((src.texts, dst.texts), (src.hidden_texts, dst.hidden_texts)):
         if not src_texts:
             continue
@@ -378,6 +398,7 @@ class _Exploder:
         self.produced = 0  # entities added by exploding INSERTs (see MAX_EXPLODED)
         self._layer_lt: Dict[str, str] = {}  # layer -> its linetype name (``_dashed``)
         self._lt_broken: Dict[str, bool] = {}  # linetype name -> its pattern has gaps (``_broken_pattern``)
+        self._lt_dashed: Dict[str, bool] = {}  # linetype name -> ``_dashed``'s answer
 
     def _warn_once(self, key, msg):
         if key not in self._warned:
@@ -461,7 +482,10 @@ class _Exploder:
                     except Exception:
                         cache[layer] = ""
                 lt = cache[layer]
-            return is_dashed_linetype(lt) or self._broken_pattern(lt)
+            got = self._lt_dashed.get(lt)
+            if got is None:  # one answer per linetype name (the word search per entity was a tenth of it)
+                got = self._lt_dashed[lt] = bool(is_dashed_linetype(lt) or self._broken_pattern(lt))
+            return got
         except Exception:
             return False
 

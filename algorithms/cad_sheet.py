@@ -180,11 +180,16 @@ def frame_mask(geoms: Sequence[CadGeometry], rules: LayerRules) -> np.ndarray:
         return out
     tree = cKDTree(allp)
     free_ids = []
-    cset = set(cands)  # frame lines touch each other (corners) and are often drawn twice
+    in_cset = np.zeros(len(geoms), dtype=bool)  # frame lines touch each other (corners) and are often drawn twice
+    in_cset[cands] = True
     for i in cands:
         s = _samples(geoms[i].coords, 0.5)
         hits = tree.query_ball_point(s, FRAME_FREE_DIST)
-        free = sum(1 for h in hits if all(own[j] in cset for j in h))
+        # samples whose every neighbour belongs to a candidate line (counted over all neighbours at once)
+        n_hit = np.fromiter((len(h) for h in hits), dtype=np.int64, count=len(hits))
+        flat = np.fromiter((j for h in hits for j in h), dtype=np.int64, count=int(n_hit.sum()))
+        other = np.bincount(np.repeat(np.arange(len(hits)), n_hit)[~in_cset[own[flat]]], minlength=len(hits))
+        free = int((other == 0).sum())
         if free >= FRAME_FREE_SHARE * len(s):
             free_ids.append(i)
     if not free_ids:
@@ -401,13 +406,25 @@ def find_plans(geoms: Sequence[CadGeometry], texts: Sequence[CadText], rules: La
         titles[k] = (titles[k][0], "detail")
     parent = np.arange(ncomp)
     biggest0 = float(mass.max())
-    trees = {}
 
     def near(k, b, dist):
-        if b not in trees:
-            trees[b] = cKDTree(allp[plab == b])
-        d, _ = trees[b].query(allp[plab == k], distance_upper_bound=dist)
-        return bool(np.isfinite(d).any())
+        # only b's samples around k's box can be within ``dist`` of k (a margin keeps rounding out): a tree of
+        # those, not of the whole (large) group b, gives the same answer
+        pk = allp[plab == k]
+        pb = allp[plab == b]
+        m = dist * 1.01 + 1e-6
+        lo, hi = pk.min(axis=0) - m, pk.max(axis=0) + m
+        pb = pb[(pb >= lo).all(axis=1) & (pb <= hi).all(axis=1)]
+        if not len(pb):
+            return False
+        lo, hi = pb.min(axis=0) - m, pb.max(axis=0) + m  # and only k's samples around what is left of b
+        pk = pk[(pk >= lo).all(axis=1) & (pk <= hi).all(axis=1)]
+        tree = cKDTree(pb)
+        for s0 in range(0, len(pk), 4096):  # stop at the first sample within reach
+            d, _ = tree.query(pk[s0:s0 + 4096], distance_upper_bound=dist)
+            if np.isfinite(d).any():
+                return True
+        return False
 
     for k in np.argsort(-mass):
         if titles[k][1] in ("detail", "legend"):
