@@ -255,6 +255,7 @@ def _callouts_beside_plan(raw_texts, scale: float, extent, first_id: int) -> Lis
                 out.append(c)
     return out
 
+
 def _unusable(pieces: _Pieces, idx: Sequence[int], scale: float) -> np.ndarray:
     """Per piece of ``idx``: it holds a NaN/inf coordinate or one beyond 1e15 m once scaled (a filled piece's
     all-NaN rows only separate its rings), tested on all vertices at once."""
