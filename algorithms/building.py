@@ -448,8 +448,9 @@ def register_anchors(moving: Sequence[Anchor], fixed: Sequence[Anchor], tol: flo
     translation). Each is scored by its consensus (anchors landing within ``tol`` of a compatible
     partner, one-to-one); ties go to the smaller rotation, then the smaller residual. The winner is
     refit by least squares on its inliers, robustly, then on the shafts' outlines. Returns ``(Rigid, matches
-    [(i_moving, i_fixed, residual)])``, the residual being :func:`anchor_shift`'s length
-    or ``(None, [])`` when no anchor pair is compatible.
+    [(i_moving, i_fixed, residual)])``, the residual being :func:`shaft_residual` (judged on the walls
+    both cuts share, the anchors' passages marking open ends) or ``(None, [])`` when no anchor pair is
+    compatible.
     """
     from scipy.spatial import cKDTree
 
@@ -903,8 +904,8 @@ def fuse_floors(floors: Sequence[FloorData], out_path: str, frame, building_name
 
     ``levels``/``heights``: per floor (None entries: from tags / file name / default 3.2 m). Returns
     figures: ``levels``, ``transforms`` {level: (dx, dy, degrees, method)}, ``residuals`` {level:
-    [(anchor, partner, metres)]} (after registration, how far each shaft must move to lie on its partner,
-    :func:`anchor_shift`: a shaft only cut differently on the two floors fits with ~0), ``centroid_residuals``
+    [(anchor, partner, metres)]} (after registration, the offset of the walls both cuts of each shaft share,
+    :func:`shaft_residual`: a shaft only cut differently on the two floors reads ~0), ``centroid_residuals``
     (the same pairs, distance of the two centroids: cuts show here), ``rms`` and ``median_residual`` {level:
     metres}, ``overall_rms``, ``vertical`` [(lower area, upper area, kind)],
     ``areas_in``/``areas_out``, ``passages``, ``dropped_passages``, ``warnings``, plus the writer's stats.
