@@ -353,16 +353,27 @@ class Anchor:
     xy: np.ndarray  # centroid
     size: float  # area in m²
     polygon: object
+    openings: object = None  # the lines of the floor's horizontal passages of this area (None: none known)
 
 
 def floor_anchors(fl: FloorData) -> List[Anchor]:
     out = []
+    lines: Dict[int, list] = {}
+    for p in fl.passages:  # a shaft's openings: where its outline is a cut, not a wall (core_shift)
+        if p.line is not None and not p.line.is_empty:
+            for end in {p.from_id, p.to_id}:
+                lines.setdefault(end, []).append(p.line)
     for i, a in enumerate(fl.areas):
         k = anchor_kind(a)
         if k is None or a.polygon.is_empty:
             continue
         c = a.polygon.centroid
-        out.append(Anchor(i, k, anchor_name(a), np.array([c.x, c.y]), float(a.polygon.area), a.polygon))
+        op = None
+        if lines.get(a.id):
+            from shapely.geometry import MultiLineString
+
+            op = MultiLineString([list(ln.coords) for ln in lines[a.id]])
+        out.append(Anchor(i, k, anchor_name(a), np.array([c.x, c.y]), float(a.polygon.area), a.polygon, op))
     return out
 
 
@@ -437,8 +448,9 @@ def register_anchors(moving: Sequence[Anchor], fixed: Sequence[Anchor], tol: flo
     translation). Each is scored by its consensus (anchors landing within ``tol`` of a compatible
     partner, one-to-one); ties go to the smaller rotation, then the smaller residual. The winner is
     refit by least squares on its inliers, robustly, then on the shafts' outlines. Returns ``(Rigid, matches
-    [(i_moving, i_fixed, residual)])``, the residual being :func:`anchor_shift`'s length
-    or ``(None, [])`` when no anchor pair is compatible.
+    [(i_moving, i_fixed, residual)])``, the residual being :func:`shaft_residual` (judged on the walls
+    both cuts share, the anchors' passages marking open ends) or ``(None, [])`` when no anchor pair is
+    compatible.
     """
     from scipy.spatial import cKDTree
 
@@ -519,11 +531,15 @@ def register_anchors(moving: Sequence[Anchor], fixed: Sequence[Anchor], tol: flo
     pairs = [(moving[i].polygon, fixed[j].polygon) for i, j, _ in inl]
     T = _polish_on_shapes(T, pairs, rotate=rot_ok)
     T, shifts = _refit_on_local_fits(T, src, pairs, rotate=rot_ok)
-    matches = [(i, j, shaft_residual(T.geometry(pm), pf)) for (i, j, _), (pm, pf) in zip(inl, pairs)]
+    matches = []
+    for i, j, _ in inl:
+        om, of = moving[i].openings, fixed[j].openings
+        matches.append((i, j, shaft_residual(T.geometry(moving[i].polygon), fixed[j].polygon,
+                                             None if om is None else T.geometry(om), of)))
     return T, matches
 
 
-def core_shift(moved, partner) -> np.ndarray:
+def core_shift(moved, partner, moved_openings=None, partner_openings=None) -> np.ndarray:
     """The registration error at one shaft judged on what both cuts share: the walls of the core.
 
     Both outlines are measured in the frame of the partner's minimum rotated rectangle (u along its long
@@ -532,7 +548,13 @@ def core_shift(moved, partner) -> np.ndarray:
     longer on one floor, a landing drawn on one floor only: one wall is common, the other is cut elsewhere),
     else the offset of the nearer pair of walls (two cores drawn alike 0.3 m apart: 0.3 m). It never exceeds
     the offset of the two rectangles' centres on that axis. Returns the shift (x, y, metres) of the moved
-    outline."""
+    outline.
+
+    ``moved_openings`` / ``partner_openings``: the lines of each outline's passages. A side whose outermost
+    edge runs along a passage is open, a cut (a flight carved out of a hall ends at its first and last
+    tread, which each floor's plan cuts elsewhere), not a wall. An axis with an open side says nothing: the
+    open end may lie anywhere, and a difference at the other end is a cut longer on one floor (as above);
+    an offset is read only on an axis walled at both ends on both outlines (across a flight: its strings)."""
     rect = partner.minimum_rotated_rectangle
     xy = np.asarray(rect.exterior.coords, float)[:4] if rect.geom_type == "Polygon" else None
     if xy is None or len(xy) < 4:
@@ -549,11 +571,41 @@ def core_shift(moved, partner) -> np.ndarray:
         m, p = _wall_extents(moved, u, v), _wall_extents(partner, u, v)
     except ValueError:  # no polygon part
         return np.zeros(2)
+    m_open = _open_sides(moved, m, u, v, moved_openings)
+    p_open = _open_sides(partner, p, u, v, partner_openings)
     out = np.zeros(2)
     for axis, (lo, hi) in zip((u, v), ((0, 1), (2, 3))):
         d_lo, d_hi = p[lo] - m[lo], p[hi] - m[hi]
+        if m_open[lo] or p_open[lo] or m_open[hi] or p_open[hi]:
+            continue  # an open end explains any difference there, and a cut longer the other: no error
         d = 0.0 if d_lo * d_hi <= 0 else (d_lo if abs(d_lo) <= abs(d_hi) else d_hi)
         out += d * axis
+    return out
+
+
+def _open_sides(g, ext, u: np.ndarray, v: np.ndarray, openings, band: float = 0.05, share: float = 0.5):
+    """(lo_u, hi_u, lo_v, hi_v) booleans: is that side of outline ``g`` (at the positions ``ext`` of
+    :func:`_wall_extents`) open, i.e. do its edges there (parallel to the side, within ``band`` of its
+    position) run along the ``openings`` (passage lines) for at least ``share`` of their length?"""
+    out = [False] * 4
+    if openings is None or openings.is_empty:
+        return out
+    zone = openings.buffer(band, cap_style="flat")
+    rings = [np.asarray(p.exterior.coords, float) for p in getattr(g, "geoms", [g]) if p.geom_type == "Polygon"]
+    cos_tol = math.cos(math.radians(10.0))
+    from shapely.geometry import LineString
+
+    for k, (axis, along) in enumerate(((u, v), (u, v), (v, u), (v, u))):
+        tot = inside = 0.0
+        for r in rings:
+            for a, b in zip(r[:-1], r[1:]):
+                d = b - a
+                L = float(np.hypot(*d))
+                if L <= 1e-9 or abs(d @ along) / L < cos_tol or abs((a + b) / 2 @ axis - ext[k]) > band:
+                    continue
+                tot += L
+                inside += LineString([a, b]).intersection(zone).length
+        out[k] = tot > 0 and inside >= share * tot
     return out
 
 
@@ -588,12 +640,12 @@ def _wall_extents(g, u: np.ndarray, v: np.ndarray, share: float = 0.3, band: flo
     return tuple(out)
 
 
-def shaft_residual(moved, partner) -> float:
+def shaft_residual(moved, partner, moved_openings=None, partner_openings=None) -> float:
     """The residual (metres) reported for one matched shaft: the wall-based :func:`core_shift`, capped by
     the distance of the two outlines' centroids (a residual is never larger than what the two centres of
     outlines that already overlap say). :func:`anchor_shift` (the outline fit) still drives the refit, but
     as a measure it slides a core cut longer on one floor along its long axis (SIST E2-ST-01: 1.15 m)."""
-    r = float(np.hypot(*core_shift(moved, partner)))
+    r = float(np.hypot(*core_shift(moved, partner, moved_openings, partner_openings)))
     return min(r, float(moved.centroid.distance(partner.centroid)))
 
 
@@ -852,8 +904,8 @@ def fuse_floors(floors: Sequence[FloorData], out_path: str, frame, building_name
 
     ``levels``/``heights``: per floor (None entries: from tags / file name / default 3.2 m). Returns
     figures: ``levels``, ``transforms`` {level: (dx, dy, degrees, method)}, ``residuals`` {level:
-    [(anchor, partner, metres)]} (after registration, how far each shaft must move to lie on its partner,
-    :func:`anchor_shift`: a shaft only cut differently on the two floors fits with ~0), ``centroid_residuals``
+    [(anchor, partner, metres)]} (after registration, the offset of the walls both cuts of each shaft share,
+    :func:`shaft_residual`: a shaft only cut differently on the two floors reads ~0), ``centroid_residuals``
     (the same pairs, distance of the two centroids: cuts show here), ``rms`` and ``median_residual`` {level:
     metres}, ``overall_rms``, ``vertical`` [(lower area, upper area, kind)],
     ``areas_in``/``areas_out``, ``passages``, ``dropped_passages``, ``warnings``, plus the writer's stats.
@@ -932,8 +984,8 @@ def fuse_floors(floors: Sequence[FloorData], out_path: str, frame, building_name
         got = None
         if register:
             for j in done:
-                fixed = [Anchor(a.index, a.kind, a.name, T[j].apply(a.xy), a.size, T[j].geometry(a.polygon))
-                         for a in anchors[j]]
+                fixed = [Anchor(a.index, a.kind, a.name, T[j].apply(a.xy), a.size, T[j].geometry(a.polygon),
+                                None if a.openings is None else T[j].geometry(a.openings)) for a in anchors[j]]
                 R, matches = register_anchors(anchors[k], fixed)
                 if R is None:
                     continue

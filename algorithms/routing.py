@@ -312,6 +312,7 @@ class _Piece:
         self.pred = None
         self.queries = 0
         self._vp = None
+        self.paths: Dict[Tuple[int, int], np.ndarray] = {}  # (vertex, vertex) -> polyline, once rebuilt
 
     def large(self) -> bool:
         """Worth visibility polygons: testing a point against all corners and edges would be slow."""
@@ -738,6 +739,7 @@ class _Graph:
         self.build_s = 0.0
         self.alt: Dict[tuple, np.ndarray] = {}
         self.tables: Dict[tuple, tuple] = {}
+        self.last_table = None  # (vertical cost, avoid set, table) of the last query
         self.grids: Dict[object, object] = {}
         self._pos = None
         self._rank = None
@@ -917,6 +919,9 @@ class RouteMap:
     # ------------------------------------------------------------------ the graph for one radius
     def graph(self, robot_radius: float = DEFAULT_ROBOT_RADIUS, progress=None) -> _Graph:
         """The routing graph for ``robot_radius`` (built once, then cached on this object)."""
+        last = self.__dict__.get("_last_graph")
+        if last is not None and last[0] == robot_radius and type(robot_radius) is float:
+            return last[1]  # the commonest case: the radius of the previous query (no rounding, no lookup)
         r = float(robot_radius)
         if not (math.isfinite(r) and 0 <= r <= 5):
             raise InputError(f"ROBOT_RADIUS must be between 0 and 5 m, got {robot_radius}")
@@ -925,6 +930,7 @@ class RouteMap:
         if g is None:
             g = self._build(max(r, MIN_RADIUS), ensure(progress))
             self._graphs[key] = g
+        self._last_graph = (r, g)
         return g
 
     def prepare(self, robot_radius: float = DEFAULT_ROBOT_RADIUS, vertical_cost: float = DEFAULT_VERTICAL_COST,
@@ -1227,12 +1233,13 @@ class RouteMap:
               avoid: Sequence[str] = (), vertical_cost: float = DEFAULT_VERTICAL_COST, progress=None) -> RouteResult:
         """Shortest route from ``start`` to ``goal``: each an (x, y) point in the map frame (with its level,
         needed when the point lies in areas of several levels) or an area name (str)."""
+        quiet = progress is None  # a planner's query: no progress object, no messages to format
         progress = ensure(progress)
         if not (math.isfinite(float(vertical_cost)) and float(vertical_cost) >= 0):
             raise InputError(f"VERTICAL_COST must be a non-negative number of metres, got {vertical_cost}")
         vc = float(vertical_cost)
         avoid_set = self._avoid_set(avoid)
-        g = self.graph(robot_radius, progress=progress.sub(0, 90))
+        g = self.graph(robot_radius, progress=None if quiet else progress.sub(0, 90))
         ends = []
         for what, p, lev in (("start", start, start_level), ("goal", goal, goal_level)):
             if isinstance(p, str):
@@ -1245,12 +1252,15 @@ class RouteMap:
         t0 = time.perf_counter()
         res = self._search(g, ends[0], ends[1], vc, avoid_set, robot_radius)
         res.query_ms = (time.perf_counter() - t0) * 1000.0
-        progress.step(100, f"route: {res.length:.2f} m, {res.level_changes} level changes, "
-                           f"{len(res.areas)} areas, {len(res.passages)} passages ({res.query_ms:.2f} ms)")
+        if not quiet:
+            progress.step(100, f"route: {res.length:.2f} m, {res.level_changes} level changes, "
+                               f"{len(res.areas)} areas, {len(res.passages)} passages ({res.query_ms:.2f} ms)")
         return res
 
     @staticmethod
     def _avoid_set(avoid) -> set:
+        if not avoid:
+            return set()
         out = set()
         for a in avoid or ():
             a = str(a).strip().lower()
@@ -1417,6 +1427,9 @@ class RouteMap:
         usable edge between two neighbours, for this vertical cost
         and avoid set (once; the last ``MAX_TABLES`` kept), or None on maps of more than
         ``MAX_TABLE_NODES`` nodes (A* with landmarks then)."""
+        last = g.last_table
+        if last is not None and last[0] == vc and last[1] == avoid:
+            return last[2]  # the previous query's vertical cost and avoid set
         n = len(g.pos)
         if n == 0 or n > MAX_TABLE_NODES:
             return None
@@ -1443,6 +1456,7 @@ class RouteMap:
             while len(g.tables) >= MAX_TABLES:
                 g.tables.pop(next(iter(g.tables)))
             g.tables[key] = got
+        g.last_table = (vc, set(avoid), got)
         return got
 
     def _landmarks(self, g: _Graph, vc: float) -> np.ndarray:
@@ -1516,7 +1530,11 @@ class RouteMap:
                 pass_seq.append(i)
 
         def piece_path(pc, a, b):
-            chunks.append(pc.V[pc.vertex_path(a, b)])
+            key = (a, b)
+            xy = pc.paths.get(key)
+            if xy is None:  # polylines inside a piece, kept once rebuilt (the same doors recur)
+                xy = pc.paths[key] = pc.V[pc.vertex_path(a, b)]
+            chunks.append(xy)
             clev.append(pc.level)
 
         def node(n):

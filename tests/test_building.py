@@ -480,18 +480,26 @@ def test_links_join_the_same_shaft_code_and_never_two_different_codes(tmp_path):
     assert len(st["vertical"]) == 3
 
 
-def _shaft_floor(lv, shafts, dx, dy, rot=0.0):
+def _shaft_floor(lv, shafts, dx, dy, rot=0.0, openings=None):
     """A floor of a 50 x 14 m hall holding ``shafts`` ({code: polygon}; '-P' codes are lifts, the rest
-    stairs), rotated by ``rot`` degrees about the origin and moved by (dx, dy) into its own frame."""
+    stairs), rotated by ``rot`` degrees about the origin and moved by (dx, dy) into its own frame.
+    ``openings``: {code: [(x0, y0, x1, y1), ...]}, passages between that shaft and the hall."""
     hall = box(0, 0, 50, 14)
-    areas = []
+    areas, passages = [], []
     for k, (code, poly) in enumerate(shafts.items(), 2):
         hall = hall.difference(poly)
         areas.append(Area(id=k, polygon=poly, name=code, type="elevator" if "-P" in code else "stairs"))
+        for x0, y0, x1, y1 in (openings or {}).get(code, []):
+            passages.append(Passage(id=100 + len(passages), from_id=k, to_id=1, line=LineString([(x0, y0), (x1, y1)])))
     areas.insert(0, Area(id=1, polygon=hall, type="corridor", name=f"hall {lv}"))
-    for a in areas:
-        a.polygon = affinity.translate(affinity.rotate(a.polygon, rot, origin=(0, 0)), dx, dy)
-    return FloorData(source=f"F{lv}.osm", areas=areas, passages=[], level=lv)
+    for a in areas + passages:
+        g = a.polygon if isinstance(a, Area) else a.line
+        g = affinity.translate(affinity.rotate(g, rot, origin=(0, 0)), dx, dy)
+        if isinstance(a, Area):
+            a.polygon = g
+        else:
+            a.line = g
+    return FloorData(source=f"F{lv}.osm", areas=areas, passages=passages, level=lv)
 
 
 def test_registration_residual_counts_misplacement_not_different_cuts_of_a_shaft(tmp_path):
@@ -600,3 +608,52 @@ def test_shaft_residual_ignores_a_notch_in_a_core_wall():
         off = affinity.translate(a, 0.0, 0.3) if rot == 0 else affinity.rotate(affinity.translate(f1, 0, 0.3), rot,
                                                                               origin=(0, 0))
         assert building.shaft_residual(off, a) == pytest.approx(0.3, abs=0.01)
+
+
+@pytest.mark.parametrize("rot", [0.0, 40.0])
+def test_shaft_residual_ignores_the_open_ends_of_a_carved_flight(rot):
+    """Library A3-ST-11 kind: a free-standing flight carved out of an atrium gallery ends at its first and
+    last tread, both passages onto the gallery; the plans of two floors cut it at different treads (5F: 0.9 m
+    further down the run at both ends) and 5F draws it 1.1 m wider on one side. Its strings are the only walls
+    both cuts share and they coincide: residual ~0 (ends compared as walls: 0.9 m). Along the run an open
+    end says nothing; across it the strings still measure: the same flight 0.3 m off across reads 0.3 m."""
+    def r(g):
+        return affinity.rotate(g, rot, origin=(0, 0))
+
+    f4, f5 = r(box(0, 0, 5.6, 2.3)), r(box(-0.9, 0, 4.7, 3.4))
+    o4 = r(LineString([(0, 0), (0, 2.3)]).union(LineString([(5.6, 0), (5.6, 2.3)])))
+    o5 = r(LineString([(-0.9, 0), (-0.9, 3.4)]).union(LineString([(4.7, 0), (4.7, 3.4)])))
+    assert building.shaft_residual(f5, f4) == pytest.approx(0.9, abs=0.01)  # ends read as walls
+    assert building.shaft_residual(f5, f4, o5, o4) < 0.02 and building.shaft_residual(f4, f5, o4, o5) < 0.02
+    across = r(box(0, 0.3, 5.6, 2.6))
+    o_across = r(LineString([(0, 0.3), (0, 2.6)]).union(LineString([(5.6, 0.3), (5.6, 2.6)])))
+    assert building.shaft_residual(across, f4, o_across, o4) == pytest.approx(0.3, abs=0.01)
+    # a passage in a long side (a door in a core's wall) does not open the side: still 0.3 m
+    door = r(LineString([(2, 0.3), (3, 0.3)]))
+    assert building.shaft_residual(across, f4, door, None) == pytest.approx(0.3, abs=0.01)
+
+
+def test_fusion_residual_of_a_flight_cut_at_other_treads_is_zero(tmp_path):
+    """Two floors 1.5 km apart with four walled shafts and a free-standing flight in the hall whose ends are
+    passages (the A3-ST-11 kind): level 2 cuts the flight 0.9 m further along at both ends and 1.1 m wider.
+    The transform is exact, the flight's residual ~0 (0.9 m when its open ends were read as walls), and the
+    level's RMS stays below 0.05 m."""
+    base = {"E1-ST-01": box(2, 0, 8, 3), "E1-ST-02": box(34, 0, 37, 6), "E1-P1": box(12, 0, 14, 2),
+            "E1-P2": box(44, 9, 46, 11), "A3-ST-11": box(20, 6, 25.6, 8.3)}
+    opens = {"A3-ST-11": [(20, 6, 20, 8.3), (25.6, 6, 25.6, 8.3)]}
+    floors = []
+    for lv, (dx, dy) in (("1", (0.0, 0.0)), ("2", (1480.0, 10.7))):
+        shafts, op = dict(base), dict(opens)
+        if lv == "2":
+            shafts["A3-ST-11"] = box(19.1, 6, 24.7, 9.4)
+            op = {"A3-ST-11": [(19.1, 6, 19.1, 9.4), (24.7, 6, 24.7, 9.4)]}
+        floors.append(_shaft_floor(lv, shafts, dx, dy, openings=op))
+    st = fuse_floors(floors, str(tmp_path / "b.osm"), LocalFrame(0.0, 0.0), variant="fix-id")
+    lv_moved = [lv for lv, t in st["transforms"].items() if t[3] != "reference"][0]
+    dx, dy = st["transforms"][lv_moved][:2]
+    assert math.hypot(abs(dx) - 1480.0, abs(dy) - 10.7) < 0.05, st["transforms"]
+    res = {a.split(" (")[0]: d for a, _, d in st["residuals"][lv_moved]}
+    cen = {a.split(" (")[0]: d for a, _, d in st["centroid_residuals"][lv_moved]}
+    assert cen["A3-ST-11"] > 0.5  # the centroids say the flight moved ...
+    assert res["A3-ST-11"] < 0.05, res  # ... the walls both cuts share say it did not
+    assert st["rms"][lv_moved] < 0.05, st["rms"]

@@ -270,6 +270,36 @@ def test_route_on_an_osmag_file_we_wrote(tmp_path):
     assert res.areas == ["West", "East"]
 
 
+def test_passage_to_a_missing_area_is_reported_with_its_way_id_and_skipped(tmp_path):
+    """Issue 10's bad input, the ShanghaiTech_merge_2 kind (56 passages pointing at 'out'), small: a file
+    whose passage names an area that is not in it loads, says which way and which name, and routes."""
+    import copy
+    import xml.etree.ElementTree as ET
+
+    from algorithms.georef import LocalFrame
+    from algorithms.osmag import write_osmag
+
+    areas, passages = two_rooms(1.0)
+    path = tmp_path / "two.osm"
+    write_osmag(str(path), areas, passages, frame=LocalFrame(121.59, 31.18), variant="fix-id")
+    tree = ET.parse(path)
+    root = tree.getroot()
+    way = [w for w in root.iter("way") if any(t.get("v") == "passage" for t in w.iter("tag"))][0]
+    bad = copy.deepcopy(way)
+    bad.set("id", "-4242")
+    for t in bad.iter("tag"):
+        if t.get("k") == "osmAG:to":
+            t.set("v", "out")
+    root.append(bad)
+    tree.write(path, encoding="utf-8", xml_declaration=True)
+    pr = RecordingProgress()
+    rm = RouteMap.from_osmag(str(path), progress=pr)
+    assert "1 passages point at areas missing from the file ('out'), e.g. ways [-4242]" in pr.text()
+    assert len(rm.passages) == 1  # the good door only
+    c = rm.frame.from_wgs84(*rm.frame.to_wgs84(np.array([1.0]), np.array([2.0])))
+    assert rm.route((float(c[0]), float(c[1])), "East", robot_radius=0.3).areas == ["West", "East"]
+
+
 @pytest.mark.slow
 def test_other_tools_campus_map(shared_data):
     path = shared_data / "osmag" / "fix_id_ShanghaiTech_merge_2.osm"
@@ -599,6 +629,9 @@ def test_bench_cross_building_on_a_small_fused_file(tmp_path):
     s = bench.stats(res["rows"])
     assert s["within"] == 4 and s["rel_min"] > -0.05  # never much shorter than the grid: not through walls
     assert s["q_cpu_best_med"] < 50
+    # the speed-up is CPU over CPU: grid A* CPU / osmAG CPU best of the rounds, never below the first run's
+    assert s["g_cpu_med"] > 0 and s["speed_best_med"] >= s["speed_cpu_med"] > 0
+    assert "speed-up median, CPU" in bench.table([], [dict(res, label="two floors")])[0]
 
 
 @pytest.mark.slow
