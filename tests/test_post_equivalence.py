@@ -20,8 +20,8 @@ from algorithms.model import Area, CadGeometry, CadText, Passage
 
 # sha256 of the osmAG written by floor_cache.convert_dxf(sheet, out) (defaults), areas, passages
 PINNED_DWG = {
-    "sist-original/SIST-F1.dwg": ("8f392ae12fe01ee18cf5c524b129985f732b43abb118d589bc3f4f247e782afe", 135, 188),
-    "library/A-A3-10-04.dwg": ("c0f5440a35f0a4a62c4cbd916e1d5ebfcca7ad1058b085801e27533c98e6a367", 64, 84),
+    "sist-original/SIST-F1.dwg": ("a43aa63035376cb7d8b41b6050c76899151909e7e4439bf98167a6f3e715eda9", 138, 188),
+    "library/A-A3-10-04.dwg": ("77d6e25688c270228f7560cc93b732f8ad99a9a5dd4c8c01e24a4ebcab0ee0e7", 64, 84),
 }
 
 
