@@ -80,35 +80,44 @@ def code_digest() -> str:
 
 
 class FloorCache:
+    """Stages 1-5 of a drawing, once per session, whatever level the callers convert it at.
+
+    The level only names things (``process_floor(level=...)``: the generated ids ``<level>-<area id>`` of
+    areas no text names and the floor outline's ``Level <level>``), so the key leaves it out: the first
+    caller converts at its level, a caller at another level gets the same floor re-levelled (``relevel``).
+    When re-levelling could differ from a conversion at that level (a generated id taken by a drawing's
+    name), that level is converted on its own."""
+
     def __init__(self, folder: Path):
         self.folder = folder
         self.folder.mkdir(parents=True, exist_ok=True)
         self.digest = code_digest()
-        self.hits = self.misses = 0
+        self.hits = self.misses = self.relevelled = 0
         from algorithms import pipeline
 
         self._process_floor = pipeline.process_floor  # the real one (convert_dxf below patches the module's)
 
-    def key(self, path, kwargs) -> str:
-        """The file (path, size, time), every argument (defaults filled in: ``level="1"`` given or not is
-        one key) and the code digest."""
-        import hashlib
+    def _arguments(self, path, kwargs) -> dict:
         import inspect
 
         args = inspect.signature(self._process_floor).bind(path, **kwargs)
         args.apply_defaults()
-        given = {k: v for k, v in args.arguments.items() if k not in ("dxf_path", "progress")}
+        return {k: v for k, v in args.arguments.items() if k not in ("dxf_path", "progress")}
+
+    def key(self, path, kwargs) -> str:
+        """The file (path, size, time), every argument but ``level`` (defaults filled in) and the code digest."""
+        import hashlib
+
+        given = {k: v for k, v in self._arguments(path, kwargs).items() if k != "level"}
         st = os.stat(path)
         text = repr((os.path.abspath(path), st.st_size, st.st_mtime_ns, sorted(given.items()), self.digest))
         return f"{Path(path).stem}-{hashlib.sha256(text.encode()).hexdigest()[:16]}"
 
-    def process_floor(self, path, progress=None, **kwargs):
-        """``pipeline.process_floor(path, **kwargs)``, computed once per session (``progress`` is not
-        reported on a hit). An InputError is cached and raised again like the real conversion's."""
+    def _load_or_convert(self, key, path, progress, kwargs):
+        """(ok, value, level) of the cache entry ``key``, converted (``kwargs`` with their level) if missing."""
         import fcntl
         import pickle
 
-        key = self.key(str(path), kwargs)
         data = self.folder / f"{key}.pickle"
         with open(self.folder / f"{key}.lock", "w") as lock:
             fcntl.flock(lock, fcntl.LOCK_EX)
@@ -116,36 +125,87 @@ class FloorCache:
                 if data.exists():
                     self.hits += 1
                     with open(data, "rb") as fh:
-                        ok, value = pickle.load(fh)
-                else:
-                    self.misses += 1
-                    from algorithms.errors import InputError
+                        return pickle.load(fh)
+                self.misses += 1
+                from algorithms.errors import InputError
 
-                    try:
-                        ok, value = True, self._process_floor(str(path), progress=progress, **kwargs)
-                    except InputError as exc:
-                        ok, value = False, exc
-                    tmp = data.with_suffix(f".{os.getpid()}.tmp")
-                    with open(tmp, "wb") as fh:
-                        pickle.dump((ok, value), fh, protocol=pickle.HIGHEST_PROTOCOL)
-                    os.replace(tmp, data)
-                    if ok:  # the caller's copy must be as independent as a loaded one
-                        with open(data, "rb") as fh:
-                            ok, value = pickle.load(fh)
+                level = str(kwargs["level"])
+                try:
+                    entry = (True, self._process_floor(str(path), progress=progress, **kwargs), level)
+                except InputError as exc:
+                    entry = (False, exc, level)
+                tmp = data.with_suffix(f".{os.getpid()}.tmp")
+                with open(tmp, "wb") as fh:
+                    pickle.dump(entry, fh, protocol=pickle.HIGHEST_PROTOCOL)
+                os.replace(tmp, data)
+                if entry[0]:  # the caller's copy must be as independent as a loaded one
+                    with open(data, "rb") as fh:
+                        entry = pickle.load(fh)
+                return entry
             finally:
                 fcntl.flock(lock, fcntl.LOCK_UN)
+
+    def process_floor(self, path, progress=None, **kwargs):
+        """``pipeline.process_floor(path, **kwargs)``, computed once per session (``progress`` is not
+        reported on a hit). An InputError is cached and raised again like the real conversion's."""
+        args = self._arguments(str(path), kwargs)
+        level = str(args["level"])
+        key = self.key(str(path), kwargs)
+        ok, value, done_at = self._load_or_convert(key, path, progress, args)
+        if ok and done_at != level:
+            if relevel(value, done_at, level):
+                self.relevelled += 1
+            else:  # re-levelling could differ from a conversion at this level: convert at it
+                ok, value, _ = self._load_or_convert(f"{key}-level-{level}", path, progress, args)
         if not ok:
             raise value
         return value
 
-    def convert_dxf(self, path, out_osm, **kwargs):
-        """``pipeline.convert_dxf`` (the osmAG file is written) on the cached stages 1-5."""
+    def patched(self):
+        """A context in which ``pipeline.process_floor`` is this cache's (``pipeline.convert_dxf`` and
+        ``building.convert_floors(workers=1)`` run on the cached stages 1-5)."""
         from unittest import mock
 
         from algorithms import pipeline
 
-        with mock.patch.object(pipeline, "process_floor", self.process_floor):
+        return mock.patch.object(pipeline, "process_floor", self.process_floor)
+
+    def convert_dxf(self, path, out_osm, **kwargs):
+        """``pipeline.convert_dxf`` (the osmAG file is written) on the cached stages 1-5."""
+        from algorithms import pipeline
+
+        with self.patched():
             return pipeline.convert_dxf(str(path), str(out_osm), **kwargs)
+
+
+def relevel(floor, old: str, new: str) -> bool:
+    """Turn ``floor`` (a ``pipeline.FloorResult`` converted at level ``old``) into the one ``process_floor``
+    gives at level ``new``, in place: the level only enters the generated ids of the areas no text names
+    (``semantics.auto_id``) and the outline's name. False (``floor`` untouched) when that could differ
+    from a conversion at ``new``: a generated id suffixed because a name took it, a drawing's name that
+    reads like a generated id, or a new id that a name of the floor takes."""
+    import re
+
+    from algorithms import semantics
+
+    areas = [a for a in floor.refined.areas if a.type != "structure"]
+    if floor.floor_area is not None and floor.floor_area.name != f"Level {old}":
+        return False
+    if floor.names is not None:
+        auto = [a for a in areas if a.name == semantics.auto_id(old, a.id)]
+        if len(auto) != floor.names.auto or any(
+                re.fullmatch(re.escape(semantics.auto_id(old, a.id)) + r"-\d+", a.name or "") for a in areas):
+            return False
+        auto_ids = {id(a) for a in auto}
+        others = {semantics._key(a.name) for a in floor.refined.areas if a.name and id(a) not in auto_ids}
+        keys = [semantics._key(semantics.auto_id(new, a.id)) for a in auto]
+        if len(set(keys)) != len(keys) or others.intersection(keys):
+            return False
+        for a in auto:
+            a.name = semantics.auto_id(new, a.id)
+    if floor.floor_area is not None:
+        floor.floor_area.name = f"Level {new}"
+    return True
 
 
 @pytest.fixture(scope="session")
