@@ -86,35 +86,45 @@ class FloorCache:
     areas no text names and the floor outline's ``Level <level>``), so the key leaves it out: the first
     caller converts at its level, a caller at another level gets the same floor re-levelled (``relevel``).
     When re-levelling could differ from a conversion at that level (a generated id taken by a drawing's
-    name), that level is converted on its own."""
+    name), that level is converted on its own. Stage 1 alone (``import_dxf``) is cached too, and a conversion
+    stores its import there: the tests of the import on real sheets read what the conversions read."""
 
     def __init__(self, folder: Path):
         self.folder = folder
         self.folder.mkdir(parents=True, exist_ok=True)
         self.digest = code_digest()
         self.hits = self.misses = self.relevelled = 0
-        from algorithms import pipeline
+        self.import_hits = self.import_misses = 0
+        from algorithms import cad_import, pipeline
 
-        self._process_floor = pipeline.process_floor  # the real one (convert_dxf below patches the module's)
+        self._process_floor = pipeline.process_floor  # the real ones (convert_dxf below patches the module's)
+        self._import_dxf = cad_import.import_dxf
 
-    def _arguments(self, path, kwargs) -> dict:
+    @staticmethod
+    def _bound(func, path, kwargs) -> dict:
         import inspect
 
-        args = inspect.signature(self._process_floor).bind(path, **kwargs)
+        args = inspect.signature(func).bind(path, **kwargs)
         args.apply_defaults()
-        return {k: v for k, v in args.arguments.items() if k not in ("dxf_path", "progress")}
+        return {k: v for k, v in list(args.arguments.items())[1:] if k != "progress"}
 
-    def key(self, path, kwargs) -> str:
-        """The file (path, size, time), every argument but ``level`` (defaults filled in) and the code digest."""
+    def _arguments(self, path, kwargs) -> dict:
+        return self._bound(self._process_floor, path, kwargs)
+
+    def _key(self, path, given) -> str:
         import hashlib
 
-        given = {k: v for k, v in self._arguments(path, kwargs).items() if k != "level"}
         st = os.stat(path)
         text = repr((os.path.abspath(path), st.st_size, st.st_mtime_ns, sorted(given.items()), self.digest))
         return f"{Path(path).stem}-{hashlib.sha256(text.encode()).hexdigest()[:16]}"
 
-    def _load_or_convert(self, key, path, progress, kwargs):
-        """(ok, value, level) of the cache entry ``key``, converted (``kwargs`` with their level) if missing."""
+    def key(self, path, kwargs) -> str:
+        """The file (path, size, time), every argument but ``level`` (defaults filled in) and the code digest."""
+        return self._key(path, {k: v for k, v in self._arguments(path, kwargs).items() if k != "level"})
+
+    def _entry(self, key, compute, counter):
+        """(ok, value, tag) of the cache entry ``key``; if missing, ``compute()`` -> (value, tag) fills it (an
+        InputError is kept, with ok False). ``counter``: "" (conversions) or "import_" (imports)."""
         import fcntl
         import pickle
 
@@ -123,17 +133,16 @@ class FloorCache:
             fcntl.flock(lock, fcntl.LOCK_EX)
             try:
                 if data.exists():
-                    self.hits += 1
+                    setattr(self, counter + "hits", getattr(self, counter + "hits") + 1)
                     with open(data, "rb") as fh:
                         return pickle.load(fh)
-                self.misses += 1
+                setattr(self, counter + "misses", getattr(self, counter + "misses") + 1)
                 from algorithms.errors import InputError
 
-                level = str(kwargs["level"])
                 try:
-                    entry = (True, self._process_floor(str(path), progress=progress, **kwargs), level)
+                    entry = (True, *compute())
                 except InputError as exc:
-                    entry = (False, exc, level)
+                    entry = (False, exc, None)
                 tmp = data.with_suffix(f".{os.getpid()}.tmp")
                 with open(tmp, "wb") as fh:
                     pickle.dump(entry, fh, protocol=pickle.HIGHEST_PROTOCOL)
@@ -144,6 +153,31 @@ class FloorCache:
                 return entry
             finally:
                 fcntl.flock(lock, fcntl.LOCK_UN)
+
+    def _load_or_convert(self, key, path, progress, kwargs):
+        """(ok, value, level) of the conversion ``key``, converted (``kwargs`` with their level) if missing; its
+        import goes through ``import_dxf`` (stored before the pipeline uses it)."""
+        from unittest import mock
+
+        from algorithms import cad_import
+
+        def convert():
+            with mock.patch.object(cad_import, "import_dxf", self.import_dxf):
+                return self._process_floor(str(path), progress=progress, **kwargs), str(kwargs["level"])
+
+        return self._entry(key, convert, "")
+
+    def import_dxf(self, path, progress=None, **kwargs):
+        """``cad_import.import_dxf(path, **kwargs)`` (stage 1 alone), once per session; the conversions above
+        store theirs here, so a test reading a drawing that a conversion read gets it without reading it again
+        (``progress`` is not reported on a hit)."""
+        given = self._bound(self._import_dxf, str(path), kwargs)
+        key = "import-" + self._key(str(path), given)
+        ok, value, _ = self._entry(key, lambda: (self._import_dxf(str(path), progress=progress, **given), None),
+                                   "import_")
+        if not ok:
+            raise value
+        return value
 
     def process_floor(self, path, progress=None, **kwargs):
         """``pipeline.process_floor(path, **kwargs)``, computed once per session (``progress`` is not
@@ -212,7 +246,10 @@ def relevel(floor, old: str, new: str) -> bool:
 def floor_cache(tmp_path_factory) -> FloorCache:
     """Stages 1-5 of a drawing computed once per session: ``floor_cache.process_floor(path, **kwargs)``,
     ``floor_cache.convert_dxf(path, out_osm, **kwargs)``. The folder is the session's, shared by the xdist
-    workers (their own temporary directories sit side by side in it)."""
+    workers (their own temporary directories sit side by side in it); ``CAD2OSMAG_FLOOR_CACHE=<folder>`` keeps
+    them across runs (never in CI: a run must pay its own conversions to be measured)."""
+    if os.environ.get("CAD2OSMAG_FLOOR_CACHE"):  # a developer's folder kept across runs (keys hold the code digest)
+        return FloorCache(Path(os.environ["CAD2OSMAG_FLOOR_CACHE"]))
     base = tmp_path_factory.getbasetemp()
     root = base.parent if os.environ.get("PYTEST_XDIST_WORKER") else base
     return FloorCache(root / "floor-cache")

@@ -98,6 +98,23 @@ def test_cached_convert_writes_the_same_osmag(half_named_dxf, tmp_path):
     assert len([a for a in areas if a.type != "structure"]) == ref["areas"]
 
 
+def test_a_conversion_stores_its_import_and_a_read_is_what_import_dxf_gives(sample_dxf, tmp_path):
+    from algorithms.cad_import import import_dxf
+
+    cache = FloorCache(tmp_path / "cache")
+    cache.process_floor(sample_dxf)
+    assert (cache.import_misses, cache.import_hits) == (1, 0)
+    got = cache.import_dxf(sample_dxf)  # what the conversion read, before the pipeline used it
+    assert (cache.import_misses, cache.import_hits, cache.misses) == (1, 1, 1)
+    ref = import_dxf(sample_dxf)
+    assert [(g.layer, g.kind, g.coords.tolist()) for g in got.geometries] == \
+        [(g.layer, g.kind, g.coords.tolist()) for g in ref.geometries]
+    assert [(t.text, t.x, t.y, t.layer) for t in got.texts] == [(t.text, t.x, t.y, t.layer) for t in ref.texts]
+    assert (got.unit_name, got.warnings, len(got.doors)) == (ref.unit_name, ref.warnings, len(ref.doors))
+    cache.import_dxf(sample_dxf, include_doors=True)  # other arguments: another read
+    assert cache.import_misses == 2
+
+
 def test_input_errors_are_cached_and_raised_again(tmp_path):
     bad = tmp_path / "broken.dxf"
     bad.write_text("this is not a drawing\n")
