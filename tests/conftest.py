@@ -314,7 +314,7 @@ def pytest_sessionfinish(session, exitstatus):
         return
     import json
 
-    worker = os.environ.get("PYTEST_XDIST_WORKER", "main")
+    worker = os.environ.get("PYTEST_XDIST_WORKER", os.environ.get("CAD2OSMAG_TEST_TIMES_NAME", "main"))
     folder = REPO / "tests" / "artifacts"
     folder.mkdir(parents=True, exist_ok=True)
     path = folder / f"test-times-{worker}.json"
