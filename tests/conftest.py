@@ -329,15 +329,22 @@ def pytest_sessionfinish(session, exitstatus):
 # alone at the end while the other core idles (longest-processing-time-first). CPU seconds per file from
 # the record above (tests/artifacts/test-times-*.json); a file not listed counts as light.
 FILE_CPU_SECONDS = {
-    # measured (own + child CPU s, -n 2 on the loaded 2-core machine, 2026-12-01; 700 of 745 tests, 1600 CPU s)
-    "test_fuzz_dxf.py": 122, "test_semantics.py": 102, "test_segmentation_real.py": 90, "test_building.py": 83,
-    "test_determinism.py": 72, "test_cancel.py": 66, "test_qgis_osmag.py": 56, "test_sheet_real.py": 55,
-    "test_dwg.py": 43, "test_real_dxf.py": 36, "test_package.py": 34, "test_routing.py": 28, "test_batch.py": 24,
-    "test_limits.py": 21, "test_bench.py": 19, "test_pipeline.py": 17,
-    "test_qgis_cad.py": 295, "test_qgis_pipeline.py": 141, "test_qgis_dwg.py": 44, "test_qgis_sheet.py": 25,
-    "test_real_plans.py": 142,  # with the shared conversions of test_semantics (else about 250)
-    # not reached by that run: estimated from what they convert (7 DWG sheets; 500 DWG mutants)
-    "test_building_dwg.py": 250, "test_fuzz_dwg.py": 150, "test_osmag_client.py": 60,
+    # measured 2026-12-02 in one process at load ~20 (own + child CPU s, with the session's shared conversions:
+    # the first user of a sheet pays for it), after the level-free floor cache, the import cache and the
+    # qgis_process dispatch (README "Tests"). test_real_plans and test_building_dwg first: between them they
+    # convert the 13 DXF plans and 8 DWG sheets (~260 CPU s) that eight other files then read from the cache.
+    "test_real_plans.py": 260, "test_building_dwg.py": 200,
+    "test_qgis_cad.py": 100, "test_qgis_pipeline.py": 80, "test_semantics.py": 40, "test_qgis_names.py": 35,
+    "test_qgis_dwg.py": 31, "test_qgis_segment.py": 30, "test_building.py": 30, "test_qgis_sheet.py": 23,
+    "test_qgis_merge.py": 22, "test_limits.py": 21, "test_qgis_route.py": 18, "test_segmentation_qgis.py": 18,
+    "test_gui_plans.py": 16, "test_segmentation_real.py": 11,
+    # measured 2026-12-01 (-n 2, load 10-14), not changed since
+    "test_fuzz_dxf.py": 122, "test_determinism.py": 72, "test_cancel.py": 66, "test_qgis_osmag.py": 56,
+    "test_dwg.py": 43, "test_package.py": 34, "test_routing.py": 28, "test_batch.py": 24, "test_bench.py": 19,
+    "test_pipeline.py": 17,
+    # estimated from what they convert (500 DWG mutants; the osmAG authors' client build), and (reads from the
+    # cache since 2026-12-02, 55 and 36 before) the sheet and DXF import checks
+    "test_fuzz_dwg.py": 150, "test_osmag_client.py": 60, "test_sheet_real.py": 15, "test_real_dxf.py": 12,
 }
 
 
