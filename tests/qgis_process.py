@@ -30,14 +30,15 @@ def _test_file() -> str:
     return os.environ.get("PYTEST_CURRENT_TEST", "").split("::")[0]
 
 
-def run_alg(alg, params, timeout=600, check=True):
+def run_alg(alg, params, timeout=600, check=True, headless=None):
     """Run ``cad2osmag:<alg>`` with ``params`` (dict; list values repeat the parameter).
 
     Returns (returncode, results dict or None, combined output). With ``check`` a non-zero exit fails
-    with the tool's output in the message. Headless (qgis_process) or in the test's QGIS: see the module.
+    with the tool's output in the message. Headless (qgis_process) or in the test's QGIS: see the module;
+    ``headless=True`` always spawns qgis_process.
     """
     key = (_test_file(), alg)
-    if check and key in _SPAWNED and not _headless_always() and _inprocess_ready():
+    if check and not headless and key in _SPAWNED and not _headless_always() and _inprocess_ready():
         return _run_inprocess(alg, params)
     args = [SCRIPT, "--json", "run", f"cad2osmag:{alg}", "--"]
     for k, value in params.items():

@@ -160,8 +160,8 @@ def test_all_three_on_every_real_plan(tmp_path, shared_data, provider):
     assert len(files) >= 13
 
     def run(alg, params, headless):
-        if headless:
-            return run_alg(alg, params)[1]
+        if headless:  # the command line on a real drawing (even where this file ran the algorithm headless before)
+            return run_alg(alg, params, headless=True)[1]
         res, ok, fb = run_alg_inprocess(alg, params)
         assert ok, f"{alg} on {params.get('INPUT') or params.get('WALLS')}:\n" + "\n".join(fb.lines)
         return res
