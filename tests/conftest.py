@@ -334,12 +334,13 @@ FILE_CPU_SECONDS = {
     # qgis_process dispatch (README "Tests"). test_real_plans and test_building_dwg first: between them they
     # convert the 13 DXF plans and 8 DWG sheets (~260 CPU s) that eight other files then read from the cache.
     "test_real_plans.py": 260, "test_building_dwg.py": 200,
-    "test_qgis_cad.py": 100, "test_qgis_pipeline.py": 80, "test_semantics.py": 40, "test_qgis_names.py": 35,
-    "test_qgis_dwg.py": 31, "test_qgis_segment.py": 30, "test_building.py": 30, "test_qgis_sheet.py": 23,
-    "test_qgis_merge.py": 22, "test_limits.py": 21, "test_qgis_route.py": 18, "test_segmentation_qgis.py": 18,
-    "test_gui_plans.py": 16, "test_segmentation_real.py": 11,
+    "test_qgis_pipeline.py": 128, "test_qgis_cad.py": 116, "test_qgis_dwg.py": 49, "test_semantics.py": 40,
+    "test_qgis_osmag.py": 39, "test_qgis_names.py": 35, "test_qgis_segment.py": 30, "test_building.py": 30,
+    "test_segmentation_qgis.py": 26, "test_gui_plans.py": 24, "test_qgis_sheet.py": 23, "test_qgis_route.py": 26,
+    "test_qgis_merge.py": 22, "test_limits.py": 21, "test_cad_classify_connect.py": 18, "test_fuzz_qgis.py": 17,
+    "test_segmentation_real.py": 11,
     # measured 2026-12-01 (-n 2, load 10-14), not changed since
-    "test_fuzz_dxf.py": 122, "test_determinism.py": 72, "test_cancel.py": 66, "test_qgis_osmag.py": 56,
+    "test_fuzz_dxf.py": 122, "test_determinism.py": 72, "test_cancel.py": 66,
     "test_dwg.py": 43, "test_package.py": 34, "test_routing.py": 28, "test_batch.py": 24, "test_bench.py": 19,
     "test_pipeline.py": 17,
     # estimated from what they convert (500 DWG mutants; the osmAG authors' client build), and (reads from the
