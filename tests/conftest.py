@@ -343,9 +343,9 @@ FILE_CPU_SECONDS = {
     "test_fuzz_dxf.py": 122, "test_determinism.py": 72, "test_cancel.py": 66,
     "test_dwg.py": 43, "test_package.py": 34, "test_routing.py": 28, "test_batch.py": 24, "test_bench.py": 19,
     "test_pipeline.py": 17,
-    # estimated from what they convert (500 DWG mutants; the osmAG authors' client build), and (reads from the
-    # cache since 2026-12-02, 55 and 36 before) the sheet and DXF import checks
-    "test_fuzz_dwg.py": 150, "test_osmag_client.py": 60, "test_sheet_real.py": 15, "test_real_dxf.py": 12,
+    # estimated from what they convert (500 DWG mutants; the osmAG authors' client build), and measured
+    # 2026-12-02 with the reads cached (55 and 36 CPU s before) the sheet and DXF import checks
+    "test_fuzz_dwg.py": 150, "test_osmag_client.py": 60, "test_sheet_real.py": 10, "test_real_dxf.py": 7,
 }
 
 
