@@ -22,6 +22,15 @@ def log_feedback():
         def pushWarning(self, warning):  # noqa: N802
             self.lines.append("WARNING " + warning)
 
+        def pushCommandInfo(self, info):  # noqa: N802  (qgis_process prints these too)
+            self.lines.append(info)
+
+        def pushConsoleInfo(self, info):  # noqa: N802
+            self.lines.append(info)
+
+        def pushDebugInfo(self, info):  # noqa: N802
+            self.lines.append(info)
+
         def reportError(self, error, fatalError=False):  # noqa: N802, N803
             self.lines.append("ERROR " + error)
 

@@ -1,23 +1,51 @@
-"""Run cad2osmag algorithms headless through scripts/qgis-process (a subprocess) in tests."""
+"""Run cad2osmag algorithms headless through scripts/qgis-process (a subprocess) in tests.
+
+Each qgis_process start costs ~3.5 CPU s of QGIS start and plugin import, more than most algorithm runs
+themselves. So ``run_alg`` spawns qgis_process for the first run of each algorithm in each test file (every
+file that tests an algorithm keeps a real command-line run of it, whatever the scheduling) and for every run
+with ``check=False`` (the failure paths: exit code and message as the command line gives them); the later
+successful runs of the same algorithm in the same file run the same Processing class inside the test's QGIS
+(``tests/qgis_inprocess.py``), with its parameters given as the same strings and its results and log returned
+as qgis_process returns them. ``CAD2OSMAG_TEST_HEADLESS=1`` in the environment spawns qgis_process for every run.
+"""
 import json
+import os
 import subprocess
 
 from .conftest import REPO
 
 SCRIPT = str(REPO / "scripts" / "qgis-process")
 
+# (test file, algorithm) that ran headless with success in this process
+_SPAWNED = set()
+# what ran where in this process (tests/test_qgis_cad.py checks the dispatch)
+COUNTS = {"headless": 0, "inprocess": 0}
 
-def run_alg(alg, params, timeout=600, check=True):
+
+def _headless_always() -> bool:
+    return os.environ.get("CAD2OSMAG_TEST_HEADLESS", "").strip().lower() in ("1", "yes", "true", "all")
+
+
+def _test_file() -> str:
+    return os.environ.get("PYTEST_CURRENT_TEST", "").split("::")[0]
+
+
+def run_alg(alg, params, timeout=600, check=True, headless=None):
     """Run ``cad2osmag:<alg>`` with ``params`` (dict; list values repeat the parameter).
 
     Returns (returncode, results dict or None, combined output). With ``check`` a non-zero exit fails
-    with the tool's output in the message.
+    with the tool's output in the message. Headless (qgis_process) or in the test's QGIS: see the module;
+    ``headless=True`` always spawns qgis_process.
     """
+    key = (_test_file(), alg)
+    if check and not headless and key in _SPAWNED and not _headless_always() and _inprocess_ready():
+        return _run_inprocess(alg, params)
     args = [SCRIPT, "--json", "run", f"cad2osmag:{alg}", "--"]
-    for key, value in params.items():
+    for k, value in params.items():
         for v in (value if isinstance(value, (list, tuple)) else [value]):
-            args.append(f"{key}={v}")
+            args.append(f"{k}={v}")
     proc = subprocess.run(args, capture_output=True, text=True, timeout=timeout, stdin=subprocess.DEVNULL)
+    COUNTS["headless"] += 1
     output = proc.stdout + proc.stderr
     results = None
     start = proc.stdout.find("{")
@@ -28,4 +56,53 @@ def run_alg(alg, params, timeout=600, check=True):
             results = None
     if check:
         assert proc.returncode == 0, f"cad2osmag:{alg} failed:\n{output[-4000:]}"
+    if proc.returncode == 0 and results is not None:
+        _SPAWNED.add(key)
     return proc.returncode, results, output
+
+
+def _inprocess_ready() -> bool:
+    """QGIS runs in this process (pytest-qgis starts it), Processing is initialised and the cad2osmag
+    provider registered (registered here if not; it stays for the session)."""
+    try:
+        import sys
+
+        from qgis.core import QgsApplication
+    except ImportError:
+        return False
+    app = QgsApplication.instance()
+    if app is None:
+        return False
+    registry = QgsApplication.processingRegistry()
+    if registry.providerById("native") is None:
+        plugins = os.path.join(app.pkgDataPath(), "python", "plugins")
+        if plugins not in sys.path:
+            sys.path.append(plugins)
+        from processing.core.Processing import Processing
+
+        Processing.initialize()
+    if registry.providerById("cad2osmag") is None:
+        from .conftest import plugin_package
+
+        plugin_package()
+        from cad2osmag.processing_provider.provider import Cad2OsmagProvider
+
+        _inprocess_ready.provider = Cad2OsmagProvider()  # keep a reference: the registry does not own it in Python
+        registry.addProvider(_inprocess_ready.provider)
+    return registry.providerById("cad2osmag") is not None
+
+
+def _run_inprocess(alg, params):
+    """``run_alg`` inside the test's QGIS: the parameters as the strings qgis_process would get, the results
+    through JSON as qgis_process prints them, the log lines as its output. A failed run fails the test with
+    its log (only ``check=True`` runs come here)."""
+    from .qgis_inprocess import run_alg_inprocess
+
+    values = {k: ([str(x) for x in v] if isinstance(v, (list, tuple)) else str(v)) for k, v in params.items()}
+    results, ok, feedback = run_alg_inprocess(alg, values)
+    COUNTS["inprocess"] += 1
+    output = "\n".join(feedback.lines)
+    assert ok, f"cad2osmag:{alg} failed (in the test's QGIS; CAD2OSMAG_TEST_HEADLESS=1 runs it headless):\n" \
+               f"{output[-4000:]}"
+    results = json.loads(json.dumps(results, default=str))
+    return 0, results, output

@@ -333,8 +333,9 @@ SIST_FRAMES = {"2": "4", "4": "2"}  # F2 and F4 are drawn in one frame (../share
 
 
 @pytest.mark.slow
-def test_sist_five_filtered_floors_fuse_into_one_routable_building(shared_data, tmp_path):
-    """The five filtered SIST floors, converted in a process pool of 2, fused into one building. They sit
+def test_sist_five_filtered_floors_fuse_into_one_routable_building(shared_data, tmp_path, floor_cache):
+    """The five filtered SIST floors, converted (the session's conversions, shared with test_real_plans; the
+    process pool: test_building_dwg.py), fused into one building. They sit
     kilometres apart and carry no stair/lift geometry, so every floor is registered by its outline: F2
     and F4, drawn in one frame, must come out with the same shift (registered independently, through
     different neighbours), every floor must overlap its neighbours, nothing may be lost, and the
@@ -346,13 +347,14 @@ def test_sist_five_filtered_floors_fuse_into_one_routable_building(shared_data, 
         pytest.skip(f"{folder} is missing")
     dxfs = [str(folder / f"SIST-F{k}.dxf") for k in range(1, 6)]
     t0 = time.perf_counter()
-    conv = building.convert_floors(dxfs, str(tmp_path), workers=2, variant="fix-id")
+    with floor_cache.patched():
+        conv = building.convert_floors(dxfs, str(tmp_path), workers=1, variant="fix-id")
     t1 = time.perf_counter()
     rec = RecordingProgress()
     st = building.merge_floor_files([c[0] for c in conv], str(tmp_path / "SIST.osm"), building_name="SIST",
                                     progress=rec)
     t2 = time.perf_counter()
-    print(f"SIST: convert {t1 - t0:.1f} s (pool of 2), merge {t2 - t1:.1f} s")
+    print(f"SIST: convert {t1 - t0:.1f} s, merge {t2 - t1:.1f} s")
     assert st["levels"] == ["1", "2", "3", "4", "5"]
     assert {v[3] for lv, v in st["transforms"].items() if lv != "1"} == {"footprint"}
     assert len([w for w in st["warnings"] if "registered by its outline" in w]) == 4

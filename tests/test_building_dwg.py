@@ -1,8 +1,10 @@
 """Stage 8 on the real deliverables: the original SIST sheets (F1, F3, F4, F5) and the library sheets
 (A-A3-10-04..06), straight from DWG through `pipeline` (default settings: main plan, names on), fused into
-one building each. Every sheet is converted once per test session (a process pool of 2) and cached under a
-tmp dir; the tests then read the cached floors and merged buildings. Slow: ~2-3 min on an idle 2-core
-machine (the conversion dominates)."""
+one building each. `building.convert_floors` runs on the session's conversions (tests/conftest.py
+`floor_cache`, which test_real_plans, test_semantics and test_sist_connect share: each sheet is converted once
+per session, whatever level each caller gives); the tests then read the floors and merged buildings. Slow: the
+first user of a sheet pays its conversion (~15-30 CPU s each). The process pool of `convert_floors` is tested
+on small synthetic floors (test_convert_floors_pool_gives_what_one_process_gives)."""
 from __future__ import annotations
 
 import os
@@ -63,7 +65,7 @@ KNOWN_RESIDUAL: dict = {}
 
 
 @pytest.fixture(scope="session")
-def dwg_buildings(shared_data, tmp_path_factory):
+def dwg_buildings(shared_data, tmp_path_factory, floor_cache):
     sist_dir, lib_dir = shared_data / "dwg" / "sist-original", shared_data / "dwg" / "library"
     paths = [sist_dir / n for n in SIST] + [lib_dir / n for n in LIBRARY]
     missing = [str(p) for p in paths if not p.exists()]
@@ -72,9 +74,10 @@ def dwg_buildings(shared_data, tmp_path_factory):
     out = tmp_path_factory.mktemp("dwg-floors")
     rec = RecordingProgress()
     t0 = time.perf_counter()
-    # one sheet at a time under pytest-xdist (both cores are busy already; a SIST sheet takes ~1 GB per process)
-    pool = 1 if os.environ.get("PYTEST_XDIST_WORKER") else 2
-    conv = building.convert_floors([str(p) for p in paths], str(out), workers=pool, variant="fix-id", progress=rec)
+    pool = 1  # in this process, on the session's conversions (the pool: test_convert_floors_pool_...)
+    with floor_cache.patched():
+        conv = building.convert_floors([str(p) for p in paths], str(out), workers=pool, variant="fix-id",
+                                       progress=rec)
     t_conv = time.perf_counter() - t0
     result = {"convert_seconds": t_conv, "infos": [m for k, m in rec.messages if k == "info"]}
     for key, k0, k1 in (("sist", 0, len(SIST)), ("library", len(SIST), len(paths))):
@@ -226,3 +229,18 @@ def test_roof_sheet_is_recognised_from_its_xref(shared_data):
     if not p.exists():
         pytest.skip(f"{p} is missing")
     assert building.level_from_sheet(str(p)) == "R"
+
+
+def test_convert_floors_pool_gives_what_one_process_gives(tmp_path):
+    """``building.convert_floors`` in a spawn pool of 2 (the benchmark's and users' path; the real sheets above
+    run in one process on the session's conversions): the same files, byte for byte, and the same figures as
+    one floor after the other, on two small synthetic floors."""
+    from algorithms.sample_building import generate_building
+
+    dxfs = generate_building(str(tmp_path / "src"), floors=2, seed=5)["dxf"]
+    one = building.convert_floors(dxfs, str(tmp_path / "one"), workers=1, variant="fix-id")
+    two = building.convert_floors(dxfs, str(tmp_path / "two"), workers=2, variant="fix-id")
+    assert [os.path.basename(c[0]) for c in two] == ["sample-F1.osm", "sample-F2.osm"]
+    assert [c[2:] for c in two] == [c[2:] for c in one] and all(c[2] > 5 for c in one)
+    for a, b in zip(one, two):
+        assert open(a[0], "rb").read() == open(b[0], "rb").read()

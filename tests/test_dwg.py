@@ -423,8 +423,8 @@ def test_every_shared_sheet_reads(shared_data, rel):
 
 
 @pytest.mark.slow
-def test_sist_f1_names_and_attributes(shared_data):
-    d = import_dxf(_sheet(shared_data, "sist-original/SIST-F1.dwg"))
+def test_sist_f1_names_and_attributes(shared_data, floor_cache):
+    d = floor_cache.import_dxf(_sheet(shared_data, "sist-original/SIST-F1.dwg"))  # the session's read
     attrib = {t.text for t in d.texts if t.entity == "ATTRIB"}
     text = {t.text for t in d.texts if t.entity != "ATTRIB"}
     assert {"E1-ST-01", "E1-ST-03", "E2-P1"} <= attrib  # stair and lift tags are block attributes

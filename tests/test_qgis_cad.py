@@ -160,8 +160,8 @@ def test_all_three_on_every_real_plan(tmp_path, shared_data, provider):
     assert len(files) >= 13
 
     def run(alg, params, headless):
-        if headless:
-            return run_alg(alg, params)[1]
+        if headless:  # the command line on a real drawing (even where this file ran the algorithm headless before)
+            return run_alg(alg, params, headless=True)[1]
         res, ok, fb = run_alg_inprocess(alg, params)
         assert ok, f"{alg} on {params.get('INPUT') or params.get('WALLS')}:\n" + "\n".join(fb.lines)
         return res
@@ -189,3 +189,30 @@ def test_all_three_on_every_real_plan(tmp_path, shared_data, provider):
         grids.append(read_grid(str(tif)))
     assert grids[0].shape == grids[1].shape
     assert grids[0].geotransform == pytest.approx(grids[1].geotransform, abs=1e-6)
+
+
+def test_a_second_run_in_a_file_runs_in_process_and_gives_what_qgis_process_gives(tmp_path, monkeypatch):
+    """tests/qgis_process.run_alg: the first run of an algorithm in a test file spawns qgis_process, the next
+    ones run the same Processing class in the test's QGIS (no QGIS start); both give the same results and
+    files (a failure path, check=False, always spawns: test_bad_inputs_fail_clearly_without_output)."""
+    from . import qgis_process
+
+    dxf = _plan(tmp_path / "plan.dxf")
+    monkeypatch.setattr(qgis_process, "_SPAWNED", set())
+    monkeypatch.delenv("CAD2OSMAG_TEST_HEADLESS", raising=False)
+    before = dict(qgis_process.COUNTS)
+    outs = []
+    for k in range(2):
+        _, res, log = run_alg("extractstructure", {"INPUT": dxf, "WALLS": str(tmp_path / f"w{k}.gpkg"),
+                                                   "TEXTS": str(tmp_path / f"t{k}.gpkg")})
+        outs.append((res, log))
+    assert qgis_process.COUNTS["headless"] == before["headless"] + 1
+    assert qgis_process.COUNTS["inprocess"] == before["inprocess"] + 1
+    (a, log_a), (b, log_b) = outs
+    assert {k: v for k, v in a.items() if k not in ("WALLS", "TEXTS")} == \
+        {k: v for k, v in b.items() if k not in ("WALLS", "TEXTS")}
+    assert a["WALLS"] == str(tmp_path / "w0.gpkg") and b["WALLS"] == str(tmp_path / "w1.gpkg")
+    assert "Kept 7 features" in log_a and "Kept 7 features" in log_b
+    rows = [sorted(_gpkg_rows(tmp_path / f"w{k}.gpkg", f'select layer, kind, entity, width from "{_table(tmp_path / f"w{k}.gpkg")}"'))
+            for k in range(2)]
+    assert rows[0] == rows[1] and len(rows[0]) == 7

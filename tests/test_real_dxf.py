@@ -4,7 +4,7 @@ import re
 import numpy as np
 import pytest
 
-from algorithms.cad_import import import_dxf, list_layers
+from algorithms.cad_import import list_layers
 from algorithms.model import FREE, OCCUPIED
 from algorithms.rasterize import floor_grids, floor_offsets, rasterize
 
@@ -29,21 +29,21 @@ def _free_stats(grid):
 
 
 @pytest.fixture(scope="module")
-def archweb(shared_data):
+def archweb(shared_data, floor_cache):
     files = sorted((shared_data / "dxf" / "archweb").glob("*.dxf"))
     assert len(files) >= 8
     out = {}
     for f in files:
-        d = import_dxf(str(f))
+        d = floor_cache.import_dxf(f)  # what the session's conversions read (tests/conftest.py)
         out[f.stem] = (d, rasterize(d.geometries))
     return out
 
 
 @pytest.fixture(scope="module")
-def sist(shared_data):
+def sist(shared_data, floor_cache):
     files = sorted((shared_data / "dxf" / "sist").glob("SIST-F*.dxf"))
     assert len(files) == 5
-    return [import_dxf(str(f)) for f in files]
+    return [floor_cache.import_dxf(f) for f in files]
 
 
 def test_archweb_units_are_chosen_by_plausibility(archweb):

@@ -146,13 +146,6 @@ def test_sample_building_rooms_and_doors(sample_floor):
             assert abs(p.width - f["properties"]["width"]) < 0.35
 
 
-def _cad_grid(path):
-    from algorithms.cad_import import import_dxf
-    from algorithms.rasterize import rasterize
-
-    return rasterize(import_dxf(str(path)).geometries)
-
-
 def _envelope_by_closing(grid, radius_m=1.0):
     """An independent building envelope: walls closed with a disk, holes filled."""
     import cv2
@@ -175,11 +168,14 @@ def _cad_files(shared_data):
 
 
 @pytest.fixture(scope="module")
-def cad_results(shared_data):
+def cad_results(shared_data, floor_cache):
+    """Stage 3 of every shared DXF plan as the pipeline runs it (walls and sheet boundary rasterised, door hints,
+    room-name points inside): the session's conversions (tests/conftest.py ``floor_cache``, which test_real_plans
+    and test_building share), not a segmentation of its own."""
     out = {}
     for path in _cad_files(shared_data):
-        grid = _cad_grid(path)
-        out[path.stem] = (grid, seg.segment(grid))
+        floor = floor_cache.process_floor(path)
+        out[path.stem] = (floor.grid, floor.segmented)
     return out
 
 
@@ -207,10 +203,8 @@ def test_cad_floors_properties(cad_results):
             assert ag.stats["interior_area_m2"] > 3000, name
 
 
-def test_sist_floor_connected_and_deterministic(cad_results):
+def test_sist_floor_connected(cad_results):
     grid, ag = cad_results["SIST-F3"]
-    again = seg.segment(grid)
-    assert np.array_equal(again.labels, ag.labels)
     # the biggest connected group of areas holds most of the floor
     adj = {a.id: set() for a in ag.areas}
     for p in ag.passages:
@@ -231,3 +225,17 @@ def test_sist_floor_connected_and_deterministic(cad_results):
         seen |= comp
         best = max(best, sum(area[i] for i in comp))
     assert best >= 0.8 * sum(area.values())
+
+
+def test_plain_segmentation_of_a_real_plan_is_deterministic_and_covers_it(cad_results):
+    """``segment(grid)`` with nothing but the raster (the Processing path from a rasterised layer, no texts or
+    door hints), twice on the smallest shared plan's grid: the same labels, and the checks above hold."""
+    name = min(cad_results, key=lambda k: cad_results[k][0].data.size)
+    grid = cad_results[name][0]
+    ag, again = seg.segment(grid), seg.segment(grid)
+    assert np.array_equal(again.labels, ag.labels)
+    assert [a.polygon.wkt for a in again.areas] == [a.polygon.wkt for a in ag.areas]
+    assert [a.id for a in ag.areas] == list(range(1, len(ag.areas) + 1)) and len(ag.areas) >= 5, name
+    covered = ag.labels > 0
+    assert covered.sum() * grid.resolution ** 2 >= 0.9 * ag.stats["interior_area_m2"], name
+    assert covered[_envelope_by_closing(grid)].mean() >= 0.9, name

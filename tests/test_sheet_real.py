@@ -37,17 +37,17 @@ def _plans(d, kind="plan"):
 
 
 # ------------------------------------------------------------------------------------------ ArchWeb
-def test_office_plan_keeps_its_doorways_open_with_door_hints():
-    d = import_dxf(_need(os.path.join(ARCHWEB, "office.dxf")))
+def test_office_plan_keeps_its_doorways_open_with_door_hints(floor_cache):
+    d = floor_cache.import_dxf(_need(os.path.join(ARCHWEB, "office.dxf")))
     assert len(d.doors) >= 25  # 30 measured: the 'doors' layer's swings, jamb to jamb
     assert all(0.5 <= h.width <= 2.0 for h in d.doors)
     assert d.classes["door"] > 1000  # the door layer (leaves, swings, frames) is left out
     assert not any(g.kind == "door" for g in d.geometries)
 
 
-def test_museum_sheet_takes_the_plan_not_the_section():
+def test_museum_sheet_takes_the_plan_not_the_section(floor_cache):
     """The section 1-1 above the plan has more wall mass than the plan: its title makes it a detail."""
-    d = import_dxf(_need(os.path.join(ARCHWEB, "historical_museum.dxf")))
+    d = floor_cache.import_dxf(_need(os.path.join(ARCHWEB, "historical_museum.dxf")))
     assert [p.kind for p in d.plans] == ["plan", "detail"]
     assert "section" in d.plans[1].title.lower() and d.plans[1].wall_length > d.plans[0].wall_length
     x0, y0, x1, y1 = d.plans[0].extent
@@ -55,8 +55,8 @@ def test_museum_sheet_takes_the_plan_not_the_section():
     assert len(d.doors) >= 30
 
 
-def test_kindergarten_sheet_has_two_floor_plans_side_by_side_and_sections():
-    d = import_dxf(_need(os.path.join(ARCHWEB, "kindergarten-1.dxf")))
+def test_kindergarten_sheet_has_two_floor_plans_side_by_side_and_sections(floor_cache):
+    d = floor_cache.import_dxf(_need(os.path.join(ARCHWEB, "kindergarten-1.dxf")))
     plans = _plans(d)
     assert len(plans) == 2  # levels 1 and 2 drawn side by side: two plans, never merged
     assert plans[0].extent[2] < plans[1].extent[0]
@@ -68,8 +68,8 @@ def test_kindergarten_sheet_has_two_floor_plans_side_by_side_and_sections():
 
 
 @pytest.mark.parametrize("name", sorted(os.listdir(ARCHWEB)) if os.path.isdir(ARCHWEB) else [])
-def test_every_archweb_plan_finds_one_main_plan(name):
-    d = import_dxf(os.path.join(ARCHWEB, name))
+def test_every_archweb_plan_finds_one_main_plan(name, floor_cache):
+    d = floor_cache.import_dxf(os.path.join(ARCHWEB, name))
     assert d.plans[0].selected and d.plans[0].kind == "plan"
     assert [t.id for t in d.texts] == list(range(len(d.texts)))
 
@@ -89,8 +89,8 @@ SHEETS = {
 
 
 @pytest.mark.parametrize("sheet", sorted(SHEETS))
-def test_dwg_sheet_plans(sheet):
-    d = import_dxf(_need_dwg(os.path.join(DWG, sheet)))
+def test_dwg_sheet_plans(sheet, floor_cache):
+    d = floor_cache.import_dxf(_need_dwg(os.path.join(DWG, sheet)))
     n, (wlo, whi), (hlo, hhi) = SHEETS[sheet]
     main = d.plans[0]
     assert main.selected and main.kind == "plan"
@@ -102,13 +102,13 @@ def test_dwg_sheet_plans(sheet):
     assert len(d.doors) >= 40  # door blocks / swings found on every sheet (44-151 measured)
 
 
-def test_library_roof_sheet_still_finds_a_plan():
-    d = import_dxf(_need_dwg(os.path.join(DWG, "library", "A-A3-10-08.dwg")))
+def test_library_roof_sheet_still_finds_a_plan(floor_cache):
+    d = floor_cache.import_dxf(_need_dwg(os.path.join(DWG, "library", "A-A3-10-08.dwg")))
     assert d.plans[0].selected and d.plans[0].kind == "plan" and d.plans[0].wall_length > 100
 
 
-def test_sist_f1_original_picks_the_main_plan_not_a_detail():
-    d = import_dxf(_need_dwg(os.path.join(DWG, "sist-original", "SIST-F1.dwg")))
+def test_sist_f1_original_picks_the_main_plan_not_a_detail(floor_cache):
+    d = floor_cache.import_dxf(_need_dwg(os.path.join(DWG, "sist-original", "SIST-F1.dwg")))
     main = d.plans[0]
     assert main.selected and main.kind == "plan" and main.wall_length > 3000
     assert all(np.nanmin(g.coords[:, 0]) >= main.extent[0] - 1 and np.nanmax(g.coords[:, 0]) <= main.extent[2] + 1
