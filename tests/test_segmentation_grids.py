@@ -374,9 +374,10 @@ def test_wall_line_continues_beyond_a_free_standing_block(on, monkeypatch):
         assert _main(ag, *bay) == _main(ag, *corridor)
 
 
-def test_block_extension_only_for_free_standing_blocks():
+def test_block_extension_only_for_free_standing_blocks(monkeypatch):
     """An opening that ends on wall mass (the stub of the plan without the block) gets no
     continuation; one that ends on the block gets one, from the block's far side to the partition."""
+    monkeypatch.setattr(seg, "BLOCK_CUTS", True)
     grid, _, _ = _bay_behind_block()
     space = grid.data == FREE
     wall = ~space
