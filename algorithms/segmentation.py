@@ -1609,6 +1609,57 @@ def _wall_line_openings(space: np.ndarray, labels: np.ndarray, resolution: float
     return out
 
 
+BLOCK_CUTS = False  # a wall line that ends on a free-standing block continues beyond it to the next obstacle ...
+BLOCK_EXTENT_M = 3.5  # ... a block: an obstacle component at most this long and wide, away from the map border
+
+
+def _block_extensions(space: np.ndarray, wall: np.ndarray, openings, resolution: float, max_cut_m: float) -> dict:
+    """Where a wall-line opening ends on a free-standing block (an obstacle component no longer than
+    ``BLOCK_EXTENT_M`` either way, not touching the map border: a cabinet, a table drawn as an
+    outline, a scanned U of furniture), the room is not closed there: it meets the space it opens
+    onto again around the block (intel_map's bottom-left corner room). The wall's line continues
+    through the block to the next obstacle beyond it; that free run (at most ``max_cut_m``) is cut
+    with the opening, so cut + block + cut span wall to wall. The opening itself is judged as before
+    (its own run). Returns {opening index: (x0, y0, x1, y1) of the continuation}."""
+    import cv2
+
+    if not BLOCK_CUTS or not openings:
+        return {}
+    rows, cols = wall.shape
+    n, comp, st, _ = cv2.connectedComponentsWithStats(wall.view(np.uint8), connectivity=8, ltype=cv2.CV_32S)
+    ext_px = BLOCK_EXTENT_M / resolution
+    x0s, y0s = st[:, cv2.CC_STAT_LEFT], st[:, cv2.CC_STAT_TOP]
+    x1s, y1s = x0s + st[:, cv2.CC_STAT_WIDTH], y0s + st[:, cv2.CC_STAT_HEIGHT]
+    block = ((st[:, cv2.CC_STAT_WIDTH] <= ext_px) & (st[:, cv2.CC_STAT_HEIGHT] <= ext_px) & (x0s > 0) & (y0s > 0)
+             & (x1s < cols) & (y1s < rows))
+    block[0] = False
+    max_px = max_cut_m / resolution
+    reach = int(math.ceil(max_px + 1.5 * ext_px)) + 4
+    t = np.arange(1, reach, dtype=np.float64)
+    out = {}
+    for i, (key, _, (uy, ux)) in enumerate(openings):
+        xs = np.rint(key[2] + ux * t).astype(np.int64)
+        ys = np.rint(key[3] + uy * t).astype(np.int64)
+        inb = (xs >= 0) & (xs < cols) & (ys >= 0) & (ys < rows)
+        if not inb[0]:
+            continue
+        xs, ys = np.clip(xs, 0, cols - 1), np.clip(ys, 0, rows - 1)
+        c = int(comp[ys[0], xs[0]])
+        if c == 0 or not block[c]:
+            continue
+        mine = (comp[ys, xs] == c) & inb
+        last = int(np.flatnonzero(mine).max())  # through the block (and any space inside its outline)
+        after = space[ys[last + 1:], xs[last + 1:]] & inb[last + 1:]
+        if len(after) == 0 or not after[0] or after.all():
+            continue
+        stop = int(np.argmin(after))
+        j = last + 1 + stop
+        if not inb[j] or stop > max_px or comp[ys[j], xs[j]] == c:
+            continue
+        out[i] = (int(xs[last + 1]), int(ys[last + 1]), int(xs[j - 1]), int(ys[j - 1]))
+    return out
+
+
 def _judge_opening(comp: np.ndarray, find, key, run: float, ux: float, uy: float, roots, min_area: float):
     """Whether an opening (cut ``key`` = x0, y0, x1, y1 in ``comp``'s frame, ``run`` px long, along
     (ux, uy)) is a door between the pieces ``roots``: measured in the band up to ``run`` behind the
@@ -1649,7 +1700,7 @@ def _judge_opening(comp: np.ndarray, find, key, run: float, ux: float, uy: float
 
 def _split_at_wall_openings(labels: np.ndarray, space: np.ndarray, resolution: float, max_cut_m: float,
                             dist: np.ndarray, peaks: dict, grown: dict, occupied: Optional[np.ndarray] = None,
-                            openings=None, jog_px: int = 0):
+                            openings=None, jog_px: int = 0, extensions=None):
     """Rooms open to a corridor (or to each other) through an opening wider than a door but in a
     wall line: the wall's own line continued across the opening cuts the area in two when the
     opening is clearly narrower than the spaces on both sides measured along the line
@@ -1669,6 +1720,11 @@ def _split_at_wall_openings(labels: np.ndarray, space: np.ndarray, resolution: f
     cut_id = np.zeros(labels.shape, np.int32)
     for i, (key, _, _) in enumerate(openings, start=1):
         cv2.line(cut_id, key[:2], key[2:], i, 1, lineType=8)
+    n_open = len(openings)
+    ext_parent = {}
+    for i, e in (extensions or {}).items():  # beyond a free-standing block (``_block_extensions``): cut with
+        ext_parent[n_open + 1 + i] = i + 1  # its opening, but the opening is judged by its own pieces
+        cv2.line(cut_id, e[:2], e[2:], n_open + 1 + i, 1, lineType=8)
     cut = (cut_id > 0) & (labels > 0)
     groups = np.unique(labels[cut])
     next_id = int(labels.max()) + 1
@@ -1691,7 +1747,7 @@ def _split_at_wall_openings(labels: np.ndarray, space: np.ndarray, resolution: f
         ids = cid[rr, cc]
         nbs = np.concatenate([pad[rr + 1 + dr, cc + 1 + dc] for dr, dc in ((-1, 0), (1, 0), (0, -1), (0, 1))])
         oid = np.tile(ids, 4)
-        m = nbs > 0
+        m = (nbs > 0) & (oid <= n_open)
         pair_keys = np.unique(oid[m].astype(np.int64) * (n + 1) + nbs[m])
         pairs = {}
         for o, p in zip((pair_keys // (n + 1)).tolist(), (pair_keys % (n + 1)).tolist()):
@@ -1718,6 +1774,13 @@ def _split_at_wall_openings(labels: np.ndarray, space: np.ndarray, resolution: f
                 if len(roots) == 2:
                     flags = _judge_opening(comp, uf.find, tuple((np.array(key) - off).tolist()), run, ux, uy, roots,
                                            min_area)
+                    if flags is None and (o - 1) in (extensions or {}):  # the free run beyond the block
+                        e = np.array(extensions[o - 1]) - off
+                        h, w = comp.shape
+                        if e[[0, 2]].min() >= 0 and e[[0, 2]].max() < w and e[[1, 3]].min() >= 0 and e[[1, 3]].max() < h:
+                            flags = _judge_opening(comp, uf.find, tuple(e.tolist()),
+                                                   math.hypot(e[2] - e[0], e[3] - e[1]) + 1.0, ux, uy, roots,
+                                                   min_area)
                 # the space entered through the door (not running along the wall on both sides of
                 # it) is a room: corridors are not cut at their junctions
                 room = [p_area[r] < CORRIDOR_ELONGATION * (2.0 * p_peak[r]) ** 2 for r in roots]
@@ -1739,7 +1802,8 @@ def _split_at_wall_openings(labels: np.ndarray, space: np.ndarray, resolution: f
         if not accepted:
             continue
         # the area is cut only along the openings kept
-        acc = np.isin(cid, np.fromiter(accepted, np.int64))
+        acc_ids = list(accepted) + [e for e, o in ext_parent.items() if o in accepted]
+        acc = np.isin(cid, np.fromiter(acc_ids, np.int64))
         n2, comp2, st2, _ = cv2.connectedComponentsWithStats((mine & ~acc).view(np.uint8), connectivity=4,
                                                              ltype=cv2.CV_32S)
         if n2 <= 2:
@@ -1794,12 +1858,17 @@ def _wall_line_doors(labels: np.ndarray, space: np.ndarray, dist: np.ndarray, re
     openings = _wall_line_openings(space, labels, resolution, max_cut_m, occupied, jambs=JAMB_CUTS, jog_px=jog)
     if JAMB_CUTS:
         openings, jamb_ops = openings
+    ext = _block_extensions(space, ~space if occupied is None else occupied, openings, resolution,
+                            max_cut_m) if scanned else None
     labels, n_cuts = _split_at_wall_openings(labels, space, resolution, max_cut_m, dist, peaks, grown, occupied,
-                                             openings=openings)
+                                             openings=openings, extensions=ext)
+    stats["block_cuts"] = float(len(ext or ()))
     stats["wall_line_doors"] = float(n_cuts)
     if jamb_ops:  # after the wall lines: a jamb's cut across a corridor is judged with the rooms already apart
+        jext = _block_extensions(space, ~space if occupied is None else occupied, jamb_ops, resolution,
+                                 max_cut_m) if scanned else None
         labels, n_jambs = _split_at_wall_openings(labels, space, resolution, max_cut_m, dist, peaks, grown,
-                                                  occupied, openings=jamb_ops)
+                                                  occupied, openings=jamb_ops, extensions=jext)
         stats["jamb_doors"] = float(n_jambs)
     if peaks or grown:
         top = max(list(peaks) + list(grown))

@@ -339,3 +339,54 @@ def test_cad_rasters_do_not_jog():
     data = np.where(grid.data == UNKNOWN, OCCUPIED, grid.data).astype(np.uint8)
     ag = seg.segment(OccupancyGrid(data, grid.origin_x, grid.origin_y, RES))
     assert _main(ag, *bay) == _main(ag, *corridor)
+
+
+# ------------------------------------------------- wall lines that end on a free-standing block
+def _bay_behind_block():
+    """The recorded corridor and bay of ``_bay_beside_jogged_wall`` (no jog), its wall stub 1 m
+    shorter (y 1..3: a 4 m opening) and a 0.45 x 0.5 m block (a cabinet, x 3.3..3.75, y 3.5..4)
+    standing free in the opening: the stub's line meets the block after 0.5 m, and beyond the block
+    3 m of free space lead to the partition's end (y 7). The partition ends at a corner (the bay's
+    south wall runs on from it), so only the stub's line is a candidate, and the bay meets the
+    corridor round the block."""
+    grid, bay, corridor = _bay_beside_jogged_wall(jog_px=0)
+    img = grid.data.copy()
+    img[_px(3):_px(4), _px(3.4):_px(3.65)] = FREE
+    img[_px(3.5):_px(4), _px(3.3):_px(3.75)] = OCCUPIED
+    return OccupancyGrid(img, grid.origin_x, grid.origin_y, RES), bay, corridor
+
+
+@pytest.mark.parametrize("on", [False, True])
+def test_wall_line_continues_beyond_a_free_standing_block(on, monkeypatch):
+    """``_block_extensions``: the opening ends on a block, so the cut alone does not close the bay
+    (it meets the corridor again round the block); continued through the block to the stub beyond,
+    cut + block + cut span wall to wall and the bay is a room. With the rule off the bay stays part
+    of the corridor."""
+    monkeypatch.setattr(seg, "BLOCK_CUTS", on)
+    grid, bay, corridor = _bay_behind_block()
+    ag = seg.segment(grid)
+    if on:
+        assert ag.stats["block_cuts"] >= 1
+        assert _main(ag, *bay) != _main(ag, *corridor)
+        d = _labels_in(ag, *bay)
+        assert max(d.values()) >= 0.97 * sum(d.values()), d
+    else:
+        assert _main(ag, *bay) == _main(ag, *corridor)
+
+
+def test_block_extension_only_for_free_standing_blocks(monkeypatch):
+    """An opening that ends on wall mass (the stub of the plan without the block) gets no
+    continuation; one that ends on the block gets one, from the block's far side to the partition."""
+    monkeypatch.setattr(seg, "BLOCK_CUTS", True)
+    grid, _, _ = _bay_behind_block()
+    space = grid.data == FREE
+    wall = ~space
+    ops = [((_px(3.5), _px(3), _px(3.5), _px(3.5) - 1), 10.0, (1.0, 0.0))]
+    ext = seg._block_extensions(space, wall, ops, RES, 4.0)
+    assert 0 in ext
+    x0, y0, x1, y1 = ext[0]
+    assert x0 == x1 == _px(3.5) and y0 == _px(4) and y1 == _px(7) - 1  # the 3 m beyond the block
+    plain, _, _ = _bay_beside_jogged_wall(jog_px=0)
+    space = plain.data == FREE
+    assert seg._block_extensions(space, ~space, [((_px(3.5), _px(7) - 1, _px(3.5), _px(4)), 60.0, (-1.0, 0.0))],
+                                 RES, 4.0) == {}
