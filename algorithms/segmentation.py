@@ -1609,7 +1609,7 @@ def _wall_line_openings(space: np.ndarray, labels: np.ndarray, resolution: float
     return out
 
 
-BLOCK_CUTS = False  # a wall line that ends on a free-standing block continues beyond it to the next obstacle ...
+BLOCK_CUTS = True  # a wall line that ends on a free-standing block continues beyond it to the next obstacle ...
 BLOCK_EXTENT_M = 3.5  # ... a block: an obstacle component at most this long and wide, away from the map border
 
 
