@@ -177,6 +177,7 @@ def read_floor(path: str, frame, progress=None) -> FloorData:
     areas, passages = osmag.to_frame(areas, passages, frame)
     for a in areas:
         a.polygon = valid_polygon(a.polygon)
+    _attach_passage_ends(areas, passages)
     dropped = [(wid, f"{key}='{val}' names no area of the file") for wid, key, val in report["dangling_refs"]
                if key in ("osmAG:from", "osmAG:to")]
     dropped += [(wid, f"missing nodes {miss[:3]}") for wid, miss in report["dangling_nodes"].items()
@@ -200,6 +201,43 @@ def read_floor(path: str, frame, progress=None) -> FloorData:
     _split_structures(fl, [a for a in areas if a.type == "structure"], ids)
     fl.areas = [a for a in areas if a.type != "structure"]
     return fl
+
+
+#: a passage end this close to its area's ring but not on it (written by another tool at 7 decimals, ~1 cm,
+#: or a ring opened at a pinch) becomes a vertex of that ring, so the fused file shares its node
+PASSAGE_END_TOL = 0.01
+
+
+def _attach_passage_ends(areas: List[Area], passages: List[Passage], tol: float = PASSAGE_END_TOL) -> int:
+    """Insert every passage end lying within ``tol`` of one of its two areas' exterior ring, but not on it,
+    into that ring as a vertex (on the nearest edge), when the ring stays valid. Returns the count."""
+    import shapely
+    from shapely.geometry import Point, Polygon
+
+    by_id = {a.id: a for a in areas}
+    n = 0
+    for p in passages:
+        if p.line is None or p.line.is_empty:
+            continue
+        for aid in (p.from_id, p.to_id):
+            a = by_id.get(aid)
+            if a is None or getattr(a.polygon, "geom_type", "") != "Polygon" or a.polygon.is_empty:
+                continue
+            for c in (p.line.coords[0], p.line.coords[-1]):
+                ext = a.polygon.exterior
+                pt = Point(c[:2])
+                d = ext.distance(pt)
+                if not (1e-9 < d <= tol):
+                    continue
+                xy = np.asarray(ext.coords, float)[:, :2]
+                segs = shapely.linestrings(np.stack([xy[:-1], xy[1:]], axis=1))
+                k = int(np.argmin(shapely.distance(segs, pt)))
+                new = np.insert(xy, k + 1, np.asarray(c[:2], float), axis=0)
+                cand = Polygon(new, [list(r.coords) for r in a.polygon.interiors])
+                if cand.is_valid and abs(cand.area - a.polygon.area) <= max(tol * tol, 1e-4 * a.polygon.area):
+                    a.polygon = cand
+                    n += 1
+    return n
 
 
 def _split_structures(fl: FloorData, structures: List[Area], ids) -> None:

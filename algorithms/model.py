@@ -5,8 +5,9 @@ stage says otherwise. Polygons and lines are shapely 2 geometries.
 """
 from __future__ import annotations
 
+import itertools
 from dataclasses import dataclass, field
-from typing import Dict, List, Optional, Tuple
+from typing import Dict, List, Optional, Sequence, Tuple
 
 import numpy as np
 
@@ -207,11 +208,103 @@ class AreaGraph:
 
 def valid_polygon(poly):
     """A polygon that touches or crosses itself (a ring pinched after a coordinate round trip, e.g. through
-    lon/lat at 7 decimals, ~1 cm, or a pixel outline meeting itself) is repaired with ``buffer(0)``, keeping
-    the largest part if it splits (the slivers are below a few cm²). Anything else is returned as given."""
+    lon/lat at 7 decimals, ~1 cm, or a pixel outline meeting itself) is repaired: a ring that passes one
+    vertex twice is opened there and stays one ring (:func:`open_ring_pinches`; ``buffer(0)`` would turn the
+    loop round a void into a hole, which an osmAG area cannot hold); anything else with ``buffer(0)``, keeping
+    the largest part if it splits (the slivers are below a few cm²). A valid polygon is returned as given."""
     if poly is None or getattr(poly, "geom_type", "") != "Polygon" or poly.is_empty or poly.is_valid:
         return poly
+    opened = open_ring_pinches(poly)  # a ring touching itself at a vertex stays one ring
+    if opened is not None:
+        return opened
     fixed = poly.buffer(0)
     if fixed.geom_type == "MultiPolygon":
         fixed = max(fixed.geoms, key=lambda g: g.area)
     return fixed if fixed.geom_type == "Polygon" and not fixed.is_empty else poly
+
+
+#: how far :func:`open_ring_pinches` moves a repeated vertex into its own corner (metres): well above the
+#: precision areas are written with (lon/lat at 10 decimals, ~0.01 mm; 7 decimals, ~1 cm, in other tools'
+#: files is covered by the read-side tolerance) and far below anything a robot map resolves
+PINCH_OPEN = 0.005
+
+
+def _inward_offsets(xy: np.ndarray, idx: Sequence[int], dist: float) -> np.ndarray:
+    """Points ``dist`` from the vertices ``xy[idx]`` of the open ring ``xy`` (counter-clockwise) along
+    the bisector of their corner, into the ring's interior (left of both edges)."""
+    n = len(xy)
+    out = []
+    for i in idx:
+        p, x, q = xy[(i - 1) % n], xy[i], xy[(i + 1) % n]
+        u1, u2 = x - p, q - x
+        u1 = u1 / max(float(np.hypot(*u1)), 1e-300)
+        u2 = u2 / max(float(np.hypot(*u2)), 1e-300)
+        b = np.array([-u1[1], u1[0]]) + np.array([-u2[1], u2[0]])
+        nb = float(np.hypot(*b))
+        if nb < 1e-9:  # a spike (the ring turns back on itself): step along its inward side
+            b, nb = np.array([-u1[1], u1[0]]), 1.0
+        out.append(x + b / nb * dist)
+    return np.asarray(out, dtype=float).reshape(-1, 2)
+
+
+def pinch_indices(ids: Sequence) -> List[int]:
+    """Positions of an open ring (a sequence of vertex keys: node ids or coordinate tuples) that repeat
+    a vertex met earlier on the ring: the ring touches itself there (a "pinch")."""
+    seen = set()
+    out = []
+    for k, v in enumerate(ids):
+        if v in seen:
+            out.append(k)
+        seen.add(v)
+    return out
+
+
+def open_pinched_ring(xy: np.ndarray, reps: Sequence[int], dist: float = PINCH_OPEN, holes=()) -> Optional[np.ndarray]:
+    """The open counter-clockwise ring ``xy`` with its repeated visits ``reps`` (:func:`pinch_indices`)
+    moved ``dist`` into their corner, or out of it, whichever gives a valid polygon (with ``holes``); None if
+    neither does."""
+    from shapely.geometry import Polygon
+
+    xy = np.asarray(xy, dtype=float)
+    reps = list(reps)
+    # a slit into the area opens into its corner (+), a spike out of it (a zero-width finger: the ring goes
+    # out and back along the same nodes) opens the other way (-); each visit may need either
+    signs = list(itertools.product((1.0, -1.0), repeat=len(reps))) if len(reps) <= 6 else [(1.0,), (-1.0,)]
+    for scale in (1.0, 0.2, 4.0):
+        step = _inward_offsets(xy, reps, dist * scale) - xy[reps]
+        for sg in signs:
+            new = xy.copy()
+            new[reps] = xy[reps] + step * np.asarray(sg, float).reshape(-1, 1)
+            fixed = Polygon(new, list(holes))
+            if fixed.is_valid and not fixed.is_empty:
+                return new
+    return None
+
+
+def open_ring_pinches(poly, dist: float = PINCH_OPEN):
+    """A polygon whose exterior ring touches itself at a vertex (the ring passes the same point twice, as
+    an osmAG way round an atrium void does when its two sides meet at one node) as *one* ring: every
+    repeated visit after the first is moved ``dist`` into its own corner (or out of it, for a zero-width
+    spike: the ring going out and back along the same nodes), so the loop stays part of the
+    exterior instead of becoming a hole (``buffer(0)`` would make it one, and an osmAG area drops holes).
+    The first visit keeps its exact position (a node shared with neighbours and passages stays shared).
+    Returns the valid polygon, or None when the ring has no such pinch or is still invalid after opening it
+    (crossing edges rather than a touch)."""
+    from shapely.geometry import Polygon
+
+    if poly is None or getattr(poly, "geom_type", "") != "Polygon" or poly.is_empty:
+        return None
+    xy = np.asarray(poly.exterior.coords, dtype=float)[:-1, :2]
+    if len(xy) < 4:
+        return None
+    ccw = poly.exterior.is_ccw
+    if not ccw:
+        xy = xy[::-1]
+    reps = pinch_indices([tuple(p) for p in xy.tolist()])
+    if not reps:
+        return None
+    holes = [np.asarray(r.coords)[::-1] if r.is_ccw else np.asarray(r.coords) for r in poly.interiors]
+    new = open_pinched_ring(xy, reps, dist, holes)
+    if new is None:
+        return None
+    return Polygon(new if ccw else new[::-1], [list(r.coords) for r in poly.interiors])

@@ -41,7 +41,7 @@ import numpy as np
 
 from .errors import InputError
 from .io_utils import atomic_write
-from .model import Area, Passage
+from .model import PINCH_OPEN, Area, Passage, open_pinched_ring, pinch_indices
 from .progress import ensure
 
 AREA_TYPES = ("room", "corridor", "stairs", "elevator", "structure")
@@ -231,7 +231,7 @@ def write_osmag_levels(path: str, floors: Sequence[FloorLayer], frame=None, crs=
         groups.append([])
         group_passages.append(list(vertical_passages))
     V_all, ring_of_area, pend = [], {}, []  # global vertex table, area index -> ring, passage ends
-    holes = n_ins = 0
+    holes = n_ins = n_pinch = 0
     offset = 0
     for g_areas, g_pass in zip(groups, group_passages):
         pxy = np.array([[p.line.coords[0][:2], p.line.coords[-1][:2]] for p in g_pass],
@@ -241,6 +241,7 @@ def write_osmag_levels(path: str, floors: Sequence[FloorLayer], frame=None, crs=
         if g_areas:
             part = _Partition([polys[k] for k in g_areas], pxy, q)
             n_ins += part.node()
+            n_pinch += _open_pinches(part)
             holes += int(part.ring_hole.sum())
             for ri, (f, h) in enumerate(zip(part.ring_face, part.ring_hole)):
                 if not h:
@@ -256,6 +257,9 @@ def write_osmag_levels(path: str, floors: Sequence[FloorLayer], frame=None, crs=
     pe = np.concatenate(pend) if pend else np.zeros((0, 2), np.int64)
     all_passages: List[Passage] = [p for g in group_passages for p in g]
     n_vertical = len(vertical_passages)
+    if n_pinch:
+        progress.info(f"osmAG: {n_pinch} ring vertices visited twice (a ring touching itself) moved "
+                      f"{PINCH_OPEN * 1000:g} mm apart so every area stays one simple closed way")
     if holes:  # by design, so an info line rather than a warning
         progress.info(f"osmAG: {holes} holes (pillars) left out: an osmAG area is one closed way")
     used = np.zeros(len(V), bool)
@@ -449,6 +453,34 @@ def write_osmag_levels(path: str, floors: Sequence[FloorLayer], frame=None, crs=
                        f"{f' ({n_vertical} vertical)' if n_vertical else ''}, "
                        f"{stats['nodes']} nodes ({stats['shared_nodes']} shared) to {path}")
     return stats
+
+
+def _open_pinches(part) -> int:
+    """Rings of ``part`` (a refine._Partition after ``node()``) that visit one node twice: the area's
+    polygon had a neck or a zero-width finger narrower than the shared-node precision, so two of its
+    vertices became one node (or a vertex was inserted into its own ring's edge). Such a way reads back as
+    a self-touching ring, which a reader repairs by making the loop a hole or by cutting the finger off;
+    passages on it then leave the area. Every repeated visit after the first becomes a new node moved
+    ``model.PINCH_OPEN`` into (or out of) its corner, so the ring is simple; the first visit keeps the
+    shared node. Returns the number of nodes added."""
+    added = 0
+    for ri in range(len(part.rings)):
+        if part.ring_hole[ri]:
+            continue
+        ring = part.rings[ri]
+        reps = pinch_indices(ring.tolist())
+        if not reps:
+            continue
+        new = open_pinched_ring(part.V[ring], reps)
+        if new is None:
+            continue
+        ids = np.arange(len(part.V), len(part.V) + len(reps))
+        part.V = np.concatenate([part.V, new[reps]])
+        ring = ring.copy()
+        ring[reps] = ids
+        part.rings[ri] = ring
+        added += len(reps)
+    return added
 
 
 # =========================================================================== reading
