@@ -146,10 +146,35 @@ def _reliable_code(b, area):
     return code if len(same) == 1 and m2 <= building.SHAFT_MAX_AREA else ""
 
 
+def _off_border_ends(paths) -> int:
+    """Passage ends that a floor file itself places off their area's ring (farther than
+    building.PASSAGE_END_TOL): the passage stage put them there, the fusion cannot share their node."""
+    from shapely.geometry import Point
+
+    n = 0
+    for path in paths:
+        areas, passages, root, _ = osmag.read_osmag(str(path))
+        areas, passages = osmag.to_frame(areas, passages, osmag.frame_from_root(root))
+        by_id = {a.id: a for a in areas}
+        for p in passages:
+            for aid in (p.from_id, p.to_id):
+                if aid in by_id:
+                    ext = by_id[aid].polygon.exterior
+                    n += sum(ext.distance(Point(c)) > building.PASSAGE_END_TOL
+                             for c in (p.line.coords[0], p.line.coords[-1]))
+    return n
+
+
 def _check_building(b, levels, pinned_links, named_on_both):
     """Every check of a fused building."""
     st = b["st"]
     assert st["levels"] == levels
+    # the fusion never moves a passage end off its area: a ring that touches itself (the 4F atrium gallery
+    # 中庭回廊 (2), SIST-F1's hall 大厅) stays one ring (model.open_ring_pinches), so its passages keep their
+    # nodes. Measured on the session-5 floor files: library 22 -> 1, SIST 14 -> 4 such warnings; the ones
+    # left are passage ends the floor files already put 0.06-1.3 m off the area (the passage stage's)
+    off = [w for w in st["warnings"] if "is not on the border of area" in w]
+    assert len(off) <= _off_border_ends([c[0] for c in b["conv"]]), off
     # nothing lost: every area and passage of every floor is in the building
     n_floor_areas = sum(c[2] for c in b["conv"])
     assert st["areas_in"] == st["areas_out"] >= n_floor_areas

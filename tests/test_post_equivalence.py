@@ -20,8 +20,8 @@ from algorithms.model import Area, CadGeometry, CadText, Passage
 
 # sha256 of the osmAG written by floor_cache.convert_dxf(sheet, out) (defaults), areas, passages
 PINNED_DWG = {
-    "sist-original/SIST-F1.dwg": ("a43aa63035376cb7d8b41b6050c76899151909e7e4439bf98167a6f3e715eda9", 138, 188),
-    "library/A-A3-10-04.dwg": ("77d6e25688c270228f7560cc93b732f8ad99a9a5dd4c8c01e24a4ebcab0ee0e7", 64, 84),
+    "sist-original/SIST-F1.dwg": ("09df49495d6b287a302627231b2864ed9658bc263341f02b878f585ee98bce39", 138, 188),
+    "library/A-A3-10-04.dwg": ("c8563503e23452f4f7517559dbe344a450b393b23df8c22a468b28660aab64dd", 64, 84),
 }
 
 
