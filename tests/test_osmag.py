@@ -7,7 +7,7 @@ from pathlib import Path
 
 import numpy as np
 import pytest
-from shapely.geometry import LineString, Polygon
+from shapely.geometry import LineString, Point, Polygon
 
 from algorithms.errors import InputError
 from algorithms.georef import LocalFrame, geodesic_distance
@@ -306,3 +306,54 @@ def test_conflicting_areatype_spellings_are_reported(tmp_path):
     areas, _, _, report = read_osmag(str(path))
     assert areas[0].type == "room"
     assert any("osmAG:areaType=stairs" in w and "edited" in w for w in report["warnings"])
+
+
+# --------------------------------------------------------------------------- rings that touch themselves
+@pytest.mark.parametrize("ring, kind", [
+    # a gallery round a void: the ring goes round the outside, in along a zero-width cut, round the void
+    # (clockwise) and back out the same cut: the cut's two nodes are visited twice
+    ([(0, 0), (10, 0), (10, 6), (6, 6), (6, 14), (14, 14), (14, 6), (10, 6), (10, 0), (20, 0), (20, 20), (0, 20)],
+     "slit"),
+    # a zero-width finger out of a room (out and back along the same nodes)
+    ([(0, 0), (10, 0), (10, 10), (5, 10), (5, 13), (5, 15), (5, 13), (5, 10), (0, 10)], "spike"),
+    # two lobes touching at one node
+    ([(0, 0), (4, 0), (4, 4), (8, 4), (8, 8), (4, 8), (4, 4), (0, 4)], "touch"),
+])
+def test_a_ring_visiting_a_vertex_twice_is_opened_and_stays_one_ring(ring, kind):
+    from algorithms.model import PINCH_OPEN, open_ring_pinches, valid_polygon
+
+    poly = Polygon(ring)
+    assert not poly.is_valid
+    for p in (poly, Polygon(ring[::-1])):  # either orientation
+        fixed = valid_polygon(p)
+        assert fixed.is_valid and fixed.geom_type == "Polygon" and len(fixed.interiors) == 0, kind
+        assert fixed.area == pytest.approx(abs(poly.area), abs=20 * PINCH_OPEN)
+        # every vertex of the ring is still on it (within the opening), the first visits exactly
+        for xy in ring:
+            assert fixed.exterior.distance(Point(xy)) <= 1e-9
+        assert open_ring_pinches(fixed) is None  # nothing left to open
+    # a valid polygon is returned as given
+    ok = Polygon([(0, 0), (1, 0), (1, 1)])
+    assert valid_polygon(ok) is ok
+
+
+def test_writer_opens_a_ring_that_would_visit_a_node_twice(tmp_path):
+    """A C-shaped area whose ends are 0.4 um apart (below the 1e-6 m shared-node precision) is written as a
+    simple way: no node twice, and it reads back valid, as one ring of the same area."""
+    frame = LocalFrame(121.5906, 31.1790)
+    w = 4e-7
+    g = Polygon([(0, 0), (10, 0), (10, 6), (6, 6), (6, 14), (14, 14), (14, 6), (10 + w, 6), (10 + w, 0),
+                 (20, 0), (20, 20), (0, 20)])
+    assert g.is_valid
+    out = tmp_path / "f.osm"
+    write_osmag(str(out), [Area(1, g, type="corridor"), Area(2, Polygon([(6, 6), (14, 6), (14, 14), (6, 14)]),
+                                                             type="stairs")],
+                [Passage(1, 1, 2, LineString([(6, 9), (6, 10)]))], frame=frame)
+    root = ET.parse(out).getroot()
+    for way in root.iter("way"):
+        refs = [nd.get("ref") for nd in way.iter("nd")]
+        assert len(set(refs[:-1])) == len(refs) - 1
+    areas, passages, _, _ = read_osmag(str(out))
+    areas, passages = to_frame(areas, passages, frame)
+    a = [x for x in areas if x.type == "corridor"][0]
+    assert a.polygon.is_valid and a.polygon.area == pytest.approx(g.area, rel=1e-3)
