@@ -241,7 +241,8 @@ def write_osmag_levels(path: str, floors: Sequence[FloorLayer], frame=None, crs=
         if g_areas:
             part = _Partition([polys[k] for k in g_areas], pxy, q)
             n_ins += part.node()
-            n_pinch += _open_pinches(part)
+            # metres, or degrees for geometries in a geographic CRS (q 1e-10)
+            n_pinch += _open_pinches(part, near=20.0 * q, dist=PINCH_OPEN if q >= 1e-6 else PINCH_OPEN / 111320.0)
             holes += int(part.ring_hole.sum())
             for ri, (f, h) in enumerate(zip(part.ring_face, part.ring_hole)):
                 if not h:
@@ -276,6 +277,7 @@ def write_osmag_levels(path: str, floors: Sequence[FloorLayer], frame=None, crs=
     if lat[used].min() <= -90 or lat[used].max() >= 90:
         raise InputError("converted coordinates fall outside valid latitudes; check the georeference")
     progress.step(40, f"osmAG: {int(used.sum())} nodes ({n_ins} inserted to share borders)")
+    warnings.extend(_rings_invalid_as_written(all_areas, ring_of_area, lon, lat))
     # ---- node ids, numbered in order of first use (areas in way order, then passages): reproducible
     node_id = np.zeros(len(V), np.int64)
     seq = np.concatenate([ring_of_area[k] for k in range(len(all_areas))] + [pe.reshape(-1)])
@@ -455,23 +457,34 @@ def write_osmag_levels(path: str, floors: Sequence[FloorLayer], frame=None, crs=
     return stats
 
 
-def _open_pinches(part) -> int:
+def _open_pinches(part, near: float = 0.0, dist: float = PINCH_OPEN) -> int:
     """Rings of ``part`` (a refine._Partition after ``node()``) that visit one node twice: the area's
     polygon had a neck or a zero-width finger narrower than the shared-node precision, so two of its
     vertices became one node (or a vertex was inserted into its own ring's edge). Such a way reads back as
     a self-touching ring, which a reader repairs by making the loop a hole or by cutting the finger off;
     passages on it then leave the area. Every repeated visit after the first becomes a new node moved
     ``model.PINCH_OPEN`` into (or out of) its corner, so the ring is simple; the first visit keeps the
-    shared node. Returns the number of nodes added."""
+    shared node. ``near`` (> 0): a vertex closer than that to an earlier, non-adjacent vertex of its ring
+    counts as a second visit too (they would meet once rounded to the precision written). ``dist``: the
+    opening in the partition's units. Returns the number of nodes added."""
+    from scipy.spatial import cKDTree
+
     added = 0
     for ri in range(len(part.rings)):
         if part.ring_hole[ri]:
             continue
         ring = part.rings[ri]
-        reps = pinch_indices(ring.tolist())
+        reps = set(pinch_indices(ring.tolist()))
+        if near > 0 and len(ring) > 3:
+            n = len(ring)
+            for i, j in cKDTree(part.V[ring]).query_pairs(near):
+                i, j = min(i, j), max(i, j)
+                if j - i not in (1, n - 1) and ring[i] != ring[j]:
+                    reps.add(j)
         if not reps:
             continue
-        new = open_pinched_ring(part.V[ring], reps)
+        reps = sorted(reps)
+        new = open_pinched_ring(part.V[ring], reps, dist)
         if new is None:
             continue
         ids = np.arange(len(part.V), len(part.V) + len(reps))
@@ -481,6 +494,29 @@ def _open_pinches(part) -> int:
         part.rings[ri] = ring
         added += len(reps)
     return added
+
+
+def _rings_invalid_as_written(all_areas, ring_of_area, lon, lat) -> List[str]:
+    """Warnings for area ways that are no valid polygon at the precision written (lon/lat at 10 decimals):
+    parts closer than that cross or touch once rounded. A reader repairs a ring that only touches itself
+    as one ring (``model.open_ring_pinches``); a crossing it can only repair with ``buffer(0)``."""
+    import shapely
+
+    rlon, rlat = np.round(lon, 10), np.round(lat, 10)
+    ks = [k for k in range(len(all_areas)) if k in ring_of_area and len(ring_of_area[k]) >= 3]
+    if not ks:
+        return []
+    closed = [np.append(ring_of_area[k], ring_of_area[k][0]) for k in ks]
+    idx = np.concatenate(closed)
+    try:
+        rings = shapely.linearrings(np.c_[rlon[idx], rlat[idx]],
+                                    indices=np.repeat(np.arange(len(ks)), [len(c) for c in closed]))
+        ok = shapely.is_valid(shapely.polygons(rings))
+    except Exception:  # a degenerate ring: the reader reports it
+        return []
+    return [f"area {all_areas[k].id}: its way is no valid polygon at the written precision "
+            f"({shapely.is_valid_reason(shapely.polygons(rings[j]))}); parts of it closer than ~0.01 mm"
+            for j, k in enumerate(ks) if not ok[j]]
 
 
 # =========================================================================== reading
