@@ -729,13 +729,13 @@ RECESS_STEP = 0.3  # m: grid of seed points searched for a lift recess around a 
 RECESS_HOST_FACTOR = 3.0  # the area holding a recess is at least this many times the recess
 
 
-def _recess_box(host: Polygon, seed: np.ndarray, u: np.ndarray, v: np.ndarray) -> Optional[Polygon]:
+def _recess_box(host: Polygon, seed: np.ndarray, u: np.ndarray, v: np.ndarray, boundary=None) -> Optional[Polygon]:
     """The lift-sized box around ``seed`` that ``host``'s border closes on three sides (walls left, right
     and behind within LIFT_SIDE) and leaves open on the fourth, or None. The open side ends at the front
     wall's stubs when a narrowed mouth is drawn (rays straight ahead meet a wall before the side walls stop),
     else where the side walls stop (the box opens full-width onto the space in front)."""
     lo_s, hi_s = LIFT_SIDE
-    boundary = host.boundary
+    boundary = host.boundary if boundary is None else boundary
     start = seed[None, :]
     for a, b in ((u, v), (v, u)):
         d = {sgn: _wall_distances(boundary, start, sgn * a, hi_s)[0] for sgn in (1.0, -1.0)}
@@ -748,13 +748,13 @@ def _recess_box(host: Polygon, seed: np.ndarray, u: np.ndarray, v: np.ndarray) -
             half_lo, half_hi = d[-1.0], d[1.0]
             # where the side walls stop, marching out of the open side
             end = None
-            for step in np.arange(0.1, hi_s + 1e-9, 0.1):
-                p = seed + front * step * b
-                dl = _wall_distances(boundary, p[None, :], -a, half_lo + 2 * SIDE_SLACK)[0]
-                dh = _wall_distances(boundary, p[None, :], a, half_hi + 2 * SIDE_SLACK)[0]
-                if not (dl <= half_lo + SIDE_SLACK and dh <= half_hi + SIDE_SLACK):
-                    end = step - 0.1
-                    break
+            steps = np.arange(0.1, hi_s + 1e-9, 0.1)
+            ps = seed[None, :] + (front * steps)[:, None] * b[None, :]
+            dl = _wall_distances(boundary, ps, -a, half_lo + 2 * SIDE_SLACK)
+            dh = _wall_distances(boundary, ps, a, half_hi + 2 * SIDE_SLACK)
+            stop = np.flatnonzero(~((dl <= half_lo + SIDE_SLACK) & (dh <= half_hi + SIDE_SLACK)))
+            if len(stop):
+                end = float(steps[stop[0]] - 0.1)
             # stubs of a front wall with a doorless gap: rays straight ahead across the width meet a wall
             ts = np.linspace(-half_lo * 0.9, half_hi * 0.9, 11)
             ray = _wall_distances(boundary, seed[None, :] + ts[:, None] * a[None, :], front * b, hi_s)
@@ -798,7 +798,7 @@ def coded_lift_recesses(areas: List[Area], passages: List[Passage], texts) -> Di
     area (``carve_anchors`` on the box as a lift symbol: a passage across its open side). An area only
     counts as a host when it is ``RECESS_HOST_FACTOR`` times the box or more: a small room is no recess.
     Returns ``carve_anchors``' figures of the carves (``carved``, ``pieces``)."""
-    from shapely import points as _points
+    from shapely import STRtree, points as _points
     from shapely.geometry import Point
 
     from . import semantics
@@ -820,11 +820,12 @@ def coded_lift_recesses(areas: List[Area], passages: List[Passage], texts) -> Di
     # has a lift within reach
     # ... and an unnamed room of at most 20 m² right beside the code (``semantics.D_MAX``): stage 5 names it
     small = [a.polygon for a in live if a.type == "room" and a.polygon.area <= 20.0]
-    for lab in labs:
-        q = Point(lab.x, lab.y)
-        if lab.role in ("name", "number") and (any(p.distance(q) <= reach for p in lifts)
-                                               or any(p.distance(q) <= semantics.D_MAX for p in small)):
-            done.add(semantics._key(lab.text))
+    cand = [l for l in labs if l.role in ("name", "number")]
+    pts = _points(np.array([[l.x, l.y] for l in cand], dtype=float).reshape(-1, 2))
+    for polys, dist in ((lifts, reach), (small, semantics.D_MAX)):
+        if polys and len(cand):
+            hit = STRtree(polys).query(pts, predicate="dwithin", distance=dist)[0]
+            done.update(semantics._key(cand[i].text) for i in set(hit.tolist()))
     for lab in codes:
         c = Point(lab.x, lab.y)
         if semantics._key(lab.text) in done:
@@ -846,27 +847,30 @@ def coded_lift_recesses(areas: List[Area], passages: List[Passage], texts) -> Di
 
             inside = shapely.contains(hpoly.buffer(-0.1), _points(pts)) & shapely.contains(disk, _points(pts))
             pts = pts[inside]
+            # rays reach LIFT_SIDE (the march twice that) beyond a seed: the border near the code is enough
+            border = hpoly.boundary.intersection(disk.buffer(2.5 * LIFT_SIDE[1]))
             # a seed in a recess has walls within a lift's side on both sides across one axis and behind it
-            dist = {k: _wall_distances(hpoly.boundary, pts, sgn * ax, LIFT_SIDE[1])
+            dist = {k: _wall_distances(border, pts, sgn * ax, LIFT_SIDE[1])
                     for k, (sgn, ax) in enumerate(((1.0, u), (-1.0, u), (1.0, v), (-1.0, v)))}
             span_u, span_v = dist[0] + dist[1], dist[2] + dist[3]
             ok_u = (span_u >= LIFT_SIDE[0]) & (span_u <= LIFT_SIDE[1]) & (np.isfinite(dist[2]) ^ np.isfinite(dist[3]))
             ok_v = (span_v >= LIFT_SIDE[0]) & (span_v <= LIFT_SIDE[1]) & (np.isfinite(dist[0]) ^ np.isfinite(dist[1]))
             pts = pts[ok_u | ok_v]
             pts = pts[np.argsort(np.hypot(pts[:, 0] - c.x, pts[:, 1] - c.y))]
-            found: List[Polygon] = []
-            for q in pts:
+            free = np.ones(len(pts), bool)  # seeds not inside a box found already
+            geoms = _points(pts)
+            for k, q in enumerate(pts):
                 if best is not None and Point(q).distance(c) > best[0] + LIFT_SIDE[1]:
                     break
-                if any(f.contains(Point(q)) for f in found):
+                if not free[k]:
                     continue
-                bx = _recess_box(hpoly, q, u, v)
+                bx = _recess_box(hpoly, q, u, v, border)
                 if bx is None:
                     continue
                 bx = bx.intersection(hpoly)
                 if bx.geom_type != "Polygon" or bx.area > hpoly.area / RECESS_HOST_FACTOR:
                     continue
-                found.append(bx)
+                free &= ~shapely.contains(bx, geoms)
                 d = bx.distance(c)
                 if d <= reach and (best is None or d < best[0]):
                     best = (d, host, bx)

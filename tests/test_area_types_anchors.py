@@ -362,3 +362,31 @@ def test_no_lift_recess_without_code_with_a_lift_in_reach_or_with_a_full_width_n
         before = host.polygon.area
         anchors.carve_anchors(areas, passages, [], texts=texts)
         assert len(areas) == 1 + len(extra) and not passages and host.polygon.area == pytest.approx(before)
+
+
+@pytest.mark.qgis_process
+def test_dxftoosmag_headless_carves_an_empty_lift_shaft_named_by_its_code(tmp_path):
+    """``cad2osmag:dxftoosmag`` through qgis_process on a small drawing: a corridor with an empty 3.2 x 2.5 m
+    box of walls (no car cross) opening onto it through a 1.4 m doorless gap, and the code 'E1-P2' written
+    in the corridor 3 m away. Without the rule the box is part of the corridor (one area, measured); with it
+    the osmAG file holds an elevator area with ref E1-P2 and a passage to the corridor."""
+    import ezdxf
+
+    from algorithms import osmag
+
+    from .qgis_process import run_alg
+
+    doc = ezdxf.new(units=6)
+    msp = doc.modelspace()
+    walls = _shaft_and_corridor().polygon.exterior.buffer(0.1, join_style=2)
+    for ring in [walls.exterior] + list(walls.interiors):
+        msp.add_lwpolyline(list(ring.coords), close=True, dxfattribs={"layer": "A-WALL"})
+    msp.add_text("E1-P2", height=0.3, dxfattribs={"layer": "A-ANNO-TEXT"}).set_placement((-3, 4))
+    src, out = tmp_path / "shaft.dxf", tmp_path / "shaft.osm"
+    doc.saveas(str(src))
+    _, res, log = run_alg("dxftoosmag", {"INPUT": str(src), "OUTPUT": str(out), "LEVEL": 1})
+    assert "carved out of the areas that swallowed them" in log
+    areas, passages, _root, report = osmag.read_osmag(str(out))
+    lift = [a for a in areas if a.type == "elevator"]
+    assert len(lift) == 1 and "E1-P2" in (lift[0].tags.get("ref", ""), lift[0].name)
+    assert len(passages) == 1 and report["dangling_refs"] == [] and res["AREA_COUNT"] == len(areas) - 1
