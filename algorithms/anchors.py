@@ -727,13 +727,14 @@ def relabel(labels: Optional[np.ndarray], grid, areas: Sequence[Area], stats) ->
 LIFT_SIDE = (1.2, 3.5)  # m: the sides of a lift shaft (a car of 0.8-2.5 m plus the gap to the shaft walls)
 RECESS_STEP = 0.3  # m: grid of seed points searched for a lift recess around a lift code
 RECESS_HOST_FACTOR = 3.0  # the area holding a recess is at least this many times the recess
+NAMED_LIFT_MAX = 40.0  # m²: an area holding a lift name up to this size is a lift (semantics' vertical_max_area)
 
 
 def _recess_box(host: Polygon, seed: np.ndarray, u: np.ndarray, v: np.ndarray, boundary=None) -> Optional[Polygon]:
-    """The lift-sized box around ``seed`` that ``host``'s border closes on three sides (walls left, right
-    and behind within LIFT_SIDE) and leaves open on the fourth, or None. The open side ends at the front
-    wall's stubs when a narrowed mouth is drawn (rays straight ahead meet a wall before the side walls stop),
-    else where the side walls stop (the box opens full-width onto the space in front)."""
+    """The lift-sized box around ``seed`` that ``host``'s border (or ``boundary``, a part of it) closes on
+    three sides (walls left, right and behind within LIFT_SIDE) and on the fourth with the stubs of a front
+    wall left open by a doorless gap (rays straight ahead meet a wall before the side walls stop), or None.
+    A box open full-width is no evidence (any corridor's door recess or dead end is one): None."""
     lo_s, hi_s = LIFT_SIDE
     boundary = host.boundary if boundary is None else boundary
     start = seed[None, :]
@@ -792,12 +793,15 @@ def coded_lift_recesses(areas: List[Area], passages: List[Passage], texts) -> Di
     """Lift shafts drawn as an empty box of walls (no car cross, nothing on a lift layer) that open without a
     door onto the area in front and were merged into it, found from the lift's code. A lift code
     (``semantics``: 'E1-P2', its detail callout) with no area typed elevator within
-    ``semantics.CALLOUT_REACH`` names the nearest *box-shaped recess* of a larger area within that reach: a
-    box of lift size (``LIFT_SIDE`` a side) that the area's border closes on three sides and leaves open on
-    the fourth (full width, or through a doorless gap in a front wall). The recess is carved as an elevator
-    area (``carve_anchors`` on the box as a lift symbol: a passage across its open side). An area only
-    counts as a host when it is ``RECESS_HOST_FACTOR`` times the box or more: a small room is no recess.
+    ``semantics.CALLOUT_REACH`` (nor a small area holding a lift name, nor a small unnamed room within
+    ``semantics.D_MAX`` of any copy of the code: stage 5 names those) names the nearest *box-shaped recess*
+    of a larger area within that reach: a box of lift size (``LIFT_SIDE`` a side) that the area's border
+    closes on three sides and, on the fourth, with a front wall's stubs (a doorless gap). The recess is
+    carved as an elevator area (``carve_anchors`` on the box as a lift symbol: a passage on the gap's chord).
+    An area only counts as a host when it is ``RECESS_HOST_FACTOR`` times the box or more: a small room is
+    no recess.
     Returns ``carve_anchors``' figures of the carves (``carved``, ``pieces``)."""
+    import shapely
     from shapely import STRtree, points as _points
     from shapely.geometry import Point
 
@@ -814,12 +818,12 @@ def coded_lift_recesses(areas: List[Area], passages: List[Passage], texts) -> Di
     # a small area holding a lift's name ('客梯', 'lift') is a lift too (stage 5 types it so)
     named = [Point(l.x, l.y) for l in labs if l.role == "name"
              and (semantics.type_of_name(l.text, l.text) or {}).get("type") == "elevator"]
-    lifts += [a.polygon for a in live if a.type != "elevator" and a.polygon.area <= 40.0
+    lifts += [a.polygon for a in live if a.type != "elevator" and a.polygon.area <= NAMED_LIFT_MAX
               and any(a.polygon.contains(q) for q in named)]
     # a code written again (a tag in the shaft, a callout beside it) is drawn as soon as one of its copies
     # has a lift within reach
     # ... and an unnamed room of at most 20 m² right beside the code (``semantics.D_MAX``): stage 5 names it
-    small = [a.polygon for a in live if a.type == "room" and a.polygon.area <= 20.0]
+    small = [a.polygon for a in live if a.type == "room" and a.polygon.area <= 0.5 * NAMED_LIFT_MAX]
     cand = [l for l in labs if l.role in ("name", "number")]
     pts = _points(np.array([[l.x, l.y] for l in cand], dtype=float).reshape(-1, 2))
     for polys, dist in ((lifts, reach), (small, semantics.D_MAX)):
@@ -843,8 +847,6 @@ def coded_lift_recesses(areas: List[Area], passages: List[Passage], texts) -> Di
             pts = np.column_stack([gx.ravel(), gy.ravel()])
             if not len(pts):
                 continue
-            import shapely
-
             inside = shapely.contains(hpoly.buffer(-0.1), _points(pts)) & shapely.contains(disk, _points(pts))
             pts = pts[inside]
             # rays reach LIFT_SIDE (the march twice that) beyond a seed: the border near the code is enough
