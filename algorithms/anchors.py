@@ -406,7 +406,7 @@ def carve_anchors(areas: List[Area], passages: List[Passage], geometries: Sequen
     progress = ensure(progress)
     symbols = find_anchor_symbols(geometries) if symbols is None else symbols
     stats: Dict[str, object] = {"symbols": len(symbols), "carved": [], "typed": [], "skipped": {}, "pieces": {}}
-    if not symbols:
+    if not symbols and not texts:  # (texts: a lift code may name an empty walled box, coded_lift_recesses)
         return stats
 
     def skip(reason):
@@ -613,6 +613,12 @@ def carve_anchors(areas: List[Area], passages: List[Passage], geometries: Sequen
         carved_ids.add(new.id)
     if outdoor:
         stats["outdoor"] = named_outdoor_stairs(areas, passages, outdoor, texts)
+    if texts:  # lift codes with no lift drawn near them: a lift-sized walled recess merged into an area
+        recess = coded_lift_recesses(areas, passages, texts)
+        if recess["carved"]:
+            stats["carved"].extend(recess["carved"])
+            stats["pieces"].update(recess["pieces"])
+            stats["recesses"] = [c[1] for c in recess["carved"]]
     progress.step(100)
     return stats
 
@@ -718,4 +724,168 @@ def relabel(labels: Optional[np.ndarray], grid, areas: Sequence[Area], stats) ->
             win[(win == host_id) & m.astype(bool)] = a.id
 
 
-__all__ = ["carve_anchors", "relabel", "find_anchor_symbols", "footprint"]
+LIFT_SIDE = (1.2, 3.5)  # m: the sides of a lift shaft (a car of 0.8-2.5 m plus the gap to the shaft walls)
+RECESS_STEP = 0.3  # m: grid of seed points searched for a lift recess around a lift code
+RECESS_HOST_FACTOR = 3.0  # the area holding a recess is at least this many times the recess
+NAMED_LIFT_MAX = 40.0  # m²: an area holding a lift name up to this size is a lift (semantics' vertical_max_area)
+
+
+def _recess_box(host: Polygon, seed: np.ndarray, u: np.ndarray, v: np.ndarray, boundary=None) -> Optional[Polygon]:
+    """The lift-sized box around ``seed`` that ``host``'s border (or ``boundary``, a part of it) closes on
+    three sides (walls left, right and behind within LIFT_SIDE) and on the fourth with the stubs of a front
+    wall left open by a doorless gap (rays straight ahead meet a wall before the side walls stop), or None.
+    A box open full-width is no evidence (any corridor's door recess or dead end is one): None."""
+    lo_s, hi_s = LIFT_SIDE
+    boundary = host.boundary if boundary is None else boundary
+    start = seed[None, :]
+    for a, b in ((u, v), (v, u)):
+        d = {sgn: _wall_distances(boundary, start, sgn * a, hi_s)[0] for sgn in (1.0, -1.0)}
+        if not all(np.isfinite(x) for x in d.values()) or not lo_s <= d[1.0] + d[-1.0] <= hi_s:
+            continue
+        e = {sgn: _wall_distances(boundary, start, sgn * b, hi_s)[0] for sgn in (1.0, -1.0)}
+        for back, front in ((1.0, -1.0), (-1.0, 1.0)):
+            if not (np.isfinite(e[back]) and not np.isfinite(e[front])):
+                continue
+            half_lo, half_hi = d[-1.0], d[1.0]
+            # where the side walls stop, marching out of the open side
+            end = None
+            steps = np.arange(0.1, hi_s + 1e-9, 0.1)
+            ps = seed[None, :] + (front * steps)[:, None] * b[None, :]
+            dl = _wall_distances(boundary, ps, -a, half_lo + 2 * SIDE_SLACK)
+            dh = _wall_distances(boundary, ps, a, half_hi + 2 * SIDE_SLACK)
+            stop = np.flatnonzero(~((dl <= half_lo + SIDE_SLACK) & (dh <= half_hi + SIDE_SLACK)))
+            if len(stop):
+                end = float(steps[stop[0]] - 0.1)
+            # stubs of a front wall with a doorless gap: rays straight ahead across the width meet a wall
+            ts = np.linspace(-half_lo * 0.9, half_hi * 0.9, 11)
+            ray = _wall_distances(boundary, seed[None, :] + ts[:, None] * a[None, :], front * b, hi_s)
+            hits = ray[np.isfinite(ray)]
+            stub = float(np.median(hits)) if len(hits) >= 2 else None
+            if stub is not None and (end is None or stub <= end + SIDE_SLACK):
+                end = stub
+            else:
+                # a full-width mouth is any niche of a corridor (a door recess, a corridor's end): no evidence
+                continue
+            if end is None or end <= 0.1:
+                continue
+            depth = e[back] + end
+            if not lo_s <= depth <= hi_s:
+                continue
+            lo = np.array([-half_lo, -e[back] if back < 0 else -end])
+            hi = np.array([half_hi, e[back] if back > 0 else end])
+            return _box_polygon(seed, a, b, lo, hi)
+    return None
+
+
+def _axes(poly: Polygon) -> Tuple[np.ndarray, np.ndarray]:
+    """The area's wall directions: the longest edge's direction (modulo 90 degrees) weighted by length."""
+    xy = np.asarray(poly.exterior.coords)
+    e = np.diff(xy, axis=0)
+    L = np.hypot(e[:, 0], e[:, 1])
+    ang = np.arctan2(e[:, 1], e[:, 0]) % (math.pi / 2)
+    bins = np.round(np.degrees(ang)).astype(int) % 90
+    w = np.bincount(bins, weights=L, minlength=90)
+    t = math.radians(int(np.argmax(w)))
+    return np.array([math.cos(t), math.sin(t)]), np.array([-math.sin(t), math.cos(t)])
+
+
+def coded_lift_recesses(areas: List[Area], passages: List[Passage], texts) -> Dict[str, object]:
+    """Lift shafts drawn as an empty box of walls (no car cross, nothing on a lift layer) that open without a
+    door onto the area in front and were merged into it, found from the lift's code. A lift code
+    (``semantics``: 'E1-P2', its detail callout) with no area typed elevator within
+    ``semantics.CALLOUT_REACH`` (nor a small area holding a lift name, nor a small unnamed room within
+    ``semantics.D_MAX`` of any copy of the code: stage 5 names those) names the nearest *box-shaped recess*
+    of a larger area within that reach: a box of lift size (``LIFT_SIDE`` a side) that the area's border
+    closes on three sides and, on the fourth, with a front wall's stubs (a doorless gap). The recess is
+    carved as an elevator area (``carve_anchors`` on the box as a lift symbol: a passage on the gap's chord).
+    An area only counts as a host when it is ``RECESS_HOST_FACTOR`` times the box or more: a small room is
+    no recess.
+    Returns ``carve_anchors``' figures of the carves (``carved``, ``pieces``)."""
+    import shapely
+    from shapely import STRtree, points as _points
+    from shapely.geometry import Point
+
+    from . import semantics
+
+    out: Dict[str, object] = {"carved": [], "pieces": {}}
+    labs = semantics.classify_labels(list(texts or []))
+    codes = [l for l in labs if l.role == "number"
+             and (semantics.type_of_name("", l.text) or {}).get("type") == "elevator"]
+    reach = semantics.CALLOUT_REACH
+    done = set()
+    live = [a for a in areas if a.polygon is not None and not a.polygon.is_empty and a.type != "structure"]
+    lifts = [a.polygon for a in live if a.type == "elevator"]
+    # a small area holding a lift's name ('客梯', 'lift') is a lift too (stage 5 types it so)
+    named = [Point(l.x, l.y) for l in labs if l.role == "name"
+             and (semantics.type_of_name(l.text, l.text) or {}).get("type") == "elevator"]
+    lifts += [a.polygon for a in live if a.type != "elevator" and a.polygon.area <= NAMED_LIFT_MAX
+              and any(a.polygon.contains(q) for q in named)]
+    # a code written again (a tag in the shaft, a callout beside it) is drawn as soon as one of its copies
+    # has a lift within reach
+    # ... and an unnamed room of at most 20 m² right beside the code (``semantics.D_MAX``): stage 5 names it
+    small = [a.polygon for a in live if a.type == "room" and a.polygon.area <= 0.5 * NAMED_LIFT_MAX]
+    cand = [l for l in labs if l.role in ("name", "number")]
+    pts = _points(np.array([[l.x, l.y] for l in cand], dtype=float).reshape(-1, 2))
+    for polys, dist in ((lifts, reach), (small, semantics.D_MAX)):
+        if polys and len(cand):
+            hit = STRtree(polys).query(pts, predicate="dwithin", distance=dist)[0]
+            done.update(semantics._key(cand[i].text) for i in set(hit.tolist()))
+    for lab in codes:
+        c = Point(lab.x, lab.y)
+        if semantics._key(lab.text) in done:
+            continue
+        live = [a for a in areas if a.polygon is not None and not a.polygon.is_empty and a.type != "structure"]
+        disk = c.buffer(reach)
+        best = None
+        for host in _intersecting([a for a in live if a.type not in ANCHOR_TYPES], disk):
+            hpoly = host.polygon
+            if hpoly.area < RECESS_HOST_FACTOR * LIFT_SIDE[0] ** 2:
+                continue
+            u, v = _axes(hpoly)
+            x0, y0, x1, y1 = hpoly.intersection(disk).bounds
+            gx, gy = np.meshgrid(np.arange(x0, x1, RECESS_STEP), np.arange(y0, y1, RECESS_STEP))
+            pts = np.column_stack([gx.ravel(), gy.ravel()])
+            if not len(pts):
+                continue
+            inside = shapely.contains(hpoly.buffer(-0.1), _points(pts)) & shapely.contains(disk, _points(pts))
+            pts = pts[inside]
+            # rays reach LIFT_SIDE (the march twice that) beyond a seed: the border near the code is enough
+            border = hpoly.boundary.intersection(disk.buffer(2.5 * LIFT_SIDE[1]))
+            # a seed in a recess has walls within a lift's side on both sides across one axis and behind it
+            dist = {k: _wall_distances(border, pts, sgn * ax, LIFT_SIDE[1])
+                    for k, (sgn, ax) in enumerate(((1.0, u), (-1.0, u), (1.0, v), (-1.0, v)))}
+            span_u, span_v = dist[0] + dist[1], dist[2] + dist[3]
+            ok_u = (span_u >= LIFT_SIDE[0]) & (span_u <= LIFT_SIDE[1]) & (np.isfinite(dist[2]) ^ np.isfinite(dist[3]))
+            ok_v = (span_v >= LIFT_SIDE[0]) & (span_v <= LIFT_SIDE[1]) & (np.isfinite(dist[0]) ^ np.isfinite(dist[1]))
+            pts = pts[ok_u | ok_v]
+            pts = pts[np.argsort(np.hypot(pts[:, 0] - c.x, pts[:, 1] - c.y))]
+            free = np.ones(len(pts), bool)  # seeds not inside a box found already
+            geoms = _points(pts)
+            for k, q in enumerate(pts):
+                if best is not None and Point(q).distance(c) > best[0] + LIFT_SIDE[1]:
+                    break
+                if not free[k]:
+                    continue
+                bx = _recess_box(hpoly, q, u, v, border)
+                if bx is None:
+                    continue
+                bx = bx.intersection(hpoly)
+                if bx.geom_type != "Polygon" or bx.area > hpoly.area / RECESS_HOST_FACTOR:
+                    continue
+                free &= ~shapely.contains(bx, geoms)
+                d = bx.distance(c)
+                if d <= reach and (best is None or d < best[0]):
+                    best = (d, host, bx)
+        if best is None:
+            continue
+        _d, host, bx = best
+        sym = bx.buffer(-0.05, join_style=2)
+        st = carve_anchors(areas, passages, [], symbols=[("elevator", sym, (), False)])
+        if st["carved"]:
+            out["carved"].extend(st["carved"])
+            out["pieces"].update(st["pieces"])
+            done.add(semantics._key(lab.text))
+    return out
+
+
+__all__ = ["carve_anchors", "coded_lift_recesses", "relabel", "find_anchor_symbols", "footprint"]

@@ -315,3 +315,78 @@ def test_dxftoosmag_headless_makes_a_named_outdoor_stair_an_area(tmp_path):
     outdoor = [a for a in areas if a.type == "stairs" and "E1-ST-07" in (a.tags.get("ref", ""), a.name)]
     assert len(outdoor) == 1 and len(outdoor[0].polygon.exterior.coords) >= 5  # (read back in lon/lat)
     assert report["dangling_refs"] == [] and res["AREA_COUNT"] == len(areas) - 1
+
+
+def _shaft_and_corridor(stubs=True):
+    """A 3.2 x 2.5 m box of walls (an empty lift shaft: no car cross) south of a 13 x 2.3 m corridor, open onto
+    it through a 1.4 m doorless gap in its 0.2 m front wall (or full width): one area, as segmentation merges it."""
+    parts = [box(0, 0, 3.2, 2.5), box(-5, 2.7, 8, 5)]
+    parts.append(box(1.0, 2.5, 2.4, 2.7) if stubs else box(0, 2.5, 3.2, 2.7))
+    return Area(id=1, polygon=unary_union(parts), type="corridor", name="")
+
+
+def _code(text, x, y):
+    from algorithms.model import CadText
+
+    return CadText(x=x, y=y, text=text, height=0.35, rotation=0.0, layer="A-TEXT")
+
+
+def test_a_lift_code_names_an_empty_walled_box_merged_into_the_corridor_it_opens_onto():
+    """SIST-F4's E1-P2: the shaft is an empty box of walls opening through a doorless gap onto the corridor,
+    and its callout hangs 6 m away. A lift code with no lift within CALLOUT_REACH names the nearest lift-sized
+    box the area's border closes on three sides with a front wall's stubs on the fourth: carved as an
+    elevator area, a passage on the gap's chord; the corridor keeps its id and type."""
+    host = _shaft_and_corridor()
+    areas, passages = [host], []
+    st = anchors.carve_anchors(areas, passages, [], texts=[_code("E1-P2详见建施(A-E-40-19)", -3.0, 4.0)])
+    _graph_ok(areas, passages)
+    lift = [a for a in areas if a.type == "elevator"]
+    assert len(lift) == 1 and st.get("recesses") == [lift[0].id]
+    assert lift[0].polygon.area == pytest.approx(3.2 * 2.5, rel=0.05), lift[0].polygon.bounds
+    assert lift[0].polygon.bounds[3] <= 2.7 + 1e-6
+    assert host.type == "corridor" and host.polygon.area == pytest.approx(13 * 2.3 + 0.28, rel=0.05)
+    chord = [p for p in passages if {p.from_id, p.to_id} == {lift[0].id, 1}]
+    assert len(chord) == 1 and chord[0].line.length == pytest.approx(1.4, abs=0.1)
+
+
+def test_no_lift_recess_without_code_with_a_lift_in_reach_or_with_a_full_width_niche():
+    """The rule needs all three: a lift code (a room name is no evidence), no lift already within reach of
+    it, and a walled box with front-wall stubs (a full-width niche is any corridor's door recess or end)."""
+    for host, extra, texts in (
+            (_shaft_and_corridor(), [], [_code("OFFICE", -3.0, 4.0)]),
+            (_shaft_and_corridor(), [Area(id=2, polygon=box(-5, 5.2, -3, 7.5), type="elevator")],
+             [_code("E1-P2", -3.0, 4.0)]),
+            (_shaft_and_corridor(stubs=False), [], [_code("E1-P2", -3.0, 4.0)]),
+            (_shaft_and_corridor(), [], [_code("E1-P2", -12.0, 4.0)])):  # the code beyond CALLOUT_REACH
+        areas, passages = [host] + extra, []
+        before = host.polygon.area
+        anchors.carve_anchors(areas, passages, [], texts=texts)
+        assert len(areas) == 1 + len(extra) and not passages and host.polygon.area == pytest.approx(before)
+
+
+@pytest.mark.qgis_process
+def test_dxftoosmag_headless_carves_an_empty_lift_shaft_named_by_its_code(tmp_path):
+    """``cad2osmag:dxftoosmag`` through qgis_process on a small drawing: a corridor with an empty 3.2 x 2.5 m
+    box of walls (no car cross) opening onto it through a 1.4 m doorless gap, and the code 'E1-P2' written
+    in the corridor 3 m away. Without the rule the box is part of the corridor (one area, measured); with it
+    the osmAG file holds an elevator area with ref E1-P2 and a passage to the corridor."""
+    import ezdxf
+
+    from algorithms import osmag
+
+    from .qgis_process import run_alg
+
+    doc = ezdxf.new(units=6)
+    msp = doc.modelspace()
+    walls = _shaft_and_corridor().polygon.exterior.buffer(0.1, join_style=2)
+    for ring in [walls.exterior] + list(walls.interiors):
+        msp.add_lwpolyline(list(ring.coords), close=True, dxfattribs={"layer": "A-WALL"})
+    msp.add_text("E1-P2", height=0.3, dxfattribs={"layer": "A-ANNO-TEXT"}).set_placement((-3, 4))
+    src, out = tmp_path / "shaft.dxf", tmp_path / "shaft.osm"
+    doc.saveas(str(src))
+    _, res, log = run_alg("dxftoosmag", {"INPUT": str(src), "OUTPUT": str(out), "LEVEL": 1})
+    assert "carved out of the areas that swallowed them" in log
+    areas, passages, _root, report = osmag.read_osmag(str(out))
+    lift = [a for a in areas if a.type == "elevator"]
+    assert len(lift) == 1 and "E1-P2" in (lift[0].tags.get("ref", ""), lift[0].name)
+    assert len(passages) == 1 and report["dangling_refs"] == [] and res["AREA_COUNT"] == len(areas) - 1
