@@ -52,7 +52,8 @@ LIBRARY_NAMED_ON_BOTH = {
 # named passages): 4-5 has 10 links (hand-counted codes still 7), one unnamed pair fewer.
 # Session 5 (named outdoor stairs, break-line stair cores, callouts beside the plan, anchors.py): 17 / 17 / 13
 # links, hand-counted codes linked 15 / 13 / 10.
-SIST_LINKED = {("1", "3"): (17, 15), ("3", "4"): (17, 13), ("4", "5"): (13, 10)}
+# F4's E1-P2, an empty lift box merged into its corridor, carved by its code (anchors.coded_lift_recesses): 3-4 18 / 14
+SIST_LINKED = {("1", "3"): (17, 15), ("3", "4"): (18, 14), ("4", "5"): (13, 10)}
 # library 3-4: 11 links since the carve (A3-ST-09 and -10, open stairs of the 3F atrium, are stairs of their own);
 # 4-5: 11 links, the 7 hand-counted codes all linked since the merges of session 4 (A3-ST-11 and -12, flights
 # of the 4F/5F atrium gallery, are stairs of their own on both levels; re-measured 2026-12-02 on branch route)
