@@ -62,8 +62,7 @@ def run_alg(alg, params, timeout=600, check=True, headless=None):
 
 
 def _inprocess_ready() -> bool:
-    """QGIS runs in this process (pytest-qgis starts it), Processing is initialised and the cad2osmag
-    provider registered (registered here if not; it stays for the session)."""
+    """QGIS runs in this process (pytest-qgis starts it) and Processing is initialised."""
     try:
         import sys
 
@@ -81,15 +80,26 @@ def _inprocess_ready() -> bool:
         from processing.core.Processing import Processing
 
         Processing.initialize()
-    if registry.providerById("cad2osmag") is None:
-        from .conftest import plugin_package
+    return registry.providerById("native") is not None
 
-        plugin_package()
-        from cad2osmag.processing_provider.provider import Cad2OsmagProvider
 
-        _inprocess_ready.provider = Cad2OsmagProvider()  # keep a reference: the registry does not own it in Python
-        registry.addProvider(_inprocess_ready.provider)
-    return registry.providerById("cad2osmag") is not None
+def _add_provider():
+    """The cad2osmag provider registered for one in-process run when nobody has (the plugin, the ``provider``
+    fixture): returns the one added here, which the caller removes again, so that a test loading the plugin
+    later registers its own (a provider left behind makes the plugin's a duplicate, deleted by the registry)."""
+    from qgis.core import QgsApplication
+
+    registry = QgsApplication.processingRegistry()
+    if registry.providerById("cad2osmag") is not None:
+        return None
+    from .conftest import plugin_package
+
+    plugin_package()
+    from cad2osmag.processing_provider.provider import Cad2OsmagProvider
+
+    prov = Cad2OsmagProvider()
+    registry.addProvider(prov)
+    return prov
 
 
 def _run_inprocess(alg, params):
@@ -98,8 +108,15 @@ def _run_inprocess(alg, params):
     its log (only ``check=True`` runs come here)."""
     from .qgis_inprocess import run_alg_inprocess
 
+    from qgis.core import QgsApplication
+
     values = {k: ([str(x) for x in v] if isinstance(v, (list, tuple)) else str(v)) for k, v in params.items()}
-    results, ok, feedback = run_alg_inprocess(alg, values)
+    added = _add_provider()
+    try:
+        results, ok, feedback = run_alg_inprocess(alg, values)
+    finally:
+        if added is not None:
+            QgsApplication.processingRegistry().removeProvider(added)
     COUNTS["inprocess"] += 1
     output = "\n".join(feedback.lines)
     assert ok, f"cad2osmag:{alg} failed (in the test's QGIS; CAD2OSMAG_TEST_HEADLESS=1 runs it headless):\n" \

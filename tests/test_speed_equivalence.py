@@ -74,7 +74,7 @@ def test_sist_output_is_pinned(name, tmp_path):
 # windowed path): sha256 of the rasterized grid (stages 1-2 of pipeline.process_floor) and of the label raster
 DWG_SHEET = "sist-original/SIST-F5.dwg"
 DWG_PINNED = {"grid": "b56b49e946cdc21c8f937d1f14a680170be91ea03ddee686d008de7b92183bf8",
-              "areas": "cd38b6fbe1965aea02110b8431f86c5fcfdef687537db705bee9eb21530ff998"}
+              "areas": "3f53a1030b815a43182177240a4a618206c564e40c4a5dbebe108bb065032eff"}
 
 
 def _dwg_digests(fr):
