@@ -173,7 +173,7 @@ def test_reader_reports_the_offending_id(case, tmp_path_factory):
     elif defect == "missing_node":
         w = rnd.choice(area_ways)
         gone = w.findall("nd")[1].get("ref")
-        for n in nodes:
+        for n in osm.findall("node"):  # tagged or not (a passage end carries door=yes)
             if n.get("id") == gone:
                 osm.remove(n)
     elif defect == "duplicate_way":
