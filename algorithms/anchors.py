@@ -44,6 +44,7 @@ from shapely.ops import linemerge, unary_union
 from .area_types import find_lift_crosses, stair_runs, _segments
 from .model import Area, CadGeometry, Passage
 from .progress import ensure
+from .rasterize import repaint_polygon
 
 ANCHOR_TYPES = ("stairs", "elevator")
 GROUP_GAP = {"stairs": 0.8, "elevator": 0.6}  # m: symbols this close are one stair (flights + eye) / lift group
@@ -698,30 +699,16 @@ def retype_break_line_lifts(areas: Sequence[Area], symbols) -> List[int]:
 def relabel(labels: Optional[np.ndarray], grid, areas: Sequence[Area], stats) -> None:
     """Paint the carved areas (``carve_anchors``' ``carved`` and ``pieces``) into the label raster
     of ``grid`` where it holds their host, so previews and later raster stages see them."""
-    import cv2
-
     carved = stats.get("carved") or []
     if labels is None or grid is None or not carved:
         return
     by_id = {a.id: a for a in areas}
-    rows, cols = labels.shape
     for _kind, new_id, host_id, _m2 in carved:
         for aid in [new_id] + list(stats.get("pieces", {}).get(new_id, [])):
             a = by_id.get(aid)
             if a is None:
                 continue
-            xs, ys = np.asarray(a.polygon.exterior.coords).T
-            c, r = grid.world_to_pixel(xs, ys)
-            pts = np.round(np.column_stack((c, r)) * 8).astype(np.int32)
-            # only the window of the polygon's pixels (a mask of the whole raster per piece was most of this)
-            c0, r0 = max(int(pts[:, 0].min()) >> 3, 0), max(int(pts[:, 1].min()) >> 3, 0)
-            c1, r1 = min((int(pts[:, 0].max()) >> 3) + 2, cols), min((int(pts[:, 1].max()) >> 3) + 2, rows)
-            if c1 <= c0 or r1 <= r0:
-                continue
-            m = np.zeros((r1 - r0, c1 - c0), np.uint8)
-            cv2.fillPoly(m, [pts - np.array([c0 << 3, r0 << 3], np.int32)], 1, shift=3)
-            win = labels[r0:r1, c0:c1]
-            win[(win == host_id) & m.astype(bool)] = a.id
+            repaint_polygon(labels, grid, a.polygon, a.id, old_id=host_id)
 
 
 LIFT_SIDE = (1.2, 3.5)  # m: the sides of a lift shaft (a car of 0.8-2.5 m plus the gap to the shaft walls)

@@ -1641,24 +1641,13 @@ def _finish(a: Area, pieces, areas: List[Area], passages, labels, grid, recs, t:
 
 
 def _relabel(labels: np.ndarray, grid, old_id: int, pieces: List[Area]) -> None:
-    import cv2
+    from .rasterize import repaint_polygon
 
-    rows, cols = labels.shape
     sel = labels == old_id
     if not sel.any():
         return
     for b in pieces[1:]:
-        xs, ys = np.asarray(b.polygon.exterior.coords).T
-        c, r = grid.world_to_pixel(xs, ys)
-        pts = np.round(np.column_stack((c, r)) * 8).astype(np.int32)
-        # the window of the piece's pixels only (not a mask of the whole raster per piece)
-        c0, r0 = max(int(pts[:, 0].min()) >> 3, 0), max(int(pts[:, 1].min()) >> 3, 0)
-        c1, r1 = min((int(pts[:, 0].max()) >> 3) + 2, cols), min((int(pts[:, 1].max()) >> 3) + 2, rows)
-        if c1 <= c0 or r1 <= r0:
-            continue
-        m = np.zeros((r1 - r0, c1 - c0), np.uint8)
-        cv2.fillPoly(m, [pts - np.array([c0 << 3, r0 << 3], np.int32)], 1, shift=3)
-        labels[r0:r1, c0:c1][sel[r0:r1, c0:c1] & m.astype(bool)] = b.id
+        repaint_polygon(labels, grid, b.polygon, b.id, mask=sel)
 
 
 __all__ = ["NameRules", "load_name_rules", "default_name_rules", "normalize_text", "strip_xref", "classify_text",
