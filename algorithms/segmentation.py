@@ -1515,19 +1515,24 @@ def _jamb_openings(space: np.ndarray, wall: np.ndarray, ends, dirs, k, min_px: f
         stop = np.argmin(after, axis=1)
         ok = (~after.all(axis=1) & (skip <= thick_px) & fr[rr, skip] & (stop > skip) & inb[rr, stop]
               & wall[ys[rr, stop], xs[rr, stop]])
-        for i in np.flatnonzero(ok).tolist():
-            st = int(stop[i])
-            s0 = int(skip[i])
-            key = (int(xs[i, s0]), int(ys[i, s0]), int(xs[i, st - 1]), int(ys[i, st - 1]))
-            run = math.hypot(key[2] - key[0], key[3] - key[1]) + 1.0
-            if run < min_px or run > max_px:
-                continue
-            rkey = (key[2], key[3], key[0], key[1])
-            if key in seen or rkey in seen:
-                continue
-            seen.add(key)
-            out.append((key, run, (float(ny[i, 0]), float(nx[i, 0]))))
+        _add_runs(out, seen, xs, ys, np.flatnonzero(ok), skip, stop, ny[:, 0], nx[:, 0], min_px, max_px)
     return out
+
+
+def _add_runs(out, seen, xs, ys, rows, starts, stops, u, v, min_px: float, max_px: float) -> None:
+    """Append to ``out`` the free runs ``xs/ys[i, starts[i]:stops[i]]`` of the sampled rays ``rows`` as
+    ((x0, y0, x1, y1), length px, (u[i], v[i])), those between ``min_px`` and ``max_px`` long and not yet in
+    ``seen`` either way round (the wall-line openings and the jamb openings share this)."""
+    for i in rows.tolist():
+        s0, st = int(starts[i]), int(stops[i])
+        key = (int(xs[i, s0]), int(ys[i, s0]), int(xs[i, st - 1]), int(ys[i, st - 1]))
+        run = math.hypot(key[2] - key[0], key[3] - key[1]) + 1.0
+        if run < min_px or run > max_px:
+            continue
+        if key in seen or (key[2], key[3], key[0], key[1]) in seen:
+            continue
+        seen.add(key)
+        out.append((key, run, (float(u[i]), float(v[i]))))
 
 
 def _wall_line_openings(space: np.ndarray, labels: np.ndarray, resolution: float, max_cut_m: float,
@@ -1592,17 +1597,8 @@ def _wall_line_openings(space: np.ndarray, labels: np.ndarray, resolution: float
     valid &= ~fr.all(axis=1) & inb[rr, stop] & (stop > 0)
     out = []
     seen = set()
-    for i in np.flatnonzero(valid).tolist():
-        st = int(stop[i])
-        key = (int(xs[i, 0]), int(ys[i, 0]), int(xs[i, st - 1]), int(ys[i, st - 1]))
-        run = math.hypot(key[2] - key[0], key[3] - key[1]) + 1.0
-        if run < min_px or run > max_px:
-            continue
-        rkey = (key[2], key[3], key[0], key[1])
-        if key in seen or rkey in seen:
-            continue
-        seen.add(key)
-        out.append((key, run, (float(dirs[i, 1]), float(dirs[i, 0]))))
+    _add_runs(out, seen, xs, ys, np.flatnonzero(valid), np.zeros(len(stop), np.int64), stop, dirs[:, 1], dirs[:, 0],
+              min_px, max_px)
     if jambs:  # also the openings square to the wall from its end (``_wall_line_doors``' second pass)
         return out, _jamb_openings(space, wall, ends[face_end], dirs[face_end], k[face_end], min_px, max_px,
                                    seen, resolution)
