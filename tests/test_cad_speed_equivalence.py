@@ -57,19 +57,13 @@ def _texts(h, texts):
 
 def drawing_parts(d) -> dict:
     """sha256 per part of a CadDrawing (to say *what* differs when the whole digest does)."""
-    parts = {}
-    h = hashlib.sha256()
-    _geoms(h, d.geometries)
-    parts["geometries"] = h.hexdigest()
-    h = hashlib.sha256()
-    _texts(h, d.texts)
-    parts["texts"] = h.hexdigest()
-    h = hashlib.sha256()
-    _texts(h, d.hidden_texts)
-    parts["hidden_texts"] = h.hexdigest()
-    h = hashlib.sha256()
-    _geoms(h, d.boundary)
-    parts["boundary"] = h.hexdigest()
+    def digest(feed, items):
+        h = hashlib.sha256()
+        feed(h, items)
+        return h.hexdigest()
+
+    parts = {"geometries": digest(_geoms, d.geometries), "texts": digest(_texts, d.texts),
+             "hidden_texts": digest(_texts, d.hidden_texts), "boundary": digest(_geoms, d.boundary)}
     parts["doors"] = hashlib.sha256(repr([(_r(x.x0), _r(x.y0), _r(x.x1), _r(x.y1), x.source)
                                           for x in d.doors]).encode()).hexdigest()
     parts["plans"] = hashlib.sha256(repr([(p.index, tuple(_r(v, 4) for v in p.extent), _r(p.wall_length, 3),
