@@ -2606,8 +2606,6 @@ def segment(grid: OccupancyGrid, door_width: float = DEFAULT_DOOR_WIDTH,
         labels, group_peak = _wall_line_doors(labels, space, dist, res, max(door_width + delta, envelope_gap),
                                               group_peak, stats, _observed_walls(data, space),
                                               scanned=bool((data == UNKNOWN).any()))
-    if CORRIDOR_LOOPS and (data == UNKNOWN).any():  # scanned maps: corridors cut by clutter (CAD: doors)
-        labels, group_peak = _join_corridor_loops(labels, group_peak, res, stats)
     labels, group_peak, dropped_px = _drop_outside_pockets(labels, free & ~interior, group_peak,
                                                            info.get("claimed"), info.get("inside_pixels"))
     info.pop("claimed", None)
@@ -2616,6 +2614,9 @@ def segment(grid: OccupancyGrid, door_width: float = DEFAULT_DOOR_WIDTH,
         stats["outside_pockets_m2"] = dropped_px * res * res
     if RAY_SPIKES and _observed_walls(data, space) is not None:  # recorded maps whose walls are occupied
         labels, group_peak = _drop_ray_spikes(labels, data, group_peak, res, stats)
+    if CORRIDOR_LOOPS and (data == UNKNOWN).any():  # scanned maps: corridors cut by clutter (CAD: doors);
+        # after the outside pockets: no exterior recess is joined to a corridor
+        labels, group_peak = _join_corridor_loops(labels, group_peak, res, stats)
     stats["merge_s"] = time.perf_counter() - t
     progress.step(65, f"merged into {int(labels.max())} areas")
 

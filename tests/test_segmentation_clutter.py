@@ -376,3 +376,16 @@ def test_corridor_loops_leave_binary_grids_alone():
     """Binary grids (every CAD raster) are not touched: the step does not even run."""
     ag = _segment(_corridor_ring(True))
     assert "corridor_loops_joined" not in ag.stats
+
+
+def test_way_round_is_geodesic():
+    """The way round inside a U (two 10 px arms 100 px long, 20 px apart, joined at the bottom) from one
+    tip to the other is about 2 x 100 + 30 px, not the 30 px straight across; on a 4 px grid."""
+    mask = np.zeros((120, 60), bool)
+    mask[0:110, 0:10] = True
+    mask[0:110, 30:40] = True
+    mask[100:110, 0:40] = True
+    around = seg._geodesic_from(mask, (2, 5), 4)(2, 35)
+    assert 200 <= around <= 250, around
+    pieces = seg._border_pieces(np.array([5, 5, 5, 5, 40, 40, 40]), np.array([1, 2, 3, 4, 7, 8, 9]), 2)
+    assert len(pieces) == 2 and pieces[0] == pytest.approx((5.0, 2.5)), pieces
