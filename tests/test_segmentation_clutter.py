@@ -389,3 +389,23 @@ def test_way_round_is_geodesic():
     assert 200 <= around <= 250, around
     pieces = seg._border_pieces(np.array([5, 5, 5, 5, 40, 40, 40]), np.array([1, 2, 3, 4, 7, 8, 9]), 2)
     assert len(pieces) == 2 and pieces[0] == pytest.approx((5.0, 2.5)), pieces
+
+
+@pytest.mark.qgis_process
+def test_recorded_corridor_ring_through_qgis_process(tmp_path):
+    """cad2osmag:segment on the recorded ring with three boxes as a ROS map (unknown = 205): the ring is
+    one corridor area, the twelve offices rooms, twelve door passages."""
+    from .qgis_process import run_alg
+
+    from algorithms.model import UNKNOWN
+
+    data = _recorded(_corridor_ring(True))
+    img = np.where(data == FREE, 254, np.where(data == OCCUPIED, 0, 205)).astype(np.uint8)
+    assert (data == UNKNOWN).any()
+    cv2.imwrite(str(tmp_path / "map.pgm"), img)
+    (tmp_path / "map.yaml").write_text("image: map.pgm\nresolution: 0.05\norigin: [0.0, 0.0, 0.0]\n"
+                                       "negate: 0\noccupied_thresh: 0.65\nfree_thresh: 0.196\n")
+    out = {"AREAS": tmp_path / "a.gpkg", "PASSAGES": tmp_path / "p.gpkg", "LABELS": tmp_path / "l.tif"}
+    _, res, _ = run_alg("segment", {"INPUT": tmp_path / "map.yaml", **{k: str(v) for k, v in out.items()}})
+    assert res["AREA_COUNT"] == 13 and res["CORRIDOR_COUNT"] == 1 and res["ROOM_COUNT"] == 12, res
+    assert res["PASSAGE_COUNT"] == 12, res
