@@ -1879,10 +1879,11 @@ def _wall_line_doors(labels: np.ndarray, space: np.ndarray, dist: np.ndarray, re
 
 # --------------------------------------------------------------------------- corridor loops
 CORRIDOR_LOOPS = True  # scanned maps: pieces that lead from a corridor back to it around a loop are corridor
-LOOP_PIECES = 4  # ... a chain of at most this many pieces ...
+LOOP_PIECES = 6  # ... a chain of at most this many pieces ...
 LOOP_DETOUR = 1.5  # ... whose way from the corridor back to it is this x shorter than the way round in the corridor
 LOOP_TRAVERSE = 1.5  # ... and every piece of which is passed along its length: its openings this x its width apart
 LOOP_STEP_M = 0.2  # grid step of the way-round (geodesic) distance in the corridor
+LOOP_CORE_M = END_THICK_M  # ... or the loop goes round a core thicker than a wall (a ring cut into even pieces)
 LOOP_MAX_CHAINS = 5000  # chains judged per corridor at most (bounds the time on dense area graphs)
 
 
@@ -1950,6 +1951,26 @@ def _border_pieces(rr: np.ndarray, cc: np.ndarray, min_px: float):
             if i > 0 and cnt[i] >= min_px]
 
 
+def _encloses_core(labels: np.ndarray, c: int, path, objs, min_px: float) -> bool:
+    """Whether area ``c`` and the chain ``path`` together go round something thicker than a wall that
+    ``c`` alone does not enclose (free space of other areas and obstacles alike): a new hole whose
+    largest inscribed disk has a radius of at least ``min_px``."""
+    import cv2
+    from scipy import ndimage as ndi
+
+    sls = [objs[k - 1] for k in [c] + list(path)]
+    r0, r1 = min(x[0].start for x in sls), max(x[0].stop for x in sls)
+    c0, c1 = min(x[1].start for x in sls), max(x[1].stop for x in sls)
+    sub = labels[r0:r1, c0:c1]
+    mine = sub == c
+    both = mine | np.isin(sub, np.asarray(path, sub.dtype))
+    new = ndi.binary_fill_holes(both) & ~ndi.binary_fill_holes(mine) & ~both
+    if not new.any():
+        return False
+    d = cv2.distanceTransform(np.pad(new, 1).view(np.uint8), cv2.DIST_L2, 5)
+    return float(d.max()) >= min_px
+
+
 def _join_corridor_loops(labels: np.ndarray, group_peak: np.ndarray, resolution: float,
                          stats: dict):
     """Corridors are not cut into pieces by clutter. On a scanned map a corridor ring (or a corridor
@@ -1959,8 +1980,11 @@ def _join_corridor_loops(labels: np.ndarray, group_peak: np.ndarray, resolution:
     area meeting it at two separate places -- is the rest of that corridor's loop when
 
     * the way round inside the corridor between the chain's two ends is at least ``LOOP_DETOUR`` x
-      the way through the chain (opening to opening): the chain closes a loop; a room with two
-      doors onto one corridor is no shortcut (the way along the corridor is as short), and
+      the way through the chain (opening to opening): the chain is a shortcut of the corridor's
+      loop; or the corridor and the chain together go round a core thicker than a wall
+      (``LOOP_CORE_M``, a new hole of that width: a ring cut into even pieces, none holding most of
+      it). A room with two doors onto one corridor is neither (the way along the corridor is as
+      short; only a wall lies between them), and
     * every piece is passed along its length: its two openings are at least ``LOOP_TRAVERSE`` x its
       widest disk (2 x clearance peak) apart, farther than the diagonal of a square room that wide
       (sqrt 2): a row of offices or cubicles entered one from the next is visited, not passed along.
@@ -2047,7 +2071,8 @@ def _join_corridor_loops(labels: np.ndarray, group_peak: np.ndarray, resolution:
                     geo[path[0]] = _geodesic_from(labels[sl] == c, (y0 - sl[0].start, x0 - sl[1].start), step)
                 y1, x1 = pts[-1]
                 around = geo[path[0]](y1 - sl[0].start, x1 - sl[1].start)
-                if around < LOOP_DETOUR * through:
+                if around < LOOP_DETOUR * through and not _encloses_core(labels, c, path, objs,
+                                                                         LOOP_CORE_M / 2.0 / resolution):
                     continue
                 for p in path:
                     uf.parent[uf.find(p)] = uf.find(c)

@@ -327,6 +327,26 @@ def test_recorded_corridor_ring_with_cabinets_is_one_area(monkeypatch):
     assert share < 0.9 and len(ag.areas) == 14, ring
 
 
+def test_recorded_ring_in_even_pieces_is_one_area(monkeypatch):
+    """Seven boxes cut the recorded ring into five pieces of similar size: no piece holds most of the
+    ring, so no chain is a shortcut of a piece's own way round, but the cycle of pieces goes round the
+    ring's 6 m core (thicker than a wall, ``LOOP_CORE_M``): one area. Without that test (a chain must
+    be a shortcut) it stays in five pieces."""
+    img = _corridor_ring(False)
+    for cx, cy in ((6, 6), (12, 6), (18, 6), (18, 14), (10, 14)):
+        _block(img, cx - 0.3, cy - 0.25, cx + 0.3, cy + 0.25)
+    for cx, cy in ((24, 10), (2, 10)):
+        _block(img, cx - 0.25, cy - 0.3, cx + 0.25, cy + 0.3)
+    img = _recorded(img)
+    ag = _segment(img)
+    share, ring = _ring_share(ag)
+    assert share >= 0.97 and len(ag.areas) == 13, ring
+    monkeypatch.setattr(seg, "LOOP_CORE_M", 1e9)
+    ag = _segment(img)
+    share, ring = _ring_share(ag)
+    assert len(ring) == 5 and share < 0.3, ring
+
+
 def test_offices_opening_into_each_other_are_no_corridor_loop():
     """The six north offices of the ring opening into each other (0.9 m doors in their partitions) lead
     from the ring back to it, but the way along the ring between their doors is as short as the way
