@@ -429,3 +429,22 @@ def test_recorded_corridor_ring_through_qgis_process(tmp_path):
     _, res, _ = run_alg("segment", {"INPUT": tmp_path / "map.yaml", **{k: str(v) for k, v in out.items()}})
     assert res["AREA_COUNT"] == 13 and res["CORRIDOR_COUNT"] == 1 and res["ROOM_COUNT"] == 12, res
     assert res["PASSAGE_COUNT"] == 12, res
+
+
+def test_recorded_straight_corridor_with_boxes_is_one_area():
+    """A recorded 24 m straight corridor (2 m) with twelve offices and three boxes standing in it is one
+    area before the loop step (its boxes leave no piece of its own there): no chain to judge, nothing joined."""
+    img = _grid(26, 11)
+    _free(img, 1, 5, 25, 7)
+    for i in range(6):
+        ox = 1 + i * 4
+        _free(img, ox + 0.075, 1, ox + 3.925, 4.85)
+        _free(img, ox + 1, 4.85, ox + 1.9, 5)
+        _free(img, ox + 0.075, 7.15, ox + 3.925, 10)
+        _free(img, ox + 1, 7, ox + 1.9, 7.15)
+    for cx in (7, 13, 19):
+        _block(img, cx - 0.3, 5.75, cx + 0.3, 6.25)
+    ag = _segment(_recorded(img))
+    corridor = _labels_in(ag, 1, 5, 25, 7)
+    assert len(ag.areas) == 13 and max(corridor.values()) / sum(corridor.values()) >= 0.97, corridor
+    assert ag.stats["corridor_loops_joined"] == 0
