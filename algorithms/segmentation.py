@@ -2096,6 +2096,134 @@ def _join_corridor_loops(labels: np.ndarray, group_peak: np.ndarray, resolution:
     return labels, group_peak
 
 
+# --------------------------------------------------------------------------- partition lines
+PARTITION_LINES = True  # scanned maps: a wall line continued across the ends of partitions that stop on it
+PARTITION_ENDS = 2  # ... at least this many partition ends along the line prove the missing wall
+
+
+def _partition_chains(space: np.ndarray, wall: np.ndarray, openings, resolution: float, max_cut_m: float):
+    """Wall lines continued across partition ends. From the end of each wall-line opening the line
+    runs on through the obstacle it meets when that obstacle is a partition's end: along the line no
+    thicker than a wall (``END_THICK_M``) and, across the line, wall running on to one side and space
+    on the other (the partition comes from one side and stops on the line). Returns a list of
+    (runs, ends): the free runs (x0, y0, x1, y1 px) of the line from the opening on, and the number of
+    partition ends crossed."""
+    rows, cols = space.shape
+    tmax = int(math.ceil(END_THICK_M / resolution))
+    max_px = max_cut_m / resolution
+    out = []
+
+    def inside(xi, yi):
+        return 0 <= xi < cols and 0 <= yi < rows
+
+    for key, _, (uy, ux) in openings:
+        runs = [tuple(key)]
+        x, y = float(key[2]), float(key[3])
+        ends = 0
+        for _ in range(8):
+            def at(tt):
+                return int(round(x + ux * tt)), int(round(y + uy * tt))
+            t = 1
+            xi, yi = at(t)
+            if not inside(xi, yi) or not wall[yi, xi]:
+                break
+            while inside(xi, yi) and wall[yi, xi] and t <= tmax + 1:
+                t += 1
+                xi, yi = at(t)
+            if not inside(xi, yi) or t > tmax + 1 or not space[yi, xi]:
+                break  # thicker than a wall along the line (a block, a wall met side-on) or the map ends
+            mx, my = x + ux * t / 2.0, y + uy * t / 2.0
+            kinds = []
+            for sgn in (-1.0, 1.0):
+                pts = [(int(round(mx - uy * sgn * o)), int(round(my + ux * sgn * o))) for o in range(0, tmax + 1)]
+                if not all(inside(px, py) for px, py in pts):
+                    kinds.append("edge")
+                elif all(wall[py, px] for px, py in pts):
+                    kinds.append("wall")
+                else:
+                    kinds.append("space" if space[pts[-1][1], pts[-1][0]] else "other")
+            if sorted(kinds) != ["space", "wall"]:
+                break
+            ends += 1
+            s0 = t
+            while inside(xi, yi) and space[yi, xi]:
+                t += 1
+                xi, yi = at(t)
+            if not inside(xi, yi) or t - s0 > max_px:
+                break
+            runs.append((int(round(x + ux * s0)), int(round(y + uy * s0)), int(round(x + ux * (t - 1))),
+                         int(round(y + uy * (t - 1)))))
+            x, y = x + ux * (t - 1), y + uy * (t - 1)
+        if ends >= PARTITION_ENDS:
+            last = runs[-1]
+            ext = _block_extensions(space, wall, [(last, math.hypot(last[2] - last[0], last[3] - last[1]), (uy, ux))],
+                                    resolution, max_cut_m) if BLOCK_CUTS else {}
+            if ext:  # the line ends on a free-standing block: it runs on beyond it (``_block_extensions``)
+                runs.append(ext[0])
+            out.append((runs, ends))
+    return out
+
+
+def _cut_partition_lines(labels: np.ndarray, space: np.ndarray, dist: np.ndarray, resolution: float,
+                         max_cut_m: float, group_peak: np.ndarray, stats: dict, occupied=None):
+    """Rooms open onto a corridor over their whole side. A row of rooms whose partitions all stop on
+    one line, the corridor's wall continued (intel_map's two rooms west of its south-west corridor),
+    has no door-sized opening: each room is as wide as its opening, so the wall-line judge keeps it
+    with the corridor (a bay). Several partition ends on one line prove the missing wall: a wall
+    line continued across at least ``PARTITION_ENDS`` partition ends (``_partition_chains``) cuts
+    the area it crosses along all its runs; every piece cut off that is room-shaped (less than
+    ``CORRIDOR_ELONGATION`` x (2 x its clearance peak)^2 and at least ``CUT_MIN_ROOM_M`` squared)
+    becomes an area, the largest piece stays the area. Returns (labels, group_peak);
+    ``stats["partition_line_rooms"]``."""
+    import cv2
+
+    t0 = time.perf_counter()
+    wall = ~space if occupied is None else occupied
+    openings = _wall_line_openings(space, labels, resolution, max_cut_m, occupied, jog_px=FACE_JOG_PX)
+    chains = _partition_chains(space, wall, openings, resolution, max_cut_m) if openings else []
+    new_rooms = 0
+    min_area = (CUT_MIN_ROOM_M / resolution) ** 2
+    next_id = int(labels.max()) + 1
+    peaks = {}
+    for runs, _ in chains:
+        line = np.zeros(labels.shape, np.uint8)
+        for r in runs:
+            cv2.line(line, r[:2], r[2:], 1, 1, lineType=8)
+        line = line.view(bool)
+        for g in np.unique(labels[line & (labels > 0)]).tolist():
+            rr, cc = np.nonzero(labels == g)
+            r0, r1, c0, c1 = rr.min(), rr.max() + 1, cc.min(), cc.max() + 1
+            mine = labels[r0:r1, c0:c1] == g
+            n, comp, st, _ = cv2.connectedComponentsWithStats((mine & ~line[r0:r1, c0:c1]).view(np.uint8),
+                                                              connectivity=4, ltype=cv2.CV_32S)
+            if n <= 2:
+                continue
+            big = 1 + int(np.argmax(st[1:, cv2.CC_STAT_AREA]))
+            sub = labels[r0:r1, c0:c1]
+            for k in range(1, n):
+                a = float(st[k, cv2.CC_STAT_AREA])
+                if k == big or a < min_area:
+                    continue
+                m = comp == k
+                pk = float(dist[r0:r1, c0:c1][m].max())
+                if a >= CORRIDOR_ELONGATION * (2.0 * pk) ** 2:
+                    continue
+                sub[m] = next_id
+                peaks[next_id] = pk
+                next_id += 1
+                new_rooms += 1
+    if peaks:
+        labels = _single_pieces(labels)
+        top = max(peaks)
+        if top >= len(group_peak):
+            group_peak = np.r_[group_peak, np.zeros(top + 1 - len(group_peak))]
+        for lid, v in peaks.items():
+            group_peak[lid] = v
+    stats["partition_line_rooms"] = float(new_rooms)
+    stats["partition_line_s"] = time.perf_counter() - t0
+    return labels, group_peak
+
+
 # --------------------------------------------------------------------------- vector output
 def label_polygons(labels: np.ndarray, grid: OccupancyGrid) -> Dict[int, object]:
     """Exact pixel-edge outline of every label (4-connected), as shapely Polygons in world metres."""
@@ -2642,6 +2770,9 @@ def segment(grid: OccupancyGrid, door_width: float = DEFAULT_DOOR_WIDTH,
     if CORRIDOR_LOOPS and (data == UNKNOWN).any():  # scanned maps: corridors cut by clutter (CAD: doors);
         # after the outside pockets: no exterior recess is joined to a corridor
         labels, group_peak = _join_corridor_loops(labels, group_peak, res, stats)
+    if PARTITION_LINES and WALL_CUTS and (data == UNKNOWN).any():  # scanned maps: rooms open over their whole side
+        labels, group_peak = _cut_partition_lines(labels, space, dist, res, max(door_width + delta, envelope_gap),
+                                                  group_peak, stats, _observed_walls(data, space))
     stats["merge_s"] = time.perf_counter() - t
     progress.step(65, f"merged into {int(labels.max())} areas")
 

@@ -448,3 +448,41 @@ def test_recorded_straight_corridor_with_boxes_is_one_area():
     corridor = _labels_in(ag, 1, 5, 25, 7)
     assert len(ag.areas) == 13 and max(corridor.values()) / sum(corridor.values()) >= 0.97, corridor
     assert ag.stats["corridor_loops_joined"] == 0
+
+
+# ----------------------------------------------------------------- partition lines (scanned maps)
+def _rooms_open_over_their_side(n):
+    """Recorded: a 2 m corridor (y 6..8) whose north wall ends at a 0.9 m door into a room (x 1..5.9);
+    east of it ``n`` rooms 3.5 x 3 m open onto the corridor over their whole side, their 0.15 m
+    partitions stopping on the corridor's wall line (intel_map's rooms west of its south-west corridor)."""
+    img = _grid(24, 12)
+    _free(img, 1, 6, 23, 8)
+    _free(img, 1, 1, 5.9, 5.85)
+    _free(img, 5, 5.85, 5.9, 6)
+    for i in range(n):
+        _free(img, 6.05 + i * 3.65, 3, 9.55 + i * 3.65, 6)
+    return _recorded(img)
+
+
+@pytest.mark.parametrize("n", [2, 3])
+def test_rooms_open_over_their_side_behind_partition_ends(n, monkeypatch):
+    """The corridor's wall line continued from its door across the ends of the partitions that stop on
+    it (two or more: the missing wall is proven) cuts each room off; with the rule off each room is
+    part of the corridor (a bay: its opening is as wide as the room)."""
+    ag = _segment(_rooms_open_over_their_side(n))
+    corridor = set(_labels_in(ag, 1, 6.2, 23, 7.8))
+    rooms = [_labels_in(ag, 6.2 + i * 3.65, 3.2, 9.4 + i * 3.65, 5.8) for i in range(n)]
+    assert all(len(r) == 1 for r in rooms), rooms
+    assert len({next(iter(r)) for r in rooms}) == n and not corridor & {next(iter(r)) for r in rooms}, (rooms, corridor)
+    assert ag.stats["partition_line_rooms"] == n
+    monkeypatch.setattr(seg, "PARTITION_LINES", False)
+    ag = _segment(_rooms_open_over_their_side(n))
+    corridor = set(_labels_in(ag, 1, 6.2, 23, 7.8))
+    assert all(set(_labels_in(ag, 6.2 + i * 3.65, 3.2, 9.4 + i * 3.65, 5.8)) <= corridor for i in range(n))
+
+
+def test_one_room_open_over_its_side_stays_a_bay():
+    """One partition end proves nothing: a single room open over its side stays with the corridor."""
+    ag = _segment(_rooms_open_over_their_side(1))
+    assert ag.stats["partition_line_rooms"] == 0
+    assert set(_labels_in(ag, 6.2, 3.2, 9.4, 5.8)) <= set(_labels_in(ag, 1, 6.2, 23, 7.8))
