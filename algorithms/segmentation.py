@@ -2767,10 +2767,11 @@ def segment(grid: OccupancyGrid, door_width: float = DEFAULT_DOOR_WIDTH,
         stats["outside_pockets_m2"] = dropped_px * res * res
     if RAY_SPIKES and _observed_walls(data, space) is not None:  # recorded maps whose walls are occupied
         labels, group_peak = _drop_ray_spikes(labels, data, group_peak, res, stats)
-    if CORRIDOR_LOOPS and (data == UNKNOWN).any():  # scanned maps: corridors cut by clutter (CAD: doors);
+    scanned_map = (CORRIDOR_LOOPS or PARTITION_LINES) and bool((data == UNKNOWN).any())
+    if CORRIDOR_LOOPS and scanned_map:  # scanned maps: corridors cut by clutter (CAD: doors);
         # after the outside pockets: no exterior recess is joined to a corridor
         labels, group_peak = _join_corridor_loops(labels, group_peak, res, stats)
-    if PARTITION_LINES and WALL_CUTS and (data == UNKNOWN).any():  # scanned maps: rooms open over their whole side
+    if PARTITION_LINES and WALL_CUTS and scanned_map:  # scanned maps: rooms open over their whole side
         labels, group_peak = _cut_partition_lines(labels, space, dist, res, max(door_width + delta, envelope_gap),
                                                   group_peak, stats, _observed_walls(data, space))
     stats["merge_s"] = time.perf_counter() - t
