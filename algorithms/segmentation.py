@@ -1877,6 +1877,353 @@ def _wall_line_doors(labels: np.ndarray, space: np.ndarray, dist: np.ndarray, re
     stats["wall_line_s"] = time.perf_counter() - t
     return labels, group_peak
 
+# --------------------------------------------------------------------------- corridor loops
+CORRIDOR_LOOPS = True  # scanned maps: pieces that lead from a corridor back to it around a loop are corridor
+LOOP_PIECES = 6  # ... a chain of at most this many pieces ...
+LOOP_DETOUR = 1.5  # ... whose way from the corridor back to it is this x shorter than the way round in the corridor
+LOOP_TRAVERSE = 1.5  # ... and every piece of which is passed along its length: its openings this x its width apart
+LOOP_STEP_M = 0.2  # grid step of the way-round (geodesic) distance in the corridor
+LOOP_CORE_M = END_THICK_M  # ... or the loop goes round a core thicker than a wall (a ring cut into even pieces)
+LOOP_MAX_CHAINS = 5000  # chains judged per corridor at most (bounds the time on dense area graphs)
+
+
+def _geodesic_from(mask: np.ndarray, start, step: int):
+    """Geodesic distances (px) inside ``mask`` from ``start`` (row, col) on a grid coarsened to
+    ``step`` px (a coarse cell is inside when any of its pixels is: the coarse mask stays connected,
+    and a wall thinner than a step may be crossed, which only shortens a way). Returns a function
+    (row, col) -> distance."""
+    from scipy.sparse import coo_matrix
+    from scipy.sparse.csgraph import dijkstra
+
+    h, w = mask.shape
+    hc, wc = -(-h // step), -(-w // step)
+    pad = np.zeros((hc * step, wc * step), np.float32)
+    pad[:h, :w] = mask
+    coarse = pad.reshape(hc, step, wc, step).max(axis=(1, 3)) > 0
+    idx = -np.ones((hc, wc), np.int64)
+    nodes = np.flatnonzero(coarse.ravel())
+    idx.ravel()[nodes] = np.arange(len(nodes))
+    rows, cols, wts = [], [], []
+    for dr, dc, wgt in ((0, 1, 1.0), (1, 0, 1.0), (1, 1, math.sqrt(2.0)), (1, -1, math.sqrt(2.0))):
+        a = idx[0:hc - dr, max(0, -dc):wc - max(0, dc)]
+        b = idx[dr:hc, max(0, dc):wc - max(0, -dc)]
+        m = (a >= 0) & (b >= 0)
+        rows.append(a[m])
+        cols.append(b[m])
+        wts.append(np.full(int(m.sum()), wgt * step))
+    n = len(nodes)
+    if n == 0:
+        return lambda r, c: math.inf
+    g = coo_matrix((np.concatenate(wts), (np.concatenate(rows), np.concatenate(cols))), shape=(n, n)).tocsr()
+    ys, xs = np.divmod(nodes, wc)
+
+    def snap(r, c):
+        d2 = (ys - r / step) ** 2 + (xs - c / step) ** 2
+        k = int(np.argmin(d2))
+        return k, math.sqrt(float(d2[k])) * step
+
+    s, off = snap(*start)
+    dist = dijkstra(g, directed=False, indices=s)
+
+    def at(r, c):
+        k, off2 = snap(r, c)
+        return float(dist[k]) + off + off2
+
+    return at
+
+
+def _border_pieces(rr: np.ndarray, cc: np.ndarray, min_px: float):
+    """Centres (row, col) of the separate pieces of a border given by its pixel pairs (pieces
+    within 2 px of each other are one), largest first; pieces shorter than ``min_px`` are left out."""
+    import cv2
+
+    r0, c0 = int(rr.min()), int(cc.min())
+    img = np.zeros((int(rr.max()) - r0 + 5, int(cc.max()) - c0 + 5), np.uint8)
+    img[rr - r0 + 2, cc - c0 + 2] = 1
+    n, lab = cv2.connectedComponents(cv2.dilate(img, np.ones((5, 5), np.uint8)), connectivity=8)
+    if n <= 2:
+        return [(float(rr.mean()), float(cc.mean()))]
+    k = lab[rr - r0 + 2, cc - c0 + 2]
+    cnt = np.bincount(k, minlength=n)
+    ys = np.bincount(k, weights=rr.astype(np.float64), minlength=n)
+    xs = np.bincount(k, weights=cc.astype(np.float64), minlength=n)
+    return [(ys[i] / cnt[i], xs[i] / cnt[i]) for i in np.argsort(-cnt, kind="stable").tolist()
+            if i > 0 and cnt[i] >= min_px]
+
+
+def _encloses_core(labels: np.ndarray, c: int, path, objs, min_px: float) -> bool:
+    """Whether area ``c`` and the chain ``path`` together go round something thicker than a wall that
+    ``c`` alone does not enclose (free space of other areas and obstacles alike): a new hole whose
+    largest inscribed disk has a radius of at least ``min_px``."""
+    import cv2
+    from scipy import ndimage as ndi
+
+    sls = [objs[k - 1] for k in [c] + list(path)]
+    r0, r1 = min(x[0].start for x in sls), max(x[0].stop for x in sls)
+    c0, c1 = min(x[1].start for x in sls), max(x[1].stop for x in sls)
+    sub = labels[r0:r1, c0:c1]
+    mine = sub == c
+    both = mine | np.isin(sub, np.asarray(path, sub.dtype))
+    new = ndi.binary_fill_holes(both) & ~ndi.binary_fill_holes(mine) & ~both
+    if not new.any():
+        return False
+    d = cv2.distanceTransform(np.pad(new, 1).view(np.uint8), cv2.DIST_L2, 5)
+    return float(d.max()) >= min_px
+
+
+def _join_corridor_loops(labels: np.ndarray, group_peak: np.ndarray, resolution: float,
+                         stats: dict):
+    """Corridors are not cut into pieces by clutter. On a scanned map a corridor ring (or a corridor
+    running round a block) comes out in pieces where a box, a jutting corner or a junction's wide
+    clearance peak narrows it. A chain of up to ``LOOP_PIECES`` areas that leaves a corridor-shaped
+    area (``CORRIDOR_ELONGATION``, as the area types) and comes back to the *same* area -- or one
+    area meeting it at two separate places -- is the rest of that corridor's loop when
+
+    * the way round inside the corridor between the chain's two ends is at least ``LOOP_DETOUR`` x
+      the way through the chain (opening to opening): the chain is a shortcut of the corridor's
+      loop; or the corridor and the chain together go round a core thicker than a wall
+      (``LOOP_CORE_M``, a new hole of that width: a ring cut into even pieces, none holding most of
+      it). A room with two doors onto one corridor is neither (the way along the corridor is as
+      short; only a wall lies between them), and
+    * every piece is passed along its length: its two openings are at least ``LOOP_TRAVERSE`` x its
+      widest disk (2 x clearance peak) apart, farther than the diagonal of a square room that wide
+      (sqrt 2): a row of offices or cubicles entered one from the next is visited, not passed along.
+
+    Borders shorter than ``MIN_PASSAGE_M`` are no openings. Returns (labels, group_peak);
+    ``stats["corridor_loops_joined"]`` (pieces joined)."""
+    from scipy import ndimage as ndi
+
+    t = time.perf_counter()
+    n = int(labels.max()) + 1
+    joined = 0
+    if n > 3:
+        lo, hi, _, _, rr, cc = _neighbour_pairs(labels, None)
+        lo, hi = lo.astype(np.int64), hi.astype(np.int64)
+        key = lo * n + hi
+        order = np.argsort(key, kind="stable")
+        key, rr, cc = key[order], rr[order], cc[order]
+        starts = np.flatnonzero(np.r_[True, key[1:] != key[:-1]])
+        stops = np.r_[starts[1:], len(key)]
+        min_border = max(2.0, MIN_PASSAGE_M / resolution)
+        border = {}  # (a, b) -> [(y, x) centre of each separate piece of their border, largest first]
+        nbrs: Dict[int, set] = {}
+        for s0, s1 in zip(starts.tolist(), stops.tolist()):
+            if s1 - s0 < min_border:
+                continue
+            a, b = divmod(int(key[s0]), n)
+            pieces = _border_pieces(rr[s0:s1], cc[s0:s1], min_border)
+            if not pieces:
+                continue
+            border[(a, b)] = border[(b, a)] = pieces
+            nbrs.setdefault(a, set()).add(b)
+            nbrs.setdefault(b, set()).add(a)
+        area = np.bincount(labels.ravel(), minlength=n).astype(np.float64)
+        pk = np.zeros(n)
+        pk[:min(n, len(group_peak))] = group_peak[:n]
+        pk = np.maximum(pk, 1.0)
+
+        def corridor_shaped(a_sum, peak):
+            return a_sum >= CORRIDOR_ELONGATION * (2.0 * peak) ** 2
+
+        uf = _UnionFind(n)
+        objs = ndi.find_objects(labels)
+        step = max(1, int(round(LOOP_STEP_M / resolution)))
+        taken = set()
+        for c in sorted(range(1, n), key=lambda k: -area[k]):
+            if c in taken or c not in nbrs or not corridor_shaped(area[c], pk[c]) or objs[c - 1] is None:
+                continue
+            ends = nbrs[c]
+            geo = {}
+            sl = objs[c - 1]
+            found = []
+
+            def walk(path):
+                last = path[-1]
+                if (len(path) >= 2 and last in ends and path[0] < last) or \
+                        (len(path) == 1 and len(border[(c, last)]) >= 2):  # one piece met at two places
+                    found.append(list(path))
+                if len(path) >= LOOP_PIECES or len(found) >= LOOP_MAX_CHAINS:
+                    return
+                for nb in sorted(nbrs.get(last, ())):
+                    if nb != c and nb not in path and nb not in taken:
+                        walk(path + [nb])
+
+            for first in sorted(ends):
+                if first not in taken and len(found) < LOOP_MAX_CHAINS:
+                    walk([first])
+            found.sort(key=len)  # the shortest chains first
+            before = joined
+            for path in found:
+                if any(p in taken for p in path):
+                    continue
+                pts = [border[(c, path[0])][0]] + [border[(p, q)][0] for p, q in zip(path[:-1], path[1:])]
+                if len(path) == 1:  # the piece of the border farthest from the first
+                    far = border[(c, path[0])][1:]
+                    pts.append(far[int(np.argmax([math.hypot(y - pts[0][0], x - pts[0][1]) for y, x in far]))])
+                else:
+                    pts.append(border[(path[-1], c)][0])
+                legs = [math.hypot(p[0] - q[0], p[1] - q[1]) for p, q in zip(pts[:-1], pts[1:])]
+                if any(leg < LOOP_TRAVERSE * 2.0 * pk[x] for leg, x in zip(legs, path)):
+                    continue  # a room visited (doors at most its diagonal apart), not a stretch of corridor
+                through = sum(legs)
+                if path[0] not in geo:  # from the largest piece of the border with the first piece
+                    y0, x0 = pts[0]
+                    geo[path[0]] = _geodesic_from(labels[sl] == c, (y0 - sl[0].start, x0 - sl[1].start), step)
+                y1, x1 = pts[-1]
+                around = geo[path[0]](y1 - sl[0].start, x1 - sl[1].start)
+                if around < LOOP_DETOUR * through and not _encloses_core(labels, c, path, objs,
+                                                                         LOOP_CORE_M / 2.0 / resolution):
+                    continue
+                for p in path:
+                    uf.parent[uf.find(p)] = uf.find(c)
+                    taken.add(p)
+                joined += len(path)
+            if joined > before:
+                taken.add(c)
+        if joined:
+            root = np.array([uf.find(k) for k in range(n)], np.int64)
+            reps = np.unique(root[1:])
+            lut = np.zeros(n, np.int32)
+            lut[reps] = np.arange(1, len(reps) + 1, dtype=np.int32)
+            lut = lut[root]
+            lut[0] = 0
+            newpk = np.zeros(len(reps) + 1)
+            np.maximum.at(newpk, lut, pk)
+            labels = lut[labels]
+            group_peak = newpk
+    stats["corridor_loops_joined"] = float(joined)
+    stats["corridor_loops_s"] = time.perf_counter() - t
+    return labels, group_peak
+
+
+# --------------------------------------------------------------------------- partition lines
+PARTITION_LINES = True  # scanned maps: a wall line continued across the ends of partitions that stop on it
+PARTITION_ENDS = 2  # ... at least this many partition ends along the line prove the missing wall
+
+
+def _partition_chains(space: np.ndarray, wall: np.ndarray, openings, resolution: float, max_cut_m: float):
+    """Wall lines continued across partition ends. From the end of each wall-line opening the line
+    runs on through the obstacle it meets when that obstacle is a partition's end: along the line no
+    thicker than a wall (``END_THICK_M``) and, across the line, wall running on to one side and space
+    on the other (the partition comes from one side and stops on the line). Returns a list of
+    (runs, ends): the free runs (x0, y0, x1, y1 px) of the line from the opening on, and the number of
+    partition ends crossed."""
+    rows, cols = space.shape
+    tmax = int(math.ceil(END_THICK_M / resolution))
+    max_px = max_cut_m / resolution
+    out = []
+
+    def inside(xi, yi):
+        return 0 <= xi < cols and 0 <= yi < rows
+
+    for key, _, (uy, ux) in openings:
+        runs = [tuple(key)]
+        x, y = float(key[2]), float(key[3])
+        ends = 0
+        for _ in range(8):
+            def at(tt):
+                return int(round(x + ux * tt)), int(round(y + uy * tt))
+            t = 1
+            xi, yi = at(t)
+            if not inside(xi, yi) or not wall[yi, xi]:
+                break
+            while inside(xi, yi) and wall[yi, xi] and t <= tmax + 1:
+                t += 1
+                xi, yi = at(t)
+            if not inside(xi, yi) or t > tmax + 1 or not space[yi, xi]:
+                break  # thicker than a wall along the line (a block, a wall met side-on) or the map ends
+            mx, my = x + ux * t / 2.0, y + uy * t / 2.0
+            kinds = []
+            for sgn in (-1.0, 1.0):
+                pts = [(int(round(mx - uy * sgn * o)), int(round(my + ux * sgn * o))) for o in range(0, tmax + 1)]
+                if not all(inside(px, py) for px, py in pts):
+                    kinds.append("edge")
+                elif all(wall[py, px] for px, py in pts):
+                    kinds.append("wall")
+                else:
+                    kinds.append("space" if space[pts[-1][1], pts[-1][0]] else "other")
+            if sorted(kinds) != ["space", "wall"]:
+                break
+            ends += 1
+            s0 = t
+            while inside(xi, yi) and space[yi, xi]:
+                t += 1
+                xi, yi = at(t)
+            if not inside(xi, yi) or t - s0 > max_px:
+                break
+            runs.append((int(round(x + ux * s0)), int(round(y + uy * s0)), int(round(x + ux * (t - 1))),
+                         int(round(y + uy * (t - 1)))))
+            x, y = x + ux * (t - 1), y + uy * (t - 1)
+        if ends >= PARTITION_ENDS:
+            last = runs[-1]
+            ext = _block_extensions(space, wall, [(last, math.hypot(last[2] - last[0], last[3] - last[1]), (uy, ux))],
+                                    resolution, max_cut_m) if BLOCK_CUTS else {}
+            if ext:  # the line ends on a free-standing block: it runs on beyond it (``_block_extensions``)
+                runs.append(ext[0])
+            out.append((runs, ends))
+    return out
+
+
+def _cut_partition_lines(labels: np.ndarray, space: np.ndarray, dist: np.ndarray, resolution: float,
+                         max_cut_m: float, group_peak: np.ndarray, stats: dict, occupied=None):
+    """Rooms open onto a corridor over their whole side. A row of rooms whose partitions all stop on
+    one line, the corridor's wall continued (intel_map's two rooms west of its south-west corridor),
+    has no door-sized opening: each room is as wide as its opening, so the wall-line judge keeps it
+    with the corridor (a bay). Several partition ends on one line prove the missing wall: a wall
+    line continued across at least ``PARTITION_ENDS`` partition ends (``_partition_chains``) cuts
+    the area it crosses along all its runs; every piece cut off that is room-shaped (less than
+    ``CORRIDOR_ELONGATION`` x (2 x its clearance peak)^2 and at least ``CUT_MIN_ROOM_M`` squared)
+    becomes an area, the largest piece stays the area. Returns (labels, group_peak);
+    ``stats["partition_line_rooms"]``."""
+    import cv2
+
+    t0 = time.perf_counter()
+    wall = ~space if occupied is None else occupied
+    openings = _wall_line_openings(space, labels, resolution, max_cut_m, occupied, jog_px=FACE_JOG_PX)
+    chains = _partition_chains(space, wall, openings, resolution, max_cut_m) if openings else []
+    new_rooms = 0
+    min_area = (CUT_MIN_ROOM_M / resolution) ** 2
+    next_id = int(labels.max()) + 1
+    peaks = {}
+    for runs, _ in chains:
+        line = np.zeros(labels.shape, np.uint8)
+        for r in runs:
+            cv2.line(line, r[:2], r[2:], 1, 1, lineType=8)
+        line = line.view(bool)
+        for g in np.unique(labels[line & (labels > 0)]).tolist():
+            rr, cc = np.nonzero(labels == g)
+            r0, r1, c0, c1 = rr.min(), rr.max() + 1, cc.min(), cc.max() + 1
+            mine = labels[r0:r1, c0:c1] == g
+            n, comp, st, _ = cv2.connectedComponentsWithStats((mine & ~line[r0:r1, c0:c1]).view(np.uint8),
+                                                              connectivity=4, ltype=cv2.CV_32S)
+            if n <= 2:
+                continue
+            big = 1 + int(np.argmax(st[1:, cv2.CC_STAT_AREA]))
+            sub = labels[r0:r1, c0:c1]
+            for k in range(1, n):
+                a = float(st[k, cv2.CC_STAT_AREA])
+                if k == big or a < min_area:
+                    continue
+                m = comp == k
+                pk = float(dist[r0:r1, c0:c1][m].max())
+                if a >= CORRIDOR_ELONGATION * (2.0 * pk) ** 2:
+                    continue
+                sub[m] = next_id
+                peaks[next_id] = pk
+                next_id += 1
+                new_rooms += 1
+    if peaks:
+        labels = _single_pieces(labels)
+        top = max(peaks)
+        if top >= len(group_peak):
+            group_peak = np.r_[group_peak, np.zeros(top + 1 - len(group_peak))]
+        for lid, v in peaks.items():
+            group_peak[lid] = v
+    stats["partition_line_rooms"] = float(new_rooms)
+    stats["partition_line_s"] = time.perf_counter() - t0
+    return labels, group_peak
+
+
 # --------------------------------------------------------------------------- vector output
 def label_polygons(labels: np.ndarray, grid: OccupancyGrid) -> Dict[int, object]:
     """Exact pixel-edge outline of every label (4-connected), as shapely Polygons in world metres."""
@@ -2420,6 +2767,13 @@ def segment(grid: OccupancyGrid, door_width: float = DEFAULT_DOOR_WIDTH,
         stats["outside_pockets_m2"] = dropped_px * res * res
     if RAY_SPIKES and _observed_walls(data, space) is not None:  # recorded maps whose walls are occupied
         labels, group_peak = _drop_ray_spikes(labels, data, group_peak, res, stats)
+    scanned_map = (CORRIDOR_LOOPS or PARTITION_LINES) and bool((data == UNKNOWN).any())
+    if CORRIDOR_LOOPS and scanned_map:  # scanned maps: corridors cut by clutter (CAD: doors);
+        # after the outside pockets: no exterior recess is joined to a corridor
+        labels, group_peak = _join_corridor_loops(labels, group_peak, res, stats)
+    if PARTITION_LINES and WALL_CUTS and scanned_map:  # scanned maps: rooms open over their whole side
+        labels, group_peak = _cut_partition_lines(labels, space, dist, res, max(door_width + delta, envelope_gap),
+                                                  group_peak, stats, _observed_walls(data, space))
     stats["merge_s"] = time.perf_counter() - t
     progress.step(65, f"merged into {int(labels.max())} areas")
 
