@@ -6,6 +6,7 @@ along its track and the two rooms get a passage along it. Small drawings built w
 import math
 
 import ezdxf
+import pytest
 import numpy as np
 
 from algorithms import pipeline
@@ -94,3 +95,21 @@ def test_without_the_partition_the_two_names_stay_a_conflict(tmp_path):
     floor = pipeline.process_floor(_drawing(tmp_path, partition=False))
     fig = S.floor_figures(floor.refined.areas, floor.refined.passages, floor.names)
     assert fig["conflicts"] == 1
+
+
+@pytest.mark.slow
+@pytest.mark.qgis_process
+def test_dxftoosmag_headless_splits_at_the_partition(tmp_path):
+    """dxftoosmag headless on the drawing: the two secretaries are two areas joined by a passage in the osmAG."""
+    from algorithms import osmag
+
+    from .qgis_process import run_alg
+
+    out = tmp_path / "fold.osm"
+    _, res, log = run_alg("dxftoosmag", {"INPUT": _drawing(tmp_path), "OUTPUT": str(out),
+                                         "ANCHOR": "121.59,31.179 [EPSG:4326]"})
+    areas, passages, _, _ = osmag.read_osmag(str(out))
+    by_name = {a.name: a for a in areas}
+    assert {"segreteria A", "segreteria B", "corridoio"} <= set(by_name), sorted(by_name)
+    a, b = by_name["segreteria A"], by_name["segreteria B"]
+    assert any({p.from_id, p.to_id} == {a.id, b.id} for p in passages)
