@@ -490,6 +490,47 @@ def _ring4(mask: np.ndarray) -> np.ndarray:
     return cv2.dilate(mask.view(np.uint8), cv2.getStructuringElement(cv2.MORPH_CROSS, (3, 3))).view(bool) & ~mask
 
 
+MOUTH_BULGE = 0.25  # a bulge beyond a mouth's chord is cut off when it is at most this share of the space
+
+
+def _straight_mouths(region: np.ndarray, rest: np.ndarray, pts) -> np.ndarray:
+    """Close ``region`` (a named space cut out of open space, ``_claim_named_bays``) at the straight chord of each
+    cut: every connected run of ``rest`` pixels along the region (a cut from one wall, column or facade end to
+    the next) is replaced by the segment between its two ends, and what lies beyond it -- no name in it, at
+    most ``MOUTH_BULGE`` of the region -- is left out (the cut runs midway between the named space and the rest
+    of the outside, and bulges beyond the columns of a mouth)."""
+    import cv2
+
+    cut = _ring4(rest) & region
+    n, lab, st, _ = cv2.connectedComponentsWithStats(cut.view(np.uint8), connectivity=8, ltype=cv2.CV_32S)
+    if n < 2:
+        return region
+    bar = np.zeros(region.shape, np.uint8)
+    for k in range(1, n):
+        if st[k, cv2.CC_STAT_AREA] < 3:
+            continue
+        x0, y0, w, h = (int(v) for v in st[k, :4])
+        rr, cc = np.nonzero(lab[y0:y0 + h, x0:x0 + w] == k)
+        xy = np.stack([cc + x0, rr + y0], axis=1)
+        a = xy[np.argmax(((xy - xy[0]) ** 2).sum(axis=1))]  # the two ends: the farthest pair, in two sweeps
+        b = xy[np.argmax(((xy - a) ** 2).sum(axis=1))]
+        cv2.line(bar, (int(a[0]), int(a[1])), (int(b[0]), int(b[1])), 1, thickness=2)
+    inner = region & ~bar.view(bool)
+    m, parts, pst, _ = cv2.connectedComponentsWithStats(inner.view(np.uint8), connectivity=4, ltype=cv2.CV_32S)
+    if m < 3:
+        return region
+    named = {int(parts[r, c]) for c, r in pts if 0 <= r < region.shape[0] and 0 <= c < region.shape[1]}
+    total = int(region.sum())
+    drop = np.zeros(m, bool)
+    for k in range(1, m):
+        drop[k] = k not in named and pst[k, cv2.CC_STAT_AREA] <= MOUTH_BULGE * total
+    if not drop.any() or drop[1:].all():
+        return region
+    out = region & ~drop[parts]
+    # the chord's own pixels stay with the space they close
+    return out & (~bar.view(bool) | (cv2.dilate((out & ~bar.view(bool)).view(np.uint8), np.ones((3, 3), np.uint8)) > 0))
+
+
 def _claim_named_bays(piece: np.ndarray, outside: np.ndarray, pts, resolution: float, t_lo: float, t_hi: float,
                       check=None) -> np.ndarray:
     """The named part of a space open to the outside that a footprint disk cannot enter but that is too
@@ -567,6 +608,7 @@ def _claim_named_bays(piece: np.ndarray, outside: np.ndarray, pts, resolution: f
             mk[pixels(reg) & pf] = 1
             mk[got] = 0
             full = (_geodesic_regions(mk, pf & ~got, max_iter=4 * f + 4) == 1) & pf & ~got
+            full = _straight_mouths(full, of & ~full, [(c - xa, r - ya) for c, r in pts])
             ring = _ring4(full)
             if full.any() and (ring & of).sum() <= OUTSIDE_CONTACT * ring.sum():
                 got |= full
