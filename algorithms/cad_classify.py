@@ -1105,3 +1105,120 @@ def level_marks(geoms: Sequence[CadGeometry]) -> List[bool]:
             hit[b] = any(keyword_in(w, low) for w in LEVEL_MARK_BLOCKS)
         out.append(hit[b])
     return out
+
+
+# ------------------------------------------------------------------------------------ folding partitions
+FOLD_LEAF = (0.25, 1.3)  # metres: a leaf of a folding (accordion) partition
+FOLD_JOIN = 0.1  # metres: leaves whose ends lie this close are hinged (a leaf drawn 4 cm thick, two faces)
+FOLD_ANGLE = 60.0  # degrees: two hinged leaves at most this far apart (and 10 at least) are folded (a V)
+FOLD_STACK_MAX = 1.6  # metres: a folded stack fits in a box this long
+FOLD_SPAN = (1.2, 8.0)  # metres: the track between the two stacks
+FOLD_TYPES = ("LINE", "LWPOLYLINE", "POLYLINE")
+
+
+def folding_partitions(pieces, scale: float) -> List[CadGeometry]:
+    """Folding (accordion) partitions, on any layer: a partition drawn folded at both ends of its track is two
+    zig-zag stacks -- at least two hinged leaves of 0.25-1.3 m (``FOLD_LEAF``, ends within ``FOLD_JOIN``) that
+    double back (a V of 10 to ``FOLD_ANGLE`` degrees) and fit in ``FOLD_STACK_MAX`` -- facing each other 1.2-8 m apart
+    (``FOLD_SPAN``). The track between the two stacks is a wall that opens: where two room names share the
+    space it crosses, the room is split along it and the two rooms get a passage along it
+    (``semantics.assign_names(partitions=...)``); it is never a wall in the raster. Returns one line per
+    partition (kind "partition", metres, from one stack's centre to the other's)."""
+    from scipy.sparse import coo_matrix
+    from scipy.sparse.csgraph import connected_components
+    from scipy.spatial import cKDTree
+
+    idx = [i for i in range(len(pieces.coords)) if len(pieces.coords[i]) >= 2]
+    if not idx:
+        return []
+    segs, own = _segments_many([pieces.coords[i] for i in idx], [pieces.closed[i] for i in idx])
+    if not len(segs):
+        return []
+    allsegs = segs * scale  # every drawn segment: the span of a partition crosses none
+    kind_ok = np.array([pieces.etype[i] in FOLD_TYPES and not pieces.filled[i] and len(pieces.coords[i]) <= 16
+                        for i in idx], dtype=bool)[own]
+    segs = allsegs
+    d = segs[:, 1] - segs[:, 0]
+    length = np.hypot(d[:, 0], d[:, 1])
+    leaf = (length >= FOLD_LEAF[0]) & (length <= FOLD_LEAF[1]) & kind_ok
+    leaf_at = np.flatnonzero(leaf)
+    segs, d, length = segs[leaf], d[leaf], length[leaf]
+    n = len(segs)
+    if n < 4:
+        return []
+    ends = segs.reshape(-1, 2)
+    pairs = cKDTree(ends).query_pairs(FOLD_JOIN, output_type="ndarray")
+    if not len(pairs):
+        return []
+    a, b = pairs[:, 0] // 2, pairs[:, 1] // 2
+    m = a != b
+    a, b = a[m], b[m]
+    ea, eb = pairs[m, 0] % 2, pairs[m, 1] % 2  # which end of each leaf is hinged
+    va = segs[a, 1 - ea] - segs[a, ea]  # from the hinge along each leaf
+    vb = segs[b, 1 - eb] - segs[b, eb]
+    cos = (va * vb).sum(axis=1) / np.maximum(length[a] * length[b], 1e-12)
+    turn = np.degrees(np.arccos(np.clip(cos, -1.0, 1.0)))
+    folded_at = (turn >= 10.0) & (turn <= FOLD_ANGLE)
+    # a leaf end hinged to another leaf (not its own parallel face): a stack has free ends, a triangle or a
+    # closed outline (an elevation marker, a chair) has none
+    hinged = np.zeros(2 * n, bool)
+    hinged[pairs[m][turn >= 10.0].ravel()] = True
+    k, comp = connected_components(coo_matrix((np.ones(len(a)), (a, b)), shape=(n, n)), directed=False)
+    size = np.bincount(comp, minlength=k)
+    stacks = []
+    order = np.argsort(comp, kind="stable")
+    first = np.concatenate([[0], np.cumsum(size)])
+    comp_a = comp[a]
+    for c in np.flatnonzero((size >= 2) & (size <= 40)):
+        mem = order[first[c]:first[c + 1]]
+        pts = segs[mem].reshape(-1, 2)
+        lo, hi = pts.min(axis=0), pts.max(axis=0)
+        if np.hypot(*(hi - lo)) > FOLD_STACK_MAX * 1.42:
+            continue
+        # folded: two leaves hinged at one end that double back (a V: 10 to FOLD_ANGLE degrees between them;
+        # the two faces of one leaf are parallel, a corner of a chair or a door frame is square)
+        sel = comp_a == c
+        if not folded_at[sel].any() or hinged[2 * mem].all() and hinged[2 * mem + 1].all():
+            continue
+        if max(hi - lo) <= FOLD_STACK_MAX:
+            stacks.append((pts.mean(axis=0), float(np.median(length[mem])), set(leaf_at[mem].tolist())))
+    if len(stacks) < 2:
+        return []
+    cen = np.array([s[0] for s in stacks])
+    box = (allsegs.min(axis=1), allsegs.max(axis=1))
+    out = []
+    used = set()
+    # the two stacks of one partition face each other: each is the other's nearest stack
+    _, nn = cKDTree(cen).query(cen, k=2)
+    nn = nn[:, 1]
+    for i, j in sorted({(min(i, int(nn[i])), max(i, int(nn[i]))) for i in range(len(cen)) if nn[nn[i]] == i}):
+        if i in used or j in used or np.hypot(*(cen[i] - cen[j])) > FOLD_SPAN[1]:
+            continue
+        span = float(np.hypot(*(cen[i] - cen[j])))
+        li, lj = stacks[i][1], stacks[j][1]
+        if span < FOLD_SPAN[0] or max(li, lj) > 1.5 * min(li, lj):  # two stacks of the same leaves
+            continue
+        if _crossed(allsegs, box, cen[i], cen[j], stacks[i][2] | stacks[j][2]):
+            continue  # something drawn across the span (a wall, shelves): no open track
+        used.update((i, j))
+        out.append(CadGeometry(layer="", kind="partition", coords=np.array([cen[i], cen[j]]), entity="LINE",
+                               cls="folding partition"))
+    return out
+
+
+def _crossed(segs: np.ndarray, box, p: np.ndarray, q: np.ndarray, skip: set) -> bool:
+    """A segment of ``segs`` (m, 2, 2; ``box`` their (min, max) corners) other than those in ``skip``
+    crosses the segment p-q."""
+    lo, hi = np.minimum(p, q), np.maximum(p, q)
+    near = np.flatnonzero((box[1] >= lo).all(axis=1) & (box[0] <= hi).all(axis=1))
+    near = np.array([k for k in near if k not in skip], dtype=np.int64)
+    if not len(near):
+        return False
+    a, b = segs[near, 0], segs[near, 1]
+
+    def side(o, u, v):
+        return (u[..., 0] - o[..., 0]) * (v[..., 1] - o[..., 1]) - (u[..., 1] - o[..., 1]) * (v[..., 0] - o[..., 0])
+
+    d1, d2 = side(p, q, a), side(p, q, b)
+    d3, d4 = side(a, b, p[None]), side(a, b, q[None])
+    return bool(((d1 * d2 < 0) & (d3 * d4 < 0)).any())

@@ -306,6 +306,19 @@ def _import_checked(path, rules, layers, units, include_doors, fallback_walls, d
                          "it again, or export it as DXF") from None
 
 
+def _folding_partitions(p, scale: float, sel, classes: Dict[str, int]) -> list:
+    """``cad_classify.folding_partitions`` of the pieces (every layer), within the selected plan."""
+    from .cad_classify import folding_partitions
+
+    found = folding_partitions(p, scale)
+    if sel is not None:
+        x0, y0, x1, y1 = sel.extent
+        found = [g for g in found if x0 <= g.coords[:, 0].mean() <= x1 and y0 <= g.coords[:, 1].mean() <= y1]
+    if found:
+        classes["folding partition"] = len(found)
+    return found
+
+
 def _import(path, rules, layers, units, include_doors, fallback_walls, drop_door_swings, plan, classify,
             progress) -> CadDrawing:
     """Read a DXF and return the structural geometry (metres, CAD frame) and every visible text.
@@ -490,6 +503,7 @@ def _import(path, rules, layers, units, include_doors, fallback_walls, drop_door
         x0, y0, x1, y1 = sel.extent
         boundary = [g for g in boundary if g.coords[:, 0].max() >= x0 - m and g.coords[:, 0].min() <= x1 + m
                     and g.coords[:, 1].max() >= y0 - m and g.coords[:, 1].min() <= y1 + m]
+    partitions = _folding_partitions(p, scale, sel, classes) if selected is None else []
     kept_layers = sorted({g.layer for g in geoms})
     progress.info("CAD import stages: " + ", ".join(f"{k} {v:.1f} s" for k, v in timings.items()))
     progress.step(100, f"{len(geoms)} geometries on {len(kept_layers)} layers, {len(texts)} texts, unit {unit}"
@@ -497,4 +511,5 @@ def _import(path, rules, layers, units, include_doors, fallback_walls, drop_door
     return CadDrawing(path=path, geometries=geoms, texts=texts, layers=infos, unit_name=unit, unit_scale=scale,
                       header_unit=header, warnings=warnings, repairs=list(repairs), doors=doors, plans=plans,
                       classes=classes, timings=timings, hidden_texts=hidden, boundary=boundary,
-                      undecoded=dict(getattr(doc, "undecoded", {})))  # DWG: types the reader cannot decode
+                      undecoded=dict(getattr(doc, "undecoded", {})),  # DWG: types the reader cannot decode
+                      partitions=partitions)

@@ -117,6 +117,8 @@ class CadDrawing:
     # projection / dash-dot lines no rule keeps (cad_classify.boundary_evidence): never walls, only a boundary
     # the envelope may not cross (rasterize.boundary_mask -> segmentation.segment(boundary=...))
     boundary: List[CadGeometry] = field(default_factory=list)
+    # folding partitions (cad_classify.folding_partitions): lines where a room may be split between two names
+    partitions: List[CadGeometry] = field(default_factory=list)
 
 
 # --------------------------------------------------------------------------- stage 2: raster

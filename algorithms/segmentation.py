@@ -479,6 +479,148 @@ def _claim_names_between_facades(outside: np.ndarray, open_pts, resolution: floa
     return rest, got
 
 
+BAY_STEP_M = 0.25  # the mouth of a named bay is searched in steps of this half-width
+BAY_CELL_PX = 10.0  # the search runs on cells so that the smallest disk is about this many cells wide
+
+
+def _ring4(mask: np.ndarray) -> np.ndarray:
+    """The pixels 4-adjacent to ``mask`` outside it."""
+    import cv2
+
+    return cv2.dilate(mask.view(np.uint8), cv2.getStructuringElement(cv2.MORPH_CROSS, (3, 3))).view(bool) & ~mask
+
+
+MOUTH_BULGE = 0.25  # a bulge beyond a mouth's chord is cut off when it is at most this share of the space
+
+
+def _straight_mouths(region: np.ndarray, rest: np.ndarray, pts) -> np.ndarray:
+    """Close ``region`` (a named space cut out of open space, ``_claim_named_bays``) at the straight chord of each
+    cut: every connected run of ``rest`` pixels along the region (a cut from one wall, column or facade end to
+    the next) is replaced by the segment between its two ends, and what lies beyond it -- no name in it, at
+    most ``MOUTH_BULGE`` of the region -- is left out (the cut runs midway between the named space and the rest
+    of the outside, and bulges beyond the columns of a mouth)."""
+    import cv2
+
+    cut = _ring4(rest) & region
+    n, lab, st, _ = cv2.connectedComponentsWithStats(cut.view(np.uint8), connectivity=8, ltype=cv2.CV_32S)
+    if n < 2:
+        return region
+    bar = np.zeros(region.shape, np.uint8)
+    for k in range(1, n):
+        if st[k, cv2.CC_STAT_AREA] < 3:
+            continue
+        x0, y0, w, h = (int(v) for v in st[k, :4])
+        rr, cc = np.nonzero(lab[y0:y0 + h, x0:x0 + w] == k)
+        xy = np.stack([cc + x0, rr + y0], axis=1)
+        a = xy[np.argmax(((xy - xy[0]) ** 2).sum(axis=1))]  # the two ends: the farthest pair, in two sweeps
+        b = xy[np.argmax(((xy - a) ** 2).sum(axis=1))]
+        cv2.line(bar, (int(a[0]), int(a[1])), (int(b[0]), int(b[1])), 1, thickness=2)
+    inner = region & ~bar.view(bool)
+    m, parts, pst, _ = cv2.connectedComponentsWithStats(inner.view(np.uint8), connectivity=4, ltype=cv2.CV_32S)
+    if m < 3:
+        return region
+    named = {int(parts[r, c]) for c, r in pts if 0 <= r < region.shape[0] and 0 <= c < region.shape[1]}
+    total = int(region.sum())
+    drop = np.zeros(m, bool)
+    for k in range(1, m):
+        drop[k] = k not in named and pst[k, cv2.CC_STAT_AREA] <= MOUTH_BULGE * total
+    if not drop.any() or drop[1:].all():
+        return region
+    out = region & ~drop[parts]
+    # the chord's own pixels stay with the space they close
+    return out & (~bar.view(bool) | (cv2.dilate((out & ~bar.view(bool)).view(np.uint8), np.ones((3, 3), np.uint8)) > 0))
+
+
+def _claim_named_bays(piece: np.ndarray, outside: np.ndarray, pts, resolution: float, t_lo: float, t_hi: float,
+                      check=None) -> np.ndarray:
+    """The named part of a space open to the outside that a footprint disk cannot enter but that is too
+    large to be claimed whole (an atrium gallery between two wings, a court, a bay that opens through a
+    colonnade onto a terrace or the land around): cut at its mouth.
+
+    ``piece``: the space (bool mask); ``outside``: the free space open to the outside (the piece included);
+    ``pts``: (col, row) room-name points in the piece; ``t_lo`` / ``t_hi``: the smallest / largest mouth
+    half-width (px) looked for. For a growing disk radius t (``BAY_STEP_M``), the union of the disks of
+    radius t that fit in the piece falls apart at the openings narrower than 2 t; the first t at which the
+    part holding a name no longer touches the rest of the outside is its mouth. The named space is then the
+    piece's pixels geodesically nearer to that part than to the other parts and to the rest of the outside
+    (the cut runs through the mouth), and it is claimed when its outline is open for at most
+    ``OUTSIDE_CONTACT`` (a space the building closes but for its mouth; a forecourt before one facade or a
+    field cut at the disk's size is open around most of its outline). Returns the claimed pixels."""
+    import cv2
+
+    from .semantics import _geodesic_regions
+
+    got_all = np.zeros(piece.shape, bool)
+    if not piece.any() or not len(pts):
+        return got_all
+    r0, r1, c0, c1 = _bbox(piece)
+    f = max(1, int(t_lo // BAY_CELL_PX))  # the search on cells of f x f pixels
+    m = 2 * f
+    ya, yb, xa, xb = max(r0 - m, 0), min(r1 + 1 + m, piece.shape[0]), max(c0 - m, 0), min(c1 + 1 + m, piece.shape[1])
+    pf = np.ascontiguousarray(piece[ya:yb, xa:xb])
+    of = outside[ya:yb, xa:xb]
+    rim = _ring4(of & ~pf) & pf  # piece pixels touching the rest of the outside through free space
+    h, w = -(-(yb - ya) // f), -(-(xb - xa) // f)
+
+    def cells(a: np.ndarray, majority: bool) -> np.ndarray:
+        big = np.zeros((h * f, w * f), bool)
+        big[:yb - ya, :xb - xa] = a
+        v = big.reshape(h, f, w, f)
+        return v.mean(axis=(1, 3)) >= 0.5 if majority else v.any(axis=(1, 3))
+
+    def pixels(a: np.ndarray) -> np.ndarray:
+        return cv2.resize(a.view(np.uint8), (w * f, h * f), interpolation=cv2.INTER_NEAREST)[:yb - ya, :xb - xa].view(bool)
+
+    rn = cells(rim, False)
+    sp = cells(pf, True) | rn
+    todo = sorted({(min((c - xa) // f, w - 1), min((r - ya) // f, h - 1)) for c, r in pts})
+    step = BAY_STEP_M / resolution / f
+    t = t_lo / f
+    clear = _edt(sp)
+    got = np.zeros(pf.shape, bool)
+    while todo and t <= t_hi / f:
+        if check is not None:
+            check()
+        core = clear > t
+        if not core.any():
+            break
+        opened = ~(_edt(~core) > t) & sp
+        n, comp = cv2.connectedComponents(opened.view(np.uint8), connectivity=4, ltype=cv2.CV_32S)
+        open_comp = np.zeros(n, bool)
+        open_comp[np.unique(comp[rn & opened])] = True
+        open_comp[0] = True
+        mine: Dict[int, list] = {}
+        rr = int(math.ceil(t)) + 1
+        for c, r in todo:  # the part a name lies in, or the one most of the disks around it belong to
+            win = comp[max(r - rr, 0):r + rr + 1, max(c - rr, 0):c + rr + 1]
+            k = int(comp[r, c]) if comp[r, c] else (int(np.bincount(win[win > 0]).argmax()) if (win > 0).any() else 0)
+            if k and not open_comp[k]:
+                mine.setdefault(k, []).append((c, r))
+        if mine:
+            markers = np.zeros(sp.shape, np.int32)
+            markers[comp > 0] = 2
+            markers[np.isin(comp, list(mine))] = 1
+            markers[rn & ~opened] = 2
+            reg = (_geodesic_regions(markers, sp) == 1) & sp
+            # back on pixels: the slivers the cells left out go to the nearer side
+            mk = np.zeros(pf.shape, np.int32)
+            mk[pixels(sp & ~reg) & pf] = 2
+            mk[pixels(reg) & pf] = 1
+            mk[got] = 0
+            full = (_geodesic_regions(mk, pf & ~got, max_iter=4 * f + 4) == 1) & pf & ~got
+            full = _straight_mouths(full, of & ~full, [(c - xa, r - ya) for c, r in pts])
+            ring = _ring4(full)
+            if full.any() and (ring & of).sum() <= OUTSIDE_CONTACT * ring.sum():
+                got |= full
+                sp &= ~reg
+                clear = _edt(sp)
+            done = {p for v in mine.values() for p in v}
+            todo = [p for p in todo if p not in done]
+        t += step
+    got_all[ya:yb, xa:xb] = got
+    return got_all
+
+
 def building_interior(free: np.ndarray, resolution: float, envelope_gap: float = DEFAULT_ENVELOPE_GAP,
                       unknown: Optional[np.ndarray] = None, inside_points=None,
                       footprint_gap: Optional[float] = None, info: Optional[dict] = None,
@@ -598,12 +740,25 @@ def building_interior(free: np.ndarray, resolution: float, envelope_gap: float =
         # larger ones are the gaps between drawings on a sheet, forecourts, the street
         small = size <= ((CLAIM_FACTOR if k == 0 else 1.0) * 2.0 * rc) ** 2
         rest = []
+        large: Dict[int, list] = {}
         for c, r in open_pts:
             if lab[r, c] > 0 and small[lab[r, c]]:
                 keep[lab[r, c]] = True
                 claimed_pts += 1
-            else:  # not enclosed at this scale (or too large): the next scale, then the mouths, may
+            elif lab[r, c] > 0:  # enclosed but too large: the named part, cut at its mouth (_claim_named_bays)
+                large.setdefault(int(lab[r, c]), []).append((c, r))
+            else:  # not enclosed at this scale: the next scale, then the mouths, may
                 rest.append((c, r))
+        for lid, lpts in large.items():
+            bay = _claim_named_bays(lab == lid, free & reach0 & ~claimed, lpts, resolution, rc0, rc, check)
+            if bay.any():
+                claimed |= bay
+                info["named_bays_m2"] = info.get("named_bays_m2", 0.0) + float(bay.sum()) * resolution ** 2
+            for c, r in lpts:
+                if bay[r, c]:
+                    claimed_pts += 1
+                else:
+                    rest.append((c, r))
         open_pts = rest
         keep[0] = False
         keep &= small
@@ -2686,6 +2841,10 @@ def segment(grid: OccupancyGrid, door_width: float = DEFAULT_DOOR_WIDTH,
     if info.get("inside_points_between_facades"):
         progress.info(f"{info['inside_points_between_facades']} room name(s) between two facades open at both ends "
                       "(a passage between buildings): kept inside up to the chords of the two mouths")
+    if info.get("named_bays_m2"):
+        stats["named_bays_m2"] = float(info["named_bays_m2"])
+        progress.info(f"named space(s) open to the outside through a mouth (a gallery, court or bay): "
+                      f"{stats['named_bays_m2']:.1f} m2 kept inside up to the mouth")
     if info.get("claimed_px"):
         progress.info(f"space open to the outside kept inside on evidence (footprint, doorways, "
                       f"{info.get('inside_points_claimed', 0)} room names): {stats['claimed_open_m2']:.1f} m2")

@@ -803,14 +803,16 @@ def assign_names(areas: List[Area], texts: Sequence[CadText], level="1", rules=N
                  grid=None, labels=None, passages: Optional[List[Passage]] = None, split: bool = True,
                  rho_max: float = RHO_MAX, d_max: float = D_MAX, inside_first: bool = True,
                  hidden_texts: Optional[Sequence[CadText]] = None,
-                 classified: Optional[List[Label]] = None) -> NamesReport:
+                 classified: Optional[List[Label]] = None, partitions=None) -> NamesReport:
     """Name, number and type ``areas`` (in place) from ``texts``; see the module doc. ``grid`` gives
     the resolution of the split raster, ``labels`` (the label raster on ``grid``) is updated for split
     areas, ``passages`` get the split cuts and follow the pieces. ``hidden_texts``: texts on frozen / off
     layers (``CadDrawing.hidden_texts``): their room names and codes name only areas that no visible text
     names (a sheet often freezes one wing's annotation layer; the names are still the building's), they
     never split an area nor compete with a visible name. ``classified``: ``classify_labels(texts, rules)``
-    when the caller has it (a drawing's texts are classified once). Never raises on odd texts."""
+    when the caller has it (a drawing's texts are classified once). ``partitions``: folding partitions
+    (``CadDrawing.partitions``: lines, metres): an area whose names lie on both sides of one is split along
+    it first (``_split_at_partition``). Never raises on odd texts."""
     progress = ensure(progress)
     rules = _resolve(rules)
     report = NamesReport()
@@ -849,7 +851,8 @@ def assign_names(areas: List[Area], texts: Sequence[CadText], level="1", rules=N
             if a.type in ("stairs", "elevator"):
                 continue
             try:
-                pieces = _split_area(a, recs, names, grid, areas, passages, labels)
+                pieces = _split_at_partition(a, recs, names, partitions, areas, passages, labels, grid)
+                pieces = pieces or _split_area(a, recs, names, grid, areas, passages, labels)
             except Exception as exc:  # an invalid polygon must not stop the naming: keep it whole
                 progress.warning(f"area {aid}: could not be split between its room names "
                                  f"({type(exc).__name__}: {exc}); kept whole")
@@ -1500,6 +1503,52 @@ def _split_area(a: Area, recs: List[TextRecord], names: Dict[str, TextRecord], g
             pieces[j] = (merged, pieces[j][1])
     pieces = _straighten(pieces, res)
     return _finish(a, pieces, areas, passages, labels, grid, recs, t)
+
+
+def _split_at_partition(a: Area, recs: List[TextRecord], names: Dict[str, TextRecord], partitions, areas: List[Area],
+                        passages: Optional[List[Passage]], labels, grid) -> Optional[List[Area]]:
+    """Split area ``a`` along a folding partition (``cad_classify.folding_partitions``: a wall that opens,
+    drawn folded at both ends of its track) that has its room names on both sides: the track, extended to
+    the area's outline, cuts the area in two, each piece holding names; the pieces get a passage along it
+    (``_finish``). Returns the pieces or None (no partition crosses the area between its names)."""
+    poly = a.polygon
+    if not partitions or poly is None or poly.geom_type != "Polygon":
+        return None
+    named = [r for r in recs if r.role == "name" and _key(r.text) in names]
+    x0, y0, x1, y1 = poly.bounds
+    reach = math.hypot(x1 - x0, y1 - y0)
+    for g in partitions:
+        c = np.asarray(getattr(g, "coords", g), dtype=float)
+        if len(c) < 2:
+            continue
+        p, q = c[0], c[-1]
+        u = q - p
+        ln = float(np.hypot(*u))
+        if ln <= 0:
+            continue
+        u = u / ln
+        mid = Point(*((p + q) / 2.0))
+        if not poly.contains(mid):
+            continue
+        # the track, extended both ways to the outline: the piece of it through the span's middle
+        long = LineString([tuple(p - u * reach), tuple(q + u * reach)]).intersection(poly)
+        parts = [ln_ for ln_ in getattr(long, "geoms", [long]) if ln_.geom_type == "LineString"]
+        if not parts:
+            continue
+        cut = min(parts, key=lambda ln_: ln_.distance(mid))
+        e0, e1 = np.asarray(cut.coords[0]), np.asarray(cut.coords[-1])
+        cut = LineString([tuple(e0 - u * 0.01), tuple(e1 + u * 0.01)])  # across the outline, not onto it
+        try:
+            halves = [h for h in shp_split(poly, cut).geoms if h.area > 0]
+        except Exception:
+            continue
+        if len(halves) != 2:
+            continue
+        keys = [{_key(r.text) for r in named if h.buffer(1e-6).contains(Point(r.x, r.y))} for h in halves]
+        if not keys[0] or not keys[1] or keys[0] & keys[1]:
+            continue
+        return _finish(a, list(zip(halves, keys)), areas, passages, labels, grid, recs, 0.0)
+    return None
 
 
 DOOR_OPENING = 1.0  # m: an opening no wider than one door leaf is a doorway (NARROWING_RATIO_DOOR)
