@@ -81,6 +81,7 @@ from typing import Dict, List, Optional, Tuple
 
 import numpy as np
 
+from . import kernels
 from .errors import InputError
 from .model import FREE, UNKNOWN, Area, AreaGraph, OccupancyGrid, Passage
 from .progress import Progress, ensure
@@ -157,11 +158,28 @@ def _check_inputs(grid: OccupancyGrid, door_width: float, corridor_width: float,
 
 # --------------------------------------------------------------------------- helpers
 def _edt(mask: np.ndarray) -> np.ndarray:
-    """Euclidean distance (px, float32) of every True pixel to the nearest False pixel."""
+    """Euclidean distance (px, float32) of every True pixel to the nearest False pixel: the correctly
+    rounded float32 square root of the exact squared distance, on any number of OpenCV threads."""
     import cv2
 
-    return cv2.distanceTransform(mask.view(np.uint8) if mask.dtype == bool else mask.astype(np.uint8),
+    dist = cv2.distanceTransform(mask.view(np.uint8) if mask.dtype == bool else mask.astype(np.uint8),
                                  cv2.DIST_L2, cv2.DIST_MASK_PRECISE)
+    if cv2.getNumThreads() <= 1:
+        dist = _exact_root(dist)
+    return dist
+
+
+def _exact_root(dist: np.ndarray) -> np.ndarray:
+    """``dist`` (float32 Euclidean pixel distances, within an ulp) as the correctly rounded square roots
+    of their integer squares. Single-threaded OpenCV (one core, ``cv2.setNumThreads(1)``) runs another
+    transform (IPP's) whose roots are an ulp off on about one pixel in ten (7.0000005 for 7): the
+    clearance ties and the area labels then differed from a multi-threaded run's (SIST-F3: 19 pixels,
+    3514 vs 3508 regions). Exact up to 1448 px (an ulp off is then less than 0.5 in the square), within
+    an ulp beyond."""
+    sq = np.square(dist, dtype=np.float64)
+    np.rint(sq, out=sq)
+    np.sqrt(sq, out=sq)
+    return sq.astype(np.float32)
 
 
 def _outside_centres(dist_padded: np.ndarray, rc: float) -> np.ndarray:
@@ -1136,11 +1154,10 @@ def _single_pieces(labels: np.ndarray) -> np.ndarray:
     """Make every label one 4-connected piece: smaller pieces go to the other label they touch
     most (8-neighbourhood), or to no area when they touch none."""
     import cv2
-    from scipy import ndimage as ndi
 
     for _ in range(3):
         extra = []
-        for lab_id, sl in enumerate(ndi.find_objects(labels), start=1):
+        for lab_id, sl in enumerate(kernels.find_objects(labels), start=1):
             if sl is None:
                 continue
             sub = labels[sl] == lab_id
@@ -1302,7 +1319,6 @@ def _join_cluttered_borders(labels: np.ndarray, cell_label: np.ndarray, lo, hi, 
     wall) are one space. Border lengths come from the region graph (``lo``, ``hi``, ``border`` of
     ``_cell_graph``, regions -> areas by ``cell_label``); only the candidates are measured on the
     raster. Returns (labels, group_peak); ``stats["clutter_borders_joined"]``."""
-    from scipy import ndimage as ndi
 
     t = time.perf_counter()
     n = int(labels.max()) + 1
@@ -1333,7 +1349,7 @@ def _join_cluttered_borders(labels: np.ndarray, cell_label: np.ndarray, lo, hi, 
             # the bounding box of a joined group is the union of its members'
             if boxes is None:
                 boxes = np.zeros((n, 4), np.int64)
-                for k, sl in enumerate(ndi.find_objects(labels), start=1):
+                for k, sl in enumerate(kernels.find_objects(labels), start=1):
                     if sl is not None and k < n:
                         boxes[k] = (sl[0].start, sl[0].stop, sl[1].start, sl[1].stop)
                 boxes[0] = (0, 0, 0, 0)
@@ -1707,7 +1723,6 @@ def _split_at_wall_openings(labels: np.ndarray, space: np.ndarray, resolution: f
     ``peaks`` gets the clearance peak (px, from ``dist``) of every area cut or new, ``grown`` the
     largest clearance of the slivers other areas received."""
     import cv2
-    from scipy import ndimage as ndi
 
     if openings is None:
         openings = _wall_line_openings(space, labels, resolution, max_cut_m, occupied, jog_px=jog_px)
@@ -1726,7 +1741,7 @@ def _split_at_wall_openings(labels: np.ndarray, space: np.ndarray, resolution: f
     next_id = int(labels.max()) + 1
     kept_cuts = 0
     min_area = (CUT_MIN_ROOM_M / resolution) ** 2
-    objs = ndi.find_objects(labels)
+    objs = kernels.find_objects(labels)
     for g in groups.tolist():
         sl = objs[g - 1]
         if sl is None:
