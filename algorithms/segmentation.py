@@ -199,8 +199,22 @@ def _corner_component(mask: np.ndarray) -> np.ndarray:
 
 
 def _reach(centres: np.ndarray, rc: float, pad: int) -> np.ndarray:
-    """Pixels within ``rc`` of an outside disk centre (unpadded frame): swept by the rolling disk."""
-    return ~(_edt(~centres)[pad:-pad, pad:-pad] > rc)
+    """Pixels within ``rc`` of an outside disk centre (unpadded frame): swept by the rolling disk.
+
+    Every pixel beyond the bounding box of the non-centres is a centre, so the transform runs on
+    that box grown by a pixel only (a nearest centre beyond it has one as near on the box's rim:
+    clamp it onto the rim), with the same exact distances; the rest is reached."""
+    non = ~centres
+    rows, cols = non.shape
+    rr = np.flatnonzero(non.any(axis=1))
+    if len(rr) == 0:
+        return np.ones((rows - 2 * pad, cols - 2 * pad), bool)
+    cc = np.flatnonzero(non.any(axis=0))
+    ra, rb = max(int(rr[0]) - 1, 0), min(int(rr[-1]) + 2, rows)
+    ca, cb = max(int(cc[0]) - 1, 0), min(int(cc[-1]) + 2, cols)
+    reach = np.ones((rows, cols), bool)
+    reach[ra:rb, ca:cb] = ~(_edt(np.ascontiguousarray(non[ra:rb, ca:cb])) > rc)
+    return reach[pad:-pad, pad:-pad]
 
 
 def _coarse_reach(passable: np.ndarray, rc: float, target_px: float = 32.0) -> np.ndarray:
@@ -1102,10 +1116,13 @@ def _merge_cells(n: int, peak: np.ndarray, lo, hi, saddle, *, r_alpha: float, do
     ``corridor_opening``.
     """
     order = np.lexsort((hi, lo, -saddle))  # strongest first; ties broken by ids (deterministic)
+    # one pass over the edges as Python lists (no numpy scalar per access), strongest first
+    edges = list(zip(np.asarray(lo)[order].tolist(), np.asarray(hi)[order].tolist(),
+                     np.asarray(saddle, dtype=np.float64)[order].tolist()))
     uf = _UnionFind(n)
     gpeak = [float(x) for x in peak]
-    for i in order.tolist():
-        a, b, s = uf.find(int(lo[i])), uf.find(int(hi[i])), float(saddle[i])
+    for li, hj, s in edges:
+        a, b = uf.find(li), uf.find(hj)
         if a == b:
             continue
         pa, pb = gpeak[a], gpeak[b]
@@ -1115,11 +1132,11 @@ def _merge_cells(n: int, peak: np.ndarray, lo, hi, saddle, *, r_alpha: float, do
             gpeak[keep] = max(pa, pb)
     base = [uf.find(i) for i in range(n)]
     bpeak = [gpeak[base[i]] for i in range(n)]
-    for i in order.tolist():
-        a, b, s = uf.find(int(lo[i])), uf.find(int(hi[i])), float(saddle[i])
+    for li, hj, s in edges:
+        a, b = uf.find(li), uf.find(hj)
         if a == b:
             continue
-        pa, pb = bpeak[int(lo[i])], bpeak[int(hi[i])]
+        pa, pb = bpeak[li], bpeak[hj]
         if s <= door_half and s < NARROWING * max(pa, pb):
             continue  # door-like narrowing
         keep, gone = (a, b) if a < b else (b, a)
@@ -1139,8 +1156,8 @@ def _merge_cells(n: int, peak: np.ndarray, lo, hi, saddle, *, r_alpha: float, do
             half = gpk[g] / garea[g] if garea[g] > 0 else 0.0
             return garea[g] >= PASS3_ELONGATION * (2.0 * max(half, 1.0)) ** 2
 
-        for i in order.tolist():
-            a, b, s = uf.find(int(lo[i])), uf.find(int(hi[i])), float(saddle[i])
+        for li, hj, s in edges:
+            a, b = uf.find(li), uf.find(hj)
             if a == b or s < corridor_opening or not (corridor(a) and corridor(b)):
                 continue
             keep, gone = (a, b) if a < b else (b, a)
