@@ -393,22 +393,26 @@ def label_boxes(labels, n):
     box = np.zeros((n + 1, 4), np.int64)
     seen = np.zeros(n + 1, np.bool_)
     for r in range(rows):
-        for c in range(cols):
+        c = 0
+        while c < cols:  # run by run: a label's box changes only at its runs' ends
             v = labels[r, c]
+            start = c
+            c += 1
+            while c < cols and labels[r, c] == v:
+                c += 1
             if v <= 0 or v > n:
                 continue
             if not seen[v]:
                 seen[v] = True
                 box[v, 0] = r
-                box[v, 1] = r + 1
-                box[v, 2] = c
-                box[v, 3] = c + 1
+                box[v, 2] = start
+                box[v, 3] = c
             else:
-                box[v, 1] = r + 1
-                if c < box[v, 2]:
-                    box[v, 2] = c
-                if c + 1 > box[v, 3]:
-                    box[v, 3] = c + 1
+                if start < box[v, 2]:
+                    box[v, 2] = start
+                if c > box[v, 3]:
+                    box[v, 3] = c
+            box[v, 1] = r + 1
     return box, seen
 
 
