@@ -488,6 +488,7 @@ def test_clearance_transform_is_the_same_on_one_opencv_thread_as_on_several(thre
 
 
 def test_sample_building_output_is_pinned_on_one_opencv_thread(tmp_path, one_opencv_thread):
+    """A one-core machine writes the same file as a multi-core one (it did not: IPP's transform)."""
     _check("sample-F1", _sample_f1(tmp_path), tmp_path)
 
 
