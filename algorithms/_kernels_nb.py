@@ -384,6 +384,38 @@ def neighbour_pairs(labels, dist, use_dist):
     return lo, hi, v, axis, rows, cols
 
 
+@njit(cache=True, nogil=True)
+def label_boxes(labels, n):
+    """Bounding boxes of the labels 1..``n`` of ``labels`` (2-D int), one raster pass: row k holds
+    (first row, last row + 1, first column, last column + 1) of label k, (0, 0, 0, 0) for a label
+    that is absent; labels <= 0 or > n are ignored (``scipy.ndimage.find_objects``)."""
+    rows, cols = labels.shape
+    box = np.zeros((n + 1, 4), np.int64)
+    seen = np.zeros(n + 1, np.bool_)
+    for r in range(rows):
+        c = 0
+        while c < cols:  # run by run: a label's box changes only at its runs' ends
+            v = labels[r, c]
+            start = c
+            c += 1
+            while c < cols and labels[r, c] == v:
+                c += 1
+            if v <= 0 or v > n:
+                continue
+            if not seen[v]:
+                seen[v] = True
+                box[v, 0] = r
+                box[v, 2] = start
+                box[v, 3] = c
+            else:
+                if start < box[v, 2]:
+                    box[v, 2] = start
+                if c > box[v, 3]:
+                    box[v, 3] = c
+            box[v, 1] = r + 1
+    return box, seen
+
+
 def selftest():
     """Call every kernel once on a tiny input: loads (or compiles) them all, so that a numba or a
     cache that does not work shows here, where ``kernels.get`` falls back to numpy, not mid-run."""
@@ -407,3 +439,6 @@ def selftest():
     src, vals = zone_seeds(markers, markers, 0, 6, 0, 7, 1)
     zone_assign(lab, markers, np.zeros((6, 7), np.int32), vals, 0, 0, 1)
     neighbour_pairs(lab, dist, True)
+    label_boxes(markers, 1)
+    label_boxes(markers[:, 1:], 1)  # a view (the zones' box in nearest_seed_regions): its own signature
+    label_boxes(markers.astype(np.int64), 1)

@@ -81,6 +81,7 @@ from typing import Dict, List, Optional, Tuple
 
 import numpy as np
 
+from . import kernels
 from .errors import InputError
 from .model import FREE, UNKNOWN, Area, AreaGraph, OccupancyGrid, Passage
 from .progress import Progress, ensure
@@ -157,11 +158,28 @@ def _check_inputs(grid: OccupancyGrid, door_width: float, corridor_width: float,
 
 # --------------------------------------------------------------------------- helpers
 def _edt(mask: np.ndarray) -> np.ndarray:
-    """Euclidean distance (px, float32) of every True pixel to the nearest False pixel."""
+    """Euclidean distance (px, float32) of every True pixel to the nearest False pixel: the correctly
+    rounded float32 square root of the exact squared distance, on any number of OpenCV threads."""
     import cv2
 
-    return cv2.distanceTransform(mask.view(np.uint8) if mask.dtype == bool else mask.astype(np.uint8),
+    dist = cv2.distanceTransform(mask.view(np.uint8) if mask.dtype == bool else mask.astype(np.uint8),
                                  cv2.DIST_L2, cv2.DIST_MASK_PRECISE)
+    if cv2.getNumThreads() <= 1:
+        dist = _exact_root(dist)
+    return dist
+
+
+def _exact_root(dist: np.ndarray) -> np.ndarray:
+    """``dist`` (float32 Euclidean pixel distances, within an ulp) as the correctly rounded square roots
+    of their integer squares. Single-threaded OpenCV (one core, ``cv2.setNumThreads(1)``) runs another
+    transform (IPP's) whose roots are an ulp off on about one pixel in ten (7.0000005 for 7): the
+    clearance ties and the area labels then differed from a multi-threaded run's (SIST-F3: 19 pixels,
+    3514 vs 3508 regions). Exact up to 1448 px (an ulp off is then less than 0.5 in the square), within
+    an ulp beyond."""
+    sq = np.square(dist, dtype=np.float64)
+    np.rint(sq, out=sq)
+    np.sqrt(sq, out=sq)
+    return sq.astype(np.float32)
 
 
 def _outside_centres(dist_padded: np.ndarray, rc: float) -> np.ndarray:
@@ -181,8 +199,22 @@ def _corner_component(mask: np.ndarray) -> np.ndarray:
 
 
 def _reach(centres: np.ndarray, rc: float, pad: int) -> np.ndarray:
-    """Pixels within ``rc`` of an outside disk centre (unpadded frame): swept by the rolling disk."""
-    return ~(_edt(~centres)[pad:-pad, pad:-pad] > rc)
+    """Pixels within ``rc`` of an outside disk centre (unpadded frame): swept by the rolling disk.
+
+    Every pixel beyond the bounding box of the non-centres is a centre, so the transform runs on
+    that box grown by a pixel only (a nearest centre beyond it has one as near on the box's rim:
+    clamp it onto the rim), with the same exact distances; the rest is reached."""
+    non = ~centres
+    rows, cols = non.shape
+    rr = np.flatnonzero(non.any(axis=1))
+    if len(rr) == 0:
+        return np.ones((rows - 2 * pad, cols - 2 * pad), bool)
+    cc = np.flatnonzero(non.any(axis=0))
+    ra, rb = max(int(rr[0]) - 1, 0), min(int(rr[-1]) + 2, rows)
+    ca, cb = max(int(cc[0]) - 1, 0), min(int(cc[-1]) + 2, cols)
+    reach = np.ones((rows, cols), bool)
+    reach[ra:rb, ca:cb] = ~(_edt(np.ascontiguousarray(non[ra:rb, ca:cb])) > rc)
+    return reach[pad:-pad, pad:-pad]
 
 
 def _coarse_reach(passable: np.ndarray, rc: float, target_px: float = 32.0) -> np.ndarray:
@@ -1239,10 +1271,13 @@ def _merge_cells(n: int, peak: np.ndarray, lo, hi, saddle, *, r_alpha: float, do
     ``corridor_opening``.
     """
     order = np.lexsort((hi, lo, -saddle))  # strongest first; ties broken by ids (deterministic)
+    # one pass over the edges as Python lists (no numpy scalar per access), strongest first
+    edges = list(zip(np.asarray(lo)[order].tolist(), np.asarray(hi)[order].tolist(),
+                     np.asarray(saddle, dtype=np.float64)[order].tolist()))
     uf = _UnionFind(n)
     gpeak = [float(x) for x in peak]
-    for i in order.tolist():
-        a, b, s = uf.find(int(lo[i])), uf.find(int(hi[i])), float(saddle[i])
+    for li, hj, s in edges:
+        a, b = uf.find(li), uf.find(hj)
         if a == b:
             continue
         pa, pb = gpeak[a], gpeak[b]
@@ -1252,11 +1287,11 @@ def _merge_cells(n: int, peak: np.ndarray, lo, hi, saddle, *, r_alpha: float, do
             gpeak[keep] = max(pa, pb)
     base = [uf.find(i) for i in range(n)]
     bpeak = [gpeak[base[i]] for i in range(n)]
-    for i in order.tolist():
-        a, b, s = uf.find(int(lo[i])), uf.find(int(hi[i])), float(saddle[i])
+    for li, hj, s in edges:
+        a, b = uf.find(li), uf.find(hj)
         if a == b:
             continue
-        pa, pb = bpeak[int(lo[i])], bpeak[int(hi[i])]
+        pa, pb = bpeak[li], bpeak[hj]
         if s <= door_half and s < NARROWING * max(pa, pb):
             continue  # door-like narrowing
         keep, gone = (a, b) if a < b else (b, a)
@@ -1276,8 +1311,8 @@ def _merge_cells(n: int, peak: np.ndarray, lo, hi, saddle, *, r_alpha: float, do
             half = gpk[g] / garea[g] if garea[g] > 0 else 0.0
             return garea[g] >= PASS3_ELONGATION * (2.0 * max(half, 1.0)) ** 2
 
-        for i in order.tolist():
-            a, b, s = uf.find(int(lo[i])), uf.find(int(hi[i])), float(saddle[i])
+        for li, hj, s in edges:
+            a, b = uf.find(li), uf.find(hj)
             if a == b or s < corridor_opening or not (corridor(a) and corridor(b)):
                 continue
             keep, gone = (a, b) if a < b else (b, a)
@@ -1291,11 +1326,10 @@ def _single_pieces(labels: np.ndarray) -> np.ndarray:
     """Make every label one 4-connected piece: smaller pieces go to the other label they touch
     most (8-neighbourhood), or to no area when they touch none."""
     import cv2
-    from scipy import ndimage as ndi
 
     for _ in range(3):
         extra = []
-        for lab_id, sl in enumerate(ndi.find_objects(labels), start=1):
+        for lab_id, sl in enumerate(kernels.find_objects(labels), start=1):
             if sl is None:
                 continue
             sub = labels[sl] == lab_id
@@ -1457,7 +1491,6 @@ def _join_cluttered_borders(labels: np.ndarray, cell_label: np.ndarray, lo, hi, 
     wall) are one space. Border lengths come from the region graph (``lo``, ``hi``, ``border`` of
     ``_cell_graph``, regions -> areas by ``cell_label``); only the candidates are measured on the
     raster. Returns (labels, group_peak); ``stats["clutter_borders_joined"]``."""
-    from scipy import ndimage as ndi
 
     t = time.perf_counter()
     n = int(labels.max()) + 1
@@ -1488,7 +1521,7 @@ def _join_cluttered_borders(labels: np.ndarray, cell_label: np.ndarray, lo, hi, 
             # the bounding box of a joined group is the union of its members'
             if boxes is None:
                 boxes = np.zeros((n, 4), np.int64)
-                for k, sl in enumerate(ndi.find_objects(labels), start=1):
+                for k, sl in enumerate(kernels.find_objects(labels), start=1):
                     if sl is not None and k < n:
                         boxes[k] = (sl[0].start, sl[0].stop, sl[1].start, sl[1].stop)
                 boxes[0] = (0, 0, 0, 0)
@@ -1862,7 +1895,6 @@ def _split_at_wall_openings(labels: np.ndarray, space: np.ndarray, resolution: f
     ``peaks`` gets the clearance peak (px, from ``dist``) of every area cut or new, ``grown`` the
     largest clearance of the slivers other areas received."""
     import cv2
-    from scipy import ndimage as ndi
 
     if openings is None:
         openings = _wall_line_openings(space, labels, resolution, max_cut_m, occupied, jog_px=jog_px)
@@ -1881,7 +1913,7 @@ def _split_at_wall_openings(labels: np.ndarray, space: np.ndarray, resolution: f
     next_id = int(labels.max()) + 1
     kept_cuts = 0
     min_area = (CUT_MIN_ROOM_M / resolution) ** 2
-    objs = ndi.find_objects(labels)
+    objs = kernels.find_objects(labels)
     for g in groups.tolist():
         sl = objs[g - 1]
         if sl is None:

@@ -530,8 +530,6 @@ def nearest_seed_regions(seeds: np.ndarray, space: np.ndarray, zones: Optional[n
         lab[~sp] = 0
     label_zone = None
     if zn is not None:
-        from scipy import ndimage as ndi
-
         nz = int(zn.max()) + 1
         label_zone = np.zeros(int(sd.max()) + 1, np.int64)
         label_zone[sd.ravel()[seed_flat]] = zn.ravel()[seed_flat]
@@ -545,9 +543,9 @@ def nearest_seed_regions(seeds: np.ndarray, space: np.ndarray, zones: Optional[n
         # a zone with several: the closest of its labels
         multi = labels_in > 1
         multi[0] = False
-        boxes = ndi.find_objects(zn)  # the boxes of the zones with several labels are the same
         from . import kernels
 
+        boxes = kernels.find_objects(zn)  # the boxes of the zones with several labels are the same
         nb = kernels.get()
         for i, z in enumerate(np.nonzero(multi)[0].tolist()):
             if progress is not None and i % 32 == 0:
@@ -582,7 +580,6 @@ def _regrow_orphans(lab: np.ndarray, seeds: np.ndarray, space: np.ndarray, zones
     ``space``, one pixel ring per round, through ``space`` only (and inside the label's zone when
     ``zones`` is given)."""
     import cv2
-    from scipy import ndimage as ndi
 
     from . import kernels
 
@@ -595,7 +592,7 @@ def _regrow_orphans(lab: np.ndarray, seeds: np.ndarray, space: np.ndarray, zones
         check_pieces = False
     else:
         orphan = space & (lab == 0)
-    for lab_id, sl in enumerate(ndi.find_objects(lab) if check_pieces else [], start=1):
+    for lab_id, sl in enumerate(kernels.find_objects(lab) if check_pieces else [], start=1):
         if progress is not None and lab_id % 64 == 0:
             progress.check()
         if sl is None:

@@ -443,3 +443,67 @@ def test_outside_centres_by_flood_fill_equal_the_labelling():
             _, lab = cv2.connectedComponents((d > rc).view(np.uint8), connectivity=8, ltype=cv2.CV_32S)
             ref = (lab == lab[0, 0]) if lab[0, 0] else np.zeros(lab.shape, bool)
             assert np.array_equal(_outside_centres(d, rc), ref), (seed, rc)
+
+
+@pytest.fixture
+def one_opencv_thread():
+    import cv2
+
+    before = cv2.getNumThreads()
+    cv2.setNumThreads(1)
+    yield
+    cv2.setNumThreads(before)
+
+
+def _exact_edt_reference(mask):
+    """The correctly rounded float32 root of the exact squared distance to the nearest False pixel."""
+    from scipy import ndimage as ndi
+
+    _, (ir, ic) = ndi.distance_transform_edt(mask, return_indices=True)
+    rr, cc = np.indices(mask.shape)
+    sq = (rr - ir).astype(np.float64) ** 2 + (cc - ic).astype(np.float64) ** 2
+    return np.sqrt(sq).astype(np.float32)
+
+
+@pytest.mark.parametrize("threads", [1, 2])
+def test_clearance_transform_is_the_same_on_one_opencv_thread_as_on_several(threads):
+    """Single-threaded OpenCV (a one-core machine) computed distances an ulp off (7.0000005 for 7) and
+    the segmentation's labels differed from a multi-core run's: ``_edt`` gives the exact roots on both."""
+    import cv2
+
+    from algorithms.segmentation import _edt
+
+    free, _ = _random_rooms(3, shape=(400, 520))  # 2 x 10^5 px: OpenCV's multi-threaded path runs
+    ref = _exact_edt_reference(free)
+    before = cv2.getNumThreads()
+    cv2.setNumThreads(threads)
+    try:
+        raw = cv2.distanceTransform(free.view(np.uint8), cv2.DIST_L2, cv2.DIST_MASK_PRECISE)
+        got = _edt(free)
+    finally:
+        cv2.setNumThreads(before)
+    assert np.array_equal(got, ref)
+    if threads == 1:  # the case the rounding is for (IPP's transform): an ulp off somewhere
+        assert not np.array_equal(raw, ref) or not cv2.ipp.useIPP()
+
+
+def test_sample_building_output_is_pinned_on_one_opencv_thread(tmp_path, one_opencv_thread):
+    """A one-core machine writes the same file as a multi-core one (it did not: IPP's transform)."""
+    _check("sample-F1", _sample_f1(tmp_path), tmp_path)
+
+
+@pytest.mark.parametrize("seed", range(4))
+def test_label_boxes_equal_scipy_find_objects(seed):
+    """``kernels.find_objects`` (one compiled pass, or scipy without numba) = ``ndimage.find_objects``:
+    absent labels, one-pixel labels, labels on the border, int32 and int64, non-contiguous views."""
+    from scipy import ndimage as ndi
+
+    from algorithms import kernels
+
+    rng = np.random.default_rng(seed)
+    lab = rng.integers(0, 40, size=(97, 131)).astype(np.int32)
+    lab[lab == 7] = 0  # an absent label
+    lab[lab > 30] = rng.integers(0, 3)
+    lab[0, 0], lab[-1, -1] = 39, 38
+    for arr in (lab, lab.astype(np.int64), lab[5:80, ::2], np.zeros((5, 6), np.int32)):
+        assert kernels.find_objects(arr) == ndi.find_objects(arr)
