@@ -29,7 +29,9 @@ their cross, ``area_types.find_lift_crosses``) and, when one lies inside a large
 Never carves a hall into a stair: the area is carved only when the rest keeps at least
 ``MIN_REST_SHARE`` of it (otherwise the area *is* the stair core or shaft and is only typed, when it is not
 yet). A stair or lift that already is its own area (the footprint covers most of an area already typed so)
-is left alone. A lift needs walls: a cross with no wall within reach on at least two sides (a void marked
+is left alone. A stair the plan's outline (not a wall) cuts through, with at least ``STRADDLE_SHARE`` of it
+in one area and the rest beyond every area, is carved whole from that area (the stair at a bridge's or
+terrace's edge). A lift needs walls: a cross with no wall within reach on at least two sides (a void marked
 with a cross in a hall) is not a lift.
 """
 from __future__ import annotations
@@ -397,13 +399,34 @@ def _intersecting(areas: Sequence[Area], geom) -> List[Area]:
     return [a for a, h in zip(areas, hit.tolist()) if h]
 
 
+STRADDLE_SHARE = 0.3  # a stair with at least this share in one area and the rest beyond every area is carved
+BEYOND_OTHERS = 0.05  # ... when at most this share of it lies in other areas
+
+
+def _beyond_the_plan(kind: str, sym: Polygon, inside: float, cand: Sequence[Area]) -> Optional[Polygon]:
+    """The part of stair symbol ``sym`` beyond every area when the plan's outline (the envelope, not a wall)
+    cuts through it: at least ``STRADDLE_SHARE`` of it lies in one area (``inside`` m²) and the rest in no
+    other area (the stair at the edge of a bridge or terrace, SIST-F3's E2-ST-02, whose dog-leg flights the
+    link corridor's outline cuts diagonally). None for a lift, or a symbol shared by two areas (a stair
+    drawn across a wall between two rooms is no evidence of either)."""
+    if kind != "stairs" or inside < STRADDLE_SHARE * sym.area:
+        return None
+    others = sum(a.polygon.intersection(sym).area for a in cand) - inside
+    if others > BEYOND_OTHERS * sym.area:
+        return None
+    rest = sym.difference(unary_union([a.polygon for a in cand]))
+    parts = [g for g in getattr(rest, "geoms", [rest]) if g.geom_type == "Polygon" and g.area > 1e-6]
+    return unary_union(parts) if parts else None
+
+
 def carve_anchors(areas: List[Area], passages: List[Passage], geometries: Sequence[CadGeometry],
                   progress=None, symbols=None, texts=None) -> Dict[str, object]:
     """Carve every stair and lift the drawing shows inside a larger area into a typed area of its own (in
     place: ``areas`` and ``passages`` are extended and updated; see the module doc). Returns figures:
     ``carved`` [(kind, new area id, host id, m²)], ``pieces`` {new area id: ids of the host's other
     pieces when the carve cut it in two}, ``typed`` [(kind, area id)] (areas that are the anchor
-    themselves, typed), ``skipped`` counts by reason."""
+    themselves, typed), ``skipped`` counts by reason, ``beyond`` [new area ids] (stairs the plan's outline
+    cuts through, carved whole: ``_beyond_the_plan``)."""
     progress = ensure(progress)
     symbols = find_anchor_symbols(geometries) if symbols is None else symbols
     stats: Dict[str, object] = {"symbols": len(symbols), "carved": [], "typed": [], "skipped": {}, "pieces": {}}
@@ -440,14 +463,23 @@ def carve_anchors(areas: List[Area], passages: List[Passage], geometries: Sequen
                 outdoor.append((sym, angles))
             skip("outside every area")
             continue
+        seen, straddles = host.polygon, False
         if inside < 0.5 * sym.area:
-            skip("symbol across areas")
-            continue
+            beyond = _beyond_the_plan(kind, sym, inside, cand)
+            if beyond is None:
+                skip("symbol across areas")
+                continue
+            # a stair the plan's outline cuts through: its part beyond every area is the stair's too
+            seen = unary_union([host.polygon, beyond])
+            if seen.geom_type != "Polygon":
+                skip("symbol across areas")
+                continue
+            straddles = True
         if host.type in ANCHOR_TYPES and host.type != kind:
             skip("in an area of the other kind")
             continue
         reach = LANDING if kind == "stairs" else SHAFT_REACH
-        fp = footprint(sym, host.polygon, reach, MIN_LIFT_WALLS if kind == "elevator" else 0)
+        fp = footprint(sym, seen, reach, MIN_LIFT_WALLS if kind == "elevator" else 0)
         if fp is None:
             skip("no walls around a lift cross" if kind == "elevator" else "no footprint")
             continue
@@ -611,6 +643,8 @@ def carve_anchors(areas: List[Area], passages: List[Passage], geometries: Sequen
                     passages.append(Passage(id=next_pass, from_id=a_id, to_id=b_id, line=ln))
                     next_pass += 1
         stats["carved"].append((kind, new.id, host.id, round(fpoly.area, 2)))
+        if straddles:
+            stats.setdefault("beyond", []).append(new.id)
         carved_ids.add(new.id)
     if outdoor:
         stats["outdoor"] = named_outdoor_stairs(areas, passages, outdoor, texts)
