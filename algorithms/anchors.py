@@ -654,8 +654,97 @@ def carve_anchors(areas: List[Area], passages: List[Passage], geometries: Sequen
             stats["carved"].extend(recess["carved"])
             stats["pieces"].update(recess["pieces"])
             stats["recesses"] = [c[1] for c in recess["carved"]]
+    changed = {i for c in stats["carved"] for i in c[1:3]} | {i for v in stats["pieces"].values() for i in v}
+    if changed:
+        stats["refit"] = refit_passage_ends(areas, passages, changed)
     progress.step(100)
     return stats
+
+
+END_ON_RING = 1e-3  # m: a passage end this close to an area's ring is on it (the fusion attaches ends within 1 cm)
+DOOR_NEAR = 0.3  # m: the common border of two areas this close to a passage's line is where that passage lies
+
+
+DOOR_MIN = 0.3  # m: shorter stretches of a door's border left by a cut are no passage (as the name split's cuts)
+
+
+def _border_chords(a: Polygon, b: Polygon, within) -> List[LineString]:
+    """The chords (end to end, >= ``DOOR_MIN``) of the stretches of the common border of ``a`` and ``b`` in
+    ``within``: a door's line across a border that zigzags along the raster stays one passage."""
+    common = a.boundary.intersection(b.buffer(1e-4)).intersection(within)
+    lines = [g for g in getattr(common, "geoms", [common]) if g.geom_type in ("LineString", "MultiLineString")]
+    if not lines:
+        return []
+    u = unary_union(lines)
+    merged = linemerge(list(u.geoms)) if hasattr(u, "geoms") else u
+    out = []
+    for ln in getattr(merged, "geoms", [merged]):
+        if ln.geom_type == "LineString" and ln.length >= DOOR_MIN:
+            p, q = ln.coords[0], ln.coords[-1]
+            if math.hypot(q[0] - p[0], q[1] - p[1]) >= DOOR_MIN:
+                out.append(LineString([_on_border(p, a, b), _on_border(q, a, b)]))
+    return out
+
+
+def refit_passage_ends(areas: Sequence[Area], passages: List[Passage], changed) -> List[int]:
+    """Passages of the areas ``changed`` by the carve whose end is off one of their two areas' rings, laid
+    again on the border the two areas share along them. A door on the host's border that the cut runs
+    through, or whose end a later carve of the same host moved (the host's border near it is the next
+    stair's now), keeps its line otherwise, and the osmAG writer cannot make that end a node of the area
+    (the fusion warned: SIST-F1 L1-P036 0.66 m, L1-P077 0.75 m, L1-P174 0.06 m, F4 L4-P052 1.30 m, library
+    3F L3-P025 0.36 m). The passage takes the chord of the stretch of the common border of its area and
+    the area on its other side beside its line (within ``DOOR_NEAR``, ``_border_chords``); another changed area that
+    shares such a stretch (>= ``MIN_PASSAGE``) with that other side (the other piece of a door the cut split)
+    gets a passage of its own, copied from this one. A passage with no such stretch is left as it is. Returns the ids of the
+    passages refit or added."""
+    from shapely.geometry import Point
+
+    by_id = {a.id: a for a in areas}
+    changed = set(changed)
+    done: List[int] = []
+    next_pass = max([p.id for p in passages] + [0]) + 1
+
+    def off(p):
+        ends = [Point(p.line.coords[0]), Point(p.line.coords[-1])]
+        return [aid for aid in (p.from_id, p.to_id)
+                if any(by_id[aid].polygon.boundary.distance(e) > END_ON_RING for e in ends)]
+
+    for p in list(passages):
+        if not ({p.from_id, p.to_id} & changed) or p.from_id not in by_id or p.to_id not in by_id:
+            continue
+        bad = off(p)
+        if not bad:
+            continue
+        side = "from_id" if (p.from_id in bad and p.from_id in changed) or p.to_id not in changed else "to_id"
+        other = by_id[p.to_id if side == "from_id" else p.from_id]
+        near = p.line.buffer(DOOR_NEAR, cap_style=2)  # flat: the border beside the door, not beyond its ends
+        found = []
+        for x in _intersecting([by_id[i] for i in sorted(changed) if i in by_id and i != other.id], near):
+            if not x.polygon.intersects(other.polygon.buffer(1e-4)):
+                continue
+            found += [(x.id, ln) for ln in _border_chords(x.polygon, other.polygon, near)]
+        if not found:
+            continue
+        mine = getattr(p, side)
+        found.sort(key=lambda t: (t[0] != mine, -t[1].length))
+        for k, (xid, ln) in enumerate(found):
+            if k == 0:
+                p.line = ln
+                setattr(p, side, xid)
+                done.append(p.id)
+                continue
+            pair = {xid, other.id}
+            if ln.length < MIN_PASSAGE:  # a sliver of the door beside the cut: no passage of its own
+                continue
+            if any({q.from_id, q.to_id} == pair and q.line.buffer(0.05).intersection(ln).length > 0.5 * ln.length
+                   for q in passages):
+                continue  # that stretch has its passage already (the carve's own)
+            q = Passage(id=next_pass, from_id=p.from_id, to_id=p.to_id, line=ln, name="", tags=dict(p.tags or {}))
+            setattr(q, side, xid)
+            passages.append(q)
+            done.append(q.id)
+            next_pass += 1
+    return done
 
 
 OUTDOOR_STAIR_REACH = 1.0  # m: areas this close to an outdoor stair are cut from its box
@@ -909,4 +998,4 @@ def coded_lift_recesses(areas: List[Area], passages: List[Passage], texts) -> Di
     return out
 
 
-__all__ = ["carve_anchors", "coded_lift_recesses", "relabel", "find_anchor_symbols", "footprint"]
+__all__ = ["carve_anchors", "coded_lift_recesses", "refit_passage_ends", "relabel", "find_anchor_symbols", "footprint"]

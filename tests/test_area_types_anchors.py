@@ -440,3 +440,35 @@ def test_a_stair_the_plan_outline_cuts_through_is_carved_whole():
     corridor, _ = _bridge_and_dog_leg()
     st = anchors.carve_anchors([corridor], [], _cross(3.0, 3.5, 5.0, 5.5))
     assert not st["carved"] and "beyond" not in st
+
+
+def test_a_door_the_cut_runs_through_is_laid_on_the_borders_it_lies_on():
+    """A door (3 m) on the border between a hall and a room, whose hall side a carve (or a name split) cut
+    into two pieces at x = 5 and which followed one piece: its end lay 2 m off that piece's ring, and the
+    osmAG writer could not share its node (SIST-F1 L1-P036, F4 L4-P052, library L3-P025). Refit: one
+    passage per piece along the border it shares with the room; a door on a hole's ring and a door whose
+    ends are on both rings are left alone."""
+    from shapely.geometry import Point
+
+    left, right = Area(id=1, polygon=box(0, 0, 5, 5)), Area(id=2, polygon=box(5, 0, 10, 5))
+    room = Area(id=3, polygon=box(0, 5, 10, 9))
+    court = Area(id=4, polygon=box(20, 0, 30, 10).difference(box(24, 4, 26, 6)))
+    island = Area(id=5, polygon=box(24, 4, 26, 6))
+    door = Passage(id=7, from_id=1, to_id=3, line=LineString([(4.0, 5.0), (7.0, 5.0)]), name="D1",
+                   tags={"door": "yes"})
+    good = Passage(id=8, from_id=2, to_id=3, line=LineString([(8.0, 5.0), (9.5, 5.0)]))
+    hole = Passage(id=9, from_id=4, to_id=5, line=LineString([(24.5, 4.0), (25.5, 4.0)]))
+    areas, passages = [left, right, room, court, island], [door, good, hole]
+    keep = {p.id: p.line.wkt for p in (good, hole)}
+    done = anchors.refit_passage_ends(areas, passages, {1, 2, 4})
+    assert done[0] == 7 and len(passages) == 4
+    assert (door.from_id, door.to_id, door.name) == (1, 3, "D1")
+    assert sorted(door.line.bounds) == sorted((4.0, 5.0, 5.0, 5.0))
+    new = passages[-1]
+    assert (new.from_id, new.to_id, new.tags) == (2, 3, {"door": "yes"}) and new.id == done[1]
+    assert new.line.length == pytest.approx(2.0) and new.line.distance(Point(6.0, 5.0)) < 1e-9
+    assert {p.id: p.line.wkt for p in (good, hole)} == keep
+    by = {a.id: a for a in areas}
+    for p in passages:  # every end on both of its areas' rings
+        for aid in (p.from_id, p.to_id):
+            assert all(by[aid].polygon.boundary.distance(Point(c)) < 1e-9 for c in p.line.coords), (p.id, aid)

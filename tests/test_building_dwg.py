@@ -198,9 +198,12 @@ def _check_building(b, levels, pinned_links, named_on_both, not_on_both_plans=No
     # the fusion never moves a passage end off its area: a ring that touches itself (the 4F atrium gallery
     # 中庭回廊 (2), SIST-F1's hall 大厅) stays one ring (model.open_ring_pinches), so its passages keep their
     # nodes. Measured on the session-5 floor files: library 22 -> 1, SIST 14 -> 4 such warnings; the ones
-    # left are passage ends the floor files already put 0.06-1.3 m off the area (the passage stage's)
+    # left were doors that a carve or a name split cut and that followed one piece, 0.06-1.3 m off it
+    # (library L3-P025, SIST L1-P036, L1-P077, L1-P174, L4-P052): laid on the borders they lie on since
+    # (anchors.refit_passage_ends): 0 and 0, and the floor files put no passage end off its area
     off = [w for w in st["warnings"] if "is not on the border of area" in w]
-    assert len(off) <= _off_border_ends([c[0] for c in b["conv"]]), off
+    assert not off, off
+    assert _off_border_ends([c[0] for c in b["conv"]]) == 0
     # nothing lost: every area and passage of every floor is in the building
     n_floor_areas = sum(c[2] for c in b["conv"])
     assert st["areas_in"] == st["areas_out"] >= n_floor_areas
