@@ -699,7 +699,7 @@ def refit_passage_ends(areas: Sequence[Area], passages: List[Passage], changed) 
     passages refit or added."""
     from shapely.geometry import Point
 
-    by_id = {a.id: a for a in areas}
+    by_id = {a.id: a for a in areas if a.polygon is not None and not a.polygon.is_empty}
     changed = set(changed)
     done: List[int] = []
     next_pass = max([p.id for p in passages] + [0]) + 1
@@ -710,7 +710,8 @@ def refit_passage_ends(areas: Sequence[Area], passages: List[Passage], changed) 
                 if any(by_id[aid].polygon.boundary.distance(e) > END_ON_RING for e in ends)]
 
     for p in list(passages):
-        if not ({p.from_id, p.to_id} & changed) or p.from_id not in by_id or p.to_id not in by_id:
+        if not ({p.from_id, p.to_id} & changed) or p.from_id not in by_id or p.to_id not in by_id or \
+                p.line is None or p.line.is_empty:
             continue
         bad = off(p)
         if not bad:
