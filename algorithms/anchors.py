@@ -29,7 +29,9 @@ their cross, ``area_types.find_lift_crosses``) and, when one lies inside a large
 Never carves a hall into a stair: the area is carved only when the rest keeps at least
 ``MIN_REST_SHARE`` of it (otherwise the area *is* the stair core or shaft and is only typed, when it is not
 yet). A stair or lift that already is its own area (the footprint covers most of an area already typed so)
-is left alone. A lift needs walls: a cross with no wall within reach on at least two sides (a void marked
+is left alone. A stair the plan's outline (not a wall) cuts through, with at least ``STRADDLE_SHARE`` of it
+in one area and the rest beyond every area, is carved whole from that area (the stair at a bridge's or
+terrace's edge). A lift needs walls: a cross with no wall within reach on at least two sides (a void marked
 with a cross in a hall) is not a lift.
 """
 from __future__ import annotations
@@ -397,13 +399,34 @@ def _intersecting(areas: Sequence[Area], geom) -> List[Area]:
     return [a for a, h in zip(areas, hit.tolist()) if h]
 
 
+STRADDLE_SHARE = 0.3  # a stair with at least this share in one area and the rest beyond every area is carved
+BEYOND_OTHERS = 0.05  # ... when at most this share of it lies in other areas
+
+
+def _beyond_the_plan(kind: str, sym: Polygon, inside: float, cand: Sequence[Area]) -> Optional[Polygon]:
+    """The part of stair symbol ``sym`` beyond every area when the plan's outline (the envelope, not a wall)
+    cuts through it: at least ``STRADDLE_SHARE`` of it lies in one area (``inside`` m²) and the rest in no
+    other area (the stair at the edge of a bridge or terrace, SIST-F3's E2-ST-02, whose dog-leg flights the
+    link corridor's outline cuts diagonally). None for a lift, or a symbol shared by two areas (a stair
+    drawn across a wall between two rooms is no evidence of either)."""
+    if kind != "stairs" or inside < STRADDLE_SHARE * sym.area:
+        return None
+    others = sum(a.polygon.intersection(sym).area for a in cand) - inside
+    if others > BEYOND_OTHERS * sym.area:
+        return None
+    rest = sym.difference(unary_union([a.polygon for a in cand]))
+    parts = [g for g in getattr(rest, "geoms", [rest]) if g.geom_type == "Polygon" and g.area > 1e-6]
+    return unary_union(parts) if parts else None
+
+
 def carve_anchors(areas: List[Area], passages: List[Passage], geometries: Sequence[CadGeometry],
                   progress=None, symbols=None, texts=None) -> Dict[str, object]:
     """Carve every stair and lift the drawing shows inside a larger area into a typed area of its own (in
     place: ``areas`` and ``passages`` are extended and updated; see the module doc). Returns figures:
     ``carved`` [(kind, new area id, host id, m²)], ``pieces`` {new area id: ids of the host's other
     pieces when the carve cut it in two}, ``typed`` [(kind, area id)] (areas that are the anchor
-    themselves, typed), ``skipped`` counts by reason."""
+    themselves, typed), ``skipped`` counts by reason, ``beyond`` [new area ids] (stairs the plan's outline
+    cuts through, carved whole: ``_beyond_the_plan``)."""
     progress = ensure(progress)
     symbols = find_anchor_symbols(geometries) if symbols is None else symbols
     stats: Dict[str, object] = {"symbols": len(symbols), "carved": [], "typed": [], "skipped": {}, "pieces": {}}
@@ -440,14 +463,23 @@ def carve_anchors(areas: List[Area], passages: List[Passage], geometries: Sequen
                 outdoor.append((sym, angles))
             skip("outside every area")
             continue
+        seen, straddles = host.polygon, False
         if inside < 0.5 * sym.area:
-            skip("symbol across areas")
-            continue
+            beyond = _beyond_the_plan(kind, sym, inside, cand)
+            if beyond is None:
+                skip("symbol across areas")
+                continue
+            # a stair the plan's outline cuts through: its part beyond every area is the stair's too
+            seen = unary_union([host.polygon, beyond])
+            if seen.geom_type != "Polygon":
+                skip("symbol across areas")
+                continue
+            straddles = True
         if host.type in ANCHOR_TYPES and host.type != kind:
             skip("in an area of the other kind")
             continue
         reach = LANDING if kind == "stairs" else SHAFT_REACH
-        fp = footprint(sym, host.polygon, reach, MIN_LIFT_WALLS if kind == "elevator" else 0)
+        fp = footprint(sym, seen, reach, MIN_LIFT_WALLS if kind == "elevator" else 0)
         if fp is None:
             skip("no walls around a lift cross" if kind == "elevator" else "no footprint")
             continue
@@ -611,6 +643,8 @@ def carve_anchors(areas: List[Area], passages: List[Passage], geometries: Sequen
                     passages.append(Passage(id=next_pass, from_id=a_id, to_id=b_id, line=ln))
                     next_pass += 1
         stats["carved"].append((kind, new.id, host.id, round(fpoly.area, 2)))
+        if straddles:
+            stats.setdefault("beyond", []).append(new.id)
         carved_ids.add(new.id)
     if outdoor:
         stats["outdoor"] = named_outdoor_stairs(areas, passages, outdoor, texts)
@@ -620,8 +654,98 @@ def carve_anchors(areas: List[Area], passages: List[Passage], geometries: Sequen
             stats["carved"].extend(recess["carved"])
             stats["pieces"].update(recess["pieces"])
             stats["recesses"] = [c[1] for c in recess["carved"]]
+    changed = {i for c in stats["carved"] for i in c[1:3]} | {i for v in stats["pieces"].values() for i in v}
+    if changed:
+        stats["refit"] = refit_passage_ends(areas, passages, changed)
     progress.step(100)
     return stats
+
+
+END_ON_RING = 1e-3  # m: a passage end this close to an area's ring is on it (the fusion attaches ends within 1 cm)
+DOOR_NEAR = 0.3  # m: the common border of two areas this close to a passage's line is where that passage lies
+
+
+DOOR_MIN = 0.3  # m: shorter stretches of a door's border left by a cut are no passage (as the name split's cuts)
+
+
+def _border_chords(a: Polygon, b: Polygon, within) -> List[LineString]:
+    """The chords (end to end, >= ``DOOR_MIN``) of the stretches of the common border of ``a`` and ``b`` in
+    ``within``: a door's line across a border that zigzags along the raster stays one passage."""
+    common = a.boundary.intersection(b.buffer(1e-4)).intersection(within)
+    lines = [g for g in getattr(common, "geoms", [common]) if g.geom_type in ("LineString", "MultiLineString")]
+    if not lines:
+        return []
+    u = unary_union(lines)
+    merged = linemerge(list(u.geoms)) if hasattr(u, "geoms") else u
+    out = []
+    for ln in getattr(merged, "geoms", [merged]):
+        if ln.geom_type == "LineString" and ln.length >= DOOR_MIN:
+            p, q = ln.coords[0], ln.coords[-1]
+            if math.hypot(q[0] - p[0], q[1] - p[1]) >= DOOR_MIN:
+                out.append(LineString([_on_border(p, a, b), _on_border(q, a, b)]))
+    return out
+
+
+def refit_passage_ends(areas: Sequence[Area], passages: List[Passage], changed) -> List[int]:
+    """Passages of the areas ``changed`` by the carve whose end is off one of their two areas' rings, laid
+    again on the border the two areas share along them. A door on the host's border that the cut runs
+    through, or whose end a later carve of the same host moved (the host's border near it is the next
+    stair's now), keeps its line otherwise, and the osmAG writer cannot make that end a node of the area
+    (the fusion warned: SIST-F1 L1-P036 0.66 m, L1-P077 0.75 m, L1-P174 0.06 m, F4 L4-P052 1.30 m, library
+    3F L3-P025 0.36 m). The passage takes the chord of the stretch of the common border of its area and
+    the area on its other side beside its line (within ``DOOR_NEAR``, ``_border_chords``); another changed area that
+    shares such a stretch (>= ``MIN_PASSAGE``) with that other side (the other piece of a door the cut split)
+    gets a passage of its own, copied from this one. A passage with no such stretch is left as it is. Returns the ids of the
+    passages refit or added."""
+    from shapely.geometry import Point
+
+    by_id = {a.id: a for a in areas if a.polygon is not None and not a.polygon.is_empty}
+    changed = set(changed)
+    done: List[int] = []
+    next_pass = max([p.id for p in passages] + [0]) + 1
+
+    def off(p):
+        ends = [Point(p.line.coords[0]), Point(p.line.coords[-1])]
+        return [aid for aid in (p.from_id, p.to_id)
+                if any(by_id[aid].polygon.boundary.distance(e) > END_ON_RING for e in ends)]
+
+    for p in list(passages):
+        if not ({p.from_id, p.to_id} & changed) or p.from_id not in by_id or p.to_id not in by_id or \
+                p.line is None or p.line.is_empty:
+            continue
+        bad = off(p)
+        if not bad:
+            continue
+        side = "from_id" if (p.from_id in bad and p.from_id in changed) or p.to_id not in changed else "to_id"
+        other = by_id[p.to_id if side == "from_id" else p.from_id]
+        near = p.line.buffer(DOOR_NEAR, cap_style=2)  # flat: the border beside the door, not beyond its ends
+        found = []
+        for x in _intersecting([by_id[i] for i in sorted(changed) if i in by_id and i != other.id], near):
+            if not x.polygon.intersects(other.polygon.buffer(1e-4)):
+                continue
+            found += [(x.id, ln) for ln in _border_chords(x.polygon, other.polygon, near)]
+        if not found:
+            continue
+        mine = getattr(p, side)
+        found.sort(key=lambda t: (t[0] != mine, -t[1].length))
+        for k, (xid, ln) in enumerate(found):
+            if k == 0:
+                p.line = ln
+                setattr(p, side, xid)
+                done.append(p.id)
+                continue
+            pair = {xid, other.id}
+            if ln.length < MIN_PASSAGE:  # a sliver of the door beside the cut: no passage of its own
+                continue
+            if any({q.from_id, q.to_id} == pair and q.line.buffer(0.05).intersection(ln).length > 0.5 * ln.length
+                   for q in passages):
+                continue  # that stretch has its passage already (the carve's own)
+            q = Passage(id=next_pass, from_id=p.from_id, to_id=p.to_id, line=ln, name="", tags=dict(p.tags or {}))
+            setattr(q, side, xid)
+            passages.append(q)
+            done.append(q.id)
+            next_pass += 1
+    return done
 
 
 OUTDOOR_STAIR_REACH = 1.0  # m: areas this close to an outdoor stair are cut from its box
@@ -875,4 +999,4 @@ def coded_lift_recesses(areas: List[Area], passages: List[Passage], texts) -> Di
     return out
 
 
-__all__ = ["carve_anchors", "coded_lift_recesses", "relabel", "find_anchor_symbols", "footprint"]
+__all__ = ["carve_anchors", "coded_lift_recesses", "refit_passage_ends", "relabel", "find_anchor_symbols", "footprint"]

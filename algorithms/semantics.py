@@ -1683,6 +1683,10 @@ def _finish(a: Area, pieces, areas: List[Area], passages, labels, grid, recs, t:
                                             line=LineString([ln.coords[0], ln.coords[-1]])))
                     new_pass.append(pid)
                     pid += 1
+        # a door the cut runs through follows its midpoint's piece: its line goes on the border it lies on
+        from .anchors import refit_passage_ends
+
+        new_pass += [q for q in refit_passage_ends(areas, passages, {b.id for b in out}) if q >= pid]
     if labels is not None and grid is not None:
         _relabel(labels, grid, a.id, out)
     a.tags["_new_passages"] = new_pass

@@ -390,3 +390,85 @@ def test_dxftoosmag_headless_carves_an_empty_lift_shaft_named_by_its_code(tmp_pa
     lift = [a for a in areas if a.type == "elevator"]
     assert len(lift) == 1 and "E1-P2" in (lift[0].tags.get("ref", ""), lift[0].name)
     assert len(passages) == 1 and report["dangling_refs"] == [] and res["AREA_COUNT"] == len(areas) - 1
+
+
+def _bridge_and_dog_leg():
+    """A link corridor (10 m wide) whose outline runs diagonally through a dog-leg stair at its edge (the
+    plan's envelope, not a wall: SIST-F3's E2-ST-02 on the bridge 连廊): two 1.4 m flights side by side, 37 %
+    of their box inside the corridor, the rest beyond every area."""
+    from shapely.geometry import Polygon
+
+    corridor = Area(id=1, polygon=Polygon([(0, 0), (10, 0), (10, 2.6), (0, 5.6)]), type="corridor", name="")
+    geoms = _flight(3.0, 3.0, width=1.4, n=12) + _flight(4.6, 3.0, width=1.4, n=12)
+    return corridor, geoms
+
+
+def test_a_stair_the_plan_outline_cuts_through_is_carved_whole():
+    """A stair with 30 % or more of it in one area and the rest beyond every area is carved whole: the
+    stairs area holds both flights (also their part beyond the corridor's old outline), the corridor keeps its
+    id, its type and everything but the stair, and a passage joins them across the first treads (parallel to
+    the treads, at y = 3). The same stair with its part beyond lying in another area (a stair drawn across
+    two areas), with under 30 % of it inside, or a lift cross across the outline: not carved."""
+    corridor, geoms = _bridge_and_dog_leg()
+    old = corridor.polygon
+    areas, passages = [corridor], []
+    st = anchors.carve_anchors(areas, passages, geoms)
+    _graph_ok(areas, passages)
+    stair = [a for a in areas if a.type == "stairs"]
+    assert len(stair) == 1 and st["beyond"] == [stair[0].id] and len(st["carved"]) == 1
+    flights = box(3.0, 3.0, 6.0, 3.0 + 12 * 0.28)
+    assert stair[0].polygon.intersection(flights).area >= 0.97 * flights.area  # whole, not the 37 % inside
+    assert stair[0].polygon.area <= 1.05 * flights.area
+    assert (corridor.id, corridor.type) == (1, "corridor")
+    assert corridor.polygon.area == pytest.approx(old.area - old.intersection(flights).area, rel=1e-3)  # 41 - 3.75 m²
+    sp = [p for p in passages if {p.from_id, p.to_id} == {1, stair[0].id}]
+    assert sp and all(abs(p.line.coords[0][1] - 3.0) < 0.02 and abs(p.line.coords[1][1] - 3.0) < 0.02 for p in sp)
+    assert sum(p.line.length for p in sp) == pytest.approx(3.0, abs=0.1)
+    # part of the rest lies in another area (a room west of the stair, 18 % of it): a symbol across two areas
+    corridor, geoms = _bridge_and_dog_leg()
+    terrace = Area(id=2, polygon=box(0, 0, 4, 10).difference(corridor.polygon), type="room")
+    areas = [corridor, terrace]
+    st = anchors.carve_anchors(areas, [], geoms)
+    assert len(areas) == 2 and st["skipped"] == {"symbol across areas": 1} and "beyond" not in st
+    # under 30 % inside: the stair belongs to no area
+    from shapely.geometry import Polygon
+
+    low = Area(id=1, polygon=Polygon([(0, 0), (10, 0), (10, 2.0), (0, 5.0)]), type="corridor")
+    st = anchors.carve_anchors([low], [], geoms)
+    assert st["skipped"] == {"symbol across areas": 1}
+    # a lift's car across the outline: never (a lift needs its shaft walls)
+    corridor, _ = _bridge_and_dog_leg()
+    st = anchors.carve_anchors([corridor], [], _cross(3.0, 3.5, 5.0, 5.5))
+    assert not st["carved"] and "beyond" not in st
+
+
+def test_a_door_the_cut_runs_through_is_laid_on_the_borders_it_lies_on():
+    """A door (3 m) on the border between a hall and a room, whose hall side a carve (or a name split) cut
+    into two pieces at x = 5 and which followed one piece: its end lay 2 m off that piece's ring, and the
+    osmAG writer could not share its node (SIST-F1 L1-P036, F4 L4-P052, library L3-P025). Refit: one
+    passage per piece along the border it shares with the room; a door on a hole's ring and a door whose
+    ends are on both rings are left alone."""
+    from shapely.geometry import Point
+
+    left, right = Area(id=1, polygon=box(0, 0, 5, 5)), Area(id=2, polygon=box(5, 0, 10, 5))
+    room = Area(id=3, polygon=box(0, 5, 10, 9))
+    court = Area(id=4, polygon=box(20, 0, 30, 10).difference(box(24, 4, 26, 6)))
+    island = Area(id=5, polygon=box(24, 4, 26, 6))
+    door = Passage(id=7, from_id=1, to_id=3, line=LineString([(4.0, 5.0), (7.0, 5.0)]), name="D1",
+                   tags={"door": "yes"})
+    good = Passage(id=8, from_id=2, to_id=3, line=LineString([(8.0, 5.0), (9.5, 5.0)]))
+    hole = Passage(id=9, from_id=4, to_id=5, line=LineString([(24.5, 4.0), (25.5, 4.0)]))
+    areas, passages = [left, right, room, court, island], [door, good, hole]
+    keep = {p.id: p.line.wkt for p in (good, hole)}
+    done = anchors.refit_passage_ends(areas, passages, {1, 2, 4})
+    assert done[0] == 7 and len(passages) == 4
+    assert (door.from_id, door.to_id, door.name) == (1, 3, "D1")
+    assert sorted(door.line.bounds) == sorted((4.0, 5.0, 5.0, 5.0))
+    new = passages[-1]
+    assert (new.from_id, new.to_id, new.tags) == (2, 3, {"door": "yes"}) and new.id == done[1]
+    assert new.line.length == pytest.approx(2.0) and new.line.distance(Point(6.0, 5.0)) < 1e-9
+    assert {p.id: p.line.wkt for p in (good, hole)} == keep
+    by = {a.id: a for a in areas}
+    for p in passages:  # every end on both of its areas' rings
+        for aid in (p.from_id, p.to_id):
+            assert all(by[aid].polygon.boundary.distance(Point(c)) < 1e-9 for c in p.line.coords), (p.id, aid)
