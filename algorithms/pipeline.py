@@ -283,8 +283,9 @@ def _outdoor_spaces(refined: AreaGraph, drawing: CadDrawing, name_rules, counted
     outdoor = sorted(set(outdoor) | set(segmentation.open_ground_spaces(
         refined.areas, refined.passages, refined.grid, names, list(counted_out) + outdoor, drawing.doors)))
     rstats["outdoor_spaces"] = outdoor
-    _count_out(refined, outdoor, "cad2osmag:outdoor", "area(s) of exterior ground that no passage reaches and no "
-               "room name labels (terraces, landscape, porches and yards open to the outside", progress)
+    _count_out(refined, outdoor, "cad2osmag:outdoor", "area(s) of exterior ground outside the facade that no "
+               "passage reaches and no room name labels (terraces, landscape, porches and yards open to the outside",
+               progress)
     return outdoor
 
 
