@@ -2235,7 +2235,9 @@ def outdoor_spaces(areas: List[Area], passages: List[Passage], name_points=(), c
     return sorted(out)
 
 
-OPEN_FRONT = DEFAULT_ENVELOPE_GAP  # metres of outline open to the outside that no doorway explains (a front)
+OPEN_FRONT = 1.5 * DEFAULT_ENVELOPE_GAP  # metres: one stretch of outline open to the outside wider than any
+# facade opening the envelope closes at its chord (narrower than the gap; a corner of a facade whose windows
+# are not drawn, office.dxf's stairwell: 4.1 m), so space that was claimed open, not a room behind a window
 OPEN_RING_PX = 4  # pixels: how far beyond an area's outline the ring looks for the outside (through free pixels)
 OPEN_SLIVER_PX = 3  # pixels: free slivers this thin between a simplified outline and the walls are the area's
 
@@ -2246,14 +2248,18 @@ def open_ground_spaces(areas: List[Area], passages: List[Passage], grid: Occupan
     """Ids of the areas of orphaned components that are ground open to the outside: a covered porch between
     pillars and a roof edge, a yard under an overhang, a strip outside the facade between two exterior steps.
     A component other than the largest (no passage reaches it from the main one), none of whose areas holds
-    a room name or number (``name_points``: (x, y, text)), that no door hint touches, and whose outline meets
+    a room name or number (``name_points``: (x, y, text)) or was named from a text nearby (tag
+    ``label_texts``), that no door hint touches, and whose outline meets
     the outside directly -- free space that belongs to no area and reaches the raster border, with no wall
-    or line in between -- along at least ``min_front`` metres (the envelope gap, 4 m: wider than any doorway;
-    a room whose door or window was left out meets the outside over the chord of that opening only). Such
-    space is reached from the outside only: the drawing itself says it is no room of the floor, whether or
-    not the drawing names its rooms (``outdoor_spaces`` needs names). A named space is never counted out.
+    or line in between -- along one stretch of at least ``min_front`` metres (1.5 x the envelope gap: the
+    envelope closes every facade opening narrower than its gap at the chord, so a room whose door, window
+    or facade corner was left out meets the outside over such chords only, each under 4 m). Such space was
+    claimed open (footprint, roof-edge lines) and is reached from the outside only: the drawing itself says
+    it is no room of the floor, whether or not the drawing names its rooms (``outdoor_spaces`` needs names).
+    A named space is never counted out.
     ``closed_ids``: areas already counted out, never listed again. They stay areas. ``info`` (a dict) gets
-    ``fronts``: {component: metres open to the outside} of the components measured."""
+    ``fronts``: {component: metres of its longest stretch open to the outside} of the components measured."""
+    import cv2
     from scipy import ndimage
     from shapely import STRtree
     from shapely.geometry import LineString, Point
@@ -2276,8 +2282,9 @@ def open_ground_spaces(areas: List[Area], passages: List[Passage], grid: Occupan
     htree = STRtree(hint_lines) if hint_lines else None
     keep: Dict[int, List[Area]] = {}
     for c, lst in members.items():
-        if tree is not None and any(len(tree.query(a.polygon, predicate="intersects")) for a in lst):
-            continue  # a name or number: a room, orphaned or not, is never counted out
+        if any(a.tags.get("label_texts") for a in lst) or (
+                tree is not None and any(len(tree.query(a.polygon, predicate="intersects")) for a in lst)):
+            continue  # a name or number (or one the names stage gave it): a room, orphaned or not, is never counted out
         if htree is not None and any(len(htree.query(a.polygon.buffer(0.3), predicate="intersects")) for a in lst):
             continue  # a doorway drawn at it: part of the building whose passage was missed, an orphan
         keep[c] = lst
@@ -2289,15 +2296,21 @@ def open_ground_spaces(areas: List[Area], passages: List[Passage], grid: Occupan
             if part.geom_type == "Polygon" and not part.is_empty:
                 repaint_polygon(lab, grid, part, a.id, old_id=0)
     passable = grid.data != OCCUPIED
+    k3 = np.ones((3, 3), np.uint8)
+    cross = cv2.getStructuringElement(cv2.MORPH_CROSS, (3, 3))  # 4-connected steps: a ring OPEN_RING_PX deep
+    labf = lab.astype(np.float32)  # exact for ids below 2**24; cv2's max filter is the fast one
     for _ in range(OPEN_SLIVER_PX):  # free slivers between a simplified outline and its walls belong to the area
-        grow = (lab == 0) & passable
-        lab[grow] = ndimage.maximum_filter(lab, size=3)[grow]
-    outside, n = ndimage.label(passable & (lab == 0))
+        grow = (labf == 0) & passable
+        labf[grow] = cv2.dilate(labf, k3)[grow]
+    lab = labf.astype(np.int32)
+    del labf
+    free0 = (passable & (lab == 0)).view(np.uint8)
+    n, outside = cv2.connectedComponents(free0, connectivity=4, ltype=cv2.CV_32S)
     border = np.unique(np.concatenate([outside[0], outside[-1], outside[:, 0], outside[:, -1]]))
     border = border[border > 0]
     if not len(border):
         return []
-    is_out = np.zeros(n + 1, bool)
+    is_out = np.zeros(n, bool)
     is_out[border] = True
     res = float(grid.resolution)
     rows, cols = grid.shape
@@ -2311,12 +2324,20 @@ def open_ground_spaces(areas: List[Area], passages: List[Passage], grid: Occupan
         r0, r1 = max(int(ra) - m, 0), min(int(rb) + m + 1, rows)
         if c1 <= c0 or r1 <= r0:
             continue
-        win = lab[r0:r1, c0:c1]
-        mine = np.isin(win, ids)
-        ring = ndimage.binary_dilation(mine, iterations=OPEN_RING_PX, mask=passable[r0:r1, c0:c1]) & ~mine
+        mine = np.isin(lab[r0:r1, c0:c1], ids).view(np.uint8)
+        pw = passable[r0:r1, c0:c1].view(np.uint8)
+        grown = mine
+        for _ in range(OPEN_RING_PX):  # the ring beyond the outline, through free pixels only (never a wall)
+            grown = cv2.dilate(grown, cross) & (grown | pw)
+        ring = grown.astype(bool) & ~mine.astype(bool)
         contact = ring & is_out[outside[r0:r1, c0:c1]]
-        # the ring is OPEN_RING_PX deep where the outline meets the outside: its pixels / depth ~ the front's length
-        front = float(contact.sum()) * res / OPEN_RING_PX
+        # the ring is OPEN_RING_PX deep where the outline meets the outside: a run's pixels / depth ~ its length,
+        # less the ring's and the slivers' spread around each end of it
+        runs, nr = ndimage.label(contact, structure=np.ones((3, 3), bool))
+        front = 0.0
+        if nr:
+            px = np.bincount(runs[contact], minlength=nr + 1)[1:]
+            front = max(0.0, float(px.max()) * res / OPEN_RING_PX - 2.0 * (OPEN_RING_PX + OPEN_SLIVER_PX) * res)
         if info is not None:
             info.setdefault("fronts", {})[int(c)] = front
         if front >= min_front:

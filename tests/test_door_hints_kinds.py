@@ -4,9 +4,10 @@
   face only): ``cad_classify.lined_doorways`` gives it a hint, a niche down to a wall's middle line none;
 * a door swing drawn without its leaf on a wall drawn straight through the doorway (a facade drawn as two
   long lines): ``cad_classify._swings_on_walls`` gives it a hint, an arc standing off the wall none;
-* ground open to the outside along a front wider than a doorway, reached from outside only (a porch
-  between two walls under a roof edge): ``segmentation.open_ground_spaces`` counts it out of the connected
-  share, named or not, never a named space, never a room whose missing door leaves a chord to the outside.
+* ground open to the outside along a stretch wider than any facade opening the envelope closes at its
+  chord, reached from outside only (a porch between two walls under a roof edge):
+  ``segmentation.open_ground_spaces`` counts it out of the connected share, on named drawings or not, never
+  a named space, never a room whose missing door or window bay leaves a chord to the outside.
 Each test builds the small drawing (or raster) the rule is about."""
 import ezdxf
 import numpy as np
@@ -160,24 +161,26 @@ def _box(x0, y0, x1, y1):
 
 def _ground_plan():
     """A building (x 2-22, y 2-12, walls 0.2 m) of a hall (component 0) and a room east of it whose door the
-    drawing forgot but whose facade has a 1 m gap (component 2); north of the hall a porch (x 2-10, y 12-18)
-    between two walls, open to the north over 7.6 m (component 1)."""
+    drawing forgot and whose facade misses a 3.5 m window bay (component 2); north of the hall a porch
+    (x 2-14, y 12-18) between two walls, open to the north over 11.6 m (component 1)."""
     g = _grid()
     for x0, y0, x1, y1 in ((2, 2, 22, 2.2), (2, 11.8, 22, 12), (2, 2, 2.2, 12), (21.8, 2, 22, 12),
                            (14, 2, 14.2, 12),  # hall | room
-                           (2, 12, 2.2, 18), (9.8, 12, 10, 18)):  # the porch's side walls
+                           (2, 12, 2.2, 18), (13.8, 12, 14, 18)):  # the porch's side walls
         _wall(g, x0, y0, x1, y1)
-    g.data[int((24 - 2.2) / 0.1):int((24 - 2.0) / 0.1), int(18 / 0.1):int(19 / 0.1)] = 0  # the gap 18-19
-    areas = [Area(1, _box(2.2, 2.2, 14, 11.8), component=0), Area(2, _box(2.2, 12, 9.8, 18), component=1),
+    g.data[int((24 - 2.2) / 0.1):int((24 - 2.0) / 0.1), int(16 / 0.1):int(19.5 / 0.1)] = 0  # the bay 16-19.5
+    areas = [Area(1, _box(2.2, 2.2, 14, 11.8), component=0), Area(2, _box(2.2, 12, 13.8, 18), component=1),
              Area(3, _box(14.2, 2.2, 21.8, 11.8), component=2)]
     return g, areas
 
 
-def test_a_porch_open_to_the_outside_counts_out_a_room_with_a_missing_door_does_not():
+def test_a_porch_open_to_the_outside_counts_out_a_room_with_a_missing_window_does_not():
     g, areas = _ground_plan()
     info = {}
     assert segmentation.open_ground_spaces(areas, [], g, info=info) == [2]
-    assert info["fronts"][1] > 7.0 and info["fronts"][2] < 2.5  # the porch's front; the room's 1 m gap (fanned out)
+    assert info["fronts"][1] > 8.5 and info["fronts"][2] < 4.0  # the porch's front; the room's 3.5 m bay
+    # the bay is measured (it is no wall), only narrower than a front
+    assert segmentation.open_ground_spaces(areas, [], g, min_front=1.0) == [2, 3]
 
 
 def test_a_named_porch_or_one_a_door_reaches_stays():
@@ -196,8 +199,8 @@ def test_the_main_component_and_counted_out_areas_are_never_listed():
 
 
 def _porch_dxf(tmp_path, name=None):
-    """Two classrooms (10 x 10 m) joined by a doorway; north of the west one a porch between two walls,
-    closed by a dash-dot roof edge, with a store in its corner that opens onto it; no door joins the porch
+    """Two classrooms (10 x 10 m) joined by a doorway; north of them a porch (12 x 6 m) between two walls,
+    closed by a dash-dot roof edge (9 m), with a store in its corner that opens onto it; no door joins the porch
     to the classrooms (reached from outside only)."""
     doc = ezdxf.new("R2010", setup=["linetypes"])
     doc.header["$INSUNITS"] = 6
@@ -205,10 +208,10 @@ def _porch_dxf(tmp_path, name=None):
     msp = doc.modelspace()
     w = {"layer": "MURI"}
     for a, b in (((0, 0), (20, 0)), ((0, 0), (0, 10)), ((20, 0), (20, 10)), ((0, 10), (20, 10)),
-                 ((10, 0), (10, 4)), ((10, 5), (10, 10)), ((0, 10), (0, 16)), ((8, 10), (8, 16)),
+                 ((10, 0), (10, 4)), ((10, 5), (10, 10)), ((0, 10), (0, 16)), ((12, 10), (12, 16)),
                  ((0, 13), (3, 13)), ((3, 13), (3, 13.8)), ((3, 14.8), (3, 16)), ((0, 16), (3, 16))):
         msp.add_line(a, b, dxfattribs=w)
-    msp.add_line((3, 16), (8, 16), dxfattribs={"layer": "misc", "linetype": "DASHDOT"})
+    msp.add_line((3, 16), (12, 16), dxfattribs={"layer": "misc", "linetype": "DASHDOT"})
     for k, x in enumerate((5, 15)):
         msp.add_text(f"Aula {k + 1}", dxfattribs={"layer": "SCRITTE", "height": 0.3, "insert": (x, 5)})
     if name:
