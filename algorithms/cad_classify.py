@@ -174,8 +174,9 @@ ON_WALL_ANGLE = 20.0  # degrees: the closed leaf (hinge -> closed end) of a swin
 def _swings_on_walls(geoms: Sequence[CadGeometry], arc_set, lone) -> List[Tuple[int, np.ndarray]]:
     """Swings drawn without a leaf on a wall drawn straight through the doorway (a facade drawn as two long
     lines, the door only a quarter arc beside it): the hinge (arc centre) and the closed end lie on the
-    wall's lines (within 0.1 r, not at their ends), the hinge -> closed end chord runs along the wall
-    (within ON_WALL_ANGLE), and the open end stands off the wall in the room (at least 0.6 r from the line).
+    wall's lines (within 0.1 r; the line runs on 0.1 m beyond both), the hinge -> closed end chord runs
+    along the wall (within ON_WALL_ANGLE), and the open end stands off the wall in the room (at least 0.6 r
+    from the line).
     Only arcs that are no walls themselves (``lone``: (index, cx, cy, r, e0, e1)). Returns (arc index,
     closed end) per door."""
     if not lone:
@@ -210,14 +211,14 @@ def _swings_on_walls(geoms: Sequence[CadGeometry], arc_set, lone) -> List[Tuple[
                 if abs(float(chord @ u)) < cos_max * lc:
                     continue  # the closed leaf crosses this line: no wall it lies along
                 t = float((hinge - a) @ u)
-                if not (0.05 < t < seg_len[k] - 0.05):
-                    continue  # the hinge at the line's end: the wall-end rule's case
+                if not (0.1 < t < seg_len[k] - 0.1):
+                    continue  # the hinge at (or near) the line's end: the wall-end rule's case
                 nrm = np.array((-u[1], u[0]))
-                if abs(float((closed - a) @ nrm)) > 0.1 * r + 0.2:  # the closed end on this line or the wall's other face
+                if abs(float((closed - a) @ nrm)) > 0.1 * r + 0.2:  # on this line or on the wall's other face
                     continue
                 tc = float((closed - a) @ u)
-                if not (-0.05 < tc < seg_len[k] + 0.05):
-                    continue
+                if not (0.1 < tc < seg_len[k] - 0.1):
+                    continue  # the wall runs on beyond the closed end too (a short edge is no wall drawn through)
                 if abs(float((opened - a) @ nrm)) < 0.6 * r:
                     continue  # the open end must stand off the wall
                 found = closed
