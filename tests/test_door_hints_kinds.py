@@ -260,3 +260,39 @@ def test_dxftoosmag_headless_porch_and_face_through_doorway(tmp_path):
     areas, passages, _, _ = osmag.read_osmag(str(out2))
     rooms = sorted((a for a in areas if a.type != "structure"), key=lambda a: a.polygon.area, reverse=True)[:2]
     assert len(rooms) == 2 and any({p.from_id, p.to_id} == {rooms[0].id, rooms[1].id} for p in passages)
+
+
+@pytest.mark.slow
+def test_kindergarten_door_kinds_and_open_ground(shared_data, floor_cache):
+    """kindergarten-1.dxf (session-cached conversion): the 1 m door between the bedroom and the room south
+    of it (the wall's lower face runs on across it) and the doors in the west facade drawn straight through
+    (quarter arcs on layer '4' into the vestibules at the exterior steps) get hints; the bedroom, that room
+    and the washroom are one component; the covered porch (pillars and a dash-dot roof edge, 121 m2) and the
+    yard under the overhang south of the hall (110 m2), unnamed and reached from outside only, count out."""
+    from shapely.geometry import Point
+
+    kg = shared_data / "dxf" / "archweb" / "kindergarten-1.dxf"
+    if not kg.exists():
+        pytest.skip("shared ArchWeb plans missing")
+    floor = floor_cache.process_floor(kg)
+
+    def hint(src, *xy):
+        return [h for h in floor.drawing.doors if h.source == src and (
+            np.allclose((h.x0, h.y0, h.x1, h.y1), xy, atol=0.05)
+            or np.allclose((h.x1, h.y1, h.x0, h.y0), xy, atol=0.05))]
+
+    assert hint("lined", 97.62, 205.83, 98.49, 205.32)
+    assert hint("swing", 99.10, 203.44, 99.67, 204.14) and hint("swing", 94.17, 195.02, 94.74, 195.72)
+
+    def area_at(x, y):
+        got = [a for a in floor.refined.areas if a.polygon.contains(Point(x, y))]
+        assert got, (x, y)
+        return got[0]
+
+    bedroom, south, washroom = area_at(97.0, 208.5), area_at(96.0, 204.5), area_at(95.0, 202.0)
+    assert len({bedroom.id, south.id, washroom.id}) == 3
+    assert bedroom.component == south.component == washroom.component
+    outdoor = set(floor.stats["outdoor_spaces"])
+    assert area_at(140.0, 225.0).id in outdoor and area_at(170.0, 156.0).id in outdoor
+    assert bedroom.id not in outdoor
+    assert floor.stats["largest_component_share"] >= 0.95
