@@ -175,10 +175,10 @@ def _swings_on_walls(geoms: Sequence[CadGeometry], arc_set, lone) -> List[Tuple[
     """Swings drawn without a leaf on a wall drawn straight through the doorway (a facade drawn as two long
     lines, the door only a quarter arc beside it): the hinge (arc centre) and the closed end lie on the
     wall's lines (within 0.1 r; the line runs on 0.1 m beyond both), the hinge -> closed end chord runs
-    along the wall (within ON_WALL_ANGLE), and the open end stands off the wall in the room (at least 0.6 r
-    from the line).
-    Only arcs that are no walls themselves (``lone``: (index, cx, cy, r, e0, e1)). Returns (arc index,
-    closed end) per door."""
+    along the wall (within ON_WALL_ANGLE), the open end stands off the wall in the room (at least 0.6 r
+    from the line), and the arc is drawn on another layer than that wall (a door symbol on its own layer; an
+    arc on the wall's own layer may belong to the wall drawing). Only arcs that are no walls themselves
+    (``lone``: (index, cx, cy, r, e0, e1)). Returns (arc index, closed end) per door."""
     if not lone:
         return []
     import shapely
@@ -186,13 +186,14 @@ def _swings_on_walls(geoms: Sequence[CadGeometry], arc_set, lone) -> List[Tuple[
 
     others = [g for i, g in enumerate(geoms) if i not in arc_set and len(g.coords) >= 2
               and g.kind not in ("column", "boundary", AUX_KIND)]
-    segs, _ = _segments_many([g.coords for g in others], [g.closed for g in others])
+    segs, sown = _segments_many([g.coords for g in others], [g.closed for g in others])
     if not len(segs):
         return []
     d = segs[:, 1] - segs[:, 0]
     seg_len = np.hypot(d[:, 0], d[:, 1])
     ok = seg_len >= 0.5
     segs, d, seg_len = segs[ok], d[ok] / np.maximum(seg_len[ok, None], 1e-12), seg_len[ok]
+    seg_layer = [others[i].layer for i in sown[ok]]
     if not len(segs):
         return []
     tree = STRtree(shapely.linestrings(segs))
@@ -207,6 +208,8 @@ def _swings_on_walls(geoms: Sequence[CadGeometry], arc_set, lone) -> List[Tuple[
             if lc <= 0:
                 continue
             for k in tree.query(shapely.points(hinge), predicate="dwithin", distance=0.1 * r):
+                if seg_layer[k] == geoms[ai].layer:
+                    continue  # on the wall's own layer it may be part of the wall drawing
                 a, u = segs[k, 0], d[k]
                 if abs(float(chord @ u)) < cos_max * lc:
                     continue  # the closed leaf crosses this line: no wall it lies along

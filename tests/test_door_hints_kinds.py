@@ -113,6 +113,13 @@ def test_a_quarter_arc_on_a_wall_layer_stays_a_wall():
     assert hints == [] and drop == []
 
 
+def test_an_arc_on_the_walls_own_layer_is_no_swing_on_a_wall():
+    """Walls and arcs all on one layer (spaghetti on "0"): the arc may belong to the wall drawing."""
+    g = _facade()
+    g[2].layer = "A-WALL"
+    assert door_swings(g)[1] == []
+
+
 def _vestibule_dxf(tmp_path):
     """A room (6 x 5 m) west of a facade drawn as two long lines; outside it a vestibule (2 x 2 m, walls
     on its other three sides) reached through a door in the facade drawn only as a quarter arc on a layer
