@@ -142,12 +142,27 @@ Ausgaben: OUTPUT_AREAS, die benannten Flächen (Felder name, ref, type, indoor, 
     </message>
     <message>
       <location filename="../processing_provider/alg_assign_names.py" />
+      <source>AREAS holds no area: nothing to name; every room text is counted as outside every area</source>
+      <translation>AREAS enthält keine Fläche: nichts zu benennen; jeder Raumtext wird als außerhalb jeder Fläche gezählt</translation>
+    </message>
+    <message>
+      <location filename="../processing_provider/alg_assign_names.py" />
+      <source>TEXTS holds no text: every area gets its generated id (level-area id)</source>
+      <translation>TEXTS enthält keinen Text: jede Fläche erhält ihre erzeugte Kennung (Geschoss-Flächenkennung)</translation>
+    </message>
+    <message>
+      <location filename="../processing_provider/alg_assign_names.py" />
       <source>cannot write area {} to the output layer</source>
       <translation>Fläche {} kann nicht in den Ausgabelayer geschrieben werden</translation>
     </message>
   </context>
   <context>
     <name>Cad2OsmagAlgorithm</name>
+    <message>
+      <location filename="../processing_provider/alg_assign_names.py" />
+      <source>TEXTS has no 'text' field: use the TEXTS output of 'Extract structure from DXF' (or a point layer with fields text and, optionally, layer, height, rotation, entity, block, tag, id)</source>
+      <translation>TEXTS hat kein Feld 'text': die Ausgabe TEXTS von „Bauteile aus DXF extrahieren“ verwenden (oder einen Punktlayer mit den Feldern text und, optional, layer, height, rotation, entity, block, tag, id)</translation>
+    </message>
     <message>
       <location filename="../processing_provider/alg_extract_structure.py" />
       <source>Plan on the sheet (empty = main plan; an index of the log's plan list, or xmin,ymin,xmax,ymax in metres)</source>

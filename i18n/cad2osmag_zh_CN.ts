@@ -142,12 +142,27 @@ PASSAGES（可选）：区域的通道；被拆分的区域获得各自的通道
     </message>
     <message>
       <location filename="../processing_provider/alg_assign_names.py" />
+      <source>AREAS holds no area: nothing to name; every room text is counted as outside every area</source>
+      <translation>AREAS 不含任何区域：没有可命名的对象；每个房间文字都计为位于所有区域之外</translation>
+    </message>
+    <message>
+      <location filename="../processing_provider/alg_assign_names.py" />
+      <source>TEXTS holds no text: every area gets its generated id (level-area id)</source>
+      <translation>TEXTS 不含任何文字：每个区域获得其生成的编号（楼层-区域编号）</translation>
+    </message>
+    <message>
+      <location filename="../processing_provider/alg_assign_names.py" />
       <source>cannot write area {} to the output layer</source>
       <translation>无法将区域 {} 写入输出图层</translation>
     </message>
   </context>
   <context>
     <name>Cad2OsmagAlgorithm</name>
+    <message>
+      <location filename="../processing_provider/alg_assign_names.py" />
+      <source>TEXTS has no 'text' field: use the TEXTS output of 'Extract structure from DXF' (or a point layer with fields text and, optionally, layer, height, rotation, entity, block, tag, id)</source>
+      <translation>TEXTS 没有 'text' 字段：请使用“从 DXF 提取建筑结构”的 TEXTS 输出（或带有 text 字段以及可选的 layer、height、rotation、entity、block、tag、id 字段的点图层）</translation>
+    </message>
     <message>
       <location filename="../processing_provider/alg_extract_structure.py" />
       <source>Plan on the sheet (empty = main plan; an index of the log's plan list, or xmin,ymin,xmax,ymax in metres)</source>

@@ -1344,3 +1344,12 @@ T["Reads INPUT, a DXF floor plan or a DWG (AutoCAD R13-2018, read directly: no c
 # the model's file input takes DWG too
 T['DXF or DWG floor plan'] = 'DXF- oder DWG-Grundriss'
 T['The floor plan (DXF, or DWG as delivered: the main plan of a sheet is converted).'] = 'Der Grundriss (DXF, oder DWG wie geliefert: der Hauptplan eines Blatts wird umgewandelt).'
+
+# assignnames: bad input named (issue 9 audit)
+T["TEXTS has no 'text' field: use the TEXTS output of 'Extract structure from DXF' (or a point layer with fields text and, optionally, layer, height, rotation, entity, block, tag, id)"] = (
+    "TEXTS hat kein Feld 'text': die Ausgabe TEXTS von „Bauteile aus DXF extrahieren“ verwenden (oder einen "
+    "Punktlayer mit den Feldern text und, optional, layer, height, rotation, entity, block, tag, id)")
+T["AREAS holds no area: nothing to name; every room text is counted as outside every area"] = (
+    "AREAS enthält keine Fläche: nichts zu benennen; jeder Raumtext wird als außerhalb jeder Fläche gezählt")
+T["TEXTS holds no text: every area gets its generated id (level-area id)"] = (
+    "TEXTS enthält keinen Text: jede Fläche erhält ihre erzeugte Kennung (Geschoss-Flächenkennung)")

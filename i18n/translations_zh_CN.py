@@ -1181,3 +1181,12 @@ T["Reads INPUT, a DXF floor plan or a DWG (AutoCAD R13-2018, read directly: no c
 # the model's file input takes DWG too
 T['DXF or DWG floor plan'] = 'DXF 或 DWG 平面图'
 T['The floor plan (DXF, or DWG as delivered: the main plan of a sheet is converted).'] = '平面图（DXF，或原样交付的 DWG：转换图幅上的主平面图）。'
+
+# assignnames: bad input named (issue 9 audit)
+T["TEXTS has no 'text' field: use the TEXTS output of 'Extract structure from DXF' (or a point layer with fields text and, optionally, layer, height, rotation, entity, block, tag, id)"] = (
+    "TEXTS 没有 'text' 字段：请使用“从 DXF 提取建筑结构”的 TEXTS 输出（或带有 text 字段以及可选的 layer、height、"
+    "rotation、entity、block、tag、id 字段的点图层）")
+T["AREAS holds no area: nothing to name; every room text is counted as outside every area"] = (
+    "AREAS 不含任何区域：没有可命名的对象；每个房间文字都计为位于所有区域之外")
+T["TEXTS holds no text: every area gets its generated id (level-area id)"] = (
+    "TEXTS 不含任何文字：每个区域获得其生成的编号（楼层-区域编号）")

@@ -93,3 +93,81 @@ def test_bad_texts_never_raise_are_counted_and_names_stay_unique_and_stable(floo
     again = [Area(id=i, polygon=p) for i, p in keep]
     S.assign_names(again, texts, level=level)
     assert [a.name for a in again] == names
+
+
+# ------------------------------------------------------------------------------------------ assignnames in QGIS
+def _gpkg(path, gtype, fields, feats):
+    from osgeo import ogr
+
+    ds = ogr.GetDriverByName("GPKG").CreateDataSource(str(path))
+    lyr = ds.CreateLayer("l", None, gtype)
+    for name in fields:
+        lyr.CreateField(ogr.FieldDefn(name, ogr.OFTString))
+    for wkt, values in feats:
+        f = ogr.Feature(lyr.GetLayerDefn())
+        f.SetGeometry(ogr.CreateGeometryFromWkt(wkt))
+        for k, v in values.items():
+            f.SetField(k, v)
+        lyr.CreateFeature(f)
+    ds = None
+    return str(path)
+
+
+def _run_assignnames(params):
+    from qgis.core import QgsProcessingContext, QgsProcessingFeedback
+
+    from .conftest import plugin_package
+
+    plugin_package()
+    from cad2osmag.processing_provider.alg_assign_names import AssignNamesAlgorithm
+
+    class Log(QgsProcessingFeedback):
+        lines = []
+
+        def pushWarning(self, text):  # noqa: N802
+            Log.lines.append(text)
+
+        def pushInfo(self, text):  # noqa: N802
+            Log.lines.append(text)
+
+        def reportError(self, text, fatal=False):  # noqa: N802
+            Log.lines.append(text)
+
+    Log.lines = []
+    alg = AssignNamesAlgorithm().create()
+    alg.initAlgorithm()
+    feedback = Log()
+    try:
+        res, ok = alg.run(params, QgsProcessingContext(), feedback)
+    except Exception as exc:  # QgsProcessingException (older QGIS raise it)
+        res, ok = None, False
+        Log.lines.append(str(exc))
+    return res, ok, "\n".join(Log.lines)
+
+
+def test_assignnames_bad_layers_are_named_and_nasty_texts_counted(qgis_app, tmp_path):
+    from osgeo import ogr
+
+    areas = _gpkg(tmp_path / "a.gpkg", ogr.wkbPolygon, ["id"], [("POLYGON((0 0,5 0,5 4,0 4,0 0))", {"id": "1"}),
+                                                                ("POLYGON((5 0,10 0,10 4,5 4,5 0))", {"id": "2"})])
+    out = tmp_path / "named.gpkg"
+    # a point layer without a 'text' field: stopped, naming the field and the layer to use; nothing written
+    no_text = _gpkg(tmp_path / "t0.gpkg", ogr.wkbPoint, ["label"], [("POINT(2 2)", {"label": "Office"})])
+    res, ok, msg = _run_assignnames({"AREAS": areas, "TEXTS": no_text, "OUTPUT_AREAS": str(out)})
+    assert not ok and "TEXTS has no 'text' field" in msg and "Extract structure" in msg and not out.exists()
+    # empty strings, control and formatting codes, RTL, CJK, digits only, a far label: named, counted, no error
+    texts = _gpkg(tmp_path / "t.gpkg", ogr.wkbPoint, ["text", "layer"], [
+        ("POINT(2 2)", {"text": "غرفة", "layer": "A-ANNO-ROOM"}), ("POINT(7 2)", {"text": "会议室"}),
+        ("POINT(7 3)", {"text": "\x1b[31m\u202e"}), ("POINT(2 1)", {"text": ""}), ("POINT(7 1)", {"text": "42"}),
+        ("POINT(3 3)", {"text": "{\\fArial|b1;}"}), ("POINT(900 900)", {"text": "Far away room"})])
+    res, ok, log = _run_assignnames({"AREAS": areas, "TEXTS": texts, "LEVEL": "3", "OUTPUT_AREAS": str(out)})
+    assert ok, log
+    assert (res["NAMED"], res["AUTO_IDS"], res["OUTSIDE"], res["CONFLICTS"]) == (2, 0, 1, 0)
+    assert res["IGNORED"] == 4 and "7 labels" in log
+    # no area, or no text: a warning that says so, and the counts
+    empty = _gpkg(tmp_path / "a0.gpkg", ogr.wkbPolygon, ["id"], [])
+    res, ok, log = _run_assignnames({"AREAS": empty, "TEXTS": texts, "OUTPUT_AREAS": str(tmp_path / "n0.gpkg")})
+    assert ok and "AREAS holds no area" in log and res["OUTSIDE"] == 3 and res["NAMED"] == 0
+    none = _gpkg(tmp_path / "t1.gpkg", ogr.wkbPoint, ["text"], [])
+    res, ok, log = _run_assignnames({"AREAS": areas, "TEXTS": none, "LEVEL": "3", "OUTPUT_AREAS": str(tmp_path / "n1.gpkg")})
+    assert ok and "TEXTS holds no text" in log and res["AUTO_IDS"] == 2
