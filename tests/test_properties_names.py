@@ -171,3 +171,13 @@ def test_assignnames_bad_layers_are_named_and_nasty_texts_counted(qgis_app, tmp_
     none = _gpkg(tmp_path / "t1.gpkg", ogr.wkbPoint, ["text"], [])
     res, ok, log = _run_assignnames({"AREAS": areas, "TEXTS": none, "LEVEL": "3", "OUTPUT_AREAS": str(tmp_path / "n1.gpkg")})
     assert ok and "TEXTS holds no text" in log and res["AUTO_IDS"] == 2
+
+
+@pytest.mark.parametrize("text,layer,want", [
+    ("12", "E1-roomnumber", ("number", "name layer")), ("12", "A-ANNO-ROOM", ("number", "name layer")),
+    ("Atelier", "X-SYMB-NAME", ("name", "name layer")), ("放映室", "E1-RI-1F$0$房间", ("name", "name layer")),
+    ("放映室", "文字", ("name", "keyword")), ("12", "TXT", ("ignored", "axis"))])
+def test_the_room_name_layers_of_the_issue_decide(text, layer, want):
+    """The issue's layer examples (A-ANNO-ROOM, *-roomnumber, *-SYMB-NAME, 房间 behind a bound-xref prefix;
+    文字 only weak evidence): a bare number on a room layer is a room number, elsewhere an axis label."""
+    assert S.classify_text(text, layer=layer) == want
