@@ -144,6 +144,19 @@ def test_writer_rejects_dangling_passages_naming_them(graph, missing, data, tmp_
     assert not path.exists()
 
 
+@settings(max_examples=20, **PROPS)
+@given(graph=area_graphs(), data=st.data())
+def test_writer_rejects_duplicate_passage_ids_naming_them(graph, data, tmp_path_factory):
+    areas, passages, frame, _ = graph
+    assume(len(passages) >= 2)
+    i, j = data.draw(st.sampled_from([(i, j) for i in range(len(passages)) for j in range(len(passages)) if i < j]))
+    passages[j].id = passages[i].id  # a passage feature copied in QGIS keeps its id
+    path = tmp_path_factory.mktemp("dupp") / "g.osm"
+    with pytest.raises(InputError, match=rf"duplicate passage ids \[{passages[i].id}\] \(level 1\)"):
+        write_osmag(str(path), areas, passages, frame=frame)
+    assert not path.exists()
+
+
 @st.composite
 def broken_files(draw):
     areas, passages, frame, variant = draw(area_graphs())
