@@ -107,7 +107,7 @@ class AssignNamesAlgorithm(Cad2OsmagAlgorithm):
             "50 rho up to rho_max 0.7, then 50 - 25 (rho - 0.7); outside but within 2.2 m of the border: 40 + "
             "30 f_size + 20 f_dist) and goes to its best area; a text inside an area belongs to it. Name and "
             "number join; an area holding two different room names is split at the narrowing between them "
-            "(SPLIT, watershed of its clearance map; a corridor between them becomes its own area), else it "
+            "(SPLIT, grown from the cores of its clearance map; a corridor between them becomes its own area), else it "
             "keeps the best-placed name and lists the others in label_conflict. Duplicate names get a suffix "
             "(the room number, else (1), (2)...); areas without text get the stable id level-area id (e.g. 2-17).\n"
             "Types: keywords (English, Italian, Spanish, German, French, Chinese...) and codes (*-ST-* stairs, "
