@@ -124,3 +124,24 @@ def test_fuzz_dwg_shared_sheet_full(worker, case):
 @given(case=mutated_dwg(("sample",)))
 def test_fuzz_dwg_sample_r2000_full(worker, case):
     _fuzz(worker, case)
+
+
+# seven bytes of A-A3-10-08.dwg flipped (hypothesis, CAD2OSMAG_FUZZ_SHEET=500 run of 2026-12-02): one turns a
+# SPLINE control point into -2e266 and the import hung in the spline's adaptive flattening (cad_explode)
+HANG_FLIPS = [(58, 1), (765, 77), (935, 1), (1803, 227), (3407, 167), (13048, 47), (510510, 107)]
+
+
+@pytest.mark.slow
+def test_the_flipped_sheet_that_hung_the_import_reads(worker):
+    data = bytearray(base("sheet"))
+    for i, v in HANG_FLIPS:
+        data[i] = v
+    folder = tempfile.mkdtemp(prefix="fuzz-dwg-hang-")
+    path = os.path.join(folder, "mutant.dwg")
+    with open(path, "wb") as fh:
+        fh.write(bytes(data))
+    status, payload = worker.run("import", path, timeout=LIMIT)
+    os.remove(path)
+    os.rmdir(folder)
+    assert status == "ok", (status, str(payload)[:500])
+    assert any("not finite" in w for w in payload["warnings"]) and payload["geometries"] > 200
