@@ -156,11 +156,81 @@ def _swings(geoms: Sequence[CadGeometry], leaf_required: bool):
                 if n0 != n1:
                     hints.append((cx, cy, e0 if n0 else e1))
                     with_leaf[ai] = hints[-1]
+        on_wall = [a for a in lone if a[0] not in with_leaf and geoms[a[0]].kind != "wall"]
+        for ai, closed_end in _swings_on_walls(geoms, arc_set, on_wall):
+            a = next(x for x in on_wall if x[0] == ai)
+            hints.append((a[1], a[2], closed_end))
+            with_leaf[ai] = hints[-1]
     wide_idx = {arcs[k][0] for k in wide}
     drop |= {i for i in arc_set if i in with_leaf
              or (geoms[i].kind != "wall" and not leaf_required and i not in wide_idx)}
     drop |= set(combined)
     return sorted(drop), hints + list(combined.values())
+
+
+ON_WALL_ANGLE = 20.0  # degrees: the closed leaf (hinge -> closed end) of a swing on a wall runs along the wall
+
+
+def _swings_on_walls(geoms: Sequence[CadGeometry], arc_set, lone) -> List[Tuple[int, np.ndarray]]:
+    """Swings drawn without a leaf on a wall drawn straight through the doorway (a facade drawn as two long
+    lines, the door only a quarter arc beside it): the hinge (arc centre) and the closed end lie on the
+    wall's lines (within 0.1 r; the line runs on 0.1 m beyond both), the hinge -> closed end chord runs
+    along the wall (within ON_WALL_ANGLE), the open end stands off the wall in the room (at least 0.6 r
+    from the line), and the arc is drawn on another layer than that wall (a door symbol on its own layer; an
+    arc on the wall's own layer may belong to the wall drawing). Only arcs that are no walls themselves
+    (``lone``: (index, cx, cy, r, e0, e1)). Returns (arc index, closed end) per door."""
+    if not lone:
+        return []
+    import shapely
+    from shapely import STRtree
+
+    others = [g for i, g in enumerate(geoms) if i not in arc_set and len(g.coords) >= 2
+              and g.kind not in ("column", "boundary", AUX_KIND)]
+    segs, sown = _segments_many([g.coords for g in others], [g.closed for g in others])
+    if not len(segs):
+        return []
+    d = segs[:, 1] - segs[:, 0]
+    seg_len = np.hypot(d[:, 0], d[:, 1])
+    ok = seg_len >= 0.5
+    segs, d, seg_len = segs[ok], d[ok] / np.maximum(seg_len[ok, None], 1e-12), seg_len[ok]
+    seg_layer = [others[i].layer for i in sown[ok]]
+    if not len(segs):
+        return []
+    tree = STRtree(shapely.linestrings(segs))
+    cos_max = math.cos(math.radians(ON_WALL_ANGLE))
+    out = []
+    for ai, cx, cy, r, e0, e1 in lone:
+        hinge = np.array((cx, cy))
+        found = None
+        for closed, opened in ((e0, e1), (e1, e0)):
+            chord = closed - hinge
+            lc = float(np.hypot(*chord))
+            if lc <= 0:
+                continue
+            for k in tree.query(shapely.points(hinge), predicate="dwithin", distance=0.1 * r):
+                if seg_layer[k] == geoms[ai].layer:
+                    continue  # on the wall's own layer it may be part of the wall drawing
+                a, u = segs[k, 0], d[k]
+                if abs(float(chord @ u)) < cos_max * lc:
+                    continue  # the closed leaf crosses this line: no wall it lies along
+                t = float((hinge - a) @ u)
+                if not (0.1 < t < seg_len[k] - 0.1):
+                    continue  # the hinge at (or near) the line's end: the wall-end rule's case
+                nrm = np.array((-u[1], u[0]))
+                if abs(float((closed - a) @ nrm)) > 0.1 * r + 0.2:  # on this line or on the wall's other face
+                    continue
+                tc = float((closed - a) @ u)
+                if not (0.1 < tc < seg_len[k] - 0.1):
+                    continue  # the wall runs on beyond the closed end too (a short edge is no wall drawn through)
+                if abs(float((opened - a) @ nrm)) < 0.6 * r:
+                    continue  # the open end must stand off the wall
+                found = closed
+                break
+            if found is not None:
+                break
+        if found is not None:
+            out.append((ai, found))
+    return out
 
 
 def _end_points(coords: Sequence[np.ndarray]) -> np.ndarray:
@@ -1030,25 +1100,37 @@ def lined_doorways(geoms: Sequence[CadGeometry], cls: List[str], weak: set,
         w = mids[b] - mids[a]
         width = float(np.hypot(*w))
         u = w / width
-        # each cap joins two faces that run away from the opening
+        # each cap joins two faces that run away from the opening (one of them may run on across it)
         ok = True
+        through = []  # faces that run on across the opening from a cap end: the wall drawn through the doorway
         for cap, sign in ((sa, -1.0), (sb, 1.0)):
             for p in cap:
                 key = p.tobytes()
                 near = ball.get(key)
                 if near is None:  # a cap is in several candidate pairs: look its ends up once
-                    near = ball[key] = [end_owner[k] for k in etree.query_ball_point(p, 0.02)]
+                    near = ball[key] = [end_owner[k] for k in etree.query_ball_point(p, 0.02)] + [
+                        -1 - int(k) for k in tree.query(shapely.points(p), predicate="dwithin", distance=0.02)]
                 face = False
                 for k in near:
-                    c = segs[k]
+                    run_on = k < 0  # a segment passing the cap end (not ending there)
+                    c = segs[-1 - k if run_on else k]
                     d = c[1] - c[0]
                     Ld = float(np.hypot(*d))
+                    if Ld <= 0.2 or abs(float(d @ v)) >= 0.05 * Ld:
+                        continue
+                    if run_on:
+                        t = (c - p) @ u * sign
+                        if t.max() > 0.1 and t.min() < -0.5 * width:  # on away from the opening and across it
+                            face = True
+                            through.append(-1 - k)
+                            break
+                        continue
                     far = c[1] if np.hypot(*(c[0] - p)) < np.hypot(*(c[1] - p)) else c[0]
-                    if Ld > 0.2 and abs(float(d @ v)) < 0.05 * Ld and float((far - p) @ u) * sign > 0.1:
+                    if float((far - p) @ u) * sign > 0.1:
                         face = True
                         break
                 ok = ok and face
-        if not ok:
+        if not ok or (through and not _face_is_outer(segs, tree, through[0], mids[a], mids[b], v)):
             continue
         # nothing inside the opening
         c0, c1 = sa[0] + 0.1 * (sa[1] - sa[0]), sa[1] - 0.1 * (sa[1] - sa[0])  # the faces and a line on them stay out
@@ -1057,6 +1139,7 @@ def lined_doorways(geoms: Sequence[CadGeometry], cls: List[str], weak: set,
             continue
         # a line in front of it, parallel to the wall, running across the whole opening
         lo, hi = min(float(sa[0] @ v), float(sa[1] @ v)), max(float(sa[0] @ v), float(sa[1] @ v))
+        lo, hi = lo + 0.02, hi - 0.02  # a face drawn on across the opening lies on the caps' ends: it is in front
         front = []
         for side in (-1.0, 1.0):
             edge = hi if side > 0 else lo
@@ -1079,6 +1162,36 @@ def lined_doorways(geoms: Sequence[CadGeometry], cls: List[str], weak: set,
         used.update((a, b))
         hints.append(DoorHint(float(mids[a][0]), float(mids[a][1]), float(mids[b][0]), float(mids[b][1]), "lined"))
     return hints
+
+
+def _face_is_outer(segs: np.ndarray, tree, k: int, ma: np.ndarray, mb: np.ndarray, v: np.ndarray) -> bool:
+    """The face ``segs[k]`` that runs on across an opening between the caps at ``ma`` and ``mb`` (cap
+    direction ``v``) is the wall's outer face: no other line parallel to it lies beyond it within a wall's
+    thickness (JAMB_LENGTH) along half the opening (else the caps end on a middle line of a thicker wall:
+    a niche, not a doorway)."""
+    from shapely.geometry import Polygon
+
+    c = segs[k]
+    side = 1.0 if float(((c[0] + c[1]) / 2.0 - (ma + mb) / 2.0) @ v) > 0 else -1.0  # outwards, across the wall
+    w = mb - ma
+    width = float(np.hypot(*w))
+    u = w / width
+    p0 = ma + float((c[0] - ma) @ v) * v  # on the face, level with the first cap
+    depth = JAMB_LENGTH[1]  # the rest of a wall thicker than the cap (a niche) would lie within this
+    box = Polygon([p0 + 0.1 * u + side * 0.03 * v, p0 + (width - 0.1) * u + side * 0.03 * v,
+                   p0 + (width - 0.1) * u + side * depth * v, p0 + 0.1 * u + side * depth * v])
+    for j in tree.query(box, predicate="intersects"):
+        if j == k:
+            continue
+        s = segs[j]
+        d = s[1] - s[0]
+        Ld = float(np.hypot(*d))
+        if Ld <= 0.2 or abs(float(d @ v)) >= 0.05 * Ld:
+            continue
+        t = (s - ma) @ u
+        if min(t.max(), width) - max(t.min(), 0.0) >= 0.5 * width:
+            return False
+    return True
 
 
 # ------------------------------------------------------------------------------------------ level marks

@@ -42,6 +42,24 @@ def _n_segments(radius: float, sweep: float, tol: float) -> int:
     return max(2, min(int(math.ceil(sweep / step)), int(MAX_SEGMENTS_PER_TURN * sweep / (2 * math.pi)) + 2))
 
 
+SPLINE_MAX_SPAN = 1e9  # control-point extent / tolerance beyond which a spline is not subdivided
+
+
+def _spline_points(e, tol: float) -> np.ndarray:
+    """A SPLINE flattened to ``tol``; its control polygon when that fails or when a control point is not finite
+    or lies so far away (a damaged number, e.g. -2e266 in a byte-flipped DWG) that the adaptive subdivision
+    would never end: it halves the chord until it is within ``tol`` of the curve, 2^log2(span/tol) pieces
+    (found by fuzzing A-A3-10-08.dwg: the import hung). The far points are then left out with the other
+    non-finite / beyond-1e15-m coordinates (cad_import)."""
+    cp = np.array([(v[0], v[1]) for v in e.control_points], dtype=np.float64).reshape(-1, 2)
+    if np.isfinite(cp).all() and (len(cp) == 0 or float(np.ptp(cp, axis=0).max()) <= SPLINE_MAX_SPAN * max(tol, 1e-12)):
+        try:
+            return np.array([(v.x, v.y) for v in e.flattening(tol)], dtype=np.float64)
+        except Exception:
+            pass
+    return cp
+
+
 def _arc_points(cx, cy, r, a0, a1, tol, full=False):
     """Points of a CCW arc from angle a0 to a1 (radians)."""
     if full:
@@ -529,10 +547,7 @@ class _Exploder:
         elif et == "ELLIPSE":
             self._ellipse(e, layer, out)
         elif et == "SPLINE":
-            try:
-                xy = np.array([(v.x, v.y) for v in e.flattening(tol)], dtype=np.float64)
-            except Exception:
-                xy = np.array([(v[0], v[1]) for v in e.control_points], dtype=np.float64)
+            xy = _spline_points(e, tol)
             if len(xy) >= 2:
                 out.add(xy, layer, et, bool(e.closed))
         elif et in ("SOLID", "TRACE"):

@@ -206,6 +206,7 @@ def write_osmag_levels(path: str, floors: Sequence[FloorLayer], frame=None, crs=
             if p.from_id not in by_id or p.to_id not in by_id]
     if bad:
         raise InputError(f"passages reference missing areas: {', '.join(bad)}; delete them or add the areas")
+    _check_passage_ids(floors, vertical_passages)
     for p in [p for fl in floors for p in fl.passages] + list(vertical_passages):
         if p.line is None or p.line.is_empty or len(p.line.coords) < 2:
             raise InputError(f"passage {p.id} has no line geometry (needs 2 points)")
@@ -455,6 +456,19 @@ def write_osmag_levels(path: str, floors: Sequence[FloorLayer], frame=None, crs=
                        f"{f' ({n_vertical} vertical)' if n_vertical else ''}, "
                        f"{stats['nodes']} nodes ({stats['shared_nodes']} shared) to {path}")
     return stats
+
+
+def _check_passage_ids(floors, vertical_passages) -> None:
+    """Passage ids must be unique on a floor (and among the vertical passages): an unnamed passage is written
+    as ``L<level>-P<id>``, so two with one id would be two passages of one name. A feature copied in QGIS keeps
+    its id: the usual cause."""
+    from collections import Counter
+
+    for what, group in [(f"level {fl.level}", fl.passages) for fl in floors] + [("vertical", vertical_passages)]:
+        dup = sorted(i for i, c in Counter(p.id for p in group).items() if c > 1)
+        if dup:
+            raise InputError(f"duplicate passage ids {dup} ({what}); every passage needs a unique id (a feature "
+                             "copied in QGIS keeps its id: give the copy a new one)")
 
 
 def _open_pinches(part, near: float = 0.0, dist: float = PINCH_OPEN) -> int:

@@ -272,16 +272,21 @@ def _count_out(refined: AreaGraph, ids, tag: str, what: str, progress) -> None:
 def _outdoor_spaces(refined: AreaGraph, drawing: CadDrawing, name_rules, counted_out, rstats, progress,
                     classified=None):
     """Terraces and landscape outside the facade no passage reaches and no room name labels
-    (``segmentation.outdoor_spaces``): tagged ``cad2osmag:outdoor=yes``, listed in ``rstats['outdoor_spaces']``
-    and counted out of the share, like roofs."""
+    (``segmentation.outdoor_spaces``), and ground open to the outside along a front no doorway explains
+    (``segmentation.open_ground_spaces``: porches, yards under an overhang): tagged ``cad2osmag:outdoor=yes``,
+    listed in ``rstats['outdoor_spaces']`` and counted out of the share, like roofs."""
     if classified is None:
         classified = semantics.classify_labels(drawing.texts, name_rules)
     names = [(x, y, lab.text) for lab in classified
              if lab.role in ("name", "number") for x, y in [(lab.x, lab.y)] + list(lab.alts)]
     outdoor = segmentation.outdoor_spaces(refined.areas, refined.passages, names, counted_out)
+    # ground open to the outside along a front wider than a doorway (porches, yards): named or not (issue 8)
+    outdoor = sorted(set(outdoor) | set(segmentation.open_ground_spaces(
+        refined.areas, refined.passages, refined.grid, names, list(counted_out) + outdoor, drawing.doors)))
     rstats["outdoor_spaces"] = outdoor
     _count_out(refined, outdoor, "cad2osmag:outdoor", "area(s) of exterior ground outside the facade that no "
-               "passage reaches and no room name labels (terraces, landscape", progress)
+               "passage reaches and no room name labels (terraces, landscape, porches and yards open to the outside",
+               progress)
     return outdoor
 
 

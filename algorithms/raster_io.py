@@ -79,9 +79,41 @@ def _classify(img: np.ndarray, negate: bool = False, occupied_thresh: float = 0.
     return out
 
 
-def _read_image(path: str) -> np.ndarray:
+def check_grid_size(path: str, rows: int, cols: int, resolution: Optional[float] = None) -> None:
+    """Raise InputError before an occupancy raster is read when segmenting it would need more memory than
+    the machine has available (the same budget as ``rasterize.check_memory``), with the cure: resample or
+    crop the map. A robot map or GeoTIFF from another tool is read whole; a 40 000 px square image needs
+    ~80 GB to segment and used to end in MemoryError or the OOM killer."""
+    from .rasterize import BYTES_PER_PIXEL, available_memory
+
+    avail = available_memory()
+    need = int(rows) * int(cols) * BYTES_PER_PIXEL
+    if avail is None or need <= avail:
+        return
+    factor = math.sqrt(need / avail) * 1.05
+    coarser = (f"at least {resolution * factor:.3g} m/px instead of {resolution:g}" if resolution and resolution > 0
+               else f"{factor:.1f} times coarser")
+    raise InputError(
+        f"'{os.path.basename(path)}' is {cols} x {rows} px ({rows * cols / 1e6:.1f} Mpx): segmenting it needs about "
+        f"{need / 2 ** 30:.1f} GB of memory, more than the {avail / 2 ** 30:.1f} GB available; resample it to a "
+        f"coarser resolution ({coarser}; QGIS 'Warp (reproject)' or gdalwarp -tr) or crop it to the building")
+
+
+def _image_shape(path: str):
+    """(rows, cols) from the image header (GDAL reads PNG, PGM, JPEG, BMP headers without decoding), or None."""
+    try:
+        ds = _gdal().Open(path)
+        return (ds.RasterYSize, ds.RasterXSize) if ds is not None else None
+    except Exception:  # noqa: BLE001 - no GDAL or an unreadable header: cv2 reports the file below
+        return None
+
+
+def _read_image(path: str, resolution: Optional[float] = None) -> np.ndarray:
     import cv2
 
+    shape = _image_shape(path) if os.path.isfile(path) else None
+    if shape is not None:
+        check_grid_size(path, shape[0], shape[1], resolution)
     img = cv2.imread(path, cv2.IMREAD_UNCHANGED)
     if img is None:
         raise InputError(f"cannot read '{path}' as an image (not an image file, or corrupt)")
@@ -109,8 +141,11 @@ def read_ros_yaml(path: str) -> OccupancyGrid:
     img_path = meta["image"]
     if not os.path.isabs(img_path):
         img_path = os.path.join(os.path.dirname(os.path.abspath(path)), img_path)
-    img = _read_image(img_path)
-    res = float(meta["resolution"])
+    try:
+        res = float(meta["resolution"])
+    except (TypeError, ValueError):
+        raise InputError(f"'{path}': resolution must be a number of metres per pixel, got {meta['resolution']!r}")
+    img = _read_image(img_path, res)
     if not res > 0:
         raise InputError(f"'{path}': resolution must be positive, got {meta['resolution']}")
     origin = meta.get("origin", [0.0, 0.0, 0.0]) or [0.0, 0.0, 0.0]
@@ -147,7 +182,7 @@ def read_grid(path: str, resolution: Optional[float] = None, origin=(0.0, 0.0)) 
     if ext in (".yaml", ".yml"):
         return read_ros_yaml(path)
     if ext in (".png", ".pgm", ".jpg", ".jpeg", ".bmp"):
-        img = _read_image(path)
+        img = _read_image(path, resolution)
         if resolution is None or not resolution > 0:
             raise InputError(f"'{os.path.basename(path)}' carries no resolution: give RESOLUTION in metres per pixel")
         data = _classify(img)
@@ -160,6 +195,7 @@ def read_grid(path: str, resolution: Optional[float] = None, origin=(0.0, 0.0)) 
     if ds.RasterCount != 1:
         raise InputError(f"'{os.path.basename(path)}' has {ds.RasterCount} bands; an occupancy grid must have one")
     gt = ds.GetGeoTransform(can_return_null=True)
+    check_grid_size(path, ds.RasterYSize, ds.RasterXSize, abs(gt[1]) if gt is not None and gt[1] != 1.0 else resolution)
     arr = ds.GetRasterBand(1).ReadAsArray()
     if gt is None or (gt[1] == 1.0 and gt[5] == 1.0 and gt[0] == 0 and gt[3] == 0):
         if resolution is None:

@@ -2769,6 +2769,116 @@ def outdoor_spaces(areas: List[Area], passages: List[Passage], name_points=(), c
     return sorted(out)
 
 
+OPEN_FRONT = 1.5 * DEFAULT_ENVELOPE_GAP  # metres: one stretch of outline open to the outside wider than any
+# facade opening the envelope closes at its chord (narrower than the gap; a corner of a facade whose windows
+# are not drawn, office.dxf's stairwell: 4.1 m), so space that was claimed open, not a room behind a window
+OPEN_RING_PX = 4  # pixels: how far beyond an area's outline the ring looks for the outside (through free pixels)
+OPEN_SLIVER_PX = 3  # pixels: free slivers this thin between a simplified outline and the walls are the area's
+
+
+def open_ground_spaces(areas: List[Area], passages: List[Passage], grid: OccupancyGrid, name_points=(),
+                       closed_ids=(), door_hints=(), min_front: float = OPEN_FRONT,
+                       info: Optional[dict] = None) -> List[int]:
+    """Ids of the areas of orphaned components that are ground open to the outside: a covered porch between
+    pillars and a roof edge, a yard under an overhang, a strip outside the facade between two exterior steps.
+    A component other than the largest (no passage reaches it from the main one), none of whose areas holds
+    a room name or number (``name_points``: (x, y, text)) or was named from a text nearby (tag
+    ``label_texts``), that no door hint touches, and whose outline meets
+    the outside directly -- free space that belongs to no area and reaches the raster border, with no wall
+    or line in between -- along one stretch of at least ``min_front`` metres (1.5 x the envelope gap: the
+    envelope closes every facade opening narrower than its gap at the chord, so a room whose door, window
+    or facade corner was left out meets the outside over such chords only, each under 4 m). Such space was
+    claimed open (footprint, roof-edge lines) and is reached from the outside only: the drawing itself says
+    it is no room of the floor, whether or not the drawing names its rooms (``outdoor_spaces`` needs names).
+    A named space is never counted out.
+    ``closed_ids``: areas already counted out, never listed again. They stay areas. ``info`` (a dict) gets
+    ``fronts``: {component: metres of its longest stretch open to the outside} of the components measured."""
+    import cv2
+    from scipy import ndimage
+    from shapely import STRtree
+    from shapely.geometry import LineString, Point
+
+    from .model import OCCUPIED
+    from .rasterize import repaint_polygon
+
+    closed = set(closed_ids)
+    usable = [a for a in areas if a.polygon is not None and not a.polygon.is_empty and a.type != "structure"]
+    cand = [a for a in usable if a.component != 0 and a.id not in closed]
+    if not cand or grid is None:
+        return []
+    members: Dict[int, List[Area]] = {}
+    for a in cand:
+        members.setdefault(a.component, []).append(a)
+    pts = [Point(float(x), float(y)) for x, y, _t in name_points if np.isfinite(x) and np.isfinite(y)]
+    tree = STRtree(pts) if pts else None
+    hint_lines = [LineString([(h.x0, h.y0), (h.x1, h.y1)]) for h in door_hints or ()
+                  if np.isfinite([h.x0, h.y0, h.x1, h.y1]).all() and (h.x0, h.y0) != (h.x1, h.y1)]
+    htree = STRtree(hint_lines) if hint_lines else None
+    keep: Dict[int, List[Area]] = {}
+    for c, lst in members.items():
+        if any(a.tags.get("label_texts") for a in lst) or (
+                tree is not None and any(len(tree.query(a.polygon, predicate="intersects")) for a in lst)):
+            continue  # a name or number (or one the names stage gave it): a room, orphaned or not, is never counted out
+        if htree is not None and any(len(htree.query(a.polygon.buffer(0.3), predicate="intersects")) for a in lst):
+            continue  # a doorway drawn at it: part of the building whose passage was missed, an orphan
+        keep[c] = lst
+    if not keep:
+        return []
+    lab = np.zeros(grid.shape, np.int32)
+    for a in usable:
+        for part in getattr(a.polygon, "geoms", [a.polygon]):
+            if part.geom_type == "Polygon" and not part.is_empty:
+                repaint_polygon(lab, grid, part, a.id, old_id=0)
+    passable = grid.data != OCCUPIED
+    k3 = np.ones((3, 3), np.uint8)
+    cross = cv2.getStructuringElement(cv2.MORPH_CROSS, (3, 3))  # 4-connected steps: a ring OPEN_RING_PX deep
+    labf = lab.astype(np.float32)  # exact for ids below 2**24; cv2's max filter is the fast one
+    for _ in range(OPEN_SLIVER_PX):  # free slivers between a simplified outline and its walls belong to the area
+        grow = (labf == 0) & passable
+        labf[grow] = cv2.dilate(labf, k3)[grow]
+    lab = labf.astype(np.int32)
+    del labf
+    free0 = (passable & (lab == 0)).view(np.uint8)
+    n, outside = cv2.connectedComponents(free0, connectivity=4, ltype=cv2.CV_32S)
+    border = np.unique(np.concatenate([outside[0], outside[-1], outside[:, 0], outside[:, -1]]))
+    border = border[border > 0]
+    if not len(border):
+        return []
+    is_out = np.zeros(n, bool)
+    is_out[border] = True
+    res = float(grid.resolution)
+    rows, cols = grid.shape
+    out = []
+    for c, lst in keep.items():
+        ids = np.array([a.id for a in lst])
+        x0, y0, x1, y1 = np.array([a.polygon.bounds for a in lst]).T
+        (ca, cb), (ra, rb) = grid.world_to_pixel(np.array([x0.min(), x1.max()]), np.array([y1.max(), y0.min()]))
+        m = OPEN_RING_PX + 2
+        c0, c1 = max(int(ca) - m, 0), min(int(cb) + m + 1, cols)
+        r0, r1 = max(int(ra) - m, 0), min(int(rb) + m + 1, rows)
+        if c1 <= c0 or r1 <= r0:
+            continue
+        mine = np.isin(lab[r0:r1, c0:c1], ids).view(np.uint8)
+        pw = passable[r0:r1, c0:c1].view(np.uint8)
+        grown = mine
+        for _ in range(OPEN_RING_PX):  # the ring beyond the outline, through free pixels only (never a wall)
+            grown = cv2.dilate(grown, cross) & (grown | pw)
+        ring = grown.astype(bool) & ~mine.astype(bool)
+        contact = ring & is_out[outside[r0:r1, c0:c1]]
+        # the ring is OPEN_RING_PX deep where the outline meets the outside: a run's pixels / depth ~ its length,
+        # less the ring's and the slivers' spread around each end of it
+        runs, nr = ndimage.label(contact, structure=np.ones((3, 3), bool))
+        front = 0.0
+        if nr:
+            px = np.bincount(runs[contact], minlength=nr + 1)[1:]
+            front = max(0.0, float(px.max()) * res / OPEN_RING_PX - 2.0 * (OPEN_RING_PX + OPEN_SLIVER_PX) * res)
+        if info is not None:
+            info.setdefault("fronts", {})[int(c)] = front
+        if front >= min_front:
+            out.extend(int(i) for i in ids)
+    return sorted(out)
+
+
 def connected_share(areas: List[Area], closed_ids=()) -> float:
     """The largest component's share of the floor area, counting out ``closed_ids`` (``closed_spaces``)."""
     closed = set(closed_ids)

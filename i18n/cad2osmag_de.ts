@@ -17,14 +17,14 @@
       <location filename="../processing_provider/alg_assign_names.py" />
       <source>Names, numbers and types the AREAS from the drawing's TEXTS (the text output of 'Extract structure from DXF', with block attributes).
 Which texts are room names: configurable rules (NAME_RULES, a copy of algorithms/default_name_rules.json) classify every text as a room name, a room number (kept as ref) or ignored, with the reason (dimension, area, elevation, door/window code, axis, stair arrow, note, title, title block, furniture...), using the text itself, the layer it sits on (room-name layers such as A-ANNO-ROOM, *-SYMB-NAME, 房间; bound-xref prefixes are stripped) and its block and attribute tag. Lines of a multi-line TEXT label are joined first.
-Which area: every text is scored against every area as in the CAD-to-osmAG paper (inside: 100 - 50 rho up to rho_max 0.7, then 50 - 25 (rho - 0.7); outside but within 2.2 m of the border: 40 + 30 f_size + 20 f_dist) and goes to its best area; a text inside an area belongs to it. Name and number join; an area holding two different room names is split at the narrowing between them (SPLIT, watershed of its clearance map; a corridor between them becomes its own area), else it keeps the best-placed name and lists the others in label_conflict. Duplicate names get a suffix (the room number, else (1), (2)...); areas without text get the stable id level-area id (e.g. 2-17).
+Which area: every text is scored against every area as in the CAD-to-osmAG paper (inside: 100 - 50 rho up to rho_max 0.7, then 50 - 25 (rho - 0.7); outside but within 2.2 m of the border: 40 + 30 f_size + 20 f_dist) and goes to its best area; a text inside an area belongs to it. Name and number join; an area holding two different room names is split at the narrowing between them (SPLIT, grown from the cores of its clearance map; a corridor between them becomes its own area), else it keeps the best-placed name and lists the others in label_conflict. Duplicate names get a suffix (the room number, else (1), (2)...); areas without text get the stable id level-area id (e.g. 2-17).
 Types: keywords (English, Italian, Spanish, German, French, Chinese...) and codes (*-ST-* stairs, *-P1/*-OP-*/*-FG-* lifts) set type stairs/elevator/corridor/room and the Simple Indoor Tagging fields indoor and room; long, narrow unnamed areas with three or more passages become corridors.
 Edit name, ref or type in the output layer to fix them: 'Export osmAG' keeps the edits and the passages follow renamed areas. TEXT_REPORT (optional) lists every label with its role, reason, area and score.
 PASSAGES (optional): the passages of the areas; split areas get theirs, and corridors are recognised by their number of passages. LEVEL: the level used in generated ids (empty: the areas' level field, else 1).
 Outputs: OUTPUT_AREAS, the named areas (fields name, ref, type, indoor, room, label_conflict); OUTPUT_PASSAGES, the passages including those of split areas; counts NAMED (areas named from the drawing), NUMBERED (with a room number), AUTO_IDS (with a generated id), CONFLICTS (holding several names), SPLITS (areas split), IGNORED (texts ignored) and OUTSIDE (room texts outside every area).</source>
       <translation>Benennt, nummeriert und typisiert die AREAS (Flächen) anhand der TEXTS der Zeichnung (die Textausgabe von „Bauteile aus DXF extrahieren“, mit Blockattributen).
 Welche Texte Raumnamen sind: konfigurierbare Regeln (NAME_RULES, eine Kopie von algorithms/default_name_rules.json) ordnen jeden Text als Raumname, Raumnummer (als ref übernommen) oder ignoriert ein, mit Begründung (Bemaßung, Fläche, Höhenkote, Tür-/Fensterkennung, Achse, Treppenpfeil, Notiz, Titel, Schriftfeld, Möbel …), anhand des Textes selbst, des Layers, auf dem er liegt (Raumnamen-Layer wie A-ANNO-ROOM, *-SYMB-NAME, 房间; Präfixe gebundener externer Referenzen werden entfernt), sowie seines Blocks und Attribut-Tags. Die Zeilen eines mehrzeiligen TEXT-Labels werden zuerst zusammengefügt.
-Welche Fläche: Jeder Text wird wie im CAD-to-osmAG-Artikel gegen jede Fläche bewertet (innen: 100 - 50 rho bis rho_max 0.7, danach 50 - 25 (rho - 0.7); außen, aber höchstens 2.2 m vom Rand: 40 + 30 f_size + 20 f_dist) und geht an seine beste Fläche; ein Text innerhalb einer Fläche gehört zu ihr. Name und Nummer werden verbunden; eine Fläche mit zwei verschiedenen Raumnamen wird an der Engstelle zwischen ihnen geteilt (SPLIT, Wasserscheide ihrer Freiraumkarte; ein Flur dazwischen wird eine eigene Fläche), andernfalls behält sie den am besten platzierten Namen und führt die übrigen in label_conflict auf. Doppelte Namen erhalten einen Zusatz (die Raumnummer, sonst (1), (2) …); Flächen ohne Text erhalten die stabile Kennung Geschoss-Flächenkennung (z. B. 2-17).
+Welche Fläche: Jeder Text wird wie im CAD-to-osmAG-Artikel gegen jede Fläche bewertet (innen: 100 - 50 rho bis rho_max 0.7, danach 50 - 25 (rho - 0.7); außen, aber höchstens 2.2 m vom Rand: 40 + 30 f_size + 20 f_dist) und geht an seine beste Fläche; ein Text innerhalb einer Fläche gehört zu ihr. Name und Nummer werden verbunden; eine Fläche mit zwei verschiedenen Raumnamen wird an der Engstelle zwischen ihnen geteilt (SPLIT, von den Kernen ihrer Freiraumkarte aus gewachsen; ein Flur dazwischen wird eine eigene Fläche), andernfalls behält sie den am besten platzierten Namen und führt die übrigen in label_conflict auf. Doppelte Namen erhalten einen Zusatz (die Raumnummer, sonst (1), (2) …); Flächen ohne Text erhalten die stabile Kennung Geschoss-Flächenkennung (z. B. 2-17).
 Typen: Schlüsselwörter (Englisch, Italienisch, Spanisch, Deutsch, Französisch, Chinesisch …) und Kennungen (*-ST-* Treppen, *-P1/*-OP-*/*-FG-* Aufzüge) setzen den Typ stairs/elevator/corridor/room und die Simple-Indoor-Tagging-Felder indoor und room; lange, schmale unbenannte Flächen mit drei oder mehr Durchgängen werden Flure.
 Zum Korrigieren name, ref oder type in der Ausgabelayer bearbeiten: „osmAG exportieren“ übernimmt die Änderungen, und die Durchgänge folgen umbenannten Flächen. TEXT_REPORT (optional) listet jedes Label mit Rolle, Begründung, Fläche und Bewertung.
 PASSAGES (optional): die Durchgänge der Flächen; geteilte Flächen erhalten ihre eigenen, und Flure werden an der Zahl ihrer Durchgänge erkannt. LEVEL: das Geschoss in erzeugten Kennungen (leer: das Feld level der Flächen, sonst 1).
@@ -142,12 +142,27 @@ Ausgaben: OUTPUT_AREAS, die benannten Flächen (Felder name, ref, type, indoor, 
     </message>
     <message>
       <location filename="../processing_provider/alg_assign_names.py" />
+      <source>AREAS holds no area: nothing to name; every room text is counted as outside every area</source>
+      <translation>AREAS enthält keine Fläche: nichts zu benennen; jeder Raumtext wird als außerhalb jeder Fläche gezählt</translation>
+    </message>
+    <message>
+      <location filename="../processing_provider/alg_assign_names.py" />
+      <source>TEXTS holds no text: every area gets its generated id (level-area id)</source>
+      <translation>TEXTS enthält keinen Text: jede Fläche erhält ihre erzeugte Kennung (Geschoss-Flächenkennung)</translation>
+    </message>
+    <message>
+      <location filename="../processing_provider/alg_assign_names.py" />
       <source>cannot write area {} to the output layer</source>
       <translation>Fläche {} kann nicht in den Ausgabelayer geschrieben werden</translation>
     </message>
   </context>
   <context>
     <name>Cad2OsmagAlgorithm</name>
+    <message>
+      <location filename="../processing_provider/alg_assign_names.py" />
+      <source>TEXTS has no 'text' field: use the TEXTS output of 'Extract structure from DXF' (or a point layer with fields text and, optionally, layer, height, rotation, entity, block, tag, id)</source>
+      <translation>TEXTS hat kein Feld 'text': die Ausgabe TEXTS von „Bauteile aus DXF extrahieren“ verwenden (oder einen Punktlayer mit den Feldern text und, optional, layer, height, rotation, entity, block, tag, id)</translation>
+    </message>
     <message>
       <location filename="../processing_provider/alg_extract_structure.py" />
       <source>Plan on the sheet (empty = main plan; an index of the log's plan list, or xmin,ymin,xmax,ymax in metres)</source>

@@ -17,14 +17,14 @@
       <location filename="../processing_provider/alg_assign_names.py" />
       <source>Names, numbers and types the AREAS from the drawing's TEXTS (the text output of 'Extract structure from DXF', with block attributes).
 Which texts are room names: configurable rules (NAME_RULES, a copy of algorithms/default_name_rules.json) classify every text as a room name, a room number (kept as ref) or ignored, with the reason (dimension, area, elevation, door/window code, axis, stair arrow, note, title, title block, furniture...), using the text itself, the layer it sits on (room-name layers such as A-ANNO-ROOM, *-SYMB-NAME, 房间; bound-xref prefixes are stripped) and its block and attribute tag. Lines of a multi-line TEXT label are joined first.
-Which area: every text is scored against every area as in the CAD-to-osmAG paper (inside: 100 - 50 rho up to rho_max 0.7, then 50 - 25 (rho - 0.7); outside but within 2.2 m of the border: 40 + 30 f_size + 20 f_dist) and goes to its best area; a text inside an area belongs to it. Name and number join; an area holding two different room names is split at the narrowing between them (SPLIT, watershed of its clearance map; a corridor between them becomes its own area), else it keeps the best-placed name and lists the others in label_conflict. Duplicate names get a suffix (the room number, else (1), (2)...); areas without text get the stable id level-area id (e.g. 2-17).
+Which area: every text is scored against every area as in the CAD-to-osmAG paper (inside: 100 - 50 rho up to rho_max 0.7, then 50 - 25 (rho - 0.7); outside but within 2.2 m of the border: 40 + 30 f_size + 20 f_dist) and goes to its best area; a text inside an area belongs to it. Name and number join; an area holding two different room names is split at the narrowing between them (SPLIT, grown from the cores of its clearance map; a corridor between them becomes its own area), else it keeps the best-placed name and lists the others in label_conflict. Duplicate names get a suffix (the room number, else (1), (2)...); areas without text get the stable id level-area id (e.g. 2-17).
 Types: keywords (English, Italian, Spanish, German, French, Chinese...) and codes (*-ST-* stairs, *-P1/*-OP-*/*-FG-* lifts) set type stairs/elevator/corridor/room and the Simple Indoor Tagging fields indoor and room; long, narrow unnamed areas with three or more passages become corridors.
 Edit name, ref or type in the output layer to fix them: 'Export osmAG' keeps the edits and the passages follow renamed areas. TEXT_REPORT (optional) lists every label with its role, reason, area and score.
 PASSAGES (optional): the passages of the areas; split areas get theirs, and corridors are recognised by their number of passages. LEVEL: the level used in generated ids (empty: the areas' level field, else 1).
 Outputs: OUTPUT_AREAS, the named areas (fields name, ref, type, indoor, room, label_conflict); OUTPUT_PASSAGES, the passages including those of split areas; counts NAMED (areas named from the drawing), NUMBERED (with a room number), AUTO_IDS (with a generated id), CONFLICTS (holding several names), SPLITS (areas split), IGNORED (texts ignored) and OUTSIDE (room texts outside every area).</source>
       <translation>根据图纸的 TEXTS（“从 DXF 提取建筑结构”输出的文字，含块属性）为 AREAS（区域）命名、编号并指定类型。
 哪些文字是房间名称：可配置的规则（NAME_RULES，algorithms/default_name_rules.json 的副本）将每段文字归为房间名称、房间编号（保存为 ref）或忽略，并给出原因（尺寸标注、面积、标高、门窗编号、轴线、楼梯箭头、注释、标题、图签、家具……），依据是文字本身、所在图层（房间名称图层，如 A-ANNO-ROOM、*-SYMB-NAME、房间；绑定外部参照的前缀会被去除）以及所属块和属性标记。多行 TEXT 标注的各行先合并。
-归属哪个区域：按 CAD-to-osmAG 论文的方法，每段文字对每个区域打分（在区域内：100 - 50 rho，直到 rho_max 0.7，之后 50 - 25 (rho - 0.7)；在区域外但距边界不超过 2.2 m：40 + 30 f_size + 20 f_dist），并归入得分最高的区域；位于区域内部的文字属于该区域。名称与编号合并；含有两个不同房间名称的区域在二者之间的收窄处被拆分（SPLIT，基于其净空图的分水岭；二者之间的走廊成为单独的区域），否则保留位置最佳的名称，其余名称列在 label_conflict 中。重复的名称会加上后缀（房间编号，否则为 (1)、(2)……）；没有文字的区域获得稳定的标识“楼层-区域标识”（如 2-17）。
+归属哪个区域：按 CAD-to-osmAG 论文的方法，每段文字对每个区域打分（在区域内：100 - 50 rho，直到 rho_max 0.7，之后 50 - 25 (rho - 0.7)；在区域外但距边界不超过 2.2 m：40 + 30 f_size + 20 f_dist），并归入得分最高的区域；位于区域内部的文字属于该区域。名称与编号合并；含有两个不同房间名称的区域在二者之间的收窄处被拆分（SPLIT，从其净空图的核心区域生长；二者之间的走廊成为单独的区域），否则保留位置最佳的名称，其余名称列在 label_conflict 中。重复的名称会加上后缀（房间编号，否则为 (1)、(2)……）；没有文字的区域获得稳定的标识“楼层-区域标识”（如 2-17）。
 类型：关键词（英语、意大利语、西班牙语、德语、法语、中文……）和编码（*-ST-* 楼梯，*-P1/*-OP-*/*-FG-* 电梯）设定类型 stairs/elevator/corridor/room 以及 Simple Indoor Tagging 字段 indoor 和 room；细长、未命名且有三个或更多通道的区域成为走廊。
 如需更正，在输出图层中编辑 name、ref 或 type：“导出 osmAG”会保留这些修改，通道也会跟随改名后的区域。TEXT_REPORT（可选）列出每个标注的角色、原因、区域和得分。
 PASSAGES（可选）：区域的通道；被拆分的区域获得各自的通道，走廊按其通道数量识别。LEVEL：生成标识所用的楼层（留空：区域的 level 字段，否则为 1）。
@@ -142,12 +142,27 @@ PASSAGES（可选）：区域的通道；被拆分的区域获得各自的通道
     </message>
     <message>
       <location filename="../processing_provider/alg_assign_names.py" />
+      <source>AREAS holds no area: nothing to name; every room text is counted as outside every area</source>
+      <translation>AREAS 不含任何区域：没有可命名的对象；每个房间文字都计为位于所有区域之外</translation>
+    </message>
+    <message>
+      <location filename="../processing_provider/alg_assign_names.py" />
+      <source>TEXTS holds no text: every area gets its generated id (level-area id)</source>
+      <translation>TEXTS 不含任何文字：每个区域获得其生成的编号（楼层-区域编号）</translation>
+    </message>
+    <message>
+      <location filename="../processing_provider/alg_assign_names.py" />
       <source>cannot write area {} to the output layer</source>
       <translation>无法将区域 {} 写入输出图层</translation>
     </message>
   </context>
   <context>
     <name>Cad2OsmagAlgorithm</name>
+    <message>
+      <location filename="../processing_provider/alg_assign_names.py" />
+      <source>TEXTS has no 'text' field: use the TEXTS output of 'Extract structure from DXF' (or a point layer with fields text and, optionally, layer, height, rotation, entity, block, tag, id)</source>
+      <translation>TEXTS 没有 'text' 字段：请使用“从 DXF 提取建筑结构”的 TEXTS 输出（或带有 text 字段以及可选的 layer、height、rotation、entity、block、tag、id 字段的点图层）</translation>
+    </message>
     <message>
       <location filename="../processing_provider/alg_extract_structure.py" />
       <source>Plan on the sheet (empty = main plan; an index of the log's plan list, or xmin,ymin,xmax,ymax in metres)</source>

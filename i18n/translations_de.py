@@ -30,7 +30,7 @@ T = {
      "rho up to rho_max 0.7, then 50 - 25 (rho - 0.7); outside but within 2.2 m of the border: 40 + 30 "
      "f_size + 20 f_dist) and goes to its best area; a text inside an area belongs to it. Name and number "
      "join; an area holding two different room names is split at the narrowing between them (SPLIT, "
-     "watershed of its clearance map; a corridor between them becomes its own area), else it keeps the "
+     "grown from the cores of its clearance map; a corridor between them becomes its own area), else it keeps the "
      "best-placed name and lists the others in label_conflict. Duplicate names get a suffix (the room "
      "number, else (1), (2)...); areas without text get the stable id level-area id (e.g. 2-17).\n"
      "Types: keywords (English, Italian, Spanish, German, French, Chinese...) and codes (*-ST-* stairs, "
@@ -59,7 +59,7 @@ T = {
          "- 50 rho bis rho_max 0.7, danach 50 - 25 (rho - 0.7); außen, aber höchstens 2.2 m vom Rand: 40 + "
          "30 f_size + 20 f_dist) und geht an seine beste Fläche; ein Text innerhalb einer Fläche gehört zu "
          "ihr. Name und Nummer werden verbunden; eine Fläche mit zwei verschiedenen Raumnamen wird an der "
-         "Engstelle zwischen ihnen geteilt (SPLIT, Wasserscheide ihrer Freiraumkarte; ein Flur dazwischen "
+         "Engstelle zwischen ihnen geteilt (SPLIT, von den Kernen ihrer Freiraumkarte aus gewachsen; ein Flur dazwischen "
          "wird eine eigene Fläche), andernfalls behält sie den am besten platzierten Namen und führt die "
          "übrigen in label_conflict auf. Doppelte Namen erhalten einen Zusatz (die Raumnummer, sonst (1), "
          "(2) …); Flächen ohne Text erhalten die stabile Kennung Geschoss-Flächenkennung (z. B. 2-17).\n"
@@ -1344,3 +1344,12 @@ T["Reads INPUT, a DXF floor plan or a DWG (AutoCAD R13-2018, read directly: no c
 # the model's file input takes DWG too
 T['DXF or DWG floor plan'] = 'DXF- oder DWG-Grundriss'
 T['The floor plan (DXF, or DWG as delivered: the main plan of a sheet is converted).'] = 'Der Grundriss (DXF, oder DWG wie geliefert: der Hauptplan eines Blatts wird umgewandelt).'
+
+# assignnames: bad input named (issue 9 audit)
+T["TEXTS has no 'text' field: use the TEXTS output of 'Extract structure from DXF' (or a point layer with fields text and, optionally, layer, height, rotation, entity, block, tag, id)"] = (
+    "TEXTS hat kein Feld 'text': die Ausgabe TEXTS von „Bauteile aus DXF extrahieren“ verwenden (oder einen "
+    "Punktlayer mit den Feldern text und, optional, layer, height, rotation, entity, block, tag, id)")
+T["AREAS holds no area: nothing to name; every room text is counted as outside every area"] = (
+    "AREAS enthält keine Fläche: nichts zu benennen; jeder Raumtext wird als außerhalb jeder Fläche gezählt")
+T["TEXTS holds no text: every area gets its generated id (level-area id)"] = (
+    "TEXTS enthält keinen Text: jede Fläche erhält ihre erzeugte Kennung (Geschoss-Flächenkennung)")

@@ -31,7 +31,7 @@ T = {
      "rho up to rho_max 0.7, then 50 - 25 (rho - 0.7); outside but within 2.2 m of the border: 40 + 30 "
      "f_size + 20 f_dist) and goes to its best area; a text inside an area belongs to it. Name and number "
      "join; an area holding two different room names is split at the narrowing between them (SPLIT, "
-     "watershed of its clearance map; a corridor between them becomes its own area), else it keeps the "
+     "grown from the cores of its clearance map; a corridor between them becomes its own area), else it keeps the "
      "best-placed name and lists the others in label_conflict. Duplicate names get a suffix (the room "
      "number, else (1), (2)...); areas without text get the stable id level-area id (e.g. 2-17).\n"
      "Types: keywords (English, Italian, Spanish, German, French, Chinese...) and codes (*-ST-* stairs, "
@@ -57,7 +57,7 @@ T = {
          "归属哪个区域：按 CAD-to-osmAG 论文的方法，每段文字对每个区域打分（在区域内：100 - 50 rho，直到 "
          "rho_max 0.7，之后 50 - 25 (rho - 0.7)；在区域外但距边界不超过 2.2 m：40 + 30 f_size + 20 f_dist）"
          "，并归入得分最高的区域；位于区域内部的文字属于该区域。名称与编号合并；含有两个不同房间名称的区域在"
-         "二者之间的收窄处被拆分（SPLIT，基于其净空图的分水岭；二者之间的走廊成为单独的区域），否则保留位置"
+         "二者之间的收窄处被拆分（SPLIT，从其净空图的核心区域生长；二者之间的走廊成为单独的区域），否则保留位置"
          "最佳的名称，其余名称列在 label_conflict 中。重复的名称会加上后缀（房间编号，否则为 (1)、(2)……）；"
          "没有文字的区域获得稳定的标识“楼层-区域标识”（如 2-17）。\n"
          "类型：关键词（英语、意大利语、西班牙语、德语、法语、中文……）和编码（*-ST-* 楼梯，"
@@ -1181,3 +1181,12 @@ T["Reads INPUT, a DXF floor plan or a DWG (AutoCAD R13-2018, read directly: no c
 # the model's file input takes DWG too
 T['DXF or DWG floor plan'] = 'DXF 或 DWG 平面图'
 T['The floor plan (DXF, or DWG as delivered: the main plan of a sheet is converted).'] = '平面图（DXF，或原样交付的 DWG：转换图幅上的主平面图）。'
+
+# assignnames: bad input named (issue 9 audit)
+T["TEXTS has no 'text' field: use the TEXTS output of 'Extract structure from DXF' (or a point layer with fields text and, optionally, layer, height, rotation, entity, block, tag, id)"] = (
+    "TEXTS 没有 'text' 字段：请使用“从 DXF 提取建筑结构”的 TEXTS 输出（或带有 text 字段以及可选的 layer、height、"
+    "rotation、entity、block、tag、id 字段的点图层）")
+T["AREAS holds no area: nothing to name; every room text is counted as outside every area"] = (
+    "AREAS 不含任何区域：没有可命名的对象；每个房间文字都计为位于所有区域之外")
+T["TEXTS holds no text: every area gets its generated id (level-area id)"] = (
+    "TEXTS 不含任何文字：每个区域获得其生成的编号（楼层-区域编号）")

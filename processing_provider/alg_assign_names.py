@@ -19,7 +19,8 @@ from ..algorithms import semantics
 from ..algorithms.model import CadText
 from .alg_georeference import is_cad_frame
 from .alg_refine import INTERNAL_AREA_FIELDS, passage_fields, read_areas, read_passages, write_passages
-from .base import Cad2OsmagAlgorithm, FIELD_DOUBLE, FIELD_LONG, FIELD_STRING, from_qgs, make_fields, to_qgs
+from .base import (Cad2OsmagAlgorithm, FIELD_DOUBLE, FIELD_LONG, FIELD_STRING, from_qgs, make_fields, to_qgs,
+                   tr_common)
 
 # fields the algorithm always writes on AREAS, in this order (then any other tag of the input)
 NAME_FIELDS = ("ref", "indoor", "room", "label_score", "label_texts", "label_conflict")
@@ -41,9 +42,9 @@ def read_texts(source, with_hidden: bool = False):
     hid = []
     names = source.fields().names()
     if "text" not in names:
-        raise QgsProcessingException(
+        raise QgsProcessingException(tr_common(
             "TEXTS has no 'text' field: use the TEXTS output of 'Extract structure from DXF' (or a point layer "
-            "with fields text and, optionally, layer, height, rotation, entity, block, tag, id)")
+            "with fields text and, optionally, layer, height, rotation, entity, block, tag, id)"))
     out = []
     for k, f in enumerate(source.getFeatures()):
         g = from_qgs(f.geometry())
@@ -106,7 +107,7 @@ class AssignNamesAlgorithm(Cad2OsmagAlgorithm):
             "50 rho up to rho_max 0.7, then 50 - 25 (rho - 0.7); outside but within 2.2 m of the border: 40 + "
             "30 f_size + 20 f_dist) and goes to its best area; a text inside an area belongs to it. Name and "
             "number join; an area holding two different room names is split at the narrowing between them "
-            "(SPLIT, watershed of its clearance map; a corridor between them becomes its own area), else it "
+            "(SPLIT, grown from the cores of its clearance map; a corridor between them becomes its own area), else it "
             "keeps the best-placed name and lists the others in label_conflict. Duplicate names get a suffix "
             "(the room number, else (1), (2)...); areas without text get the stable id level-area id (e.g. 2-17).\n"
             "Types: keywords (English, Italian, Spanish, German, French, Chinese...) and codes (*-ST-* stairs, "
@@ -187,6 +188,11 @@ class AssignNamesAlgorithm(Cad2OsmagAlgorithm):
         areas = read_areas(src)
         passages = read_passages(psrc, areas) if psrc is not None else None
         texts, hidden = read_texts(tsrc, with_hidden=True)
+        if not areas:
+            feedback.pushWarning(self.tr("AREAS holds no area: nothing to name; every room text is counted as "
+                                         "outside every area"))
+        if not texts and not hidden:
+            feedback.pushWarning(self.tr("TEXTS holds no text: every area gets its generated id (level-area id)"))
         level = (self.parameterAsString(parameters, self.LEVEL, context) or "").strip()
         if not level:
             levels = sorted({str(a.tags.get("level", "")).strip() for a in areas} - {""})

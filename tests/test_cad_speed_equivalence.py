@@ -22,7 +22,7 @@ PINNED = {
     "spaghetti": "93da1678b92a2ef2b5c695ef08b553cef8f36a039848655477aef8d42e4c8b4e",  # 314 geometries, 17 doors
     "sheet": "67cee026357b75be10030ca1689e9269cad02e68a9392c0841b5fb0bce22a15b",  # 314 geometries, 18 doors
     "SIST-F4.dwg": "8809006760f7f7edadca9d1ac7c52a17984ef03fe1edb309990f2c528a6a0730",  # 11113 geometries, 115 doors
-    "kindergarten-1.dxf": "0236b56f9854cb59e8ca68ab1a3febc0fc428842945cd8d84734cd3020f84630",  # 10317 geoms, 93 doors
+    "kindergarten-1.dxf": "f85430a634599638c5692462ba9a878d9489eb592c07cf7bf2ac0e41340b5bca",  # 10317 geoms, 102 doors (K3 door kinds)
     "SIST-F3.dxf": "f87b3c09f0cd4ea00d1199e05afdef4f67a485b8400c87bb24dc56faf789d699",  # 4015 geometries, 0 doors
 }
 REAL = {

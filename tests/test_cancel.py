@@ -231,3 +231,109 @@ def test_processing_algorithm_cancel_stops_and_writes_nothing(qgis_app, tmp_path
         assert not ok and feedback.isCanceled() and feedback.progress() < 100
         assert "Canceled" in msg or not msg
         assert not out.exists() and not png.exists()
+
+
+# ------------------------------------------------------------------------------------------ each Processing algorithm
+def _alg(module, cls):
+    import importlib
+
+    from .conftest import plugin_package
+
+    plugin_package()
+    return getattr(importlib.import_module(f"cad2osmag.processing_provider.{module}"), cls)().create()
+
+
+def _run_alg(alg, params, cancel_at=None):
+    """Run ``alg`` in process; with ``cancel_at`` the feedback is canceled once the algorithm reports that
+    percent (the user's click once the dialog shows it). Returns (ok, message, CPU s from cancel to return)."""
+    from qgis.core import QgsProcessingContext, QgsProcessingFeedback
+
+    alg.initAlgorithm()
+    feedback = QgsProcessingFeedback()
+    clicked = []
+    if cancel_at is not None:
+        def click(p, fb=feedback):
+            if p >= cancel_at and not clicked:
+                clicked.append(time.process_time())
+                fb.cancel()
+        feedback.progressChanged.connect(click)
+    msg = ""
+    try:
+        _, ok = alg.run(params, QgsProcessingContext(), feedback)
+    except Exception as exc:  # QgsProcessingException
+        ok, msg = False, str(exc)
+    late = time.process_time() - clicked[0] if clicked else None
+    return ok, msg, late, bool(clicked)
+
+
+STAGE_ALGS = [  # (module, class, inputs from the reference run, outputs, percent at which the user cancels)
+    ("alg_extract_structure", "ExtractStructureAlgorithm", lambda d: {"INPUT": str(base_dxf())},
+     ("WALLS", "TEXTS", "DOORS"), 20.0),
+    ("alg_rasterize", "RasterizeAlgorithm", lambda d: {"WALLS": str(d / "walls.gpkg")}, ("OCCUPANCY",), 10.0),
+    ("alg_segment", "SegmentAlgorithm", lambda d: {"INPUT": str(d / "occupancy.tif"), "STRUCTURE": str(d / "walls.gpkg")},
+     ("AREAS", "PASSAGES", "LABELS"), 30.0),
+    ("alg_refine", "RefineAlgorithm", lambda d: {"AREAS": str(d / "areas.gpkg"), "PASSAGES": str(d / "passages.gpkg")},
+     ("OUTPUT_AREAS", "OUTPUT_PASSAGES"), 10.0),
+    ("alg_assign_names", "AssignNamesAlgorithm",
+     lambda d: {"AREAS": str(d / "output_areas.gpkg"), "TEXTS": str(d / "texts.gpkg"),
+                "PASSAGES": str(d / "output_passages.gpkg")}, ("OUTPUT_AREAS", "OUTPUT_PASSAGES"), 10.0),
+]
+_EXT = {"OCCUPANCY": ".tif", "LABELS": ".tif"}
+
+
+@pytest.mark.slow
+def test_each_stage_algorithm_canceled_mid_run_stops_and_writes_nothing(qgis_app, tmp_path):
+    """Every long Processing algorithm of the stage-by-stage chain on the sample floor: run once to make the
+    next one's input, then again with the Cancel button pressed mid-run: it fails as canceled within 2 s of
+    CPU and none of its outputs exists."""
+    ref = tmp_path / "ref"
+    ref.mkdir()
+    for module, cls, inputs, outputs, at in STAGE_ALGS:
+        params = inputs(ref)
+        for o in outputs:
+            params[o] = str(ref / (o.lower() + _EXT.get(o, ".gpkg")))
+        ok, msg, _, _ = _run_alg(_alg(module, cls), dict(params))
+        assert ok, (cls, msg)
+        folder = tmp_path / f"cancel-{module}"
+        folder.mkdir()
+        for o in outputs:
+            params[o] = str(folder / (o.lower() + _EXT.get(o, ".gpkg")))
+        ok, msg, late, clicked = _run_alg(_alg(module, cls), params, cancel_at=at)
+        assert clicked, f"{cls} never reported {at} %"
+        assert not ok, f"{cls} finished although canceled at {at} %"
+        assert late <= STOP_WITHIN, f"{cls}: stopped {late:.2f} s of CPU after the cancel"
+        assert list(folder.iterdir()) == [], f"{cls}: canceled run left {list(folder.iterdir())}"
+        print(cls, "canceled at", at, "%:", round(late, 3), "s CPU;", msg[:60], sorted(p.name for p in ref.iterdir()))
+
+
+def test_batch_canceled_kills_its_workers_and_writes_no_floor(qgis_app, tmp_path):
+    """dxftoosmagbatch canceled while its worker processes convert: they are killed, no osmAG file (nor a
+    temporary one) and no report is left, and it returns at once."""
+    import shutil
+
+    from qgis.core import QgsProcessingContext, QgsProcessingFeedback
+
+    src = tmp_path / "floors"
+    src.mkdir()
+    for k in (1, 2):
+        shutil.copy(base_dxf(), src / f"F{k}.dxf")
+    out, report = tmp_path / "out", tmp_path / "report.csv"
+    alg = _alg("alg_dxf_to_osmag_batch", "DxfToOsmagBatchAlgorithm")
+    alg.initAlgorithm()
+
+    class CancelOnStart(QgsProcessingFeedback):
+        def pushInfo(self, text):  # noqa: N802 - the click comes once both workers run
+            if text.startswith("started F2"):
+                self.cancel()
+
+    feedback = CancelOnStart()
+    t0 = time.monotonic()
+    try:
+        _, ok = alg.run({"FOLDER": str(src), "OUTPUT_FOLDER": str(out), "REPORT": str(report), "WORKERS": 2,
+                         "ANCHOR": "121.59,31.18 [EPSG:4326]"}, QgsProcessingContext(), feedback)
+    except Exception:  # QgsProcessingException
+        ok = False
+    assert not ok and feedback.isCanceled()
+    assert time.monotonic() - t0 < 30  # the workers are killed, not awaited (a conversion takes minutes here)
+    assert not report.exists()
+    assert not out.exists() or list(out.iterdir()) == [], list(out.iterdir())

@@ -362,3 +362,19 @@ def test_model_space_with_too_many_entities_is_refused(tmp_path, monkeypatch):
     monkeypatch.setattr(cad_explode, "MAX_EXPLODED", 100)  # the same rule as 10^6 LINEs, on a small file
     with pytest.raises(InputError, match=r"holds \d[\d,]* entities in model space.*OVERKILL"):
         cad_import.import_dxf(str(base_dxf()))
+
+
+def test_a_spline_with_a_damaged_control_point_is_left_out_not_subdivided_forever(worker, tmp_path):
+    """A byte flip turned a SPLINE control point into -2e266 (A-A3-10-08.dwg, test_fuzz_dwg.py): the adaptive
+    flattening halves the chord until it is within the tolerance of the curve and never ended. Such a spline is
+    not subdivided; its far point is left out with the other non-finite coordinates."""
+    doc = _doc()
+    msp = doc.modelspace()
+    msp.add_open_spline([(0, 0), (1000, 500), (-2.02e266, -650), (3000, 0)], degree=3,
+                        dxfattribs={"layer": "A-WALL"})
+    path = _save(doc, tmp_path)
+    t0 = time.monotonic()
+    status, payload = worker.run("import", path, timeout=IMPORT_LIMIT)
+    assert status == "ok", (status, str(payload)[:500])
+    assert any("not finite" in w for w in payload["warnings"]), payload["warnings"]
+    assert time.monotonic() - t0 < IMPORT_LIMIT

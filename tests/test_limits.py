@@ -107,3 +107,91 @@ def test_budget_error_headless(tmp_path):
                             check=False)
     assert code != 0 and "Mpx" in text and "resolution of at least" in text and "Traceback" not in text
     assert not out.exists()
+
+
+# ------------------------------------------------------------------------------------------ grids from other tools
+def _robot_map(tmp_path, rows=300, cols=400):
+    """A small grey robot map as PNG, as ROS map.yaml + PNG and as a plain GeoTIFF from another tool."""
+    import cv2
+
+    from algorithms.raster_io import write_geotiff
+
+    img = np.full((rows, cols), 254, np.uint8)
+    img[::50, :] = 0
+    png = tmp_path / "map.png"
+    cv2.imwrite(str(png), img)
+    yaml_path = tmp_path / "map.yaml"
+    yaml_path.write_text("image: map.png\nresolution: 0.05\norigin: [0.0, 0.0, 0.0]\nnegate: 0\n"
+                         "occupied_thresh: 0.65\nfree_thresh: 0.196\n")
+    tif = tmp_path / "map.tif"
+    write_geotiff(str(tif), img, 0.0, rows * 0.05, 0.05)
+    return png, yaml_path, tif
+
+
+def test_a_robot_map_too_big_to_segment_stops_before_it_is_read(tmp_path, monkeypatch):
+    """Occupancy rasters from other tools (PNG, ROS map.yaml, GeoTIFF) are read whole: one that needs more
+    memory to segment than the machine has stops from its header, before the pixels are decoded, with the
+    cure (resample to a resolution that fits, or crop)."""
+    import cv2
+
+    from algorithms import raster_io
+
+    png, yaml_path, tif = _robot_map(tmp_path)
+    ok = raster_io.read_grid(str(png), resolution=0.05)  # fits: read as before
+    assert ok.shape == (300, 400)
+    monkeypatch.setattr(rasterize, "available_memory", lambda: 2 ** 20)  # 1 MB: 400 x 300 px needs ~6 MB
+
+    def no_decoding(*a, **k):
+        raise AssertionError("the image was decoded before the budget check")
+
+    monkeypatch.setattr(cv2, "imread", no_decoding)
+    for path, kwargs in ((png, {"resolution": 0.05}), (yaml_path, {}), (tif, {})):
+        with pytest.raises(InputError) as err:
+            raster_io.read_grid(str(path), **kwargs)
+        msg = str(err.value)
+        assert "400 x 300 px" in msg and "GB of memory" in msg and "crop it to the building" in msg, msg
+        res = float(msg.split("at least ")[1].split(" m/px")[0])
+        assert 400 * 300 * (0.05 / res) ** 2 * rasterize.BYTES_PER_PIXEL <= 2 ** 20  # the advice fits
+
+
+def test_a_ros_map_with_a_bad_resolution_is_named(tmp_path):
+    _, yaml_path, _ = _robot_map(tmp_path)
+    yaml_path.write_text(yaml_path.read_text().replace("resolution: 0.05", "resolution: fine"))
+    from algorithms import raster_io
+
+    with pytest.raises(InputError, match="resolution must be a number of metres per pixel, got 'fine'"):
+        raster_io.read_grid(str(yaml_path))
+
+
+def test_segment_algorithm_on_a_too_big_map_fails_with_the_advice_and_writes_nothing(qgis_app, tmp_path,
+                                                                                     monkeypatch):
+    from qgis.core import QgsProcessingContext, QgsProcessingFeedback
+
+    from .conftest import plugin_package
+
+    png, _, _ = _robot_map(tmp_path)
+    plugin_package()
+    from cad2osmag.algorithms import rasterize as plugin_rasterize
+    from cad2osmag.processing_provider.alg_segment import SegmentAlgorithm
+
+    monkeypatch.setattr(plugin_rasterize, "available_memory", lambda: 2 ** 20)
+    alg = SegmentAlgorithm().create()
+    alg.initAlgorithm()
+    out = tmp_path / "out"
+    out.mkdir()
+
+    class Log(QgsProcessingFeedback):
+        text = []
+
+        def reportError(self, error, fatalError=False):  # noqa: N802, N803
+            Log.text.append(error)
+
+    params = {"INPUT": str(png), "RESOLUTION": 0.05, "AREAS": str(out / "a.gpkg"), "PASSAGES": str(out / "p.gpkg"),
+              "LABELS": str(out / "l.tif")}
+    try:
+        _, ok = alg.run(params, QgsProcessingContext(), Log())
+    except Exception as exc:  # QgsProcessingException on QGIS versions that raise it
+        ok = False
+        Log.text.append(str(exc))
+    assert not ok and any("GB of memory" in t and "resample it" in t for t in Log.text), Log.text
+    assert list(out.iterdir()) == []

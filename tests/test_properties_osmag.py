@@ -144,6 +144,19 @@ def test_writer_rejects_dangling_passages_naming_them(graph, missing, data, tmp_
     assert not path.exists()
 
 
+@settings(max_examples=20, **PROPS)
+@given(graph=area_graphs(), data=st.data())
+def test_writer_rejects_duplicate_passage_ids_naming_them(graph, data, tmp_path_factory):
+    areas, passages, frame, _ = graph
+    assume(len(passages) >= 2)
+    i, j = data.draw(st.sampled_from([(i, j) for i in range(len(passages)) for j in range(len(passages)) if i < j]))
+    passages[j].id = passages[i].id  # a passage feature copied in QGIS keeps its id
+    path = tmp_path_factory.mktemp("dupp") / "g.osm"
+    with pytest.raises(InputError, match=rf"duplicate passage ids \[{passages[i].id}\] \(level 1\)"):
+        write_osmag(str(path), areas, passages, frame=frame)
+    assert not path.exists()
+
+
 @st.composite
 def broken_files(draw):
     areas, passages, frame, variant = draw(area_graphs())
@@ -234,3 +247,25 @@ def test_other_tools_files_load_with_their_defects_reported(shared_data, fname, 
     if fname.startswith("fix_id"):  # the README: 56 passages point at areas named out / out1
         outs = [r for r in report["dangling_refs"] if re.fullmatch(r"out1?", r[2])]
         assert len(outs) == 56
+
+
+# ------------------------------------------------------------------------------------------ ids exactly
+@settings(max_examples=25, **PROPS)
+@given(graph=area_graphs())
+def test_ids_come_back_and_a_read_file_rewrites_byte_for_byte(graph, tmp_path_factory):
+    """Ids exactly (issue 13): every area way comes back under the way id the writer gave it, every passage
+    between those ids; writing the file read (WGS84, same root) reproduces it byte for byte (node and way ids,
+    node order, tags, coordinates at the written precision)."""
+    areas, passages, frame, variant = graph
+    folder = tmp_path_factory.mktemp("ids")
+    first, second = folder / "a.osm", folder / "b.osm"
+    stats = write_osmag(str(first), areas, passages, frame=frame, level="1", variant=variant)
+    got_a, got_p, root, _ = read_osmag(str(first))
+    assert {a.id for a in got_a} == set(stats["way_ids"].values())
+    by_way = {stats["way_ids"][a.id]: a for a in areas}
+    for b in got_a:
+        assert b.name == stats["names"][by_way[b.id].id]
+    want_ends = {(stats["way_ids"][p.from_id], stats["way_ids"][p.to_id]) for p in passages}
+    assert {(p.from_id, p.to_id) for p in got_p} == want_ends
+    write_osmag(str(second), got_a, got_p, crs="EPSG:4326", root=root, level="1", variant=variant)
+    assert second.read_bytes() == first.read_bytes()

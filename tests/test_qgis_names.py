@@ -84,10 +84,19 @@ def test_dxftoosmag_names_switch_and_renames_survive_export(sample, tmp_path):
     ds = ogr.Open(str(tmp_path / "areas.gpkg"), 1)
     lyr = ds.GetLayer(0)
     old = "Office 101"
+    lyr.CreateField(ogr.FieldDefn("ref", ogr.OFTString))  # the sample has no room numbers: the user adds them
     for f in lyr:
         if f.GetField("name") == old:
             f.SetField("name", "Director")
-            lyr.SetFeature(f)
+        elif f.GetField("name") == "Office 105":  # a stair the segmentation typed as a room, fixed by hand
+            f.SetField("name", "Stair B")
+            f.SetField("osmAG:areatype", "stairs")
+            f.SetField("room", "stairs")
+            f.SetField("ref", "S-2")
+        elif f.GetField("name") == "Hall":
+            f.SetField("indoor", "area")
+            f.SetField("ref", "H0")
+        lyr.SetFeature(f)
     ds = None
     again = tmp_path / "renamed.osm"
     run_alg("exportosmag", {"AREAS": str(tmp_path / "areas.gpkg"), "PASSAGES": str(tmp_path / "passages.gpkg"),
@@ -98,6 +107,19 @@ def test_dxftoosmag_names_switch_and_renames_survive_export(sample, tmp_path):
     ends = [(p.tags["osmAG:from"], p.tags["osmAG:to"]) for p in passages2]
     assert any("Director" in e for e in ends) and not any(old in e for e in ends)
     assert len(passages2) == len(passages) and not report["dangling_refs"]
+    # every edit is written as it is, in both variants; in fix-id the passages follow the edited areas by id
+    fixid = tmp_path / "renamed-fixid.osm"
+    run_alg("exportosmag", {"AREAS": str(tmp_path / "areas.gpkg"), "PASSAGES": str(tmp_path / "passages.gpkg"),
+                            "VARIANT": 1, "OUTPUT": str(fixid)})
+    for path, variant in ((again, "semantic"), (fixid, "fix-id")):
+        got, gp, _, rep = osmag.read_osmag(str(path))
+        assert rep["variant"] == variant and not rep["dangling_refs"] and len(gp) == len(passages)
+        by = {a.name: a for a in got}
+        stair, hall = by["Stair B"], by["Hall"]
+        assert (stair.type, stair.tags["room"], stair.tags["ref"]) == ("stairs", "stairs", "S-2")
+        assert (hall.tags["indoor"], hall.tags["ref"]) == ("area", "H0")
+        name_of = {a.id: a.name for a in got}
+        assert {name_of[q.from_id] for q in gp} | {name_of[q.to_id] for q in gp} >= {"Director", "Stair B"}
 
 
 @pytest.mark.qgis_process
