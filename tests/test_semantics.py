@@ -465,9 +465,10 @@ DWG_VERTICAL = {
 # 8 m of the callout the import keeps 12 wall, 8 window and 2 column entities and no stair-kind one, and the only
 # area is a 12.6 m² room 7.3 m away): the code names a stair of another floor's detail
 # SIST-F5 (2026-12-02, session 6): 13 of 13 plan codes (E1-ST-01..03, -05..09, E2-ST-01, -02, E1-P1, E2-P1, -P2);
-# the nine codes of DWG_VERTICAL_ELSEWHERE are another floor's. E1-P1 is counted but names the wrong shaft: see
-# README / readme-H9 (two shafts side by side, E1-S1 货梯 and E1-P1 无障碍货梯; E1-P1's shaft opens through its
-# door gap onto the lift lobby and is merged into it, and its code goes to the neighbour's shaft).
+# the nine codes of DWG_VERTICAL_ELSEWHERE are another floor's. E1-P1 (无障碍货梯) stands beside E1-S1 (货梯): its
+# empty shaft (a wheelchair sign in it) opens through its door gap onto the lift lobby and was merged into it, the
+# lobby named 无障碍货梯, and the code named E1-S1's shaft; since 2026-12-02 a lift code written inside an empty
+# walled box names that box (anchors.coded_lift_recesses): its own 5.5 m² elevator area, 3 -> 4 lifts on F5.
 # A-A3-10-05 (4F): 9 of 9. A-A3-10-04 (3F): 8 of 9; A3-ST-08 (tag at 11958.6, -6417.6) is a straight run of 17
 # treads (A3-RV-3F$0$A-STRS, 9.1 m² box) that continues along the curved stringers of a free-standing flight in
 # the 973 m² atrium gallery 中庭回廊: no wall around it; anchors.carve_anchors leaves such a run in its hall on
@@ -530,6 +531,10 @@ def test_dwg_stairs_and_lifts_become_typed_areas(shared_data, sheet, floor_cache
     assert plan or not (want_st | want_el), "no stair or lift of the sheet named an area"
     for code in plan:
         assert typed[code] <= ({"stairs"} if code in want_st else {"elevator"}), (code, typed[code])
+    if sheet == "sist-original/SIST-F5.dwg":  # two shafts side by side, each named by its own code and name
+        refs = {a.ref: a for a in floor.refined.areas if a.type == "elevator"}
+        assert {"E1-P1", "E1-S1"} <= set(refs) and refs["E1-P1"] is not refs["E1-S1"], sorted(refs)
+        assert refs["E1-P1"].name.startswith("无障碍货梯") and refs["E1-S1"].name.startswith("货梯")
     # measured: on SIST-F4 16 of the 18 codes name a stair/lift area (9 before stairs and lifts swallowed by a
     # larger area were carved out, anchors.carve_anchors; 13 before a core typed elevator by its break-line
     # cross became a stair (E1-ST-02, -05), callouts just outside the plan were kept (E1-ST-01) and named
