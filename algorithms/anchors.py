@@ -900,6 +900,45 @@ def _axes(poly: Polygon) -> Tuple[np.ndarray, np.ndarray]:
     return np.array([math.cos(t), math.sin(t)]), np.array([-math.sin(t), math.cos(t)])
 
 
+def _recess_walls(hpoly: Polygon, near=None):
+    """The border a recess search casts its rays against: the area's outline and its holes, but not the holes
+    smaller than a lift's least footprint (``LIFT_SIDE[0]`` squared): a symbol drawn inside an empty shaft (a
+    wheelchair sign, a lift glyph on no lift layer) is an island of the area, no wall of the shaft."""
+    rings = [hpoly.exterior] + [r for r in hpoly.interiors if Polygon(r).area >= LIFT_SIDE[0] ** 2]
+    border = unary_union([LineString(r.coords) for r in rings])
+    return border if near is None else border.intersection(near)
+
+
+def _recess_at_code(areas: Sequence[Area], c) -> Optional[Tuple[Area, Polygon]]:
+    """The lift-sized walled box (``_recess_box``) of a larger area that the code's own copy at ``c`` is
+    written in, or None: a code written inside the box names that box whatever lift stands beside it."""
+    hosts = [a for a in areas if a.polygon is not None and not a.polygon.is_empty and a.type not in ANCHOR_TYPES
+             and a.type != "structure" and a.polygon.area >= RECESS_HOST_FACTOR * LIFT_SIDE[0] ** 2
+             and a.polygon.contains(c)]
+    import shapely
+    from shapely import points as _points
+
+    for host in hosts:
+        hpoly = host.polygon
+        u, v = _axes(hpoly)
+        border = _recess_walls(hpoly, c.buffer(2.5 * LIFT_SIDE[1]))
+        # seeds around the code (nearest first) until a box holding the code is found: a seed just anywhere in
+        # a shaft may look out through its gap to a wall across a narrow lobby
+        x0, y0, x1, y1 = c.buffer(LIFT_SIDE[1]).bounds
+        gx, gy = np.meshgrid(np.arange(x0, x1, RECESS_STEP), np.arange(y0, y1, RECESS_STEP))
+        pts = np.column_stack([gx.ravel(), gy.ravel()])
+        pts = pts[shapely.contains(hpoly.buffer(-0.1), _points(pts))]
+        pts = pts[np.argsort(np.hypot(pts[:, 0] - c.x, pts[:, 1] - c.y))]
+        for q in pts:
+            bx = _recess_box(hpoly, q, u, v, border)
+            if bx is None or not bx.contains(c):
+                continue
+            bx = bx.intersection(hpoly)
+            if bx.geom_type == "Polygon" and bx.area <= hpoly.area / RECESS_HOST_FACTOR:
+                return host, bx
+    return None
+
+
 def coded_lift_recesses(areas: List[Area], passages: List[Passage], texts) -> Dict[str, object]:
     """Lift shafts drawn as an empty box of walls (no car cross, nothing on a lift layer) that open without a
     door onto the area in front and were merged into it, found from the lift's code. A lift code
@@ -923,7 +962,7 @@ def coded_lift_recesses(areas: List[Area], passages: List[Passage], texts) -> Di
     codes = [l for l in labs if l.role == "number"
              and (semantics.type_of_name("", l.text) or {}).get("type") == "elevator"]
     reach = semantics.CALLOUT_REACH
-    done = set()
+    done, carved_codes = set(), set()
     live = [a for a in areas if a.polygon is not None and not a.polygon.is_empty and a.type != "structure"]
     lifts = [a.polygon for a in live if a.type == "elevator"]
     # a small area holding a lift's name ('客梯', 'lift') is a lift too (stage 5 types it so)
@@ -944,6 +983,15 @@ def coded_lift_recesses(areas: List[Area], passages: List[Passage], texts) -> Di
     for lab in codes:
         c = Point(lab.x, lab.y)
         if semantics._key(lab.text) in done:
+            # two shafts side by side (SIST-F5's E1-S1 and E1-P1): the neighbour's lift is within reach, but a
+            # copy of the code written inside an empty box of a larger area names that box
+            at = _recess_at_code(areas, c) if semantics._key(lab.text) not in carved_codes else None
+            if at is not None:
+                st = carve_anchors(areas, passages, [], symbols=[("elevator", at[1].buffer(-0.05, join_style=2), (), False)])
+                if st["carved"]:
+                    out["carved"].extend(st["carved"])
+                    out["pieces"].update(st["pieces"])
+                    carved_codes.add(semantics._key(lab.text))
             continue
         live = [a for a in areas if a.polygon is not None and not a.polygon.is_empty and a.type != "structure"]
         disk = c.buffer(reach)
@@ -961,7 +1009,7 @@ def coded_lift_recesses(areas: List[Area], passages: List[Passage], texts) -> Di
             inside = shapely.contains(hpoly.buffer(-0.1), _points(pts)) & shapely.contains(disk, _points(pts))
             pts = pts[inside]
             # rays reach LIFT_SIDE (the march twice that) beyond a seed: the border near the code is enough
-            border = hpoly.boundary.intersection(disk.buffer(2.5 * LIFT_SIDE[1]))
+            border = _recess_walls(hpoly, disk.buffer(2.5 * LIFT_SIDE[1]))
             # a seed in a recess has walls within a lift's side on both sides across one axis and behind it
             dist = {k: _wall_distances(border, pts, sgn * ax, LIFT_SIDE[1])
                     for k, (sgn, ax) in enumerate(((1.0, u), (-1.0, u), (1.0, v), (-1.0, v)))}
@@ -996,6 +1044,7 @@ def coded_lift_recesses(areas: List[Area], passages: List[Passage], texts) -> Di
             out["carved"].extend(st["carved"])
             out["pieces"].update(st["pieces"])
             done.add(semantics._key(lab.text))
+            carved_codes.add(semantics._key(lab.text))
     return out
 
 

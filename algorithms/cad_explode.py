@@ -71,8 +71,9 @@ def _arc_points(cx, cy, r, a0, a1, tol, full=False):
     n = _n_segments(r, sweep, tol)
     t = a0 + np.linspace(0.0, sweep, n + 1)
     pts = np.empty((len(t), 2))  # as np.column_stack, without its overhead (thousands of arcs)
-    pts[:, 0] = cx + r * np.cos(t)
-    pts[:, 1] = cy + r * np.sin(t)
+    with np.errstate(invalid="ignore", over="ignore"):  # inf/NaN radius of a damaged file: dropped with a warning later
+        pts[:, 0] = cx + r * np.cos(t)
+        pts[:, 1] = cy + r * np.sin(t)
     if full:
         pts = pts[:-1]
     return pts

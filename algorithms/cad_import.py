@@ -280,6 +280,33 @@ def _unusable(pieces: _Pieces, idx: Sequence[int], scale: float) -> np.ndarray:
     return np.bincount(owner[bad], minlength=len(coords)) > 0
 
 
+# No part of a building, nor of a campus site plan, is one entity longer than this: a line of 10^9 m is a
+# damaged coordinate or a stray (it would make plan finding sample it metre by metre, gigabytes)
+MAX_ENTITY_M = 20_000.0
+
+
+def _longer_than_any_building(pieces: _Pieces, idx: Sequence[int], scale: float) -> np.ndarray:
+    """Per piece of ``idx``: its extent (x or y, finite vertices only, once scaled) exceeds MAX_ENTITY_M."""
+    coords = [pieces.coords[i] for i in idx]
+    if not coords or not all(c.ndim == 2 and c.shape[1] == 2 and len(c) for c in coords):
+        return np.array([c.ndim == 2 and c.shape[1] == 2 and len(c) > 0 and _extent(c) * abs(scale) > MAX_ENTITY_M
+                         for c in coords], dtype=bool)
+    lens = np.fromiter((len(c) for c in coords), dtype=np.int64, count=len(coords))
+    starts = np.concatenate(([0], np.cumsum(lens)[:-1]))
+    allc = np.concatenate(coords)
+    with np.errstate(invalid="ignore", over="ignore"):
+        allc = np.where(np.isfinite(allc), allc, np.nan)
+        lo = np.fmin.reduceat(allc, starts, axis=0)
+        hi = np.fmax.reduceat(allc, starts, axis=0)
+        ext = np.nan_to_num(hi - lo, nan=0.0, posinf=0.0).max(axis=1)
+    return ext * abs(scale) > MAX_ENTITY_M
+
+
+def _extent(c: np.ndarray) -> float:
+    v = c[np.isfinite(c).all(axis=1)]
+    return float(np.ptp(v, axis=0).max()) if len(v) else 0.0
+
+
 def import_dxf(path: str, rules=None, layers: Optional[Sequence[str]] = None, units: Optional[str] = None,
                include_doors: bool = False, fallback_walls: bool = True, drop_door_swings: bool = True,
                plan=None, classify: bool = True, progress=None) -> CadDrawing:
@@ -414,12 +441,17 @@ def _import(path, rules, layers, units, include_doors, fallback_walls, drop_door
     dashed_was: Dict[int, str] = {}  # dashed lines on wall layers (projections) -> their layer's kind
     idx = [i for i in idx if len(p.coords[i]) >= 2 or p.filled[i]]
     bad = _unusable(p, idx, scale)
+    too_long = _longer_than_any_building(p, idx, scale)
+    overlong = 0
     inner: Dict[str, str] = {}  # block chain -> its innermost block (a chain repeats for every piece)
-    for i, broken in zip(idx, bad):
+    for i, broken, long_ in zip(idx, bad, too_long):
         c = p.coords[i]
         if broken:
             # NaN/inf, or a coordinate beyond any building (1e15 m) that overflows downstream
             nonfinite += 1
+            continue
+        if long_:
+            overlong += 1
             continue
         chain = p.block[i]
         block = inner.get(chain)
@@ -432,6 +464,11 @@ def _import(path, rules, layers, units, include_doors, fallback_walls, drop_door
         if is_projection_line(geoms[-1], p.dashed[i] if i < len(p.dashed) else False):
             dashed_was[len(geoms) - 1] = geoms[-1].kind
             geoms[-1].kind = "boundary"  # dashed on a wall layer: a projection, never a wall (swings still found)
+    if overlong:
+        msg = (f"left out {overlong} entities longer than {MAX_ENTITY_M / 1000:.0f} km (no part of a building is: a "
+               "stray or damaged entity); check the drawing's units and AUDIT it in CAD")
+        warnings.append(msg)
+        progress.warning(msg)
     if nonfinite:
         msg = (f"left out {nonfinite} entities with coordinates that are not finite numbers (NaN or infinite, "
                "a damaged file or a broken block scale); check the drawing with AUDIT in CAD")

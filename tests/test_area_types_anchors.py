@@ -364,6 +364,30 @@ def test_no_lift_recess_without_code_with_a_lift_in_reach_or_with_a_full_width_n
         assert len(areas) == 1 + len(extra) and not passages and host.polygon.area == pytest.approx(before)
 
 
+def test_a_lift_code_written_inside_an_empty_box_names_it_beside_another_lift():
+    """SIST-F5's E1-P1 (无障碍货梯) beside E1-S1 (货梯): two shafts side by side; the neighbour is a lift area
+    already, within CALLOUT_REACH of the code, and this shaft, an empty box of walls with a wheelchair sign
+    drawn in it (an island of the area), opens through its door gap onto the lobby and is merged into it. A
+    copy of the code written inside the box names the box: carved as an elevator area; the sign is no wall.
+    Written in the lobby instead, or in a full-width niche, the code leaves the areas as they are."""
+    for where, stubs, carved in (((1.6, 1.9), True, True), ((-3.0, 4.0), True, False), ((1.6, 1.9), False, False)):
+        host = _shaft_and_corridor(stubs)
+        host.polygon = host.polygon.difference(box(1.3, 0.8, 1.9, 1.4))  # the sign: a 0.36 m² island
+        neighbour = Area(id=2, polygon=box(-3.4, 0.0, -0.2, 2.5), type="elevator", name="货梯")
+        areas, passages = [host, neighbour], []
+        st = anchors.carve_anchors(areas, passages, [], texts=[_code("E1-P1", *where), _code("货梯", -1.8, 1.2)])
+        lift = [a for a in areas if a.type == "elevator" and a.id != 2]
+        if not carved:
+            assert not lift and not passages, (where, stubs)
+            continue
+        assert len(lift) == 1 and st.get("recesses") == [lift[0].id]
+        chord = [p for p in passages if {p.from_id, p.to_id} == {lift[0].id, 1}]
+        assert len(chord) == 1 and chord[0].line.length == pytest.approx(1.4, abs=0.1)
+        assert lift[0].polygon.area == pytest.approx(3.2 * 2.5, rel=0.1) and lift[0].polygon.bounds[3] <= 2.7 + 1e-6
+        assert host.type == "corridor" and host.polygon.area == pytest.approx(13 * 2.3 + 0.28, rel=0.05)
+        assert neighbour.polygon.area == pytest.approx(3.2 * 2.5)
+
+
 @pytest.mark.qgis_process
 def test_dxftoosmag_headless_carves_an_empty_lift_shaft_named_by_its_code(tmp_path):
     """``cad2osmag:dxftoosmag`` through qgis_process on a small drawing: a corridor with an empty 3.2 x 2.5 m

@@ -242,6 +242,11 @@ def _add_stray_100km(doc, msp):
     msp.add_line((1e8, 1e8), (1e8 + 3000, 1e8), dxfattribs={"layer": "A-WALL"})  # mm: 141 km away
 
 
+def _add_stray_line_1e9m(doc, msp):
+    msp.add_line((0, 0), (1e12, 0), dxfattribs={"layer": "A-WALL"})  # mm: one line 10^9 m long
+    msp.add_line((-1e12, 5e11), (-1e12 + 3000, 5e11), dxfattribs={"layer": "A-WALL"})  # a short one 10^9 m away
+
+
 def _add_nan_and_huge(doc, msp):
     nan, inf = float("nan"), float("inf")
     msp.add_line((nan, 0), (inf, 5), dxfattribs={"layer": "A-WALL"})
@@ -268,8 +273,10 @@ def _add_degenerate(doc, msp):
     h2.paths.add_polyline_path([(0, 0), (0, 0), (0, 0)])
 
 
-@pytest.mark.parametrize("mutate", [_add_self_inserting, _add_stray_100km, _add_nan_and_huge, _add_degenerate],
-                         ids=["self-inserting blocks", "100 km stray", "NaN-inf-huge", "zero-length, self-overlapping"])
+@pytest.mark.parametrize("mutate", [_add_self_inserting, _add_stray_100km, _add_stray_line_1e9m, _add_nan_and_huge,
+                                    _add_degenerate],
+                         ids=["self-inserting blocks", "100 km stray", "1e9 m stray line", "NaN-inf-huge",
+                              "zero-length, self-overlapping"])
 def test_hostile_additions_leave_the_floor_unchanged(mutate, reference, tmp_path):
     doc = _doc()
     mutate(doc, doc.modelspace())
@@ -278,6 +285,14 @@ def test_hostile_additions_leave_the_floor_unchanged(mutate, reference, tmp_path
     assert (r["areas"], r["passages"], r["raster_shape"]) == (reference["areas"], reference["passages"],
                                                                reference["raster_shape"])
     assert cpu < 20
+
+
+def test_an_entity_longer_than_any_building_is_left_out_and_reported(tmp_path):
+    doc = _doc()
+    _add_stray_line_1e9m(doc, doc.modelspace())
+    d = cad_import.import_dxf(_save(doc, tmp_path))
+    assert any("left out 1 entities longer than 20 km" in w for w in d.warnings), d.warnings
+    assert max(float(abs(g.coords).max()) for g in d.geometries) < 1e8
 
 
 def test_self_inserting_blocks_are_reported(tmp_path):
