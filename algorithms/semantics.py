@@ -1622,8 +1622,8 @@ def _split_at_doors(areas: List[Area], by_id: Dict[int, Area], best_by_area: Dic
                 by_id[b.id] = b
                 best_by_area[b.id] = [r for r in recs if r.area_id == b.id]
                 queue.append(b.id)
-            progress.info(f"area {aid}: a named part opening through a door as wide as itself "
-                          f"({', '.join(sorted(keys[0] | keys[1]))}) split off at the door into areas "
+            progress.info(f"area {aid}: split at a door drawn across it between its named part and the rest "
+                          f"({' | '.join(', '.join(sorted(k)) or '-' for k in keys)}) into areas "
                           f"{[b.id for b in pieces]}")
             break
 

@@ -5,6 +5,11 @@ no narrowing at the mouth, so segmentation keeps the closet in the hall, corrido
 closet's label names that space. ``semantics._split_at_doors``: a door hint (the import's doorways) whose jambs
 lie on the area's outline and whose line cuts off a dead-end part holding a room name (none or another name in
 the rest) splits the area at the door; the part is its own area, joined by a passage on the door line.
+
+Second kind, same file: a lift car block drawn on a stair layer (A-A3-10-04's lift A3-T3: block ``kt1``, 客梯 1, on
+layer ``A3-RI-3F$0$an-stairs``) typed its shaft stairs; ``area_types._lift_cars_on_stair_layers`` makes a
+lift-sized stairs area with no run of treads whose stair lines are mostly a lift-named block (or that holds a
+lift cross) an elevator.
 Each test builds the small drawing the rule is about."""
 import ezdxf
 import pytest
@@ -139,3 +144,38 @@ def test_pipeline_splits_the_closet_at_its_drawn_door(tmp_path):
     assert len(closet) == 1 and len(hall) == 1
     assert 4.5 < closet[0].polygon.area < 7.0 and hall[0].polygon.area > 60
     assert any({p.from_id, p.to_id} == {closet[0].id, hall[0].id} for p in fl.refined.passages)
+
+
+# ------------------------------------------------------------------ a lift car block on a stair layer
+import numpy as np  # noqa: E402
+
+from algorithms.area_types import classify_vertical_areas  # noqa: E402
+from algorithms.model import CadGeometry  # noqa: E402
+
+SHAFT = box(0, 0, 2.2, 2.6)
+
+
+def _car(block="A3-RI-3F$0$kt1", layer="A3-RI-3F$0$an-stairs"):
+    """A lift car as its block draws it: the car (1.6 x 1.4 m), the counterweight and the doors' sills."""
+    g = []
+    for x0, y0, x1, y1 in ((0.3, 0.3, 1.9, 1.7), (0.3, 1.9, 1.9, 2.3), (0.5, 0.1, 1.7, 0.25)):
+        c = np.array([(x0, y0), (x1, y0), (x1, y1), (x0, y1)], float)
+        g.append(CadGeometry(layer=layer, kind="stair", coords=c, closed=True, entity="LWPOLYLINE", block=block))
+    return g
+
+
+def _treads(n=8):
+    return [CadGeometry(layer="A-STRS", kind="stair", coords=np.array([(0.2, 0.2 + 0.28 * k), (2.0, 0.2 + 0.28 * k)]),
+                        entity="LINE") for k in range(n)]
+
+
+def test_a_lift_car_block_on_a_stair_layer_types_its_shaft_elevator():
+    a = Area(id=1, polygon=SHAFT)
+    got = classify_vertical_areas([a], _car(), shapes=False)
+    assert got == {1: "elevator"} and a.type == "elevator"
+
+
+def test_a_stair_layer_shaft_without_a_lift_block_or_with_treads_stays_stairs():
+    for geoms in (_car(block="A3-RI-3F$0$stair-1"), _car(block=""), _car() + _treads()):
+        a = Area(id=1, polygon=SHAFT)
+        assert classify_vertical_areas([a], geoms, shapes=False) == {1: "stairs"}, geoms[0].block
