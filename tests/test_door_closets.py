@@ -179,3 +179,18 @@ def test_a_stair_layer_shaft_without_a_lift_block_or_with_treads_stays_stairs():
     for geoms in (_car(block="A3-RI-3F$0$stair-1"), _car(block=""), _car() + _treads()):
         a = Area(id=1, polygon=SHAFT)
         assert classify_vertical_areas([a], geoms, shapes=False) == {1: "stairs"}, geoms[0].block
+
+
+def test_qgis_process_dxftoosmag_gives_the_closet_its_own_area(tmp_path):
+    """Headless (qgis_process): the osmAG file holds the closet 弱电间 as an area of its own, joined to the hall
+    by a passage."""
+    from algorithms import osmag
+
+    from .qgis_process import run_alg
+
+    out = tmp_path / "closet.osm"
+    run_alg("dxftoosmag", {"INPUT": _closet_dxf(tmp_path), "OUTPUT": str(out), "ANCHOR": "121.5906,31.1790 [EPSG:4326]"})
+    areas, passages, _, _ = osmag.read_osmag(str(out))
+    names = {a.name: a for a in areas}
+    assert "弱电间" in names and "大厅" in names
+    assert any({p.from_id, p.to_id} == {names["弱电间"].id, names["大厅"].id} for p in passages)
