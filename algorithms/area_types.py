@@ -20,6 +20,7 @@ becomes ``elevator`` (when it is not much larger than the cross's box).
 from __future__ import annotations
 
 import math
+import re
 from typing import Dict, List, Sequence
 
 import numpy as np
@@ -123,9 +124,54 @@ def classify_vertical_areas(areas: Sequence[Area], geometries: Sequence[CadGeome
                         continue  # a room or gallery dense in railings of that layer, not a shaft
                 a.type = typ
                 changed[a.id] = typ
+    if any(t == "stairs" for t in changed.values()):
+        _lift_cars_on_stair_layers(areas, geometries, changed, symbols)
     if shapes:
         changed.update(classify_by_symbol_shapes(areas, geometries, symbols=symbols))
     return changed
+
+
+# a block named as a lift car: 电梯 / 客梯 (passenger) / 货梯 (goods), their pinyin initials (kt1, dt2, ht), lift, elevator
+LIFT_BLOCK = re.compile(r"(lift|elev|aufzug|ascen|电梯|客梯|货梯|^(kt|dt|ht)[-_ ]?\d*[a-z]?$)", re.IGNORECASE)
+LIFT_BLOCK_SHARE = 0.5  # of the stair-layer lines inside the area, at least this share (length) in lift-named blocks
+
+
+def _lift_cars_on_stair_layers(areas: Sequence[Area], geometries: Sequence[CadGeometry], changed: Dict[int, str],
+                               symbols: "Symbols" = None) -> None:
+    """A lift car drawn on a stair layer (A-A3-10-04: lift A3-T3's car block ``kt1``, 客梯 1, sits on layer
+    ``...$an-stairs``; on the floor above the same block is on ``A-EVTR``) made its shaft dense in stair lines:
+    an area typed stairs here that holds no run of treads, is lift-sized (``MAX_LIFT_AREA``, compact) and whose
+    stair-layer lines are mostly (``LIFT_BLOCK_SHARE``) a block named as a lift (``LIFT_BLOCK``), or that holds
+    a lift cross, is an elevator. The mirror of ``anchors.retype_break_line_lifts``. ``changed`` in place."""
+    cand = [a for a in areas if changed.get(a.id) == "stairs" and a.type == "stairs"
+            and 0 < a.polygon.area <= MAX_LIFT_AREA and _elongation(a.polygon) <= MAX_LIFT_ELONGATION]
+    if not cand:
+        return
+    if symbols is None or not symbols.same(geometries):
+        symbols = Symbols(geometries)
+    runs = [r for r, _ in symbols.runs]
+    # as ``_lines`` keeps them (NaN ring separators dropped, at least two points), so indices match
+    stair = [g for g in geometries if g.kind == "stair" and len(g.coords) >= 2
+             and int((~(g.coords != g.coords).any(axis=1)).sum()) >= 2]
+    lines = _lines(stair, "stair")
+    if len(lines) != len(stair):
+        return
+    lifty = np.array([bool(LIFT_BLOCK.search((g.block or "").rsplit("$", 1)[-1].strip())) for g in stair])
+    tree = STRtree(lines)
+    for a in cand:
+        if _holds_run(a.polygon, runs):
+            continue
+        cross = any(a.polygon.contains(b.centroid) and a.polygon.area <= 4.0 * b.area for b in symbols.crosses)
+        if not cross:
+            hits = tree.query(a.polygon, predicate="intersects")
+            if not len(hits) or not lifty[hits].any():
+                continue
+            total = MultiLineString([lines[i] for i in hits]).intersection(a.polygon).length
+            car = MultiLineString([lines[i] for i in hits if lifty[i]]).intersection(a.polygon).length
+            if total <= 0 or car < LIFT_BLOCK_SHARE * total:
+                continue
+        a.type = "elevator"
+        changed[a.id] = "elevator"
 
 
 def _elongation(poly) -> float:

@@ -184,7 +184,7 @@ def process_floor(dxf_path: str, *, rules=None, layers=None, units=None, include
         names_report = timed("names", 95, 98, semantics.assign_names, refined.areas, drawing.texts, level,
                              rules=name_rules, grid=grid, passages=refined.passages,
                              hidden_texts=getattr(drawing, "hidden_texts", None), classified=classified,
-                             partitions=getattr(drawing, "partitions", None))
+                             partitions=getattr(drawing, "partitions", None), door_hints=drawing.doors)
         progress.info(names_report.summary())
     closed, share = _closed_spaces(refined, drawing, name_rules, rstats, progress, classified)
     t0, c0 = time.perf_counter(), time.process_time()

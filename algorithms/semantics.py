@@ -803,7 +803,7 @@ def assign_names(areas: List[Area], texts: Sequence[CadText], level="1", rules=N
                  grid=None, labels=None, passages: Optional[List[Passage]] = None, split: bool = True,
                  rho_max: float = RHO_MAX, d_max: float = D_MAX, inside_first: bool = True,
                  hidden_texts: Optional[Sequence[CadText]] = None,
-                 classified: Optional[List[Label]] = None, partitions=None) -> NamesReport:
+                 classified: Optional[List[Label]] = None, partitions=None, door_hints=None) -> NamesReport:
     """Name, number and type ``areas`` (in place) from ``texts``; see the module doc. ``grid`` gives
     the resolution of the split raster, ``labels`` (the label raster on ``grid``) is updated for split
     areas, ``passages`` get the split cuts and follow the pieces. ``hidden_texts``: texts on frozen / off
@@ -812,7 +812,9 @@ def assign_names(areas: List[Area], texts: Sequence[CadText], level="1", rules=N
     never split an area nor compete with a visible name. ``classified``: ``classify_labels(texts, rules)``
     when the caller has it (a drawing's texts are classified once). ``partitions``: folding partitions
     (``CadDrawing.partitions``: lines, metres): an area whose names lie on both sides of one is split along
-    it first (``_split_at_partition``). Never raises on odd texts."""
+    it first (``_split_at_partition``). ``door_hints``: the import's doorways (``CadDrawing.doors``): a named
+    part of an area behind a door as wide as itself is split off at the door (``_split_at_doors``). Never
+    raises on odd texts."""
     progress = ensure(progress)
     rules = _resolve(rules)
     report = NamesReport()
@@ -834,6 +836,8 @@ def assign_names(areas: List[Area], texts: Sequence[CadText], level="1", rules=N
     _demote_shafts_and_outdoor(best_by_area, records, rules)
     by_id = {a.id: a for a in areas}
     _demote_shafts_in_anchors(best_by_area, by_id, rules)
+    if split and door_hints:  # a named closet as wide as its door: split off at the door first
+        _split_at_doors(areas, by_id, best_by_area, door_hints, passages, labels, grid, report, progress)
     # ---- split areas holding several different names
     if split:
         # a piece still holding two names is split again (a hall with a lift lobby at one end and a round
@@ -1549,6 +1553,150 @@ def _split_at_partition(a: Area, recs: List[TextRecord], names: Dict[str, TextRe
             continue
         return _finish(a, list(zip(halves, keys)), areas, passages, labels, grid, recs, 0.0)
     return None
+
+
+DOOR_SPLIT_WIDTHS = (0.6, 2.4)  # m: door hints of this width (one leaf to a double door) may split an area
+DOOR_SPLIT_REACH = 0.3  # m: a hint's jambs lie at most this far from the area's outline (the mouth's sides)
+DOOR_SPLIT_MIN_PIECE = 0.8  # m²: each piece of a door split is at least this large
+
+
+def _split_at_doors(areas: List[Area], by_id: Dict[int, Area], best_by_area: Dict[int, List[TextRecord]],
+                    door_hints, passages: Optional[List[Passage]], labels, grid, report: "NamesReport",
+                    progress) -> None:
+    """Split off, along its door line, a named dead-end part of an area that opens through a door as wide as
+    itself (a duct, shaft or storage closet 强电间 / 弱电间 / 管井: no narrowing at its mouth, so segmentation
+    kept it in the space outside). A door hint (the import's doorways: door blocks, swings, door codes) cuts
+    an area in two when its jambs lie on the area's outline (``DOOR_SPLIT_REACH``) and the hint's line, up to
+    the outline, splits it into exactly two pieces of at least ``DOOR_SPLIT_MIN_PIECE``; the split is kept
+    when one piece holds a room name written inside it and the other holds none of that name (none, or
+    another name) and, when the other holds no name, the named piece is the smaller one and no other passage
+    of the area ends on it (a dead end). The pieces get a passage at the door (``_finish``); in place."""
+    hints = []
+    for h in door_hints or ():
+        try:
+            p, q = np.array((h.x0, h.y0), float), np.array((h.x1, h.y1), float)
+        except (TypeError, ValueError, AttributeError):
+            continue
+        w = float(np.hypot(*(q - p)))
+        if np.isfinite(w) and DOOR_SPLIT_WIDTHS[0] <= w <= DOOR_SPLIT_WIDTHS[1]:
+            hints.append((p, q, (q - p) / w))
+    if not hints:
+        return
+    mids = [Point(*((p + q) / 2.0)) for p, q, _ in hints]
+    tree = STRtree(mids)
+    queue = sorted(aid for aid, recs in best_by_area.items() if any(r.role == "name" for r in recs))
+    tried = set()
+    while queue:
+        aid = queue.pop(0)
+        a = by_id.get(aid)
+        recs = best_by_area.get(aid, [])
+        if a is None or a.type in ("stairs", "elevator", "structure") or a.polygon is None \
+                or a.polygon.geom_type != "Polygon":
+            continue
+        for j in sorted(int(k) for k in tree.query(a.polygon)):
+            if (aid, j) in tried:
+                continue
+            tried.add((aid, j))
+            try:
+                halves = _door_halves(a.polygon, *hints[j], mids[j])
+            except Exception:  # an invalid outline must not stop the naming
+                halves = None
+            if halves is None:
+                continue
+            keys, moves = _door_keys(recs, halves, hints[j])
+            if not (keys[0] or keys[1]) or keys[0] & keys[1]:
+                continue
+            if not (keys[0] and keys[1]):
+                k = 0 if keys[0] else 1
+                part, rest = halves[k], halves[1 - k]
+                if part.area >= rest.area or _other_passage_on(part, rest, aid, passages, mids[j]):
+                    continue
+            for r, xy in moves:  # a label drawn twice is where its copy inside a piece is (_merge_copies)
+                r.alts = [q for q in r.alts if q != xy] + [(r.x, r.y)]
+                r.x, r.y = xy
+            pieces = _finish(a, list(zip(halves, keys)), areas, passages, labels, grid, recs, 0.0)
+            report.splits.append((aid, [b.id for b in pieces]))
+            report.new_passages.extend(pieces[0].tags.pop("_new_passages", []))
+            best_by_area.pop(aid, None)
+            for b in pieces:
+                by_id[b.id] = b
+                best_by_area[b.id] = [r for r in recs if r.area_id == b.id]
+                queue.append(b.id)
+            progress.info(f"area {aid}: split at a door drawn across it between its named part and the rest "
+                          f"({' | '.join(', '.join(sorted(k)) or '-' for k in keys)}) into areas "
+                          f"{[b.id for b in pieces]}")
+            break
+
+
+def _door_keys(recs: Sequence[TextRecord], halves, hint):
+    """The room names (keys) written inside each of the two ``halves``, and the labels to move to a copy.
+    A label is where any of its copies is (``TextRecord.alts``); a copy written across the door line (within
+    DOOR_SPLIT_REACH of it) counts for no side when another copy lies clear of it: the closet's label is
+    often written twice, once straddling its door. Returns ([keys0, keys1], [(record, (x, y)) to move])."""
+    p, q, _u = hint
+    door = LineString([tuple(p), tuple(q)])
+    keys: List[set] = [set(), set()]
+    moves = []
+    by_key: Dict[str, List[TextRecord]] = {}
+    for r in recs:  # every label of a name (copies merged or not) counts for the name
+        if r.role == "name" and r.match != "nearby":
+            by_key.setdefault(_key(r.text), []).append(r)
+    competing = {_key(r.text) for r in _competing(recs)}
+    for key, group in by_key.items():
+        if key not in competing:
+            continue
+        pts = [(r.x, r.y) for r in group] + [tuple(c) for r in group for c in r.alts
+                                              if math.isfinite(c[0]) and math.isfinite(c[1])]
+        clear = [c for c in pts if door.distance(Point(*c)) > DOOR_SPLIT_REACH] or pts
+        where = {}
+        for c in clear:
+            for k, h in enumerate(halves):
+                if h.buffer(1e-6).contains(Point(*c)):
+                    where.setdefault(k, c)
+                    break
+        for k in where:
+            keys[k].add(key)
+        if len(where) == 1:
+            c = next(iter(where.values()))
+            moves += [(r, c) for r in group if (r.x, r.y) not in clear]
+    return keys, moves
+
+
+def _door_halves(poly, p, q, u, mid):
+    """The two pieces of ``poly`` cut along the door hint p-q (unit direction u), or None: the hint's middle
+    lies inside, the line through it meets the outline within DOOR_SPLIT_REACH of both jambs, and the cut
+    leaves exactly two pieces of at least DOOR_SPLIT_MIN_PIECE."""
+    if not poly.contains(mid):
+        return None
+    e = DOOR_SPLIT_REACH + 0.05
+    long = LineString([tuple(p - u * e), tuple(q + u * e)]).intersection(poly)
+    parts = [g for g in getattr(long, "geoms", [long]) if g.geom_type == "LineString" and g.length > 0]
+    if not parts:
+        return None
+    chord = min(parts, key=lambda g: g.distance(mid))
+    c0, c1 = np.asarray(chord.coords[0]), np.asarray(chord.coords[-1])
+    if float(np.dot(c1 - c0, u)) < 0:
+        c0, c1 = c1, c0
+    if np.hypot(*(c0 - p)) > DOOR_SPLIT_REACH or np.hypot(*(c1 - q)) > DOOR_SPLIT_REACH:
+        return None
+    cut = LineString([tuple(c0 - u * 0.01), tuple(c1 + u * 0.01)])
+    halves = [g for g in shp_split(poly, cut).geoms if g.area > 0]
+    if len(halves) != 2 or min(g.area for g in halves) < DOOR_SPLIT_MIN_PIECE:
+        return None
+    return halves
+
+
+def _other_passage_on(part, rest, aid: int, passages, door_mid) -> bool:
+    """A passage of area ``aid`` other than the door at ``door_mid`` ends on ``part`` (not on ``rest``)."""
+    for ps in passages or ():
+        if aid not in (ps.from_id, ps.to_id) or ps.line is None:
+            continue
+        m = ps.line.interpolate(0.5, normalized=True)
+        if m.distance(door_mid) < 0.5:
+            continue
+        if part.distance(m) < rest.distance(m):
+            return True
+    return False
 
 
 DOOR_OPENING = 1.0  # m: an opening no wider than one door leaf is a doorway (NARROWING_RATIO_DOOR)
