@@ -23,6 +23,9 @@ ANCHOR = (121.5906, 31.1790)  # ShanghaiTech, for the benchmark only (any anchor
 TYPE_COLOURS = {"room": "#8ecae6", "corridor": "#ffd166", "stairs": "#ef476f", "elevator": "#9b5de5",
                 "structure": "#dddddd"}
 OTHER_COLOUR = "#90be6d"
+# areas the floor counts out of its graph (roofs below it, exterior ground, closed shafts): drawn apart, not as rooms
+COUNTED_OUT_TAGS = ("cad2osmag:roof", "cad2osmag:outdoor", "cad2osmag:closed")
+COUNTED_OUT_COLOUR = "#eeeeee"
 
 
 def peak_rss_mb() -> float:
@@ -139,7 +142,8 @@ def render_gallery(floor, path: str, title: str = "", max_px: int = 1100) -> str
             if q.is_empty:
                 continue
             patches.append(MplPolygon(np.asarray(q.exterior.coords), closed=True))
-            colours.append(TYPE_COLOURS.get(a.type, OTHER_COLOUR))
+            out = any(a.tags.get(t) == "yes" for t in COUNTED_OUT_TAGS)
+            colours.append(COUNTED_OUT_COLOUR if out else TYPE_COLOURS.get(a.type, OTHER_COLOUR))
     ax.add_collection(PatchCollection(patches, facecolors=colours, edgecolors="#335", linewidths=0.4, alpha=0.75,
                                       zorder=1))
     segs = [list(p.line.coords)[:2] for p in floor.refined.passages]
@@ -158,6 +162,7 @@ def render_gallery(floor, path: str, title: str = "", max_px: int = 1100) -> str
     fig.suptitle(f"{title}: {len(areas)} areas, {len(floor.refined.passages)} passages, {named} named "
                  f"({cols}x{rows} px at {grid.resolution:g} m/px)", fontsize=8, y=0.995)
     handles = [Patch(color=c, label=t) for t, c in TYPE_COLOURS.items() if t != "structure"]
+    handles.append(Patch(facecolor=COUNTED_OUT_COLOUR, edgecolor="#335", label="roof / outside / closed"))
     handles.append(Patch(color="#d00000", label="passage"))
     ax.legend(handles=handles, loc="lower right", fontsize=6, framealpha=0.8)
     os.makedirs(os.path.dirname(os.path.abspath(path)), exist_ok=True)

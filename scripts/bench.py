@@ -420,7 +420,7 @@ def write_markdown(path: Path, rows, scaling, total, args, pending=0):
                 L.append(f"failed: {b.get('error')}")
     L += ["", "## Gallery", "",
           "One picture per plan (`docs/gallery/`): walls grey (the occupancy raster), areas coloured by type "
-          "(room blue, corridor yellow, stairs red, lift violet), passages red, names that the default font "
+          "(room blue, corridor yellow, stairs red, lift violet; areas counted out of the floor's graph -- roofs below it, exterior ground, closed shafts -- light grey), passages red, names that the default font "
           "can draw (Chinese names are counted in *named* but not drawn).", ""]
     for r in rows:
         if r.get("ok"):
