@@ -1551,19 +1551,24 @@ def _join_cluttered_borders(labels: np.ndarray, cell_label: np.ndarray, lo, hi, 
                 break
             done = {d for d in done if d[0] not in touched and d[1] not in touched}  # their borders grew
         if joined:
-            root = np.array([uf.find(k) for k in range(n)], np.int64)
-            reps = np.unique(root[1:])
-            lut = np.zeros(n, np.int32)
-            lut[reps] = np.arange(1, len(reps) + 1, dtype=np.int32)
-            lut = lut[root]
-            lut[0] = 0
-            newpk = np.zeros(len(reps) + 1)
-            np.maximum.at(newpk, lut, pk)
-            labels = lut[labels]
-            group_peak = newpk
+            labels, group_peak = _relabel_joined(uf, n, labels, pk)
     stats["clutter_borders_joined"] = float(joined)
     stats["clutter_borders_s"] = time.perf_counter() - t
     return labels, group_peak
+
+
+def _relabel_joined(uf, n: int, labels: np.ndarray, pk: np.ndarray):
+    """Labels renumbered 1.. after groups were joined in ``uf`` (0 stays 0), and each new group's peak
+    clearance (the largest of its members')."""
+    root = np.array([uf.find(k) for k in range(n)], np.int64)
+    reps = np.unique(root[1:])
+    lut = np.zeros(n, np.int32)
+    lut[reps] = np.arange(1, len(reps) + 1, dtype=np.int32)
+    lut = lut[root]
+    lut[0] = 0
+    newpk = np.zeros(len(reps) + 1)
+    np.maximum.at(newpk, lut, pk)
+    return lut[labels], newpk
 
 
 # --------------------------------------------------------------------------- wall-line openings
@@ -2268,16 +2273,7 @@ def _join_corridor_loops(labels: np.ndarray, group_peak: np.ndarray, resolution:
             if joined > before:
                 taken.add(c)
         if joined:
-            root = np.array([uf.find(k) for k in range(n)], np.int64)
-            reps = np.unique(root[1:])
-            lut = np.zeros(n, np.int32)
-            lut[reps] = np.arange(1, len(reps) + 1, dtype=np.int32)
-            lut = lut[root]
-            lut[0] = 0
-            newpk = np.zeros(len(reps) + 1)
-            np.maximum.at(newpk, lut, pk)
-            labels = lut[labels]
-            group_peak = newpk
+            labels, group_peak = _relabel_joined(uf, n, labels, pk)
     stats["corridor_loops_joined"] = float(joined)
     stats["corridor_loops_s"] = time.perf_counter() - t
     return labels, group_peak
