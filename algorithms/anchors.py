@@ -349,16 +349,23 @@ def _width_ok(p: Polygon) -> bool:
     return p.area >= MIN_PIECE_AREA and not p.buffer(-MIN_PIECE_WIDTH).is_empty
 
 
-def _passage_lines(a: Polygon, b: Polygon) -> List[LineString]:
-    """Straight stretches (>= MIN_PASSAGE) of the common border of two touching polygons."""
+def _common_border_runs(a: Polygon, b: Polygon, within=None) -> list:
+    """The common border of two touching polygons (within ``within`` if given), merged into runs."""
     common = a.boundary.intersection(b.buffer(1e-4))
+    if within is not None:
+        common = common.intersection(within)
     lines = [g for g in getattr(common, "geoms", [common]) if g.geom_type in ("LineString", "MultiLineString")]
     if not lines:
         return []
     u = unary_union(lines)
     merged = linemerge(list(u.geoms)) if hasattr(u, "geoms") else u
+    return list(getattr(merged, "geoms", [merged]))
+
+
+def _passage_lines(a: Polygon, b: Polygon) -> List[LineString]:
+    """Straight stretches (>= MIN_PASSAGE) of the common border of two touching polygons."""
     out = []
-    for ln in getattr(merged, "geoms", [merged]):
+    for ln in _common_border_runs(a, b):
         if ln.length < MIN_PASSAGE:
             continue
         xy = np.asarray(ln.simplify(0.05).coords)
@@ -671,14 +678,8 @@ DOOR_MIN = 0.3  # m: shorter stretches of a door's border left by a cut are no p
 def _border_chords(a: Polygon, b: Polygon, within) -> List[LineString]:
     """The chords (end to end, >= ``DOOR_MIN``) of the stretches of the common border of ``a`` and ``b`` in
     ``within``: a door's line across a border that zigzags along the raster stays one passage."""
-    common = a.boundary.intersection(b.buffer(1e-4)).intersection(within)
-    lines = [g for g in getattr(common, "geoms", [common]) if g.geom_type in ("LineString", "MultiLineString")]
-    if not lines:
-        return []
-    u = unary_union(lines)
-    merged = linemerge(list(u.geoms)) if hasattr(u, "geoms") else u
     out = []
-    for ln in getattr(merged, "geoms", [merged]):
+    for ln in _common_border_runs(a, b, within):
         if ln.geom_type == "LineString" and ln.length >= DOOR_MIN:
             p, q = ln.coords[0], ln.coords[-1]
             if math.hypot(q[0] - p[0], q[1] - p[1]) >= DOOR_MIN:
