@@ -256,19 +256,21 @@ def _callouts_beside_plan(raw_texts, scale: float, extent, first_id: int) -> Lis
     return out
 
 
-def _unusable(pieces: _Pieces, idx: Sequence[int], scale: float) -> np.ndarray:
-    """Per piece of ``idx``: it holds a NaN/inf coordinate or one beyond 1e15 m once scaled (a filled piece's
-    all-NaN rows only separate its rings), tested on all vertices at once."""
+def _unusable(pieces: _Pieces, idx: Sequence[int], scale: float) -> Tuple[np.ndarray, np.ndarray]:
+    """Per piece of ``idx``, tested on all vertices at once: (broken: it holds a NaN/inf coordinate or one beyond
+    1e15 m once scaled (a filled piece's all-NaN rows only separate its rings); overlong: its extent in x or y,
+    finite vertices only, once scaled, exceeds MAX_ENTITY_M)."""
     coords = [pieces.coords[i] for i in idx]
     if not coords:
-        return np.zeros(0, dtype=bool)
-    if not all(c.ndim == 2 and c.shape[1] == 2 for c in coords):  # unusual arrays: one at a time
-        out = []
+        return np.zeros(0, dtype=bool), np.zeros(0, dtype=bool)
+    if not all(c.ndim == 2 and c.shape[1] == 2 and len(c) for c in coords):  # unusual arrays: one at a time
+        broken, overlong = [], []
         for i, c in zip(idx, coords):
             sep = np.isnan(c).all(axis=1) if pieces.filled[i] else np.zeros(len(c), bool)
             v = c[~sep]
-            out.append(not bool(np.isfinite(v).all()) or abs(scale) * float(np.abs(v).max(initial=0.0)) > 1e15)
-        return np.array(out, dtype=bool)
+            broken.append(not bool(np.isfinite(v).all()) or abs(scale) * float(np.abs(v).max(initial=0.0)) > 1e15)
+            overlong.append(c.ndim == 2 and c.shape[1] == 2 and len(c) > 0 and _extent(c) * abs(scale) > MAX_ENTITY_M)
+        return np.array(broken, dtype=bool), np.array(overlong, dtype=bool)
     lens = np.fromiter((len(c) for c in coords), dtype=np.int64, count=len(coords))
     allc = np.concatenate(coords)
     owner = np.repeat(np.arange(len(coords)), lens)
@@ -277,29 +279,16 @@ def _unusable(pieces: _Pieces, idx: Sequence[int], scale: float) -> np.ndarray:
         sep = filled[owner] & np.isnan(allc).all(axis=1)
         # abs(scale) * max(|v|) > 1e15 of the whole piece <=> of one of its vertices (scaling is monotonic)
         bad = ~sep & (~np.isfinite(allc).all(axis=1) | (abs(scale) * np.abs(allc).max(axis=1) > 1e15))
-    return np.bincount(owner[bad], minlength=len(coords)) > 0
+        starts = np.concatenate(([0], np.cumsum(lens)[:-1]))
+        fin = np.where(np.isfinite(allc), allc, np.nan)
+        ext = np.nan_to_num(np.fmax.reduceat(fin, starts, axis=0) - np.fmin.reduceat(fin, starts, axis=0),
+                            nan=0.0, posinf=0.0).max(axis=1)
+    return np.bincount(owner[bad], minlength=len(coords)) > 0, ext * abs(scale) > MAX_ENTITY_M
 
 
 # No part of a building, nor of a campus site plan, is one entity longer than this: a line of 10^9 m is a
 # damaged coordinate or a stray (it would make plan finding sample it metre by metre, gigabytes)
 MAX_ENTITY_M = 20_000.0
-
-
-def _longer_than_any_building(pieces: _Pieces, idx: Sequence[int], scale: float) -> np.ndarray:
-    """Per piece of ``idx``: its extent (x or y, finite vertices only, once scaled) exceeds MAX_ENTITY_M."""
-    coords = [pieces.coords[i] for i in idx]
-    if not coords or not all(c.ndim == 2 and c.shape[1] == 2 and len(c) for c in coords):
-        return np.array([c.ndim == 2 and c.shape[1] == 2 and len(c) > 0 and _extent(c) * abs(scale) > MAX_ENTITY_M
-                         for c in coords], dtype=bool)
-    lens = np.fromiter((len(c) for c in coords), dtype=np.int64, count=len(coords))
-    starts = np.concatenate(([0], np.cumsum(lens)[:-1]))
-    allc = np.concatenate(coords)
-    with np.errstate(invalid="ignore", over="ignore"):
-        allc = np.where(np.isfinite(allc), allc, np.nan)
-        lo = np.fmin.reduceat(allc, starts, axis=0)
-        hi = np.fmax.reduceat(allc, starts, axis=0)
-        ext = np.nan_to_num(hi - lo, nan=0.0, posinf=0.0).max(axis=1)
-    return ext * abs(scale) > MAX_ENTITY_M
 
 
 def _extent(c: np.ndarray) -> float:
@@ -440,8 +429,7 @@ def _import(path, rules, layers, units, include_doors, fallback_walls, drop_door
     nonfinite = 0
     dashed_was: Dict[int, str] = {}  # dashed lines on wall layers (projections) -> their layer's kind
     idx = [i for i in idx if len(p.coords[i]) >= 2 or p.filled[i]]
-    bad = _unusable(p, idx, scale)
-    too_long = _longer_than_any_building(p, idx, scale)
+    bad, too_long = _unusable(p, idx, scale)
     overlong = 0
     inner: Dict[str, str] = {}  # block chain -> its innermost block (a chain repeats for every piece)
     for i, broken, long_ in zip(idx, bad, too_long):

@@ -183,9 +183,9 @@ def test_unusable_pieces_as_the_per_piece_rule():
     p.add(np.array([[0.0, 0.0], [np.inf, 0.0]]), "A", "LINE")
     p.add(np.array([[0.0, 0.0], [2e15, 0.0]]), "A", "LINE")  # beyond 1e15 m at scale 1
     p.add(np.zeros((0, 2)), "A", "SOLID", True, True)  # empty filled piece: nothing wrong with it
-    assert _unusable(p, range(len(p)), 1.0).tolist() == [False, True, False, True, True, True, False]
-    assert _unusable(p, [5], 1e-3).tolist() == [False]  # 2e12 m: far, but a number
-    assert _unusable(p, [0, 5], -1.0).tolist() == [False, True]
+    assert _unusable(p, range(len(p)), 1.0)[0].tolist() == [False, True, False, True, True, True, False]
+    assert _unusable(p, [5], 1e-3)[0].tolist() == [False]  # 2e12 m: far, but a number
+    assert _unusable(p, [0, 5], -1.0)[0].tolist() == [False, True]
 
 
 def test_floor_markings_same_on_both_paths():
