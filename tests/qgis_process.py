@@ -10,6 +10,7 @@ as qgis_process returns them. ``CAD2OSMAG_TEST_HEADLESS=1`` in the environment s
 """
 import json
 import os
+import sqlite3
 import subprocess
 
 from .conftest import REPO
@@ -123,3 +124,33 @@ def _run_inprocess(alg, params):
                f"{output[-4000:]}"
     results = json.loads(json.dumps(results, default=str))
     return 0, results, output
+
+
+def gpkg_rows(path, sql):
+    """The rows of an SQL query on a GeoPackage an algorithm wrote; ``{t}`` in the query stands for its table."""
+    con = sqlite3.connect(str(path))
+    try:
+        if "{t}" in sql:
+            sql = sql.format(t=con.execute("select table_name from gpkg_contents").fetchone()[0])
+        return con.execute(sql).fetchall()
+    finally:
+        con.close()
+
+
+def gpkg_table(path):
+    """The table name of the (first) layer of a GeoPackage."""
+    return gpkg_rows(path, "select table_name from gpkg_contents")[0][0]
+
+
+def layer_rows(path, fields, wkt=False):
+    """The given fields of every feature of a vector file's first layer (OGR), plus its WKT if asked."""
+    from osgeo import ogr
+
+    ds = ogr.Open(str(path))
+    rows = []
+    for f in ds.GetLayer(0):
+        row = {k: f.GetField(k) for k in fields}
+        if wkt:
+            row["wkt"] = f.GetGeometryRef().ExportToWkt()
+        rows.append(row)
+    return rows

@@ -1,23 +1,13 @@
 """cad2osmag:listplans (the wizard's plan picker) headless through qgis_process: the groups of a whole sheet
 with their index, kind, title and extent, the main plan flagged, the whole sheet's structure; bad input."""
-import sqlite3
 
 import pytest
 
 from algorithms.sample_building import generate_delivered
 
-from .qgis_process import run_alg
+from .qgis_process import gpkg_rows as _rows, run_alg
 
 pytestmark = pytest.mark.qgis_process
-
-
-def _rows(path, sql):
-    con = sqlite3.connect(str(path))
-    try:
-        table = con.execute("select table_name from gpkg_contents").fetchone()[0]
-        return con.execute(sql.format(t=table)).fetchall()
-    finally:
-        con.close()
 
 
 def test_listplans_lists_every_group_of_a_sheet(tmp_path):

@@ -1,6 +1,5 @@
 """listlayers / extractstructure / rasterize headless through qgis_process on small synthetic DXFs."""
 import csv
-import sqlite3
 
 import ezdxf
 import numpy as np
@@ -11,7 +10,7 @@ from algorithms.raster_io import read_grid
 from algorithms.rasterize import rasterize
 
 from .qgis_inprocess import run_alg_inprocess
-from .qgis_process import run_alg
+from .qgis_process import gpkg_rows as _gpkg_rows, gpkg_table as _table, run_alg
 
 pytestmark = pytest.mark.qgis_process
 
@@ -38,22 +37,6 @@ def _plan(path, dx=0.0, units=4):
     msp.add_line((0, -2000), (20000, -2000), dxfattribs={"layer": "A-ANNO-DIMS"})
     doc.saveas(path)
     return str(path)
-
-
-def _gpkg_rows(path, sql):
-    con = sqlite3.connect(str(path))
-    try:
-        return con.execute(sql).fetchall()
-    finally:
-        con.close()
-
-
-def _table(path):
-    con = sqlite3.connect(str(path))
-    try:
-        return con.execute("select table_name from gpkg_contents").fetchone()[0]
-    finally:
-        con.close()
 
 
 def test_listlayers_writes_a_csv_report(tmp_path):

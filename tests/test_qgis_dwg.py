@@ -1,27 +1,14 @@
 """listlayers / extractstructure / dxftoosmag headless through qgis_process on DWG input."""
 import csv
-import sqlite3
 
 import pytest
 
 from algorithms.cad_import import import_dxf
 
-from .qgis_process import run_alg
+from .qgis_process import gpkg_rows as _rows, gpkg_table as _table, run_alg
 from .test_dwg import _plan_pair, dwg_copy_of
 
 pytestmark = pytest.mark.qgis_process
-
-
-def _rows(path, sql):
-    con = sqlite3.connect(str(path))
-    try:
-        return con.execute(sql).fetchall()
-    finally:
-        con.close()
-
-
-def _table(path):
-    return _rows(path, "select table_name from gpkg_contents")[0][0]
 
 
 def test_listlayers_and_extractstructure_on_a_dwg(tmp_path):

@@ -6,19 +6,8 @@ import pytest
 from algorithms.model import FREE, OCCUPIED, UNKNOWN
 from algorithms.raster_io import write_grid
 
-from .qgis_process import run_alg
+from .qgis_process import layer_rows, run_alg
 from .test_segmentation import Plan
-
-
-def _layer_rows(path, fields):
-    from osgeo import ogr
-
-    ds = ogr.Open(str(path))
-    layer = ds.GetLayer(0)
-    rows = []
-    for f in layer:
-        rows.append({k: f.GetField(k) for k in fields} | {"wkt": f.GetGeometryRef().ExportToWkt()})
-    return rows
 
 
 @pytest.fixture(scope="module")
@@ -43,12 +32,12 @@ def test_segment_geotiff(plan_tif, tmp_path):
     assert res["ALPHA"] == 121  # ceil(1.1^2 / (4 * 0.05^2))
     assert 300 < res["INTERIOR_AREA_M2"] < 336  # 24 x 14 m minus walls
     assert "Interior free area" in log
-    areas = _layer_rows(out["AREAS"], ["id", "type", "area_m2", "perimeter_m", "max_clearance"])
+    areas = layer_rows(out["AREAS"], ["id", "type", "area_m2", "perimeter_m", "max_clearance"], wkt=True)
     assert len(areas) == n_rooms + 1
     assert sum(a["area_m2"] for a in areas) == pytest.approx(res["INTERIOR_AREA_M2"], rel=0.02)
     room_a = [a for a in areas if a["area_m2"] > 30 and a["max_clearance"] > 2.7]
     assert room_a and all(a["perimeter_m"] > 20 for a in room_a)
-    passages = _layer_rows(out["PASSAGES"], ["id", "from_id", "to_id", "width_m"])
+    passages = layer_rows(out["PASSAGES"], ["id", "from_id", "to_id", "width_m"], wkt=True)
     ids = {a["id"] for a in areas}
     assert all(p["from_id"] in ids and p["to_id"] in ids for p in passages)
     assert all(0.6 <= p["width_m"] <= 1.2 for p in passages)

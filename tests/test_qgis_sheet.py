@@ -1,25 +1,15 @@
 """listlayers / extractstructure headless through qgis_process on whole sheets, bound-xref layer names and
 spaghetti drawings (PLAN, matched layer names, door hints, entity classes)."""
 import csv
-import sqlite3
 
 import ezdxf
 import pytest
 
 from algorithms.sample_building import generate_delivered
 
-from .qgis_process import run_alg
+from .qgis_process import gpkg_rows as _rows, run_alg
 
 pytestmark = pytest.mark.qgis_process
-
-
-def _rows(path, sql):
-    con = sqlite3.connect(str(path))
-    try:
-        table = con.execute("select table_name from gpkg_contents").fetchone()[0]
-        return con.execute(sql.format(t=table)).fetchall()
-    finally:
-        con.close()
 
 
 def test_listlayers_shows_the_matched_part_of_xref_names(tmp_path):
