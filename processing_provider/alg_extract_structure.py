@@ -39,6 +39,21 @@ def wall_fields():
                        ("block", FIELD_STRING), ("class", FIELD_STRING))
 
 
+def wall_features(drawing, feedback):
+    """One feature (wall_fields) per structure geometry of an imported drawing; None when cancelled."""
+    wf = wall_fields()
+    feats = []
+    for g in drawing.geometries:
+        f = QgsFeature(wf)
+        f.setGeometry(geometry_to_qgs(g.coords, g.closed))
+        f.setAttributes([g.layer, g.kind, g.entity, bool(g.closed), bool(g.filled), float(g.width), g.block,
+                         g.cls])
+        feats.append(f)
+        if feedback.isCanceled():
+            return None
+    return feats
+
+
 def text_fields():
     return make_fields(("text", FIELD_STRING), ("height", FIELD_DOUBLE), ("rotation", FIELD_DOUBLE),
                        ("layer", FIELD_STRING), ("entity", FIELD_STRING), ("block", FIELD_STRING),
@@ -171,16 +186,9 @@ class ExtractStructureAlgorithm(Cad2OsmagAlgorithm):
         # import_dxf already reported every repair through the feedback
 
         # build every feature before creating the sinks, so a failure leaves no half-written output
-        wf = wall_fields()
-        walls = []
-        for g in drawing.geometries:
-            f = QgsFeature(wf)
-            f.setGeometry(geometry_to_qgs(g.coords, g.closed))
-            f.setAttributes([g.layer, g.kind, g.entity, bool(g.closed), bool(g.filled), float(g.width), g.block,
-                             g.cls])
-            walls.append(f)
-            if feedback.isCanceled():
-                return {}
+        walls = wall_features(drawing, feedback)
+        if walls is None:
+            return {}
         tf = text_fields()
         texts = []
         for k, t in enumerate(drawing.texts):
@@ -207,7 +215,7 @@ class ExtractStructureAlgorithm(Cad2OsmagAlgorithm):
             doors.append(f)
 
         crs = local_frame_crs()
-        (wsink, wdest) = self.parameterAsSink(parameters, self.WALLS, context, wf, QgsWkbTypes.Type.MultiLineString, crs)
+        (wsink, wdest) = self.parameterAsSink(parameters, self.WALLS, context, wall_fields(), QgsWkbTypes.Type.MultiLineString, crs)
         for f in walls:
             wsink.addFeature(f, QgsFeatureSink.Flag.FastInsert)
         (tsink, tdest) = self.parameterAsSink(parameters, self.TEXTS, context, tf, QgsWkbTypes.Type.Point, crs)

@@ -18,7 +18,7 @@ from qgis.core import (
 
 from ..algorithms import cad_import
 from ..algorithms.cad_sheet import describe_plans
-from .alg_extract_structure import geometry_to_qgs, local_frame_crs, wall_fields
+from .alg_extract_structure import local_frame_crs, wall_features, wall_fields
 from .base import Cad2OsmagAlgorithm, FIELD_BOOL, FIELD_DOUBLE, FIELD_INT, FIELD_STRING, make_fields
 
 # an extent that holds any drawing: import_dxf then keeps the structure of every group on the sheet
@@ -82,15 +82,9 @@ class ListPlansAlgorithm(Cad2OsmagAlgorithm):
             feats.append(f)
         lines = []
         if parameters.get(self.STRUCTURE) is not None:
-            wf = wall_fields()
-            for g in drawing.geometries:
-                f = QgsFeature(wf)
-                f.setGeometry(geometry_to_qgs(g.coords, g.closed))
-                f.setAttributes([g.layer, g.kind, g.entity, bool(g.closed), bool(g.filled), float(g.width), g.block,
-                                 g.cls])
-                lines.append(f)
-                if feedback.isCanceled():
-                    return {}
+            lines = wall_features(drawing, feedback)
+            if lines is None:
+                return {}
         crs = local_frame_crs()
         sink, dest = self.parameterAsSink(parameters, self.OUTPUT, context, pf, QgsWkbTypes.Type.Polygon, crs)
         for f in feats:
