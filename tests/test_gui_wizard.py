@@ -23,10 +23,25 @@ def _wait(predicate, timeout=300):
         assert time.time() - t0 < timeout, "timed out"
 
 
+
+def _drag(canvas, tool, a, b):
+    """A left-button drag from canvas pixel a to b, delivered to the map tool as QGIS would."""
+    from qgis.gui import QgsMapMouseEvent
+    from qgis.PyQt.QtCore import QEvent, QPoint, Qt
+
+    for kind, p, btn, btns in ((QEvent.Type.MouseButtonPress, a, Qt.MouseButton.LeftButton,
+                                Qt.MouseButton.LeftButton),
+                               (QEvent.Type.MouseMove, b, Qt.MouseButton.NoButton, Qt.MouseButton.LeftButton),
+                               (QEvent.Type.MouseButtonRelease, b, Qt.MouseButton.LeftButton,
+                                Qt.MouseButton.NoButton)):
+        e = QgsMapMouseEvent(canvas, kind, QPoint(int(p[0]), int(p[1])), btn, btns, Qt.KeyboardModifier.NoModifier)
+        {QEvent.Type.MouseButtonPress: tool.canvasPressEvent, QEvent.Type.MouseMove: tool.canvasMoveEvent,
+         QEvent.Type.MouseButtonRelease: tool.canvasReleaseEvent}[kind](e)
+
 def test_wizard_converts_two_floors_placed_by_dragging(provider, qgis_iface, qgis_new_project, tmp_path, repo_root):
     from qgis.core import QgsCoordinateReferenceSystem, QgsProject, QgsRectangle
-    from qgis.gui import QgsMapCanvas, QgsMapMouseEvent
-    from qgis.PyQt.QtCore import QEvent, QPoint, Qt
+    from qgis.gui import QgsMapCanvas
+    from qgis.PyQt.QtCore import Qt
 
     from cad2osmag.ui.convert_wizard import ConvertWizard
     from cad2osmag.ui.placement import load_placement
@@ -80,15 +95,7 @@ def test_wizard_converts_two_floors_placed_by_dragging(provider, qgis_iface, qgi
     ct = canvas.getCoordinateTransform()
 
     def drag(a, b):
-        for kind, p, btn, btns in ((QEvent.Type.MouseButtonPress, a, Qt.MouseButton.LeftButton,
-                                    Qt.MouseButton.LeftButton),
-                                   (QEvent.Type.MouseMove, b, Qt.MouseButton.NoButton, Qt.MouseButton.LeftButton),
-                                   (QEvent.Type.MouseButtonRelease, b, Qt.MouseButton.LeftButton,
-                                    Qt.MouseButton.NoButton)):
-            e = QgsMapMouseEvent(canvas, kind, QPoint(int(p[0]), int(p[1])), btn, btns,
-                                 Qt.KeyboardModifier.NoModifier)
-            {QEvent.Type.MouseButtonPress: tool.canvasPressEvent, QEvent.Type.MouseMove: tool.canvasMoveEvent,
-             QEvent.Type.MouseButtonRelease: tool.canvasReleaseEvent}[kind](e)
+        _drag(canvas, tool, a, b)
 
     centre = ct.transform(tool.handle_points()["pivot"])
     drag((centre.x() - 30, centre.y() + 10), (centre.x() + 10, centre.y() - 20))
@@ -263,8 +270,8 @@ def test_wizard_converts_a_dwg_sheet_placed_on_the_satellite_basemap(provider, q
     the plan dragged and turned over the satellite basemap, the conversion, the styled, named floor on the
     map. No network here: the basemap layer is in the project, its tiles are not fetched."""
     from qgis.core import QgsCoordinateReferenceSystem, QgsProject, QgsRectangle
-    from qgis.gui import QgsMapCanvas, QgsMapMouseEvent
-    from qgis.PyQt.QtCore import QEvent, QPoint, Qt
+    from qgis.gui import QgsMapCanvas
+    from qgis.PyQt.QtCore import Qt
 
     from cad2osmag.ui.convert_wizard import ConvertWizard
     from cad2osmag.ui.placement import load_placement
@@ -345,15 +352,7 @@ def test_wizard_converts_a_dwg_sheet_placed_on_the_satellite_basemap(provider, q
     ct = canvas.getCoordinateTransform()
 
     def drag(a, b):
-        for kind, p, btn, btns in ((QEvent.Type.MouseButtonPress, a, Qt.MouseButton.LeftButton,
-                                    Qt.MouseButton.LeftButton),
-                                   (QEvent.Type.MouseMove, b, Qt.MouseButton.NoButton, Qt.MouseButton.LeftButton),
-                                   (QEvent.Type.MouseButtonRelease, b, Qt.MouseButton.LeftButton,
-                                    Qt.MouseButton.NoButton)):
-            e = QgsMapMouseEvent(canvas, kind, QPoint(int(p[0]), int(p[1])), btn, btns,
-                                 Qt.KeyboardModifier.NoModifier)
-            {QEvent.Type.MouseButtonPress: tool.canvasPressEvent, QEvent.Type.MouseMove: tool.canvasMoveEvent,
-             QEvent.Type.MouseButtonRelease: tool.canvasReleaseEvent}[kind](e)
+        _drag(canvas, tool, a, b)
 
     before = panel.placement
     centre = ct.transform(tool.handle_points()["pivot"])
