@@ -128,6 +128,56 @@ def classify_vertical_areas(areas: Sequence[Area], geometries: Sequence[CadGeome
         _lift_cars_on_stair_layers(areas, geometries, changed, symbols)
     if shapes:
         changed.update(classify_by_symbol_shapes(areas, geometries, symbols=symbols))
+    changed.update(lift_door_boxes(areas, geometries))
+    return changed
+
+
+LIFT_DOOR_GROUP = 0.3  # metres: lines of one elevator door symbol lie this close together
+LIFT_CAR_AREA = (1.0, 12.0)  # m²: the box behind a lift door (one car's shaft: 0.9 x 1.2 m to 3 x 4 m)
+LIFT_CAR_WIDTH = 0.8  # metres: narrower everywhere is a sliver, not a car
+
+
+def symbol_evidence(drawing) -> List[CadGeometry]:
+    """The geometries stair and lift areas are typed from: the drawing's, plus the stair / lift symbols it holds
+    but hides (``CadDrawing.hidden_symbols``: off layers, lift-named blocks); the very same list when it hides
+    none (``Symbols.same`` then holds for the carve)."""
+    hidden = getattr(drawing, "hidden_symbols", None) or []
+    return list(drawing.geometries) + list(hidden) if hidden else drawing.geometries
+
+
+def lift_door_boxes(areas: Sequence[Area], geometries: Sequence[CadGeometry]) -> Dict[int, str]:
+    """An elevator door symbol (the lines of a lift-named block, ``cad_explode.LIFT_DOOR_CLS``: 'Elevator -
+    Single Side Open - 54_w x 96_h', nested in a bound xref or not) opens from a lobby into the lift: of the
+    areas its symbol touches, the smallest car-sized one (``LIFT_CAR_AREA``, ``LIFT_CAR_WIDTH`` wide somewhere,
+    compact) is the shaft behind the door, typed elevator, unless an area it touches is a lift already (a cross
+    typed it). A door touching only larger areas (a car the segmentation merged into its lobby) types nothing.
+    Returns {id: "elevator"}."""
+    from shapely.ops import unary_union
+
+    from .cad_explode import LIFT_DOOR_CLS
+
+    doors = [LineString(g.coords[:, :2]) for g in geometries
+             if g.cls == LIFT_DOOR_CLS and len(g.coords) >= 2 and np.isfinite(g.coords).all()]
+    if not doors:
+        return {}
+    blobs = unary_union([d.buffer(LIFT_DOOR_GROUP / 2) for d in doors])
+    blobs = list(getattr(blobs, "geoms", [blobs]))
+    cand = [a for a in areas if a.type not in ("stairs", "structure") and a.polygon.area > 0]
+    tree = STRtree([a.polygon for a in cand]) if cand else None
+    changed: Dict[int, str] = {}
+    for blob in blobs:
+        if tree is None:
+            break
+        hits = [cand[i] for i in tree.query(blob, predicate="intersects")]
+        if any(a.type == "elevator" for a in hits):
+            continue
+        cars = [a for a in hits if LIFT_CAR_AREA[0] <= a.polygon.area <= LIFT_CAR_AREA[1]
+                and _elongation(a.polygon) <= MAX_LIFT_ELONGATION
+                and not a.polygon.buffer(-LIFT_CAR_WIDTH / 2).is_empty]
+        if cars:
+            car = min(cars, key=lambda a: a.polygon.area)
+            car.type = "elevator"
+            changed[car.id] = "elevator"
     return changed
 
 
