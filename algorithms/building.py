@@ -1071,6 +1071,7 @@ def fuse_floors(floors: Sequence[FloorData], out_path: str, frame, building_name
         for p in fl.passages:
             p.line = R.geometry(p.line)
     progress.step(55)
+    propagated = propagate_shafts(floors, [not a for a in anchors], progress) if register else []
     # ---- floor outlines and overlap check
     outlines = []
     for fl in floors:
@@ -1183,6 +1184,7 @@ def fuse_floors(floors: Sequence[FloorData], out_path: str, frame, building_name
     stats = {k: v for k, v in written.items() if k not in ("way_ids", "names")}
     stats.update({"floors": n, "levels": [fl.level for fl in floors], "transforms": transforms,
                   "residuals": residuals, "centroid_residuals": centroid_res, "rms": rms, "median_residual": medians, "vertical": links, "reference": floors[ref].level,
+                  "propagated": propagated,
                   "areas_in": areas_in, "areas_out": written["areas"] + written["structure_areas"] - 1,
                   "dropped_passages": {fl.level: fl.dropped_passages for fl in floors if fl.dropped_passages},
                   "warnings": warnings + written["warnings"],
@@ -1191,6 +1193,140 @@ def fuse_floors(floors: Sequence[FloorData], out_path: str, frame, building_name
     progress.info(f"building '{building_name}': {n} floors, {len(vertical)} vertical passages, "
                   f"{stats['areas_out']} areas (+1 building), {written['passages']} passages")
     return stats
+
+
+SHAFT_PRISM_OVERLAP = 0.6  # shared area / each of the two outlines for an area to be the same shaft a floor up or down
+
+
+def propagate_shafts(floors: Sequence[FloorData], targets: Sequence[bool], progress=None) -> List[tuple]:
+    """A stair core or lift shaft is a vertical prism: its walls stand at the same place on every floor it
+    serves. A floor that shows no stair or lift at all (``targets``; its symbols were filtered away, as in
+    plans reduced to walls, doors and glazing) takes its shafts from the consecutive floors, once registered:
+    an area of it that is not typed, not named (a generated name or none) and shares at least
+    ``SHAFT_PRISM_OVERLAP`` of its own outline and of a shaft's outline on the floor above or below (at most
+    ``SHAFT_MAX_AREA``) is that shaft, typed alike with ``cad2osmag:shaft_from`` = the level it came from.
+    Chains through consecutive such floors (F2's lifts type F3's shafts, those F4's). Floors with anchors of
+    their own are never retyped. Returns [(from level, to level, area id, kind)]."""
+    from shapely.strtree import STRtree
+
+    progress = ensure(progress)
+    n = len(floors)
+    out: List[tuple] = []
+    trees = {}
+    for k in range(n):
+        if targets[k]:
+            cand = [a for a in floors[k].areas if a.type != "structure" and not a.polygon.is_empty]
+            trees[k] = (cand, STRtree([a.polygon for a in cand]) if cand else None)
+    changed = True
+    while changed:
+        changed = False
+        for k in range(n):
+            shafts = [a for a in floors[k].areas if anchor_kind(a) and 0 < a.polygon.area <= SHAFT_MAX_AREA]
+            for j in (k - 1, k + 1):
+                if not (0 <= j < n and j in trees and trees[j][1] is not None):
+                    continue
+                cand, tree = trees[j]
+                for s in shafts:
+                    kind = anchor_kind(s)
+                    best, best_iou = None, 0.0
+                    partnered = False
+                    for i in tree.query(s.polygon, predicate="intersects"):
+                        b = cand[i]
+                        inter = s.polygon.intersection(b.polygon).area
+                        if anchor_kind(b):
+                            partnered = partnered or (anchor_kind(b) == kind and inter >= MIN_SHAFT_OVERLAP
+                                                      * min(s.polygon.area, b.polygon.area))
+                            continue
+                        if anchor_name(b) or inter < SHAFT_PRISM_OVERLAP * max(s.polygon.area, b.polygon.area):
+                            continue
+                        iou = inter / (s.polygon.area + b.polygon.area - inter)
+                        if iou > best_iou:
+                            best, best_iou = b, iou
+                    if partnered:
+                        continue
+                    if best is None:
+                        best = _carve_shaft(floors[j], s, cand, tree)
+                        if best is None:
+                            continue
+                        cand.append(best)
+                        trees[j] = (cand, STRtree([a.polygon for a in cand]))
+                        cand, tree = trees[j]
+                    best.type = kind
+                    best.tags = dict(best.tags or {}, **{"cad2osmag:shaft_from": f"level {floors[k].level}"})
+                    out.append((floors[k].level, floors[j].level, best.id, kind))
+                    changed = True
+    if out:
+        for lv in sorted({t[1] for t in out}, key=_level_value):
+            got = [t for t in out if t[1] == lv]
+            progress.info(f"level {lv} shows no stair or lift: {sum(t[3] == 'stairs' for t in got)} stair(s) and "
+                          f"{sum(t[3] == 'elevator' for t in got)} lift(s) typed where the walls of a shaft of the "
+                          "floor above or below stand (" + ", ".join(f"area {t[2]} from level {t[0]}" for t in got) + ")")
+    return out
+
+
+SHAFT_WALL_REACH = 0.3  # metres: a shaft's outline within this of its host's boundary has its wall on this floor
+SHAFT_WALLED = 0.6  # share of a shaft's outline that must run along walls of the host for the shaft to be carved
+SHAFT_MOUTH = (0.6, 3.0)  # metres: the opening of a carved shaft onto its host (a lift door, a stair's mouth)
+SHAFT_MOUTH_SIDE = 0.75  # the opening at most this share of the shaft's short side: a door with wall beside it
+
+
+def _short_side(poly) -> float:
+    r = np.asarray(poly.minimum_rotated_rectangle.exterior.coords)
+    return float(min(np.hypot(*(r[1] - r[0])), np.hypot(*(r[2] - r[1]))))
+
+
+def _carve_shaft(fl: FloorData, shaft: Area, cand: List[Area], tree) -> Optional[Area]:
+    """The shaft ``shaft`` (of a consecutive floor, registered) swallowed by an untyped area of ``fl`` (a lift
+    car the segmentation joined to its lobby through the door gap): when one area holds ≥ 90 % of it, is at
+    least twice its size, and its boundary runs along ≥ ``SHAFT_WALLED`` of the shaft's outline (the shaft's
+    walls stand on this floor too) leaving one opening of ``SHAFT_MOUTH`` (its door), the shaft is cut out of
+    that area as an area of its own (returned, appended to ``fl.areas``, with a passage through the opening);
+    else None. The host keeps its id, name and passages (it must stay one piece)."""
+    from shapely.geometry import LineString
+
+    sp = shaft.polygon
+    hosts = [cand[i] for i in tree.query(sp, predicate="intersects")]
+    hosts = [h for h in hosts if not anchor_kind(h) and h.polygon.area >= 2 * sp.area
+             and h.polygon.intersection(sp).area >= 0.9 * sp.area]
+    if len(hosts) != 1:
+        return None
+    host = hosts[0]
+    ring = sp.exterior
+    walled = ring.intersection(host.polygon.boundary.buffer(SHAFT_WALL_REACH)).length
+    if walled < SHAFT_WALLED * ring.length:
+        return None
+    gap = ring.difference(host.polygon.boundary.buffer(SHAFT_WALL_REACH))
+    if gap.geom_type == "MultiLineString":  # an opening across the ring's first vertex comes in two pieces
+        from shapely.ops import linemerge
+
+        gap = linemerge(gap)
+    pieces = sorted(getattr(gap, "geoms", [gap]), key=lambda g: -g.length)
+    pieces = [g for g in pieces if not g.is_empty and g.length > 0.1]
+    if len(pieces) != 1:
+        return None
+    # the mouth: the straight line across the opening (its two ends)
+    ends = list(pieces[0].coords) if pieces[0].geom_type == "LineString" else []
+    if len(ends) < 2:
+        return None
+    mouth = LineString([ends[0], ends[-1]])
+    if not SHAFT_MOUTH[0] <= mouth.length <= min(SHAFT_MOUTH[1], SHAFT_MOUTH_SIDE * _short_side(sp)):
+        return None  # no opening, or a whole side open: the room goes on where the shaft ends (no door in a wall)
+    inside = valid_polygon(host.polygon.intersection(sp))
+    rest = valid_polygon(host.polygon.difference(sp))
+    parts = sorted(getattr(rest, "geoms", [rest]), key=lambda g: -g.area)
+    if not parts or parts[0].is_empty or sum(g.area for g in parts[1:]) > 0.5 or inside.is_empty:
+        return None
+    inside = max(getattr(inside, "geoms", [inside]), key=lambda g: g.area)
+    host.polygon = parts[0]
+    ids = [a.id for a in fl.areas + fl.structures] + ([fl.outline.id] if fl.outline is not None else [])
+    new = Area(id=max(abs(i) for i in ids) + 1, polygon=inside, type=shaft.type,
+               tags={"cad2osmag:carved": "yes"})
+    fl.areas.append(new)
+    if host.id in fl.parents:
+        fl.parents[new.id] = fl.parents[host.id]
+    pid = max([abs(p.id) for p in fl.passages] + [0]) + 1
+    fl.passages.append(Passage(id=pid, from_id=host.id, to_id=new.id, line=mouth))
+    return new
 
 
 def is_fix_id(path: str) -> bool:

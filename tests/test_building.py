@@ -724,3 +724,126 @@ def test_a_gallery_ring_with_a_neck_below_the_precision_stays_one_ring(tmp_path,
             assert set(refs) <= set(area_refs), (name[wid], ends[key])
             n_pass += 1
     assert n_pass >= 12  # 3 passages x 2 ends x 2 levels, all on their areas' ways
+
+
+# --------------------------------------------------------------------------- stairs and lifts a filtered plan hides
+def _filtered_plan(tmp_path, name, hidden_layers=False, door_block=False):
+    """A corridor (16 x 3 m) with, north of it, a stair core (3 x 5.8 m), a lift shaft (2.2 x 2.4 m), an office
+    and a side room, each opening on the corridor; walls only on 'A-WALL' (the plan reduced to its structure).
+    ``hidden_layers``: the stair's two flights of treads on 'A-FLOR-STRS', turned off, and the lift's cross on
+    'X-RV-2F$0$A-EVTR' inside a bound-xref block inserted on an off layer ('$1$INDEX'), as SIST-F2 hides them.
+    ``door_block``: the lift's only evidence is an elevator door symbol ('Elevator - Single Side Open - 48_w x
+    94_h', 8 lines on the xref's door layer) nested in a bound xref block, at the shaft's door, as in SIST-F1/F2."""
+    import ezdxf
+    from shapely.ops import unary_union
+
+    free = unary_union([box(0, 0, 16, 3), box(3, 3.2, 6, 9), box(7, 3.2, 9.2, 5.6), box(10, 3.2, 16, 9),
+                        box(0, 3.2, 2.8, 9), box(4, 2.9, 5.2, 3.3), box(7.6, 2.9, 8.6, 3.3), box(12, 2.9, 13, 3.3),
+                        box(1, 2.9, 2, 3.3)])
+    walls = box(-0.2, -0.2, 16.2, 9.2).difference(free)
+    doc = ezdxf.new("R2010", setup=False)
+    doc.header["$INSUNITS"] = 6
+    msp = doc.modelspace()
+    for poly in getattr(walls, "geoms", [walls]):
+        for ring in [poly.exterior] + list(poly.interiors):
+            msp.add_lwpolyline(list(ring.coords), close=True, dxfattribs={"layer": "A-WALL"})
+    if hidden_layers:
+        doc.layers.add("A-FLOR-STRS").off()
+        doc.layers.add("$1$INDEX").off()
+        for x0, x1 in ((3.1, 4.4), (4.6, 5.9)):
+            for y in np.arange(4.0, 8.6, 0.28):
+                msp.add_line((x0, y), (x1, y), dxfattribs={"layer": "A-FLOR-STRS"})
+        xref = doc.blocks.new("X-RV-2F")
+        for a, b in (((7.1, 3.3), (9.1, 5.5)), ((7.1, 5.5), (9.1, 3.3)), ((7.1, 3.3), (9.1, 3.3)),
+                     ((9.1, 3.3), (9.1, 5.5)), ((9.1, 5.5), (7.1, 5.5)), ((7.1, 5.5), (7.1, 3.3))):
+            xref.add_line(a, b, dxfattribs={"layer": "X-RV-2F$0$A-EVTR"})
+        msp.add_blockref("X-RV-2F", (0, 0), dxfattribs={"layer": "$1$INDEX"})
+    if door_block:
+        car = doc.blocks.new("X-RI-2F$0$Elevator - Single Side Open - 48_w x 94_h-2412031")
+        for a, b in (((0, 0), (0, 0.2)), ((1, 0), (1, 0.2)), ((0, 0.05), (0.5, 0.05)), ((0.5, 0.05), (0.5, 0.15)),
+                     ((0.5, 0.15), (0, 0.15)), ((0.5, 0.05), (1, 0.05)), ((1, 0.15), (0.5, 0.15)),
+                     ((-0.1, 0.2), (1.1, 0.2))):
+            car.add_line(a, b, dxfattribs={"layer": "X-RI-2F$0$A-DOOR"})
+        xref = doc.blocks.new("X-RI-2F")
+        xref.add_blockref(car.name, (7.6, 3.0), dxfattribs={"layer": "X-RI-2F$0$A-DOOR"})
+        msp.add_blockref("X-RI-2F", (0, 0), dxfattribs={"layer": "0"})
+    path = tmp_path / f"{name}.dxf"
+    doc.saveas(str(path))
+    return path
+
+
+def _types(path, **kw):
+    fr = pipeline.process_floor(str(path), level="2", **kw)
+    got = {}
+    for a in fr.refined.areas:
+        c = a.polygon.centroid
+        if a.type in ("stairs", "elevator"):
+            got[a.type] = got.get(a.type, []) + [(round(c.x, 1), round(c.y, 1), round(a.polygon.area, 1))]
+    return fr, got
+
+
+def test_stair_and_lift_symbols_on_hidden_layers_type_the_areas_of_a_filtered_plan(tmp_path, monkeypatch):
+    """A plan reduced to its walls by turning the stair/lift layers off (SIST-F2: its treads and lift cars sit
+    on off layers and in a bound xref inserted on an off layer): the hidden symbols are typing evidence, never
+    walls (the raster is the plan's), so the stair core and the lift shaft become stairs and elevator. Rule off
+    (no hidden evidence): neither is typed. A plan that shows a stair symbol keeps to what it shows."""
+    from algorithms import cad_import
+
+    path = _filtered_plan(tmp_path, "hidden", hidden_layers=True)
+    d = cad_import.import_dxf(str(path))
+    assert not [g for g in d.geometries if g.kind in ("stair", "elevator")]
+    kinds = [g.kind for g in d.hidden_symbols]
+    assert kinds.count("stair") == 2 * 17 and kinds.count("elevator") == 6
+    fr, got = _types(path)
+    assert [(x, y) for x, y, _ in got.get("stairs", [])] and len(got["stairs"]) == 1 and len(got["elevator"]) == 1
+    sx, sy, sm2 = got["stairs"][0]
+    assert 3 < sx < 6 and 3.2 < sy < 9 and 14 < sm2 < 19
+    lx, ly, lm2 = got["elevator"][0]
+    assert 7 < lx < 9.2 and 3.2 < ly < 5.6 and 4 < lm2 < 6
+    ref = pipeline.process_floor(str(_filtered_plan(tmp_path, "walls")), level="2")
+    assert fr.grid.data.tobytes() == ref.grid.data.tobytes()  # the hidden symbols are not drawn
+    monkeypatch.setattr(cad_import, "_hidden_symbols", lambda *a, **k: [])
+    assert _types(path)[1] == {}
+
+
+def test_an_elevator_door_block_nested_in_an_xref_types_the_car_behind_it(tmp_path, monkeypatch):
+    """The only lift evidence of the plan is an elevator door symbol (a block named 'Elevator - Single Side Open
+    - 48_w x 94_h', 8 lines on the door layer) nested in a bound xref block, in the doorway of a 2.2 x 2.4 m
+    box: the box behind the door is the lift (not the corridor it opens from, not the stair core). Rule off:
+    nothing is typed."""
+    from algorithms import cad_explode, cad_import
+
+    path = _filtered_plan(tmp_path, "door", door_block=True)
+    d = cad_import.import_dxf(str(path))
+    assert len(d.hidden_symbols) == 8 and {g.cls for g in d.hidden_symbols} == {"lift door"}
+    _fr, got = _types(path)
+    assert list(got) == ["elevator"] and len(got["elevator"]) == 1
+    lx, ly, lm2 = got["elevator"][0]
+    assert 7 < lx < 9.2 and 3.2 < ly < 5.6 and 4 < lm2 < 6
+    monkeypatch.setattr(cad_explode, "_lift_block", lambda *a, **k: False)
+    assert _types(path)[1] == {}
+
+
+def test_lift_door_boxes_type_the_smallest_car_sized_area_the_door_touches():
+    """The door symbol touches the lobby (40 m²) and the car (2 x 2.5 m): the car is typed; a car already a
+    lift (a cross typed it) is left alone; a door touching only large areas (the car merged into its lobby) or
+    a sliver (0.5 m wide) types nothing."""
+    from algorithms.area_types import lift_door_boxes
+    from algorithms.cad_explode import LIFT_DOOR_CLS
+
+    def door(x, y):
+        return [_g("elevator", [(x + a, y + b), (x + c, y + d)]) for a, b, c, d in
+                ((0, -0.1, 1, -0.1), (0, 0.1, 1, 0.1), (0, -0.1, 0, 0.1), (1, -0.1, 1, 0.1))]
+
+    lobby = Area(1, box(-5, -8, 5, -0.1))
+    car = Area(2, box(0, 0.1, 2, 2.6))
+    big = Area(3, box(15, -8, 25, 8))  # a car the segmentation merged into its lobby
+    sliver = Area(4, box(40, 0.1, 40.5, 4))
+    areas = [lobby, car, big, sliver]
+    geoms = door(0.5, 0.0) + door(20.5, 0.0) + door(40.2, 0.0)
+    for g in geoms:
+        g.cls = LIFT_DOOR_CLS
+    assert lift_door_boxes(areas, geoms) == {2: "elevator"}
+    assert [a.type for a in areas] == ["room", "elevator", "room", "room"]
+    assert lift_door_boxes(areas, geoms) == {}  # typed already
+    assert lift_door_boxes([Area(5, box(0, 0.1, 2, 2.6))], [_g("elevator", [(0.5, 0), (1.5, 0)])]) == {}  # no door
