@@ -1275,6 +1275,47 @@ def _short_side(poly) -> float:
     return float(min(np.hypot(*(r[1] - r[0])), np.hypot(*(r[2] - r[1]))))
 
 
+def _shaft_mouth(shaft, host, step: float = 0.05, probe: float = 0.3):
+    """The opening of ``shaft`` onto ``host`` (a LineString across it), when the shaft's walls stand on the
+    host's floor: walking its outline every ``step`` m, a point is open when the host holds the whole probe
+    from it ``probe`` m outwards (the host goes on there), walled when a wall cuts the probe. None unless ≥ ``SHAFT_WALLED`` of the outline is walled and the
+    open part is one run of ``SHAFT_MOUTH`` metres (the probe reaches past a wall face drawn up to
+    ``probe`` m apart on the two floors, yet no wall is thinner than it is long), at most ``SHAFT_MOUTH_SIDE`` of the shaft's short side (a
+    door with wall beside it; a whole side open is a room that goes on where the shaft ends)."""
+    import shapely
+    from shapely.geometry import LineString
+    from shapely.geometry.polygon import orient
+
+    ring = orient(shaft, 1.0).exterior  # counter-clockwise: the outside is on the right
+    n = max(int(ring.length / step), 8)
+    d = np.linspace(0.0, ring.length, n, endpoint=False)
+    pts = shapely.get_coordinates(shapely.line_interpolate_point(ring, d))
+    nxt = shapely.get_coordinates(shapely.line_interpolate_point(ring, (d + step / 2) % ring.length))
+    t = nxt - pts
+    t /= np.maximum(np.hypot(t[:, 0], t[:, 1]), 1e-12)[:, None]
+    normal = np.column_stack([t[:, 1], -t[:, 0]])
+    open_ = np.ones(n, bool)
+    for r in np.arange(step, probe + 1e-9, step):  # open: the host all along the probe (a wall anywhere: walled)
+        out = pts + r * normal
+        open_ &= shapely.contains_xy(host, out[:, 0], out[:, 1])
+    if open_.mean() > 1.0 - SHAFT_WALLED or not open_.any() or open_.all():
+        return None
+    k = int(np.argmin(open_))  # start the walk on a wall: every open run is then whole
+    o = np.roll(open_, -k)
+    starts = np.flatnonzero(o & ~np.roll(o, 1))
+    ends = np.flatnonzero(~o[1:] & o[:-1]) + 1  # first walled sample after each run (o[0] is walled)
+    ends = np.append(ends, n) if o[-1] else ends
+    runs = [(i0, i1) for i0, i1 in zip(starts, ends) if (i1 - i0) * step >= SHAFT_MOUTH[0] / 3]  # corner noise out
+    if len(runs) != 1:
+        return None
+    idx = (np.arange(*runs[0]) + k) % n
+    run = pts[idx]
+    mouth = LineString([run[0], run[-1]])
+    if not SHAFT_MOUTH[0] <= mouth.length <= min(SHAFT_MOUTH[1], SHAFT_MOUTH_SIDE * _short_side(shaft)):
+        return None
+    return mouth
+
+
 def _carve_shaft(fl: FloorData, shaft: Area, cand: List[Area], tree) -> Optional[Area]:
     """The shaft ``shaft`` (of a consecutive floor, registered) swallowed by an untyped area of ``fl`` (a lift
     car the segmentation joined to its lobby through the door gap): when one area holds ≥ 90 % of it, is at
@@ -1282,8 +1323,6 @@ def _carve_shaft(fl: FloorData, shaft: Area, cand: List[Area], tree) -> Optional
     walls stand on this floor too) leaving one opening of ``SHAFT_MOUTH`` (its door), the shaft is cut out of
     that area as an area of its own (returned, appended to ``fl.areas``, with a passage through the opening);
     else None. The host keeps its id, name and passages (it must stay one piece)."""
-    from shapely.geometry import LineString
-
     sp = shaft.polygon
     hosts = [cand[i] for i in tree.query(sp, predicate="intersects")]
     hosts = [h for h in hosts if not anchor_kind(h) and h.polygon.area >= 2 * sp.area
@@ -1291,26 +1330,9 @@ def _carve_shaft(fl: FloorData, shaft: Area, cand: List[Area], tree) -> Optional
     if len(hosts) != 1:
         return None
     host = hosts[0]
-    ring = sp.exterior
-    walled = ring.intersection(host.polygon.boundary.buffer(SHAFT_WALL_REACH)).length
-    if walled < SHAFT_WALLED * ring.length:
+    mouth = _shaft_mouth(sp, host.polygon)
+    if mouth is None:
         return None
-    gap = ring.difference(host.polygon.boundary.buffer(SHAFT_WALL_REACH))
-    if gap.geom_type == "MultiLineString":  # an opening across the ring's first vertex comes in two pieces
-        from shapely.ops import linemerge
-
-        gap = linemerge(gap)
-    pieces = sorted(getattr(gap, "geoms", [gap]), key=lambda g: -g.length)
-    pieces = [g for g in pieces if not g.is_empty and g.length > 0.1]
-    if len(pieces) != 1:
-        return None
-    # the mouth: the straight line across the opening (its two ends)
-    ends = list(pieces[0].coords) if pieces[0].geom_type == "LineString" else []
-    if len(ends) < 2:
-        return None
-    mouth = LineString([ends[0], ends[-1]])
-    if not SHAFT_MOUTH[0] <= mouth.length <= min(SHAFT_MOUTH[1], SHAFT_MOUTH_SIDE * _short_side(sp)):
-        return None  # no opening, or a whole side open: the room goes on where the shaft ends (no door in a wall)
     inside = valid_polygon(host.polygon.intersection(sp))
     rest = valid_polygon(host.polygon.difference(sp))
     parts = sorted(getattr(rest, "geoms", [rest]), key=lambda g: -g.area)

@@ -847,3 +847,63 @@ def test_lift_door_boxes_type_the_smallest_car_sized_area_the_door_touches():
     assert [a.type for a in areas] == ["room", "elevator", "room", "room"]
     assert lift_door_boxes(areas, geoms) == {}  # typed already
     assert lift_door_boxes([Area(5, box(0, 0.1, 2, 2.6))], [_g("elevator", [(0.5, 0), (1.5, 0)])]) == {}  # no door
+
+
+def _core_floor(level, dx, dy, lift="shaft", stair_name="", anchored=False):
+    """A corridor (30 x 3 m), a stair core (3 x 5.8 m), a lift (2.2 x 2.4 m) and an office, shifted by (dx, dy).
+    ``anchored``: the core and the lift typed (the floor whose symbols survived). Otherwise untyped: the core
+    a room named ``stair_name`` (generated name if empty); ``lift``: "shaft" (a room of its own), "swallowed"
+    (joined to the corridor through its 1 m door gap, walls all round) or "room" (a taller room the shaft is
+    the bottom of: no wall where the shaft ends)."""
+    from shapely.ops import unary_union
+
+    def sh(g):
+        return affinity.translate(g, dx, dy)
+
+    corridor = box(0, 0, 30, 3)
+    core, car = box(3, 3.2, 6, 9), box(7, 3.2, 9.2, 5.6)
+    areas = [Area(1, sh(box(10, 3.2, 30, 9)), "room", f"{level}-1")]
+    passages = []
+    if lift == "swallowed":
+        corridor = unary_union([corridor, box(7.6, 2.9, 8.6, 3.3), car])
+    elif lift == "room":
+        areas.append(Area(3, sh(box(7, 3.2, 9.2, 9)), "room", f"{level}-3"))
+    else:
+        areas.append(Area(3, sh(car), "elevator" if anchored else "room", f"{level}-3"))
+    areas.append(Area(2, sh(core), "stairs" if anchored else "room", stair_name or f"{level}-2"))
+    areas.append(Area(4, sh(corridor), "corridor", f"{level}-4"))
+    for k, a in enumerate(areas[:-1]):
+        x = a.polygon.bounds[0] - dx + 0.5
+        passages.append(Passage(k + 1, 4, a.id, sh(LineString([(x, 3.1), (x + 0.9, 3.1)]))))
+    return FloorData(source=f"F{level}.osm", areas=areas, passages=passages, level=str(level))
+
+
+def test_a_floor_without_stairs_or_lifts_takes_the_shafts_whose_walls_stand_on_it(tmp_path):
+    """Filtered plans (SIST F1, F3-F5) show the walls of the stair cores and lift shafts but no symbol; the
+    floor above kept them (F2). Levels 0 and 1 (drawn 1.7 km away): the core is a room of the same outline
+    (typed stairs), the lift joined to the corridor through its door (carved out, with a passage through the
+    door); level 0 takes them from level 1 (chained). Level 3: a named room on the core ('Office 301') and a
+    room the lift shaft is only the bottom of (no wall where the shaft ends) stay as they are. Level 2 has
+    anchors of its own and is never retyped. Every shaft that spans two levels is linked: 2 + 2 + 0."""
+    floors = [_core_floor(0, 1500, -800, lift="swallowed"), _core_floor(1, 1500, -800, lift="swallowed"),
+              _core_floor(2, 0, 0, anchored=True), _core_floor(3, -300, 200, lift="room", stair_name="Office 301")]
+    n_in = sum(len(f.areas) for f in floors)
+    rec = RecordingProgress()
+    st = fuse_floors(floors, str(tmp_path / "b.osm"), FRAME, variant="fix-id", progress=rec)
+    assert {lv: t[3] for lv, t in st["transforms"].items()} == {"2": "reference", "0": "footprint", "1": "footprint",
+                                                               "3": "footprint"}
+    assert sorted((a, b, k) for a, b, _i, k in st["propagated"]) == [
+        ("1", "0", "elevator"), ("1", "0", "stairs"), ("2", "1", "elevator"), ("2", "1", "stairs")]
+    assert sorted((lo, hi, k) for lo, hi, _a, _b, k, _ov in st["vertical"]) == [
+        ("0", "1", "elevator"), ("0", "1", "stairs"), ("1", "2", "elevator"), ("1", "2", "stairs")]
+    assert st["vertical_passages"] == 4
+    assert st["areas_out"] == st["areas_in"] == n_in + 2 + 4 + 0  # 2 lifts carved, 4 level outlines (+ none lost)
+    areas, passages, _root, rep = osmag.read_osmag(str(tmp_path / "b.osm"))
+    assert rep["dangling_refs"] == []
+    by = {(a.tags.get("level"), a.type): a for a in areas}
+    lift1 = by[("1", "elevator")]
+    assert lift1.tags.get("cad2osmag:carved") == "yes" and lift1.tags.get("cad2osmag:shaft_from") == "level 2"
+    door = [p for p in passages if lift1.id in (p.from_id, p.to_id) and p.tags.get("osmAG:vertical") != "yes"]
+    assert len(door) == 1
+    assert {a.type for a in areas if a.tags.get("level") == "3"} == {"room", "corridor", "structure"}
+    assert any("level 1 shows no stair or lift" in m for _k, m in rec.messages)
