@@ -16,6 +16,11 @@ layer), so the symbols are also found by their shape, whatever the layer:
   midpoints at 40–140°, i.e. the diagonals of a car or shaft 1–3 m a side (:func:`find_lift_crosses`).
 An area that holds most of a stair run becomes ``stairs``; the smallest area holding a lift cross
 becomes ``elevator`` (when it is not much larger than the cross's box).
+
+A plan reduced to its structure by turning layers off still holds its symbols: ``symbol_evidence`` adds the
+drawing's hidden stair/lift lines and the lines of lift-named blocks (``cad_explode.hidden_symbols``, kept
+when the drawing shows none) to the evidence, never to the walls; an elevator door symbol types the car-sized
+box behind it (:func:`lift_door_boxes`).
 """
 from __future__ import annotations
 

@@ -18,6 +18,11 @@
    Floors without a usable anchor match fall back to footprint registration (translation by
    cross-correlation of the area outlines, as ``rasterize.floor_offsets`` does for walls), with a
    warning.
+3b. **Shafts of floors that show none** (:func:`propagate_shafts`). A floor with no anchor at all (a plan
+   whose stair/lift symbols were filtered away) takes the shafts of the consecutive floors, once registered,
+   where their walls stand on it: an untyped, unnamed area of the same outline is typed alike; a shaft the
+   segmentation joined to a larger area, whose walls stand around it with one door-sized opening, is carved
+   out of it with a passage through the door. Chained floor to floor.
 4. **Stitching.** On consecutive converted levels, anchors of the same type that overlap (overlap ≥
    ``MIN_SHAFT_OVERLAP`` of the smaller) are joined by a vertical passage: a two-node way inside both
    shafts, with the upper floor's level and height (``../shared/docs/osmag-format.md``). Same shaft code
@@ -1206,7 +1211,8 @@ def propagate_shafts(floors: Sequence[FloorData], targets: Sequence[bool], progr
     ``SHAFT_PRISM_OVERLAP`` of its own outline and of a shaft's outline on the floor above or below (at most
     ``SHAFT_MAX_AREA``) is that shaft, typed alike with ``cad2osmag:shaft_from`` = the level it came from.
     Chains through consecutive such floors (F2's lifts type F3's shafts, those F4's). Floors with anchors of
-    their own are never retyped. Returns [(from level, to level, area id, kind)]."""
+    their own are never retyped. A shaft the segmentation joined to a larger area is carved out of it
+    (:func:`_carve_shaft`). Returns [(from level, to level, area id, kind, carved)]."""
     from shapely.strtree import STRtree
 
     progress = ensure(progress)
@@ -1253,20 +1259,23 @@ def propagate_shafts(floors: Sequence[FloorData], targets: Sequence[bool], progr
                         cand, tree = trees[j]
                     best.type = kind
                     best.tags = dict(best.tags or {}, **{"cad2osmag:shaft_from": f"level {floors[k].level}"})
-                    out.append((floors[k].level, floors[j].level, best.id, kind))
+                    out.append((floors[k].level, floors[j].level, best.id, kind,
+                                best.tags.get("cad2osmag:carved") == "yes"))
                     changed = True
     if out:
         for lv in sorted({t[1] for t in out}, key=_level_value):
             got = [t for t in out if t[1] == lv]
             progress.info(f"level {lv} shows no stair or lift: {sum(t[3] == 'stairs' for t in got)} stair(s) and "
                           f"{sum(t[3] == 'elevator' for t in got)} lift(s) typed where the walls of a shaft of the "
-                          "floor above or below stand (" + ", ".join(f"area {t[2]} from level {t[0]}" for t in got) + ")")
+                          f"floor above or below stand, {sum(t[4] for t in got)} of them carved out of the area that "
+                          "swallowed them (" + ", ".join(f"area {t[2]} from level {t[0]}" for t in got) + ")")
     return out
 
 
 SHAFT_WALL_REACH = 0.3  # metres: a shaft's outline within this of its host's boundary has its wall on this floor
 SHAFT_WALLED = 0.6  # share of a shaft's outline that must run along walls of the host for the shaft to be carved
 SHAFT_MOUTH = (0.6, 3.0)  # metres: the opening of a carved shaft onto its host (a lift door, a stair's mouth)
+SHAFT_HELD = 0.8  # share of the shaft's outline inside the one area that swallowed it (the rest: its walls)
 SHAFT_MOUTH_SIDE = 0.75  # the opening at most this share of the shaft's short side: a door with wall beside it
 
 
@@ -1278,10 +1287,11 @@ def _short_side(poly) -> float:
 def _shaft_mouth(shaft, host, step: float = 0.05, probe: float = 0.3):
     """The opening of ``shaft`` onto ``host`` (a LineString across it), when the shaft's walls stand on the
     host's floor: walking its outline every ``step`` m, a point is open when the host holds the whole probe
-    from it ``probe`` m outwards (the host goes on there), walled when a wall cuts the probe. None unless ≥ ``SHAFT_WALLED`` of the outline is walled and the
-    open part is one run of ``SHAFT_MOUTH`` metres (the probe reaches past a wall face drawn up to
-    ``probe`` m apart on the two floors, yet no wall is thinner than it is long), at most ``SHAFT_MOUTH_SIDE`` of the shaft's short side (a
-    door with wall beside it; a whole side open is a room that goes on where the shaft ends)."""
+    from it ``probe`` m outwards (the host goes on there), walled when a wall cuts the probe (so a wall face
+    drawn up to ``probe`` m apart on the two floors still reads as a wall). None unless ≥ ``SHAFT_WALLED`` of
+    the outline is walled and the open part is one run (shorter runs at corners ignored) of ``SHAFT_MOUTH``
+    metres, at most ``SHAFT_MOUTH_SIDE`` of the shaft's short side: a door with wall beside it; a whole side
+    open is a room that goes on where the shaft ends."""
     import shapely
     from shapely.geometry import LineString
     from shapely.geometry.polygon import orient
@@ -1318,7 +1328,7 @@ def _shaft_mouth(shaft, host, step: float = 0.05, probe: float = 0.3):
 
 def _carve_shaft(fl: FloorData, shaft: Area, cand: List[Area], tree) -> Optional[Area]:
     """The shaft ``shaft`` (of a consecutive floor, registered) swallowed by an untyped area of ``fl`` (a lift
-    car the segmentation joined to its lobby through the door gap): when one area holds ≥ 90 % of it, is at
+    car the segmentation joined to its lobby through the door gap): when one area holds ``SHAFT_HELD`` of it, is at
     least twice its size, and its boundary runs along ≥ ``SHAFT_WALLED`` of the shaft's outline (the shaft's
     walls stand on this floor too) leaving one opening of ``SHAFT_MOUTH`` (its door), the shaft is cut out of
     that area as an area of its own (returned, appended to ``fl.areas``, with a passage through the opening);
@@ -1326,7 +1336,7 @@ def _carve_shaft(fl: FloorData, shaft: Area, cand: List[Area], tree) -> Optional
     sp = shaft.polygon
     hosts = [cand[i] for i in tree.query(sp, predicate="intersects")]
     hosts = [h for h in hosts if not anchor_kind(h) and h.polygon.area >= 2 * sp.area
-             and h.polygon.intersection(sp).area >= 0.9 * sp.area]
+             and h.polygon.intersection(sp).area >= SHAFT_HELD * sp.area]
     if len(hosts) != 1:
         return None
     host = hosts[0]

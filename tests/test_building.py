@@ -311,21 +311,34 @@ def test_stair_treads_and_lift_crosses_are_found_on_any_layer():
 
 
 @pytest.mark.slow
-def test_filtered_sist_floors_have_no_stair_or_lift_symbols(shared_data):
-    """Counted by hand once (plots of every floor): the filtered SIST DXFs keep walls, doors/windows and
-    glazing only. F1's stair/lift layer 'A—楼梯、电梯、栏杆' is empty and F2-F5 have none; no tread
-    runs or lift crosses are drawn on any other layer, so no shaft can come from the geometry and the
-    fusion registers these floors by their outlines (pinned below and in the SIST fusion test)."""
-    from algorithms import cad_import
+def test_filtered_sist_floors_hide_their_stair_and_lift_symbols(shared_data, floor_cache):
+    """Counted once on every floor (ezdxf walk of every entity, nested blocks included; plots with the DWG
+    originals' stairs and lifts over them, same frames): the filtered SIST DXFs show walls, doors/windows and
+    glazing only, no stair or lift symbol on a visible layer, no tread run, no lift cross. But F1 and F2 were
+    filtered by turning layers off, and keep what they hide: F1 a glass lift in the courtyard (block 'ae' on
+    the off layer 'A—楼梯、电梯、栏杆': 11 lines on 'E1-RI-1F$0$A-EVTR', 2 arcs on layer 0, and an elevator door
+    block 'Elevator - Single Side Open - 54_w x 96_h' of 8 lines), F2 the stairs and lifts of the E1 wing (bound
+    xref 'E1-RV-2F' on the off layer '$1$A-A-建筑索引': 291 stair lines of 4 cores with treads and 3 arrow marks,
+    66 lift-layer lines (5 cars with crosses) and 5 elevator door blocks of 8 lines). F3-F5 hold none, hidden or
+    not. The hidden ones are the typing evidence (``CadDrawing.hidden_symbols``): F2 gets 4 stair cores and 5
+    lifts; F1's glass lift has no walls in the drawing (the walls of block 'ae' are hidden with it), so no area."""
     from algorithms.area_types import find_lift_crosses, find_stair_runs
 
     folder = shared_data / "dxf" / "sist"
     if not folder.is_dir():
         pytest.skip(f"{folder} is missing")
+    want = {1: (0, 13, 8), 2: (291, 66, 40), 3: (0, 0, 0), 4: (0, 0, 0), 5: (0, 0, 0)}
     for k in range(1, 6):
-        d = cad_import.import_dxf(str(folder / f"SIST-F{k}.dxf"))
+        d = floor_cache.import_dxf(str(folder / f"SIST-F{k}.dxf"))
         assert not [g for g in d.geometries if g.kind in ("stair", "elevator")], k
         assert find_stair_runs(d.geometries) == [] and find_lift_crosses(d.geometries) == [], k
+        h = d.hidden_symbols
+        got = (sum(g.kind == "stair" for g in h), sum(g.kind == "elevator" and not g.cls for g in h),
+               sum(g.cls == "lift door" for g in h))
+        assert got == want[k], k
+    f2 = floor_cache.process_floor(str(folder / "SIST-F2.dxf"), level="2")
+    typed = sorted(a.type for a in f2.refined.areas if a.type in ("stairs", "elevator"))
+    assert typed == ["elevator"] * 5 + ["stairs"] * 4
 
 
 # --------------------------------------------------------------------------- SIST, the whole building
@@ -335,11 +348,24 @@ SIST_FRAMES = {"2": "4", "4": "2"}  # F2 and F4 are drawn in one frame (../share
 @pytest.mark.slow
 def test_sist_five_filtered_floors_fuse_into_one_routable_building(shared_data, tmp_path, floor_cache):
     """The five filtered SIST floors, converted (the session's conversions, shared with test_real_plans; the
-    process pool: test_building_dwg.py), fused into one building. They sit
-    kilometres apart and carry no stair/lift geometry, so every floor is registered by its outline: F2
-    and F4, drawn in one frame, must come out with the same shift (registered independently, through
-    different neighbours), every floor must overlap its neighbours, nothing may be lost, and the
-    osmAG authors' parser must read the result (tests/test_osmag_client.py builds it)."""
+    process pool: test_building_dwg.py), fused into one building. They sit kilometres apart; only F2 types
+    stairs and lifts (from the symbols it hides, test above), so every other floor is registered by its outline
+    (F2 and F4, drawn in one frame, must come out with the same shift, registered through different
+    neighbours) and takes its shafts from the consecutive floors where their walls stand (``propagate_shafts``:
+    the same outline is typed, a lift the segmentation joined to its lobby is carved out at its door).
+
+    Hand count (plots of each filtered floor under the DWG original's stairs and lifts, same frames; DWG F2 is
+    not given): the filtered floors show walled cores for the stairs E1-ST-02/-06/-08/-09 (F2 treads) and the
+    lifts E1-P1, E1-S1, E1-P2, E2-P3, E2-P4 (F2 cars; F1 names them 无障碍电梯, 货梯, E1-P2, E2-P3, E2-P4).
+    Linked per pair: 1-2: 2 stairs (E1-ST-06, -02) + 4 lifts (E1-P1, E1-S1, E2-P3, E2-P4); 2-3: 4 + 5;
+    3-4: 4 + 4 (E2-P4: F4's E2 wing is one 272 m² hall holding its lifts, drawn without their shafts);
+    4-5: 3 (E1-ST-02, -08, -09) + 2 (E1-P1, E1-S1): 28. Not linked, each by what the drawing shows: F1's
+    E1-ST-08/-09 and E1-P2 lie open in a 50 m² room / a 240 m² corridor / the 2131 m² hall (no wall where
+    the shaft's walls stand above); F5's E1-ST-06 is part of a 47 m² room, and F5 has no lift E1-P2 (the DWG
+    F5 agrees: the room goes on where the F4 shaft ends). Every typed shaft of F1/F3/F4/F5 coincides with a
+    stair or lift of the DWG original (85-100 % of its area). Cores with no symbol on any filtered floor
+    (E1-ST-01/-03/-05, E2-ST-01: enclosed rooms; F2 draws only an arrow mark there) stay rooms. The osmAG
+    authors' parser must read the result (tests/test_osmag_client.py builds it)."""
     import time
 
     folder = shared_data / "dxf" / "sist"
@@ -356,13 +382,22 @@ def test_sist_five_filtered_floors_fuse_into_one_routable_building(shared_data, 
     t2 = time.perf_counter()
     print(f"SIST: convert {t1 - t0:.1f} s, merge {t2 - t1:.1f} s")
     assert st["levels"] == ["1", "2", "3", "4", "5"]
-    assert {v[3] for lv, v in st["transforms"].items() if lv != "1"} == {"footprint"}
+    assert {lv: v[3] for lv, v in st["transforms"].items()} == {"2": "reference", "1": "footprint",
+                                                                "3": "footprint", "4": "footprint", "5": "footprint"}
     assert len([w for w in st["warnings"] if "registered by its outline" in w]) == 4
     s2, s4 = np.array(st["transforms"]["2"][:2]), np.array(st["transforms"]["4"][:2])
-    assert np.hypot(*(s2 - s4)) < 0.1
-    assert np.hypot(*s2) > 1000  # kilometres apart before
-    assert st["areas_in"] == st["areas_out"] == sum(c[2] for c in conv) + 5
-    assert st["passages"] == sum(c[3] for c in conv) and st["vertical_passages"] == 0
+    assert np.hypot(*(s2 - s4)) < 0.1  # F4 onto F3 onto F2, F3 drawn 11.8 km away: back in F2's frame
+    assert min(np.hypot(*st["transforms"][lv][:2]) for lv in ("1", "3", "5")) > 1000  # kilometres apart before
+    carved = sum(1 for t in st["propagated"] if t[4])
+    assert carved == 15  # the lifts on F1 (4), F3 (5), F4 (4), F5 (2), each with its door passage
+    assert st["areas_in"] == st["areas_out"] == sum(c[2] for c in conv) + 5 + carved
+    assert st["passages"] == sum(c[3] for c in conv) + carved + st["vertical_passages"]
+    pairs = {}
+    for lo, hi, _a, _b, kind, _ov in st["vertical"]:
+        pairs.setdefault((lo, hi), []).append(kind)
+    assert {p: (v.count("stairs"), v.count("elevator")) for p, v in pairs.items()} == {
+        ("1", "2"): (2, 4), ("2", "3"): (4, 5), ("3", "4"): (4, 4), ("4", "5"): (3, 2)}
+    assert st["vertical_passages"] == 28
     areas, passages, root, rep = osmag.read_osmag(str(tmp_path / "SIST.osm"))
     assert rep["dangling_refs"] == [] and rep["variant"] == "fix-id"
     outl = {a.tags["level"]: a.polygon for a in areas if a.type == "structure" and a.name != "SIST"}
@@ -892,8 +927,9 @@ def test_a_floor_without_stairs_or_lifts_takes_the_shafts_whose_walls_stand_on_i
     st = fuse_floors(floors, str(tmp_path / "b.osm"), FRAME, variant="fix-id", progress=rec)
     assert {lv: t[3] for lv, t in st["transforms"].items()} == {"2": "reference", "0": "footprint", "1": "footprint",
                                                                "3": "footprint"}
-    assert sorted((a, b, k) for a, b, _i, k in st["propagated"]) == [
-        ("1", "0", "elevator"), ("1", "0", "stairs"), ("2", "1", "elevator"), ("2", "1", "stairs")]
+    assert sorted((a, b, k, c) for a, b, _i, k, c in st["propagated"]) == [
+        ("1", "0", "elevator", True), ("1", "0", "stairs", False), ("2", "1", "elevator", True),
+        ("2", "1", "stairs", False)]
     assert sorted((lo, hi, k) for lo, hi, _a, _b, k, _ov in st["vertical"]) == [
         ("0", "1", "elevator"), ("0", "1", "stairs"), ("1", "2", "elevator"), ("1", "2", "stairs")]
     assert st["vertical_passages"] == 4
