@@ -1077,6 +1077,8 @@ def fuse_floors(floors: Sequence[FloorData], out_path: str, frame, building_name
             p.line = R.geometry(p.line)
     progress.step(55)
     propagated = propagate_shafts(floors, [not a for a in anchors], progress) if register else []
+    if propagated:
+        _refine_on_propagated(floors, T, ref, propagated, transforms, residuals, centroid_res, rms, medians, progress)
     # ---- floor outlines and overlap check
     outlines = []
     for fl in floors:
@@ -1198,6 +1200,47 @@ def fuse_floors(floors: Sequence[FloorData], out_path: str, frame, building_name
     progress.info(f"building '{building_name}': {n} floors, {len(vertical)} vertical passages, "
                   f"{stats['areas_out']} areas (+1 building), {written['passages']} passages")
     return stats
+
+
+def _refine_on_propagated(floors, T, ref, propagated, transforms, residuals, centroid_res, rms, medians,
+                          progress) -> None:
+    """A floor registered by its outline that took shafts from a consecutive floor (``propagate_shafts``) is
+    registered again on those shared anchors (``register_anchors``), nearest the reference floor first, when
+    at least two match and the correction is small (under ``MATCH_TOLERANCE`` at the floor's centre, under
+    1°): moved in place, its transform and per-anchor residuals reported like an anchor registration."""
+    n = len(floors)
+    got = {t[1] for t in propagated}
+    for k in sorted((k for k in range(n) if floors[k].level in got), key=lambda k: abs(k - ref)):
+        fl = floors[k]
+        src = {t[0] for t in propagated if t[1] == fl.level}
+        js = [j for j in range(n) if floors[j].level in src and abs(j - k) == 1]
+        if not js:
+            continue
+        j = min(js, key=lambda j: abs(j - ref))
+        mine, theirs = floor_anchors(fl), floor_anchors(floors[j])
+        R, matches = register_anchors(mine, theirs)
+        if R is None or len(matches) < 2 or abs(R.degrees) > 1.0:
+            continue
+        c = np.array(_outline_of(fl).centroid.coords[0])
+        if np.hypot(*(R.apply(c) - c)) > MATCH_TOLERANCE:
+            continue
+        for a in fl.areas + fl.structures + ([fl.outline] if fl.outline is not None else []):
+            a.polygon = R.geometry(a.polygon)
+        for p in fl.passages:
+            p.line = R.geometry(p.line)
+        T[k] = T[k].then(R)
+        res = [(fl.areas[mine[i].index].name or str(fl.areas[mine[i].index].id),
+                floors[j].areas[theirs[jj].index].name or str(floors[j].areas[theirs[jj].index].id), round(d, 3))
+               for i, jj, d in matches]
+        cen = [R.apply(mine[i].xy) - theirs[jj].xy for i, jj, _ in matches]
+        residuals[fl.level] = res
+        centroid_res[fl.level] = [(r[0], r[1], round(float(np.hypot(*v)), 3)) for r, v in zip(res, cen)]
+        rms[fl.level] = float(math.sqrt(np.mean([d * d for _, _, d in res])))
+        medians[fl.level] = float(np.median([d for _, _, d in res]))
+        transforms[fl.level] = (T[k].tx, T[k].ty, T[k].degrees, f"footprint, refined on {len(matches)} shared shafts")
+        progress.info(f"level {fl.level}: registered again on level {floors[j].level} by the {len(matches)} shafts "
+                      f"they share, moved {np.hypot(*(R.apply(c) - c)):.3f} m, rotation {R.degrees:.3f}°, residual "
+                      f"RMS {rms[fl.level]:.3f} m, median {medians[fl.level]:.3f} m")
 
 
 SHAFT_PRISM_OVERLAP = 0.6  # shared area / each of the two outlines for an area to be the same shaft a floor up or down

@@ -161,7 +161,12 @@ def test_fusion_of_three_floors_drawn_in_different_frames(tmp_path):
 
 
 def test_floor_without_anchors_falls_back_to_its_outline_with_a_warning(tmp_path):
+    """Level 2 types no stair or lift, and the rooms where level 1 has them carry names of their own (a store,
+    a duct): they are not taken for the shafts (``propagate_shafts``), so nothing links; the floor is in place."""
     floors = [_floor(1), _floor(2, dx=700.0, dy=300.0, stairs=False)]
+    for a in floors[1].areas:
+        if a.id in (24, 25):
+            a.name = {24: "Store", 25: "Duct"}[a.id]
     rec = RecordingProgress()
     st = fuse_floors(floors, str(tmp_path / "b.osm"), FRAME, progress=rec)
     assert st["transforms"]["2"][3] == "footprint"
@@ -382,8 +387,11 @@ def test_sist_five_filtered_floors_fuse_into_one_routable_building(shared_data, 
     t2 = time.perf_counter()
     print(f"SIST: convert {t1 - t0:.1f} s, merge {t2 - t1:.1f} s")
     assert st["levels"] == ["1", "2", "3", "4", "5"]
-    assert {lv: v[3] for lv, v in st["transforms"].items()} == {"2": "reference", "1": "footprint",
-                                                                "3": "footprint", "4": "footprint", "5": "footprint"}
+    methods = {lv: v[3] for lv, v in st["transforms"].items()}
+    assert methods == {"2": "reference", "1": "footprint, refined on 6 shared shafts",
+                       "3": "footprint, refined on 9 shared shafts", "4": "footprint, refined on 8 shared shafts",
+                       "5": "footprint, refined on 5 shared shafts"}
+    assert st["overall_rms"] < 0.05  # cm: the shafts were typed where they coincide (the outline fit was 1 cm off)
     assert len([w for w in st["warnings"] if "registered by its outline" in w]) == 4
     s2, s4 = np.array(st["transforms"]["2"][:2]), np.array(st["transforms"]["4"][:2])
     assert np.hypot(*(s2 - s4)) < 0.1  # F4 onto F3 onto F2, F3 drawn 11.8 km away: back in F2's frame
@@ -925,8 +933,10 @@ def test_a_floor_without_stairs_or_lifts_takes_the_shafts_whose_walls_stand_on_i
     n_in = sum(len(f.areas) for f in floors)
     rec = RecordingProgress()
     st = fuse_floors(floors, str(tmp_path / "b.osm"), FRAME, variant="fix-id", progress=rec)
-    assert {lv: t[3] for lv, t in st["transforms"].items()} == {"2": "reference", "0": "footprint", "1": "footprint",
-                                                               "3": "footprint"}
+    assert {lv: t[3] for lv, t in st["transforms"].items()} == {
+        "2": "reference", "0": "footprint, refined on 2 shared shafts", "1": "footprint, refined on 2 shared shafts",
+        "3": "footprint"}
+    assert np.hypot(*st["transforms"]["1"][:2]) == pytest.approx(np.hypot(1500, 800), abs=0.05)
     assert sorted((a, b, k, c) for a, b, _i, k, c in st["propagated"]) == [
         ("1", "0", "elevator", True), ("1", "0", "stairs", False), ("2", "1", "elevator", True),
         ("2", "1", "stairs", False)]
