@@ -22,7 +22,8 @@
    whose stair/lift symbols were filtered away) takes the shafts of the consecutive floors, once registered,
    where their walls stand on it: an untyped, unnamed area of the same outline is typed alike; a shaft the
    segmentation joined to a larger area, whose walls stand around it with one door-sized opening, is carved
-   out of it with a passage through the door. Chained floor to floor.
+   out of it with a passage through the door. Chained floor to floor; the floor is then registered again on
+   the shafts it shares (:func:`_refine_on_propagated`).
 4. **Stitching.** On consecutive converted levels, anchors of the same type that overlap (overlap ≥
    ``MIN_SHAFT_OVERLAP`` of the smaller) are joined by a vertical passage: a two-node way inside both
    shafts, with the upper floor's level and height (``../shared/docs/osmag-format.md``). Same shaft code

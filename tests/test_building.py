@@ -357,7 +357,8 @@ def test_sist_five_filtered_floors_fuse_into_one_routable_building(shared_data, 
     stairs and lifts (from the symbols it hides, test above), so every other floor is registered by its outline
     (F2 and F4, drawn in one frame, must come out with the same shift, registered through different
     neighbours) and takes its shafts from the consecutive floors where their walls stand (``propagate_shafts``:
-    the same outline is typed, a lift the segmentation joined to its lobby is carved out at its door).
+    the same outline is typed, a lift the segmentation joined to its lobby is carved out at its door), then
+    is registered again on the shafts it shares with that floor (moved 2-10 mm, residual RMS < 1 cm).
 
     Hand count (plots of each filtered floor under the DWG original's stairs and lifts, same frames; DWG F2 is
     not given): the filtered floors show walled cores for the stairs E1-ST-02/-06/-08/-09 (F2 treads) and the
