@@ -954,3 +954,25 @@ def test_a_floor_without_stairs_or_lifts_takes_the_shafts_whose_walls_stand_on_i
     assert len(door) == 1
     assert {a.type for a in areas if a.tags.get("level") == "3"} == {"room", "corridor", "structure"}
     assert any("level 1 shows no stair or lift" in m for _k, m in rec.messages)
+
+
+@pytest.mark.qgis_process
+def test_mergefloors_headless_links_a_floor_through_the_symbols_its_neighbour_hides(tmp_path):
+    """Headless: two floors of one plan converted as users have them, level 2 with its stair treads and lift
+    cross on off layers (hidden), level 1 with walls only. ``cad2osmag:mergefloors`` types level 1's core and
+    shaft from level 2's and links both: 2 vertical passages, with the log saying which areas it typed."""
+    from .qgis_process import run_alg
+
+    files = []
+    for lv, hidden in (("1", False), ("2", True)):
+        src = _filtered_plan(tmp_path, f"plan-F{lv}", hidden_layers=hidden)
+        files.append(str(tmp_path / f"plan-F{lv}.osm"))
+        pipeline.convert_dxf(str(src), files[-1], level=lv)
+    out = tmp_path / "b.osm"
+    _, res, log = run_alg("mergefloors", {"INPUT": files, "BUILDING": "Filtered", "OUTPUT": str(out)})
+    assert res["FLOOR_COUNT"] == 2 and res["VERTICAL_PASSAGES"] == 2
+    assert "level 1 shows no stair or lift: 1 stair(s) and 1 lift(s)" in log
+    areas, _passages, _root, rep = osmag.read_osmag(str(out))
+    assert rep["dangling_refs"] == []
+    assert sorted(a.type for a in areas if a.tags.get("level") == "1" and a.type in ("stairs", "elevator")) == [
+        "elevator", "stairs"]
