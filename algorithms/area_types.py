@@ -134,6 +134,38 @@ def classify_vertical_areas(areas: Sequence[Area], geometries: Sequence[CadGeome
     if shapes:
         changed.update(classify_by_symbol_shapes(areas, geometries, symbols=symbols))
     changed.update(lift_door_boxes(areas, geometries))
+    changed.update(hidden_stair_marks(areas, geometries))
+    return changed
+
+
+STAIR_MARK_AREA = (6.0, 50.0)  # m²: a stair core (one dog-leg flight pair and its landings)
+STAIR_MARK_LENGTH = 1.0  # metres of hidden stair line inside the core at least
+
+
+def hidden_stair_marks(areas: Sequence[Area], geometries: Sequence[CadGeometry]) -> Dict[int, str]:
+    """What a plan whose stair layer was turned off keeps of an enclosed stair core drawn without treads: its
+    cut symbol (the zig-zag break line, an arrow) on the hidden stair layer (``cad_explode.HIDDEN_SYMBOL_CLS``;
+    SIST-F2 marks three cores so). An untyped area holding ≥ ``STAIR_MARK_LENGTH`` of such lines,
+    core-sized (``STAIR_MARK_AREA``, compact), is stairs. Only hidden lines count: a plan that shows its stair
+    layer types by treads and density. Returns {id: "stairs"}."""
+    from .cad_explode import HIDDEN_SYMBOL_CLS
+
+    marks = [g for g in geometries if g.cls == HIDDEN_SYMBOL_CLS and g.kind == "stair"]
+    lines = _lines(marks, "stair")
+    if not lines:
+        return {}
+    cand = [a for a in areas if a.type not in ("stairs", "elevator", "structure")
+            and STAIR_MARK_AREA[0] <= a.polygon.area <= STAIR_MARK_AREA[1]
+            and _elongation(a.polygon) <= MAX_LIFT_ELONGATION]
+    changed: Dict[int, str] = {}
+    tree = STRtree(lines)
+    for a in sorted(cand, key=lambda a: a.polygon.area):
+        hits = tree.query(a.polygon, predicate="intersects")
+        if not len(hits):
+            continue
+        if MultiLineString([lines[i] for i in hits]).intersection(a.polygon).length >= STAIR_MARK_LENGTH:
+            a.type = "stairs"
+            changed[a.id] = "stairs"
     return changed
 
 

@@ -790,6 +790,7 @@ def _explode(path: str, tol_du: float, progress, doc=None, repairs=None) -> _Raw
 
 # ------------------------------------------------------------------- stair / lift symbols the drawing hides
 LIFT_DOOR_CLS = "lift door"  # CadGeometry.cls of the lines of a lift-named block (an elevator door symbol)
+HIDDEN_SYMBOL_CLS = "hidden"  # CadGeometry.cls of a stair / lift line on a hidden layer
 _SYMBOL_TYPES = ("LINE", "LWPOLYLINE", "POLYLINE", "ARC")
 
 
@@ -806,8 +807,8 @@ def _lift_block(name: str, rules) -> bool:
 def hidden_symbols(doc, states, rules, scale: float, extent=None, max_depth: int = 12):
     """Stair and lift symbols a drawing holds but does not show, as ``CadGeometry`` (metres, kind "stair" /
     "elevator"): lines on stair / lift layers (by the layer rules) that are off or frozen, or inside a block
-    inserted on an off / frozen layer; and the lines of lift-named blocks ('Elevator - Single Side Open ...',
-    elevator door symbols, ``cls`` = ``LIFT_DOOR_CLS``), shown or not. A plan reduced to its structure by
+    inserted on an off / frozen layer (``cls`` = ``HIDDEN_SYMBOL_CLS``); and the lines of lift-named blocks
+    ('Elevator - Single Side Open ...', elevator door symbols, ``cls`` = ``LIFT_DOOR_CLS``), shown or not. A plan reduced to its structure by
     turning layers off keeps its stair treads and lift cars there: evidence of which area is a stair or a lift,
     never walls (nothing here is rasterized). ``extent`` (xmin, ymin, xmax, ymax, metres): only symbols within
     it (+ 1 m). Each block is flattened once, in its own coordinates."""
@@ -881,5 +882,5 @@ def hidden_symbols(doc, states, rules, scale: float, extent=None, max_depth: int
             if not (extent[0] - 1 <= cx <= extent[2] + 1 and extent[1] - 1 <= cy <= extent[3] + 1):
                 continue
         geoms.append(CadGeometry(layer=layer, kind=kind, coords=xy, entity="LINE",
-                                 cls=LIFT_DOOR_CLS if lift else ""))
+                                 cls=LIFT_DOOR_CLS if lift else HIDDEN_SYMBOL_CLS))
     return geoms
