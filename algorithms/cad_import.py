@@ -266,7 +266,7 @@ def _hidden_symbols(doc, raw, rules, scale, geoms, box, selected, progress) -> L
     t0 = time.perf_counter()
     out = hidden_symbols(doc, raw.states, rules, scale, box if isinstance(box, tuple) else None)
     if out:
-        n = sum(g.cls == "" for g in out)
+        n = sum(g.cls != "lift door" for g in out)
         progress.info(f"{n} stair/lift line(s) on hidden layers and {len(out) - n} of lift-named blocks kept as "
                       f"stair/lift evidence (not drawn; {time.perf_counter() - t0:.1f} s)")
     return out
