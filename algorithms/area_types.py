@@ -16,6 +16,11 @@ layer), so the symbols are also found by their shape, whatever the layer:
   midpoints at 40–140°, i.e. the diagonals of a car or shaft 1–3 m a side (:func:`find_lift_crosses`).
 An area that holds most of a stair run becomes ``stairs``; the smallest area holding a lift cross
 becomes ``elevator`` (when it is not much larger than the cross's box).
+
+A plan reduced to its structure by turning layers off still holds its symbols: ``symbol_evidence`` adds the
+drawing's hidden stair/lift lines and the lines of lift-named blocks (``cad_explode.hidden_symbols``, kept
+when the drawing shows none) to the evidence, never to the walls; an elevator door symbol types the car-sized
+box behind it (:func:`lift_door_boxes`).
 """
 from __future__ import annotations
 
@@ -128,6 +133,88 @@ def classify_vertical_areas(areas: Sequence[Area], geometries: Sequence[CadGeome
         _lift_cars_on_stair_layers(areas, geometries, changed, symbols)
     if shapes:
         changed.update(classify_by_symbol_shapes(areas, geometries, symbols=symbols))
+    changed.update(lift_door_boxes(areas, geometries))
+    changed.update(hidden_stair_marks(areas, geometries))
+    return changed
+
+
+STAIR_MARK_AREA = (6.0, 50.0)  # m²: a stair core (one dog-leg flight pair and its landings)
+STAIR_MARK_LENGTH = 1.0  # metres of hidden stair line inside the core at least
+
+
+def hidden_stair_marks(areas: Sequence[Area], geometries: Sequence[CadGeometry]) -> Dict[int, str]:
+    """What a plan whose stair layer was turned off keeps of an enclosed stair core drawn without treads: its
+    cut symbol (the zig-zag break line, an arrow) on the hidden stair layer (``cad_explode.HIDDEN_SYMBOL_CLS``;
+    SIST-F2 marks three cores so). An untyped area holding ≥ ``STAIR_MARK_LENGTH`` of such lines,
+    core-sized (``STAIR_MARK_AREA``, compact), is stairs. Only hidden lines count: a plan that shows its stair
+    layer types by treads and density. Returns {id: "stairs"}."""
+    from .cad_explode import HIDDEN_SYMBOL_CLS
+
+    marks = [g for g in geometries if g.cls == HIDDEN_SYMBOL_CLS and g.kind == "stair"]
+    lines = _lines(marks, "stair")
+    if not lines:
+        return {}
+    cand = [a for a in areas if a.type not in ("stairs", "elevator", "structure")
+            and STAIR_MARK_AREA[0] <= a.polygon.area <= STAIR_MARK_AREA[1]
+            and _elongation(a.polygon) <= MAX_LIFT_ELONGATION]
+    changed: Dict[int, str] = {}
+    tree = STRtree(lines)
+    for a in sorted(cand, key=lambda a: a.polygon.area):
+        hits = tree.query(a.polygon, predicate="intersects")
+        if not len(hits):
+            continue
+        if MultiLineString([lines[i] for i in hits]).intersection(a.polygon).length >= STAIR_MARK_LENGTH:
+            a.type = "stairs"
+            changed[a.id] = "stairs"
+    return changed
+
+
+LIFT_DOOR_GROUP = 0.3  # metres: lines of one elevator door symbol lie this close together
+LIFT_CAR_AREA = (1.0, 12.0)  # m²: the box behind a lift door (one car's shaft: 0.9 x 1.2 m to 3 x 4 m)
+LIFT_CAR_WIDTH = 0.8  # metres: narrower everywhere is a sliver, not a car
+
+
+def symbol_evidence(drawing) -> List[CadGeometry]:
+    """The geometries stair and lift areas are typed from: the drawing's, plus the stair / lift symbols it holds
+    but hides (``CadDrawing.hidden_symbols``: off layers, lift-named blocks); the very same list when it hides
+    none (``Symbols.same`` then holds for the carve)."""
+    hidden = getattr(drawing, "hidden_symbols", None) or []
+    return list(drawing.geometries) + list(hidden) if hidden else drawing.geometries
+
+
+def lift_door_boxes(areas: Sequence[Area], geometries: Sequence[CadGeometry]) -> Dict[int, str]:
+    """An elevator door symbol (the lines of a lift-named block, ``cad_explode.LIFT_DOOR_CLS``: 'Elevator -
+    Single Side Open - 54_w x 96_h', nested in a bound xref or not) opens from a lobby into the lift: of the
+    areas its symbol touches, the smallest car-sized one (``LIFT_CAR_AREA``, ``LIFT_CAR_WIDTH`` wide somewhere,
+    compact) is the shaft behind the door, typed elevator, unless an area it touches is a lift already (a cross
+    typed it). A door touching only larger areas (a car the segmentation merged into its lobby) types nothing.
+    Returns {id: "elevator"}."""
+    from shapely.ops import unary_union
+
+    from .cad_explode import LIFT_DOOR_CLS
+
+    doors = [LineString(g.coords[:, :2]) for g in geometries
+             if g.cls == LIFT_DOOR_CLS and len(g.coords) >= 2 and np.isfinite(g.coords).all()]
+    if not doors:
+        return {}
+    blobs = unary_union([d.buffer(LIFT_DOOR_GROUP / 2) for d in doors])
+    blobs = list(getattr(blobs, "geoms", [blobs]))
+    cand = [a for a in areas if a.type not in ("stairs", "structure") and a.polygon.area > 0]
+    tree = STRtree([a.polygon for a in cand]) if cand else None
+    changed: Dict[int, str] = {}
+    for blob in blobs:
+        if tree is None:
+            break
+        hits = [cand[i] for i in tree.query(blob, predicate="intersects")]
+        if any(a.type == "elevator" for a in hits):
+            continue
+        cars = [a for a in hits if LIFT_CAR_AREA[0] <= a.polygon.area <= LIFT_CAR_AREA[1]
+                and _elongation(a.polygon) <= MAX_LIFT_ELONGATION
+                and not a.polygon.buffer(-LIFT_CAR_WIDTH / 2).is_empty]
+        if cars:
+            car = min(cars, key=lambda a: a.polygon.area)
+            car.type = "elevator"
+            changed[car.id] = "elevator"
     return changed
 
 

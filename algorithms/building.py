@@ -18,6 +18,12 @@
    Floors without a usable anchor match fall back to footprint registration (translation by
    cross-correlation of the area outlines, as ``rasterize.floor_offsets`` does for walls), with a
    warning.
+3b. **Shafts of floors that show none** (:func:`propagate_shafts`). A floor with no anchor at all (a plan
+   whose stair/lift symbols were filtered away) takes the shafts of the consecutive floors, once registered,
+   where their walls stand on it: an untyped, unnamed area of the same outline is typed alike; a shaft the
+   segmentation joined to a larger area, whose walls stand around it with one door-sized opening, is carved
+   out of it with a passage through the door. Chained floor to floor; the floor is then registered again on
+   the shafts it shares (:func:`_refine_on_propagated`).
 4. **Stitching.** On consecutive converted levels, anchors of the same type that overlap (overlap ≥
    ``MIN_SHAFT_OVERLAP`` of the smaller) are joined by a vertical passage: a two-node way inside both
    shafts, with the upper floor's level and height (``../shared/docs/osmag-format.md``). Same shaft code
@@ -1071,6 +1077,9 @@ def fuse_floors(floors: Sequence[FloorData], out_path: str, frame, building_name
         for p in fl.passages:
             p.line = R.geometry(p.line)
     progress.step(55)
+    propagated = propagate_shafts(floors, [not a for a in anchors], progress) if register else []
+    if propagated:
+        _refine_on_propagated(floors, T, ref, propagated, transforms, residuals, centroid_res, rms, medians, progress)
     # ---- floor outlines and overlap check
     outlines = []
     for fl in floors:
@@ -1183,6 +1192,7 @@ def fuse_floors(floors: Sequence[FloorData], out_path: str, frame, building_name
     stats = {k: v for k, v in written.items() if k not in ("way_ids", "names")}
     stats.update({"floors": n, "levels": [fl.level for fl in floors], "transforms": transforms,
                   "residuals": residuals, "centroid_residuals": centroid_res, "rms": rms, "median_residual": medians, "vertical": links, "reference": floors[ref].level,
+                  "propagated": propagated,
                   "areas_in": areas_in, "areas_out": written["areas"] + written["structure_areas"] - 1,
                   "dropped_passages": {fl.level: fl.dropped_passages for fl in floors if fl.dropped_passages},
                   "warnings": warnings + written["warnings"],
@@ -1191,6 +1201,208 @@ def fuse_floors(floors: Sequence[FloorData], out_path: str, frame, building_name
     progress.info(f"building '{building_name}': {n} floors, {len(vertical)} vertical passages, "
                   f"{stats['areas_out']} areas (+1 building), {written['passages']} passages")
     return stats
+
+
+def _refine_on_propagated(floors, T, ref, propagated, transforms, residuals, centroid_res, rms, medians,
+                          progress) -> None:
+    """A floor registered by its outline that took shafts from a consecutive floor (``propagate_shafts``) is
+    registered again on those shared anchors (``register_anchors``), nearest the reference floor first, when
+    at least two match and the correction is small (under ``MATCH_TOLERANCE`` at the floor's centre, under
+    1°): moved in place, its transform and per-anchor residuals reported like an anchor registration."""
+    n = len(floors)
+    got = {t[1] for t in propagated}
+    for k in sorted((k for k in range(n) if floors[k].level in got), key=lambda k: abs(k - ref)):
+        fl = floors[k]
+        src = {t[0] for t in propagated if t[1] == fl.level}
+        js = [j for j in range(n) if floors[j].level in src and abs(j - k) == 1]
+        if not js:
+            continue
+        j = min(js, key=lambda j: abs(j - ref))
+        mine, theirs = floor_anchors(fl), floor_anchors(floors[j])
+        R, matches = register_anchors(mine, theirs)
+        if R is None or len(matches) < 2 or abs(R.degrees) > 1.0:
+            continue
+        c = np.array(_outline_of(fl).centroid.coords[0])
+        if np.hypot(*(R.apply(c) - c)) > MATCH_TOLERANCE:
+            continue
+        for a in fl.areas + fl.structures + ([fl.outline] if fl.outline is not None else []):
+            a.polygon = R.geometry(a.polygon)
+        for p in fl.passages:
+            p.line = R.geometry(p.line)
+        T[k] = T[k].then(R)
+        res = [(fl.areas[mine[i].index].name or str(fl.areas[mine[i].index].id),
+                floors[j].areas[theirs[jj].index].name or str(floors[j].areas[theirs[jj].index].id), round(d, 3))
+               for i, jj, d in matches]
+        cen = [R.apply(mine[i].xy) - theirs[jj].xy for i, jj, _ in matches]
+        residuals[fl.level] = res
+        centroid_res[fl.level] = [(r[0], r[1], round(float(np.hypot(*v)), 3)) for r, v in zip(res, cen)]
+        rms[fl.level] = float(math.sqrt(np.mean([d * d for _, _, d in res])))
+        medians[fl.level] = float(np.median([d for _, _, d in res]))
+        transforms[fl.level] = (T[k].tx, T[k].ty, T[k].degrees, f"footprint, refined on {len(matches)} shared shafts")
+        progress.info(f"level {fl.level}: registered again on level {floors[j].level} by the {len(matches)} shafts "
+                      f"they share, moved {np.hypot(*(R.apply(c) - c)):.3f} m, rotation {R.degrees:.3f}°, residual "
+                      f"RMS {rms[fl.level]:.3f} m, median {medians[fl.level]:.3f} m")
+
+
+SHAFT_PRISM_OVERLAP = 0.6  # shared area / each of the two outlines for an area to be the same shaft a floor up or down
+
+
+def propagate_shafts(floors: Sequence[FloorData], targets: Sequence[bool], progress=None) -> List[tuple]:
+    """A stair core or lift shaft is a vertical prism: its walls stand at the same place on every floor it
+    serves. A floor that shows no stair or lift at all (``targets``; its symbols were filtered away, as in
+    plans reduced to walls, doors and glazing) takes its shafts from the consecutive floors, once registered:
+    an area of it that is not typed, not named (a generated name or none) and shares at least
+    ``SHAFT_PRISM_OVERLAP`` of its own outline and of a shaft's outline on the floor above or below (at most
+    ``SHAFT_MAX_AREA``) is that shaft, typed alike with ``cad2osmag:shaft_from`` = the level it came from.
+    Chains through consecutive such floors (F2's lifts type F3's shafts, those F4's). Floors with anchors of
+    their own are never retyped. A shaft the segmentation joined to a larger area is carved out of it
+    (:func:`_carve_shaft`). Returns [(from level, to level, area id, kind, carved)]."""
+    from shapely.strtree import STRtree
+
+    progress = ensure(progress)
+    n = len(floors)
+    out: List[tuple] = []
+    trees = {}
+    for k in range(n):
+        if targets[k]:
+            cand = [a for a in floors[k].areas if a.type != "structure" and not a.polygon.is_empty]
+            trees[k] = (cand, STRtree([a.polygon for a in cand]) if cand else None)
+    changed = True
+    while changed:
+        changed = False
+        for k in range(n):
+            shafts = [a for a in floors[k].areas if anchor_kind(a) and 0 < a.polygon.area <= SHAFT_MAX_AREA]
+            for j in (k - 1, k + 1):
+                if not (0 <= j < n and j in trees and trees[j][1] is not None):
+                    continue
+                cand, tree = trees[j]
+                for s in shafts:
+                    kind = anchor_kind(s)
+                    best, best_iou = None, 0.0
+                    partnered = False
+                    for i in tree.query(s.polygon, predicate="intersects"):
+                        b = cand[i]
+                        inter = s.polygon.intersection(b.polygon).area
+                        if anchor_kind(b):
+                            partnered = partnered or (anchor_kind(b) == kind and inter >= MIN_SHAFT_OVERLAP
+                                                      * min(s.polygon.area, b.polygon.area))
+                            continue
+                        if anchor_name(b) or inter < SHAFT_PRISM_OVERLAP * max(s.polygon.area, b.polygon.area):
+                            continue
+                        iou = inter / (s.polygon.area + b.polygon.area - inter)
+                        if iou > best_iou:
+                            best, best_iou = b, iou
+                    if partnered:
+                        continue
+                    if best is None:
+                        best = _carve_shaft(floors[j], s, cand, tree)
+                        if best is None:
+                            continue
+                        cand.append(best)
+                        trees[j] = (cand, STRtree([a.polygon for a in cand]))
+                        cand, tree = trees[j]
+                    best.type = kind
+                    best.tags = dict(best.tags or {}, **{"cad2osmag:shaft_from": f"level {floors[k].level}"})
+                    out.append((floors[k].level, floors[j].level, best.id, kind,
+                                best.tags.get("cad2osmag:carved") == "yes"))
+                    changed = True
+    if out:
+        for lv in sorted({t[1] for t in out}, key=_level_value):
+            got = [t for t in out if t[1] == lv]
+            progress.info(f"level {lv} shows no stair or lift: {sum(t[3] == 'stairs' for t in got)} stair(s) and "
+                          f"{sum(t[3] == 'elevator' for t in got)} lift(s) typed where the walls of a shaft of the "
+                          f"floor above or below stand, {sum(t[4] for t in got)} of them carved out of the area that "
+                          "swallowed them (" + ", ".join(f"area {t[2]} from level {t[0]}" for t in got) + ")")
+    return out
+
+
+SHAFT_WALL_REACH = 0.3  # metres: a shaft's outline within this of its host's boundary has its wall on this floor
+SHAFT_WALLED = 0.6  # share of a shaft's outline that must run along walls of the host for the shaft to be carved
+SHAFT_MOUTH = (0.6, 3.0)  # metres: the opening of a carved shaft onto its host (a lift door, a stair's mouth)
+SHAFT_HELD = 0.8  # share of the shaft's outline inside the one area that swallowed it (the rest: its walls)
+SHAFT_MOUTH_SIDE = 0.75  # the opening at most this share of the shaft's short side: a door with wall beside it
+
+
+def _short_side(poly) -> float:
+    r = np.asarray(poly.minimum_rotated_rectangle.exterior.coords)
+    return float(min(np.hypot(*(r[1] - r[0])), np.hypot(*(r[2] - r[1]))))
+
+
+def _shaft_mouth(shaft, host, step: float = 0.05, probe: float = 0.3):
+    """The opening of ``shaft`` onto ``host`` (a LineString across it), when the shaft's walls stand on the
+    host's floor: walking its outline every ``step`` m, a point is open when the host holds the whole probe
+    from it ``probe`` m outwards (the host goes on there), walled when a wall cuts the probe (so a wall face
+    drawn up to ``probe`` m apart on the two floors still reads as a wall). None unless ≥ ``SHAFT_WALLED`` of
+    the outline is walled and the open part is one run (shorter runs at corners ignored) of ``SHAFT_MOUTH``
+    metres, at most ``SHAFT_MOUTH_SIDE`` of the shaft's short side: a door with wall beside it; a whole side
+    open is a room that goes on where the shaft ends."""
+    import shapely
+    from shapely.geometry import LineString
+    from shapely.geometry.polygon import orient
+
+    ring = orient(shaft, 1.0).exterior  # counter-clockwise: the outside is on the right
+    n = max(int(ring.length / step), 8)
+    d = np.linspace(0.0, ring.length, n, endpoint=False)
+    pts = shapely.get_coordinates(shapely.line_interpolate_point(ring, d))
+    nxt = shapely.get_coordinates(shapely.line_interpolate_point(ring, (d + step / 2) % ring.length))
+    t = nxt - pts
+    t /= np.maximum(np.hypot(t[:, 0], t[:, 1]), 1e-12)[:, None]
+    normal = np.column_stack([t[:, 1], -t[:, 0]])
+    open_ = np.ones(n, bool)
+    for r in np.arange(step, probe + 1e-9, step):  # open: the host all along the probe (a wall anywhere: walled)
+        out = pts + r * normal
+        open_ &= shapely.contains_xy(host, out[:, 0], out[:, 1])
+    if open_.mean() > 1.0 - SHAFT_WALLED or not open_.any() or open_.all():
+        return None
+    k = int(np.argmin(open_))  # start the walk on a wall: every open run is then whole
+    o = np.roll(open_, -k)
+    starts = np.flatnonzero(o & ~np.roll(o, 1))
+    ends = np.flatnonzero(~o[1:] & o[:-1]) + 1  # first walled sample after each run (o[0] is walled)
+    ends = np.append(ends, n) if o[-1] else ends
+    runs = [(i0, i1) for i0, i1 in zip(starts, ends) if (i1 - i0) * step >= SHAFT_MOUTH[0] / 3]  # corner noise out
+    if len(runs) != 1:
+        return None
+    idx = (np.arange(*runs[0]) + k) % n
+    run = pts[idx]
+    mouth = LineString([run[0], run[-1]])
+    if not SHAFT_MOUTH[0] <= mouth.length <= min(SHAFT_MOUTH[1], SHAFT_MOUTH_SIDE * _short_side(shaft)):
+        return None
+    return mouth
+
+
+def _carve_shaft(fl: FloorData, shaft: Area, cand: List[Area], tree) -> Optional[Area]:
+    """The shaft ``shaft`` (of a consecutive floor, registered) swallowed by an untyped area of ``fl`` (a lift
+    car the segmentation joined to its lobby through the door gap): when one area holds ``SHAFT_HELD`` of it, is at
+    least twice its size, and its boundary runs along ≥ ``SHAFT_WALLED`` of the shaft's outline (the shaft's
+    walls stand on this floor too) leaving one opening of ``SHAFT_MOUTH`` (its door), the shaft is cut out of
+    that area as an area of its own (returned, appended to ``fl.areas``, with a passage through the opening);
+    else None. The host keeps its id, name and passages (it must stay one piece)."""
+    sp = shaft.polygon
+    hosts = [cand[i] for i in tree.query(sp, predicate="intersects")]
+    hosts = [h for h in hosts if not anchor_kind(h) and h.polygon.area >= 2 * sp.area
+             and h.polygon.intersection(sp).area >= SHAFT_HELD * sp.area]
+    if len(hosts) != 1:
+        return None
+    host = hosts[0]
+    mouth = _shaft_mouth(sp, host.polygon)
+    if mouth is None:
+        return None
+    inside = valid_polygon(host.polygon.intersection(sp))
+    rest = valid_polygon(host.polygon.difference(sp))
+    parts = sorted(getattr(rest, "geoms", [rest]), key=lambda g: -g.area)
+    if not parts or parts[0].is_empty or sum(g.area for g in parts[1:]) > 0.5 or inside.is_empty:
+        return None
+    inside = max(getattr(inside, "geoms", [inside]), key=lambda g: g.area)
+    host.polygon = parts[0]
+    ids = [a.id for a in fl.areas + fl.structures] + ([fl.outline.id] if fl.outline is not None else [])
+    new = Area(id=max(abs(i) for i in ids) + 1, polygon=inside, type=shaft.type,
+               tags={"cad2osmag:carved": "yes"})
+    fl.areas.append(new)
+    if host.id in fl.parents:
+        fl.parents[new.id] = fl.parents[host.id]
+    pid = max([abs(p.id) for p in fl.passages] + [0]) + 1
+    fl.passages.append(Passage(id=pid, from_id=host.id, to_id=new.id, line=mouth))
+    return new
 
 
 def is_fix_id(path: str) -> bool:

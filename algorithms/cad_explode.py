@@ -786,3 +786,101 @@ def _explode(path: str, tol_du: float, progress, doc=None, repairs=None) -> _Raw
     out.texts = [t for t in out.texts if visible(t[5])]
     return _Raw(doc, path, out, states, _header_unit(doc), list(repairs or []), ex.warnings, tol_du, n)
 
+
+
+# ------------------------------------------------------------------- stair / lift symbols the drawing hides
+LIFT_DOOR_CLS = "lift door"  # CadGeometry.cls of the lines of a lift-named block (an elevator door symbol)
+HIDDEN_SYMBOL_CLS = "hidden"  # CadGeometry.cls of a stair / lift line on a hidden layer
+_SYMBOL_TYPES = ("LINE", "LWPOLYLINE", "POLYLINE", "ARC")
+
+
+def _lift_block(name: str, rules) -> bool:
+    """A block named like a lift ('Elevator - Single Side Open - 54_w x 96_h', 'X$0$电梯门'): the lift keywords
+    of the layer rules, on the block name without its bound-xref prefix."""
+    from .layer_rules import keyword_in, meaningful_part
+
+    low = meaningful_part(name).lower()
+    words = next((w for k, w in rules.kinds if k == "elevator"), [])
+    return any(keyword_in(w, low) for w in words)
+
+
+def hidden_symbols(doc, states, rules, scale: float, extent=None, max_depth: int = 12):
+    """Stair and lift symbols a drawing holds but does not show, as ``CadGeometry`` (metres, kind "stair" /
+    "elevator"): lines on stair / lift layers (by the layer rules) that are off or frozen, or inside a block
+    inserted on an off / frozen layer (``cls`` = ``HIDDEN_SYMBOL_CLS``); and the lines of lift-named blocks
+    ('Elevator - Single Side Open ...', elevator door symbols, ``cls`` = ``LIFT_DOOR_CLS``), shown or not. A plan reduced to its structure by
+    turning layers off keeps its stair treads and lift cars there: evidence of which area is a stair or a lift,
+    never walls (nothing here is rasterized). ``extent`` (xmin, ymin, xmax, ymax, metres): only symbols within
+    it (+ 1 m). Each block is flattened once, in its own coordinates."""
+    from .model import CadGeometry
+
+    lower = {k.lower(): v for k, v in states.items()}
+
+    def hidden_layer(name: str) -> bool:
+        st = states.get(name) or lower.get(name.lower())
+        return bool(st and (st[0] or st[1]))
+
+    cache = {}
+
+    def pieces(entities, depth):
+        """[(layer, coords (n, 2), hidden, lift block)] of ``entities`` in their own coordinates; layer "0"
+        is resolved by the caller (the INSERT's layer)."""
+        out = []
+        for e in entities:
+            try:
+                et = e.dxftype()
+                layer = e.dxf.get("layer", "0") or "0"
+                if et == "INSERT":
+                    if depth >= max_depth:
+                        continue
+                    name = e.dxf.get("name", "")
+                    if name not in cache:
+                        blk = doc.blocks.get(name)
+                        cache[name] = [] if blk is None or blk.block.is_xref else pieces(blk, depth + 1)
+                        if cache[name] and _lift_block(name, rules):
+                            cache[name] = [(L, c, h, True) for L, c, h, _ in cache[name]]
+                    sub = cache[name]
+                    if not sub:
+                        continue
+                    m = e.matrix44()
+                    A = np.array(((m[0, 0], m[1, 0]), (m[0, 1], m[1, 1])))
+                    t = np.array((m[3, 0], m[3, 1]))
+                    hid = hidden_layer(layer)
+                    for L, c, h, lift in sub:
+                        out.append((layer if L == "0" else L, c @ A.T + t, h or hid, lift))
+                    continue
+                if et not in _SYMBOL_TYPES:
+                    continue
+                if et == "LINE":
+                    s, f = e.dxf.start, e.dxf.end
+                    c = np.array(((s[0], s[1]), (f[0], f[1])), float)
+                elif et == "LWPOLYLINE":
+                    c = np.array([p[:2] for p in e.get_points("xy")], float)
+                    if e.closed and len(c) > 2:
+                        c = np.vstack([c, c[:1]])
+                elif et == "POLYLINE":
+                    c = np.array([(v.dxf.location[0], v.dxf.location[1]) for v in e.vertices], float)
+                else:
+                    c = np.array([(p[0], p[1]) for p in e.flattening(0.05 / max(scale, 1e-9))], float)
+                if len(c) >= 2 and np.isfinite(c).all():
+                    out.append((layer, c, hidden_layer(layer) if layer != "0" else False, False))
+            except Exception:  # a broken entity gives no evidence
+                continue
+        return out
+
+    geoms = []
+    for layer, c, hid, lift in pieces(doc.modelspace(), 0):
+        hid = hid or hidden_layer(layer)
+        kind = rules.classify(layer)[0]
+        if lift:
+            kind = "elevator"
+        elif not hid or kind not in ("stair", "elevator"):
+            continue
+        xy = c * scale
+        if extent is not None:
+            cx, cy = xy.mean(axis=0)
+            if not (extent[0] - 1 <= cx <= extent[2] + 1 and extent[1] - 1 <= cy <= extent[3] + 1):
+                continue
+        geoms.append(CadGeometry(layer=layer, kind=kind, coords=xy, entity="LINE",
+                                 cls=LIFT_DOOR_CLS if lift else HIDDEN_SYMBOL_CLS))
+    return geoms

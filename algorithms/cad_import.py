@@ -256,6 +256,22 @@ def _callouts_beside_plan(raw_texts, scale: float, extent, first_id: int) -> Lis
     return out
 
 
+def _hidden_symbols(doc, raw, rules, scale, geoms, box, selected, progress) -> List[CadGeometry]:
+    """``cad_explode.hidden_symbols`` of a drawing that shows no stair or lift symbol (a plan whose stair / lift
+    layers were turned off), within the kept plan; nothing when it shows some or the user chose the layers."""
+    from .cad_explode import hidden_symbols
+
+    if selected is not None or any(g.kind in ("stair", "elevator") for g in geoms):
+        return []
+    t0 = time.perf_counter()
+    out = hidden_symbols(doc, raw.states, rules, scale, box if isinstance(box, tuple) else None)
+    if out:
+        n = sum(g.cls != "lift door" for g in out)
+        progress.info(f"{n} stair/lift line(s) on hidden layers and {len(out) - n} of lift-named blocks kept as "
+                      f"stair/lift evidence (not drawn; {time.perf_counter() - t0:.1f} s)")
+    return out
+
+
 def _unusable(pieces: _Pieces, idx: Sequence[int], scale: float) -> Tuple[np.ndarray, np.ndarray]:
     """Per piece of ``idx``, tested on all vertices at once: (broken: it holds a NaN/inf coordinate or one beyond
     1e15 m once scaled (a filled piece's all-NaN rows only separate its rings); overlong: its extent in x or y,
@@ -529,6 +545,7 @@ def _import(path, rules, layers, units, include_doors, fallback_walls, drop_door
         boundary = [g for g in boundary if g.coords[:, 0].max() >= x0 - m and g.coords[:, 0].min() <= x1 + m
                     and g.coords[:, 1].max() >= y0 - m and g.coords[:, 1].min() <= y1 + m]
     partitions = _folding_partitions(p, scale, sel, classes) if selected is None else []
+    hidden_syms = _hidden_symbols(doc, raw, rules, scale, geoms, box, selected, progress)
     kept_layers = sorted({g.layer for g in geoms})
     progress.info("CAD import stages: " + ", ".join(f"{k} {v:.1f} s" for k, v in timings.items()))
     progress.step(100, f"{len(geoms)} geometries on {len(kept_layers)} layers, {len(texts)} texts, unit {unit}"
@@ -537,4 +554,4 @@ def _import(path, rules, layers, units, include_doors, fallback_walls, drop_door
                       header_unit=header, warnings=warnings, repairs=list(repairs), doors=doors, plans=plans,
                       classes=classes, timings=timings, hidden_texts=hidden, boundary=boundary,
                       undecoded=dict(getattr(doc, "undecoded", {})),  # DWG: types the reader cannot decode
-                      partitions=partitions)
+                      partitions=partitions, hidden_symbols=hidden_syms)

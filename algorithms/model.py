@@ -119,6 +119,9 @@ class CadDrawing:
     boundary: List[CadGeometry] = field(default_factory=list)
     # folding partitions (cad_classify.folding_partitions): lines where a room may be split between two names
     partitions: List[CadGeometry] = field(default_factory=list)
+    # stair / lift symbols the drawing holds but does not show (off / frozen layers, lift-named blocks), found when
+    # it shows none (cad_explode.hidden_symbols): evidence of stair / lift areas only, never drawn or rasterized
+    hidden_symbols: List[CadGeometry] = field(default_factory=list)
 
 
 # --------------------------------------------------------------------------- stage 2: raster

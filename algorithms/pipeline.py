@@ -17,7 +17,7 @@ from shapely.geometry import Polygon
 from shapely.ops import unary_union
 
 from . import anchors, cad_import, osmag, rasterize, refine, segmentation, semantics
-from .area_types import Symbols, classify_vertical_areas
+from .area_types import Symbols, classify_vertical_areas, symbol_evidence
 from .georef import LocalFrame
 from .errors import Canceled, InputError
 from .model import Area, AreaGraph, CadDrawing, OccupancyGrid
@@ -167,8 +167,9 @@ def process_floor(dxf_path: str, *, rules=None, layers=None, units=None, include
                 inside_points=_inside_points(drawing, name_rules, classified), door_hints=drawing.doors, footprint=True,
                 boundary=rasterize.boundary_mask(drawing.boundary, grid))
     t0, c0 = time.perf_counter(), time.process_time()
-    symbols = Symbols(drawing.geometries)  # segments, stair runs and lift crosses: found once, typing and carve
-    vertical = classify_vertical_areas(seg.areas, drawing.geometries, symbols=symbols)
+    evidence = symbol_evidence(drawing)  # the drawing's geometries, plus the stair/lift symbols it hides
+    symbols = Symbols(evidence)  # segments, stair runs and lift crosses: found once, typing and carve
+    vertical = classify_vertical_areas(seg.areas, evidence, symbols=symbols)
     if vertical:
         progress.info(f"{len(vertical)} stair/lift areas recognised from their symbols")
     protected = semantics.protect_labelled_areas(seg.areas, drawing.texts, min_area, name_rules,
@@ -216,7 +217,7 @@ def _inside_points(drawing: CadDrawing, name_rules, classified):
 def _carve_anchors(refined: AreaGraph, drawing: CadDrawing, grid, timings, cpu, progress, symbols=None) -> None:
     """``anchors.carve_anchors`` on the refined graph (labels repainted), timed with stage "types"."""
     t0, c0 = time.perf_counter(), time.process_time()
-    found = anchors.find_anchor_symbols(drawing.geometries, shapes=symbols)
+    found = anchors.find_anchor_symbols(symbol_evidence(drawing), shapes=symbols)
     st = anchors.carve_anchors(refined.areas, refined.passages, drawing.geometries, progress=progress.sub(95, 95),
                                symbols=found,
                                texts=list(drawing.texts) + list(getattr(drawing, "hidden_texts", None) or []))
