@@ -2150,15 +2150,17 @@ def _split_at_wall_openings(labels: np.ndarray, space: np.ndarray, resolution: f
 
 def _wall_line_doors(labels: np.ndarray, space: np.ndarray, dist: np.ndarray, resolution: float,
                      max_cut_m: float, group_peak: np.ndarray, stats: dict, occupied: Optional[np.ndarray] = None,
-                     scanned: bool = False):
+                     scanned: bool = False, openings=None):
     """``_split_at_wall_openings`` on the merged labels; new areas get their clearance peak.
-    Returns (labels, group_peak)."""
+    Returns (labels, group_peak). ``openings``: ``_wall_line_openings`` of the space, when already found
+    (``_prefetch_wall_lines``)."""
     t = time.perf_counter()
     peaks: dict = {}
     grown: dict = {}
     jog = FACE_JOG_PX if scanned else 0  # CAD rasters draw exact lines: only scanned faces jog
     jamb_ops = None
-    openings = _wall_line_openings(space, labels, resolution, max_cut_m, occupied, jambs=JAMB_CUTS, jog_px=jog)
+    if openings is None:
+        openings = _wall_line_openings(space, labels, resolution, max_cut_m, occupied, jambs=JAMB_CUTS, jog_px=jog)
     if JAMB_CUTS:
         openings, jamb_ops = openings
     ext = _block_extensions(space, ~space if occupied is None else occupied, openings, resolution,
@@ -2183,6 +2185,17 @@ def _wall_line_doors(labels: np.ndarray, space: np.ndarray, dist: np.ndarray, re
             group_peak[lid] = max(v, grown.get(lid, 0.0))
     stats["wall_line_s"] = time.perf_counter() - t
     return labels, group_peak
+
+def _prefetch_wall_lines(data: np.ndarray, space: np.ndarray, resolution: float, max_cut_m: float, scanned: bool):
+    """(``_observed_walls``, ``_wall_line_openings`` as ``_wall_line_doors`` finds them, or None without
+    ``WALL_CUTS``): they depend on the space only, not on the labels, so segment finds them on the second
+    core beside the skeleton."""
+    occupied = _observed_walls(data, space)
+    if not WALL_CUTS:
+        return occupied, None
+    jog = FACE_JOG_PX if scanned else 0
+    return occupied, _wall_line_openings(space, None, resolution, max_cut_m, occupied, jambs=JAMB_CUTS, jog_px=jog)
+
 
 # --------------------------------------------------------------------------- corridor loops
 CORRIDOR_LOOPS = True  # scanned maps: pieces that lead from a corridor back to it around a loop are corridor
@@ -3123,9 +3136,12 @@ def segment(grid: OccupancyGrid, door_width: float = DEFAULT_DOOR_WIDTH,
         space = space & ~pockets
         interior = interior & ~pockets
         dist[pockets] = 0
-    # the clearance basins depend on the space and its clearance only: the second core computes them
-    # while this one thins the skeleton
+    # the clearance basins, the observed walls and the openings in wall lines depend on the space and its
+    # clearance only: the second core computes them while this one thins the skeleton
     basins = _Background(lambda: _cells(space, dist))
+    scanned = bool((data == UNKNOWN).any())
+    max_cut_m = max(door_width + delta, envelope_gap)
+    wall_lines = _Background(lambda: _prefetch_wall_lines(data, space, res, max_cut_m, scanned))
     skel = skeleton_graph(space, res, prune=prune, dist=dist, progress=progress)
     stats["skeleton_s"] = time.perf_counter() - t
     stats.update(skeleton_nodes=float(skel.n_nodes), skeleton_edges=float(skel.n_edges),
@@ -3171,25 +3187,25 @@ def segment(grid: OccupancyGrid, door_width: float = DEFAULT_DOOR_WIDTH,
     labels = _single_pieces(labels)
     if CLUTTER_BORDERS:
         labels, group_peak = _join_cluttered_borders(labels, cell_label, lo, hi, border, group_peak, stats)
+    occupied, openings = wall_lines.result()
+    del wall_lines
     if WALL_CUTS:
-        labels, group_peak = _wall_line_doors(labels, space, dist, res, max(door_width + delta, envelope_gap),
-                                              group_peak, stats, _observed_walls(data, space),
-                                              scanned=bool((data == UNKNOWN).any()))
+        labels, group_peak = _wall_line_doors(labels, space, dist, res, max_cut_m, group_peak, stats, occupied,
+                                              scanned=scanned, openings=openings)
     labels, group_peak, dropped_px = _drop_outside_pockets(labels, free & ~interior, group_peak,
                                                            info.get("claimed"), info.get("inside_pixels"))
     info.pop("claimed", None)
     if dropped_px:
         stats["interior_area_m2"] -= dropped_px * res * res
         stats["outside_pockets_m2"] = dropped_px * res * res
-    if RAY_SPIKES and _observed_walls(data, space) is not None:  # recorded maps whose walls are occupied
+    if RAY_SPIKES and occupied is not None:  # recorded maps whose walls are occupied
         labels, group_peak = _drop_ray_spikes(labels, data, group_peak, res, stats)
-    scanned_map = (CORRIDOR_LOOPS or PARTITION_LINES) and bool((data == UNKNOWN).any())
+    scanned_map = (CORRIDOR_LOOPS or PARTITION_LINES) and scanned
     if CORRIDOR_LOOPS and scanned_map:  # scanned maps: corridors cut by clutter (CAD: doors);
         # after the outside pockets: no exterior recess is joined to a corridor
         labels, group_peak = _join_corridor_loops(labels, group_peak, res, stats)
     if PARTITION_LINES and WALL_CUTS and scanned_map:  # scanned maps: rooms open over their whole side
-        labels, group_peak = _cut_partition_lines(labels, space, dist, res, max(door_width + delta, envelope_gap),
-                                                  group_peak, stats, _observed_walls(data, space))
+        labels, group_peak = _cut_partition_lines(labels, space, dist, res, max_cut_m, group_peak, stats, occupied)
     stats["merge_s"] = time.perf_counter() - t
     progress.step(65, f"merged into {int(labels.max())} areas")
 
