@@ -534,6 +534,9 @@ def skeleton_graph(free_mask: np.ndarray, resolution: float, prune: float = 0.25
 
 
 # --------------------------------------------------------------------------- regions
+ZONES_SPLIT = 64  # nearest_seed_regions: from this many zones with several labels on, two threads share them
+
+
 def nearest_seed_regions(seeds: np.ndarray, space: np.ndarray, zones: Optional[np.ndarray] = None,
                          fill_zones: bool = True, progress=None) -> np.ndarray:
     """Give every pixel of ``space`` the label of the closest pixel of ``seeds`` (int32, 0 = no
@@ -580,16 +583,30 @@ def nearest_seed_regions(seeds: np.ndarray, space: np.ndarray, zones: Optional[n
 
         boxes = kernels.find_objects(zn)  # the boxes of the zones with several labels are the same
         nb = kernels.get()
-        for i, z in enumerate(np.nonzero(multi)[0].tolist()):
+        zs = np.nonzero(multi)[0].tolist()
+        if nb is not None:  # the same seed image and label lookup, compiled (kernels.py)
+            def zone_labels(part, check):
+                for i, z in enumerate(part):
+                    if check and progress is not None and i % 32 == 0:
+                        progress.check()
+                    rs, cs = boxes[z - 1]
+                    src, vals = nb.zone_seeds(zn, sd, rs.start, rs.stop, cs.start, cs.stop, z)
+                    _, nl = cv2.distanceTransformWithLabels(src, cv2.DIST_L2, 5, labelType=cv2.DIST_LABEL_PIXEL)
+                    nb.zone_assign(lab, zn, nl, vals, rs.start, cs.start, z)
+
+            if len(zs) >= ZONES_SPLIT:  # every zone writes its own pixels only: half of them on the second core
+                from .segmentation import _Background
+
+                other = _Background(lambda: zone_labels(zs[1::2], False))
+                zone_labels(zs[0::2], True)
+                other.result()
+            else:
+                zone_labels(zs, True)
+            zs = []
+        for i, z in enumerate(zs):
             if progress is not None and i % 32 == 0:
                 progress.check()
             sl = boxes[z - 1]
-            if nb is not None:  # the same seed image and label lookup, compiled (kernels.py)
-                rs, cs = sl
-                src, vals = nb.zone_seeds(zn, sd, rs.start, rs.stop, cs.start, cs.stop, z)
-                _, nl = cv2.distanceTransformWithLabels(src, cv2.DIST_L2, 5, labelType=cv2.DIST_LABEL_PIXEL)
-                nb.zone_assign(lab, zn, nl, vals, rs.start, cs.start, z)
-                continue
             inside = zn[sl] == z
             sub_seeds = np.where(inside, sd[sl], 0)
             flat = np.flatnonzero(sub_seeds.ravel())

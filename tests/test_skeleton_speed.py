@@ -36,3 +36,48 @@ def test_chain_lengths_of_single_pixels_and_an_empty_raster():
     got = _chain_lengths(lab, 3)
     assert np.array_equal(got, _chain_lengths_raster(lab, 3))
     assert got[1] == got[2] == 0 and got[3] == pytest.approx(2 + np.sqrt(2))
+
+
+def _zoned_seeds(seed):
+    """A 240 x 300 space with walls and holes, 120 zones (blocks of 20 x 30 px, some cut in two by a wall),
+    2-4 labels seeded in most zones (each label's seeds inside its zone)."""
+    rng = np.random.default_rng(seed)
+    space = rng.random((240, 300)) > 0.08
+    space[::37, :] = False
+    zones = (np.arange(240)[:, None] // 20) * 10 + np.arange(300)[None, :] // 30 + 1
+    zones = np.where(space, zones, 0).astype(np.int32)
+    seeds = np.zeros(space.shape, np.int32)
+    lid = 0
+    for z in range(1, 121):
+        rr, cc = np.nonzero(zones == z)
+        if len(rr) == 0 or rng.random() < 0.1:
+            continue
+        for _ in range(int(rng.integers(2, 5))):
+            lid += 1
+            k = rng.integers(0, len(rr), size=int(rng.integers(1, 6)))
+            seeds[rr[k], cc[k]] = lid
+    return seeds, space, zones
+
+
+@pytest.mark.parametrize("seed", range(2))
+def test_nearest_seed_regions_shared_by_two_threads_equal_one_thread_and_numpy(seed, monkeypatch):
+    """From ZONES_SPLIT zones on, two threads share the zones' transforms (each writes its own zone's
+    pixels): the same regions as one thread and as the numpy path."""
+    from algorithms import kernels, segmentation
+    from algorithms.skeleton import ZONES_SPLIT, nearest_seed_regions
+
+    seeds, space, zones = _zoned_seeds(seed)
+    assert len(np.unique(zones)) - 1 >= ZONES_SPLIT
+    monkeypatch.setattr(segmentation.os, "cpu_count", lambda: 2)
+    got = {}
+    try:
+        for name, env, compiled in (("two", "2", True), ("one", "1", True), ("numpy", "2", False)):
+            monkeypatch.setenv("CAD2OSMAG_THREADS", env)
+            kernels.set_enabled(compiled)
+            if compiled and kernels.get() is None:
+                pytest.skip("numba not available")
+            got[name] = nearest_seed_regions(seeds, space, zones=zones)
+    finally:
+        kernels.set_enabled(None)
+    assert np.array_equal(got["two"], got["one"]) and np.array_equal(got["two"], got["numpy"])
+    assert (got["two"][space] > 0).mean() > 0.9
