@@ -164,7 +164,15 @@ def _threads_on() -> bool:
     one-CPU machine, nor with ``CAD2OSMAG_THREADS=1`` in the environment."""
     if os.environ.get("CAD2OSMAG_THREADS", "").strip() == "1":
         return False
-    return (os.cpu_count() or 1) > 1
+    return _cpus() > 1
+
+
+def _cpus() -> int:
+    """The CPUs this process may run on (its affinity where the system tells it, else the machine's)."""
+    try:
+        return len(os.sched_getaffinity(0))
+    except (AttributeError, OSError):
+        return os.cpu_count() or 1
 
 
 _TRIM: dict = {}

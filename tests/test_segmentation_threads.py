@@ -32,7 +32,7 @@ def _rooms(seed, shape=(1200, 900), hall=False):
 @pytest.fixture
 def threads_on(monkeypatch):
     monkeypatch.setenv("CAD2OSMAG_THREADS", "2")
-    monkeypatch.setattr(seg.os, "cpu_count", lambda: 2)
+    monkeypatch.setattr(seg, "_cpus", lambda: 2)
 
 
 def test_background_returns_the_value_and_raises_the_error_in_the_caller(monkeypatch):
@@ -49,10 +49,10 @@ def test_background_returns_the_value_and_raises_the_error_in_the_caller(monkeyp
 
 
 def test_threads_are_off_on_one_cpu_or_when_asked(monkeypatch):
-    monkeypatch.setattr(seg.os, "cpu_count", lambda: 1)
+    monkeypatch.setattr(seg, "_cpus", lambda: 1)
     monkeypatch.delenv("CAD2OSMAG_THREADS", raising=False)
     assert not seg._threads_on()
-    monkeypatch.setattr(seg.os, "cpu_count", lambda: 2)
+    monkeypatch.setattr(seg, "_cpus", lambda: 2)
     assert seg._threads_on()
     monkeypatch.setenv("CAD2OSMAG_THREADS", "1")
     assert not seg._threads_on()

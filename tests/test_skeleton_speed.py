@@ -68,7 +68,7 @@ def test_nearest_seed_regions_shared_by_two_threads_equal_one_thread_and_numpy(s
 
     seeds, space, zones = _zoned_seeds(seed)
     assert len(np.unique(zones)) - 1 >= ZONES_SPLIT
-    monkeypatch.setattr(segmentation.os, "cpu_count", lambda: 2)
+    monkeypatch.setattr(segmentation, "_cpus", lambda: 2)
     got = {}
     try:
         for name, env, compiled in (("two", "2", True), ("one", "1", True), ("numpy", "2", False)):
