@@ -248,9 +248,10 @@ def _edt_upto(mask: np.ndarray, radii) -> np.ndarray:
     row strips on two threads (``_Background``), each grown by ``max(radii) + 2`` rows. The same
     comparisons as on ``_edt(mask)``: a pixel whose background pixel is within max(radii) + 1 has
     it inside its strip (OpenCV counts nothing beyond the image as background), a pixel farther out is
-    as far or farther in its strip. The values are not bit-identical to the whole transform's (its
-    ~1e-6 noise depends on the whole row), so the strips run only when no radius lies within 1e-4 of
-    a pixel distance (``_tie_free``); otherwise, with threads off or on a short raster, the whole."""
+    as far or farther in its strip. Distances beyond max(radii) + 1 are not those of the whole raster
+    (a strip does not see it all), so the result is for these comparisons only; as for the other windowed
+    transforms, the strips run only when no radius lies within 1e-4 of a pixel distance (``_tie_free``);
+    otherwise, with threads off or on a short raster, the whole."""
     radii = [float(r) for r in radii]
     m = int(math.ceil(max(radii))) + 2
     rows = mask.shape[0]
