@@ -76,6 +76,8 @@ Steps (``AreaGraph.stats`` keeps the wall time of each):
 from __future__ import annotations
 
 import math
+import os
+import threading
 import time
 from typing import Dict, List, Optional, Tuple
 
@@ -157,6 +159,78 @@ def _check_inputs(grid: OccupancyGrid, door_width: float, corridor_width: float,
 
 
 # --------------------------------------------------------------------------- helpers
+def _threads_on() -> bool:
+    """Whether independent raster passes of one floor run on two threads (``_Background``): not on a
+    one-CPU machine, nor with ``CAD2OSMAG_THREADS=1`` in the environment."""
+    if os.environ.get("CAD2OSMAG_THREADS", "").strip() == "1":
+        return False
+    return _cpus() > 1
+
+
+def _cpus() -> int:
+    """The CPUs this process may run on (its affinity where the system tells it, else the machine's)."""
+    try:
+        return len(os.sched_getaffinity(0))
+    except (AttributeError, OSError):
+        return os.cpu_count() or 1
+
+
+_TRIM: dict = {}
+
+
+def _release_thread_memory() -> None:
+    """Give the memory a finished helper thread freed back to the system (glibc keeps it in the thread's
+    own malloc arena, where the main thread's arrays cannot reuse it: SIST-F5.dwg's segmentation peaked
+    ~150 MB higher). ``malloc_trim`` where the C library has it (Linux), nothing elsewhere."""
+    if "fn" not in _TRIM:
+        fn = None
+        try:
+            import ctypes
+            import ctypes.util
+
+            libc = ctypes.CDLL(ctypes.util.find_library("c") or "libc.so.6")
+            fn = libc.malloc_trim
+            fn.argtypes = [ctypes.c_size_t]
+            fn.restype = ctypes.c_int
+        except (OSError, AttributeError):
+            fn = None
+        _TRIM["fn"] = fn
+    if _TRIM["fn"] is not None:
+        _TRIM["fn"](0)
+
+
+class _Background:
+    """``fn()`` computed on a helper thread while the caller goes on (OpenCV, numpy's whole-array
+    operations and the compiled kernels release the GIL, so the two cores work on one floor at once);
+    ``result()`` waits for it and returns its value or raises its exception. ``fn`` must only read
+    arrays no one writes meanwhile, and never touch ``progress``: its result is then the one a call
+    in line would give (deterministic). Runs in line when threads are off (``_threads_on``)."""
+
+    def __init__(self, fn):
+        self._value = self._error = None
+        self._thread = None
+        if not _threads_on():
+            self._run(fn)
+            return
+        self._thread = threading.Thread(target=self._run, args=(fn,), name="cad2osmag-raster", daemon=True)
+        self._thread.start()
+
+    def _run(self, fn):
+        try:
+            self._value = fn()
+        except BaseException as e:  # re-raised in the caller's thread by result()
+            self._error = e
+
+    def result(self):
+        if self._thread is not None:
+            self._thread.join()
+            self._thread = None
+            _release_thread_memory()
+        if self._error is not None:
+            raise self._error
+        return self._value
+
+
 def _edt(mask: np.ndarray) -> np.ndarray:
     """Euclidean distance (px, float32) of every True pixel to the nearest False pixel: the correctly
     rounded float32 square root of the exact squared distance, on any number of OpenCV threads."""
@@ -167,6 +241,59 @@ def _edt(mask: np.ndarray) -> np.ndarray:
     if cv2.getNumThreads() <= 1:
         dist = _exact_root(dist)
     return dist
+
+
+def _edt_upto(mask: np.ndarray, radii) -> np.ndarray:
+    """``_edt(mask)`` for use as thresholds only (``dist > r`` for ``r`` in ``radii``), computed as two
+    row strips on two threads (``_Background``), each grown by ``max(radii) + 2`` rows. The same
+    comparisons as on ``_edt(mask)``: a pixel whose background pixel is within max(radii) + 1 has
+    it inside its strip (OpenCV counts nothing beyond the image as background), a pixel farther out is
+    as far or farther in its strip. Distances beyond max(radii) + 1 are not those of the whole raster
+    (a strip does not see it all), so the result is for these comparisons only; as for the other windowed
+    transforms, the strips run only when no radius lies within 1e-4 of a pixel distance (``_tie_free``);
+    otherwise, with threads off or on a short raster, the whole."""
+    radii = [float(r) for r in radii]
+    m = int(math.ceil(max(radii))) + 2
+    rows = mask.shape[0]
+    if not (_threads_on() and rows >= 6 * m and mask.size >= 1 << 20 and all(_tie_free(r) for r in radii)):
+        return _edt(mask)
+    mid = rows // 2
+    low = _Background(lambda: _edt(mask[mid - m:]))
+    out = np.empty(mask.shape, np.float32)
+    out[:mid] = _edt(mask[:mid + m])[:mid]
+    out[mid:] = low.result()[m:]
+    return out
+
+
+SPLIT_MARGIN = 192  # rows by which each strip of ``_edt_split`` reaches into the other half
+
+
+def _edt_split(mask: np.ndarray) -> np.ndarray:
+    """``_edt(mask)``, the same values bit for bit, computed as two row strips on two threads
+    (``_Background``) that reach ``SPLIT_MARGIN`` rows into each other's half. Both transforms give the
+    correctly rounded root of the exact squared distance (``_edt``), so a pixel has its whole-raster value
+    when its nearest background pixel lies inside its strip; that is certain where the strip's distance is
+    at most the distance to the strip's far edge (OpenCV counts nothing beyond the image as background),
+    and checked for every row of both halves: a half that fails (a hall wider than the margin on the
+    split row) is computed again on the whole raster. Whole with threads off or on a short raster."""
+    rows = mask.shape[0]
+    m = SPLIT_MARGIN
+    if not (_threads_on() and rows >= 6 * m and mask.size >= 1 << 20):  # (small images: OpenCV's IPP path)
+        return _edt(mask)
+    mid = rows // 2
+    low = _Background(lambda: _edt(mask[mid - m:]))
+    out = np.empty(mask.shape, np.float32)
+    high = _edt(mask[:mid + m])
+    # row r of the upper half is exact when its largest distance is at most mid + m - r (its far edge)
+    ok = bool(np.all(high[:mid].max(axis=1) <= np.arange(mid + m, m, -1, dtype=np.float32)))
+    out[:mid] = high[:mid]
+    del high
+    below = low.result()
+    # row mid + i of the lower half: its far (upper) edge is m + i rows away
+    ok = ok and bool(np.all(below[m:].max(axis=1) <= np.arange(m, m + rows - mid, dtype=np.float32) + 1))
+    out[mid:] = below[m:]
+    del below
+    return out if ok else _edt(mask)
 
 
 def _exact_root(dist: np.ndarray) -> np.ndarray:
@@ -709,16 +836,26 @@ def building_interior(free: np.ndarray, resolution: float, envelope_gap: float =
     pad = int(math.ceil(scales[1] if len(scales) > 1 else rc0)) + 2
     shared = info.pop("_free_dist", None)  # supported_boundary's transform of the same free space, if any
     reuse = (shared is not None and shared.get("free") is free and unknown is None and shared["pad"] == pad
-             and shared["rc0"] == rc0)
+             and shared["rc0"] == rc0 and shared.get("radii") == scales[:2])
+    # the footprint disk's reach (the loop below needs it first with ``footprint``) depends only on the
+    # transform: computed on the second core while this one goes on with the envelope (``_Background``)
+    def start_far(d):
+        return (_Background(lambda: _reach(_outside_centres(d, scales[1]), scales[1], pad))
+                if footprint and len(scales) > 1 else None)
+
     if reuse and boundary is None:
         dist = shared["dist"]
+        far = start_far(dist)
         reach0 = shared["reach"] if "reach" in shared else _reach(shared["centres"], rc0, pad)
     elif reuse and boundary.any() and _tie_free(rc0) and _tie_free(scales[1] if len(scales) > 1 else rc0):
         # the kept lines are walls for the disk: the same transform, updated near them
         dist, reach0 = _with_lines(shared, boundary, scales[1] if len(scales) > 1 else rc0)
+        far = start_far(dist)
     else:
-        dist = _edt(np.pad(passable, pad, mode="constant", constant_values=True))
+        # compared with the envelope and the footprint radius only (_outside_centres)
+        dist = _edt_upto(np.pad(passable, pad, mode="constant", constant_values=True), scales[:2])
         check()
+        far = start_far(dist)
         reach0 = _reach(_outside_centres(dist, rc0), rc0, pad)
     del shared
     check()
@@ -750,10 +887,14 @@ def building_interior(free: np.ndarray, resolution: float, envelope_gap: float =
         if not open_pts and (k > 0 or not footprint):
             break
         check()
-        reach = _reach(_outside_centres(dist, rc), rc, pad) if k == 0 else _coarse_reach(passable, rc)
+        if k == 0 and far is not None:
+            reach = far.result()
+        else:
+            reach = _reach(_outside_centres(dist, rc), rc, pad) if k == 0 else _coarse_reach(passable, rc)
         check()
         if k == 0:
             del dist
+            far = None
         cand = free & reach0 & ~reach & ~claimed
         if not cand.any():
             continue
@@ -849,9 +990,11 @@ def supported_boundary(free: np.ndarray, boundary: np.ndarray, resolution: float
     # the envelope disk on the free space alone: computed with building_interior's padding and handed to
     # it (``info["_free_dist"]``), which needs the same distance transform when no line is kept
     pad = _envelope_pad(free.shape, resolution, envelope_gap)
-    dist_a = _edt(np.pad(free, pad, mode="constant", constant_values=True))
+    # compared with rc0 here and with building_interior's radii there only
+    radii = _exact_scales(free.shape, resolution, envelope_gap)
+    dist_a = _edt_upto(np.pad(free, pad, mode="constant", constant_values=True), radii)
     out_a = _outside_centres(dist_a, rc0)
-    shared = {"free": free, "pad": pad, "rc0": rc0, "dist": dist_a, "centres": out_a}
+    shared = {"free": free, "pad": pad, "rc0": rc0, "dist": dist_a, "centres": out_a, "radii": radii}
     if info is not None:
         info["_free_dist"] = shared
     # the lines take away the disk centres within rc0 of them: the distance to the free space's walls
@@ -1009,13 +1152,19 @@ def _near(mask: np.ndarray, r: float) -> np.ndarray:
 
 def _envelope_pad(shape, resolution: float, envelope_gap: float, footprint_gap: Optional[float] = None) -> int:
     """The padding of building_interior's distance transform (the largest exactly computed disk + 2)."""
+    return int(math.ceil(max(_exact_scales(shape, resolution, envelope_gap, footprint_gap)))) + 2
+
+
+def _exact_scales(shape, resolution: float, envelope_gap: float, footprint_gap: Optional[float] = None):
+    """The disk radii (px) building_interior compares its padded transform with: the envelope's and,
+    when the footprint scale fits the map, the footprint's."""
     rc0 = max(1.0, envelope_gap / 2.0 / resolution)
     fgap = FOOTPRINT_FACTOR * envelope_gap if footprint_gap is None else float(footprint_gap)
     scales = [rc0]
     if fgap > envelope_gap:
         rcf = fgap / 2.0 / resolution
         scales += [r for r in (rcf, 2.0 * rcf) if 2.0 * r <= max(shape)]
-    return int(math.ceil(scales[1] if len(scales) > 1 else rc0)) + 2
+    return scales[:2]
 
 
 def _narrow_pockets(space: np.ndarray, dist: np.ndarray, resolution: float) -> Optional[np.ndarray]:
@@ -1159,7 +1308,7 @@ def _cells(free: np.ndarray, dist: Optional[np.ndarray] = None) -> Tuple[np.ndar
     return dist, cells, peak_val
 
 
-def _edge_regions(skel: SkeletonGraph, space: np.ndarray, dist: np.ndarray, progress=None):
+def _edge_regions(skel: SkeletonGraph, space: np.ndarray, dist: np.ndarray, progress=None, cells=None):
     """The regions of the topology graph. Returns (regions int32, peak clearance px per region,
     number of clearance basins).
 
@@ -1168,9 +1317,9 @@ def _edge_regions(skel: SkeletonGraph, space: np.ndarray, dist: np.ndarray, prog
     every free pixel joins the closest edge piece of its own basin (Euclidean, grown through free
     space where the closest piece lies behind a wall). A basin no kept skeleton edge runs through
     (its clearance maximum lay only on pruned branches, or on none) has no region of its own: its
-    pixels join the neighbouring regions.
+    pixels join the neighbouring regions. ``cells``: ``_cells(space, dist)`` when already computed.
     """
-    _, basins, basin_peak = _cells(space, dist)
+    _, basins, basin_peak = _cells(space, dist) if cells is None else cells
     if progress is not None:
         progress.check()
     er = skel.edge_raster(lone_nodes=True).ravel()
@@ -2035,15 +2184,17 @@ def _split_at_wall_openings(labels: np.ndarray, space: np.ndarray, resolution: f
 
 def _wall_line_doors(labels: np.ndarray, space: np.ndarray, dist: np.ndarray, resolution: float,
                      max_cut_m: float, group_peak: np.ndarray, stats: dict, occupied: Optional[np.ndarray] = None,
-                     scanned: bool = False):
+                     scanned: bool = False, openings=None):
     """``_split_at_wall_openings`` on the merged labels; new areas get their clearance peak.
-    Returns (labels, group_peak)."""
+    Returns (labels, group_peak). ``openings``: ``_wall_line_openings`` of the space, when already found
+    (``_prefetch_wall_lines``)."""
     t = time.perf_counter()
     peaks: dict = {}
     grown: dict = {}
     jog = FACE_JOG_PX if scanned else 0  # CAD rasters draw exact lines: only scanned faces jog
     jamb_ops = None
-    openings = _wall_line_openings(space, labels, resolution, max_cut_m, occupied, jambs=JAMB_CUTS, jog_px=jog)
+    if openings is None:
+        openings = _wall_line_openings(space, labels, resolution, max_cut_m, occupied, jambs=JAMB_CUTS, jog_px=jog)
     if JAMB_CUTS:
         openings, jamb_ops = openings
     ext = _block_extensions(space, ~space if occupied is None else occupied, openings, resolution,
@@ -2068,6 +2219,17 @@ def _wall_line_doors(labels: np.ndarray, space: np.ndarray, dist: np.ndarray, re
             group_peak[lid] = max(v, grown.get(lid, 0.0))
     stats["wall_line_s"] = time.perf_counter() - t
     return labels, group_peak
+
+def _prefetch_wall_lines(data: np.ndarray, space: np.ndarray, resolution: float, max_cut_m: float, scanned: bool):
+    """(``_observed_walls``, ``_wall_line_openings`` as ``_wall_line_doors`` finds them, or None without
+    ``WALL_CUTS``): they depend on the space only, not on the labels, so segment finds them on the second
+    core beside the skeleton."""
+    occupied = _observed_walls(data, space)
+    if not WALL_CUTS:
+        return occupied, None
+    jog = FACE_JOG_PX if scanned else 0
+    return occupied, _wall_line_openings(space, None, resolution, max_cut_m, occupied, jambs=JAMB_CUTS, jog_px=jog)
+
 
 # --------------------------------------------------------------------------- corridor loops
 CORRIDOR_LOOPS = True  # scanned maps: pieces that lead from a corridor back to it around a loop are corridor
@@ -3000,7 +3162,7 @@ def segment(grid: OccupancyGrid, door_width: float = DEFAULT_DOOR_WIDTH,
 
     t = time.perf_counter()
     space = _without_specks(interior, res) if SPECK_M2 > 0 else interior
-    dist = _edt(space)
+    dist = _edt_split(space)  # (on both cores; the same values)
     progress.check()
     pockets = _narrow_pockets(space, dist, res)
     if pockets is not None:
@@ -3008,6 +3170,12 @@ def segment(grid: OccupancyGrid, door_width: float = DEFAULT_DOOR_WIDTH,
         space = space & ~pockets
         interior = interior & ~pockets
         dist[pockets] = 0
+    # the clearance basins, the observed walls and the openings in wall lines depend on the space and its
+    # clearance only: the second core computes them while this one thins the skeleton
+    basins = _Background(lambda: _cells(space, dist))
+    scanned = bool((data == UNKNOWN).any())
+    max_cut_m = max(door_width + delta, envelope_gap)
+    wall_lines = _Background(lambda: _prefetch_wall_lines(data, space, res, max_cut_m, scanned))
     skel = skeleton_graph(space, res, prune=prune, dist=dist, progress=progress)
     stats["skeleton_s"] = time.perf_counter() - t
     stats.update(skeleton_nodes=float(skel.n_nodes), skeleton_edges=float(skel.n_edges),
@@ -3017,7 +3185,8 @@ def segment(grid: OccupancyGrid, door_width: float = DEFAULT_DOOR_WIDTH,
                       f"{skel.n_edges} edges, {skel.pruned} branches shorter than {prune:g} m pruned")
 
     t = time.perf_counter()
-    cells, peak, n_basins = _edge_regions(skel, space, dist, progress=progress)
+    cells, peak, n_basins = _edge_regions(skel, space, dist, progress=progress, cells=basins.result())
+    del basins
     if space is not interior:
         cells[~interior] = 0
     stats["regions_s"] = time.perf_counter() - t
@@ -3052,25 +3221,25 @@ def segment(grid: OccupancyGrid, door_width: float = DEFAULT_DOOR_WIDTH,
     labels = _single_pieces(labels)
     if CLUTTER_BORDERS:
         labels, group_peak = _join_cluttered_borders(labels, cell_label, lo, hi, border, group_peak, stats)
+    occupied, openings = wall_lines.result()
+    del wall_lines
     if WALL_CUTS:
-        labels, group_peak = _wall_line_doors(labels, space, dist, res, max(door_width + delta, envelope_gap),
-                                              group_peak, stats, _observed_walls(data, space),
-                                              scanned=bool((data == UNKNOWN).any()))
+        labels, group_peak = _wall_line_doors(labels, space, dist, res, max_cut_m, group_peak, stats, occupied,
+                                              scanned=scanned, openings=openings)
     labels, group_peak, dropped_px = _drop_outside_pockets(labels, free & ~interior, group_peak,
                                                            info.get("claimed"), info.get("inside_pixels"))
     info.pop("claimed", None)
     if dropped_px:
         stats["interior_area_m2"] -= dropped_px * res * res
         stats["outside_pockets_m2"] = dropped_px * res * res
-    if RAY_SPIKES and _observed_walls(data, space) is not None:  # recorded maps whose walls are occupied
+    if RAY_SPIKES and occupied is not None:  # recorded maps whose walls are occupied
         labels, group_peak = _drop_ray_spikes(labels, data, group_peak, res, stats)
-    scanned_map = (CORRIDOR_LOOPS or PARTITION_LINES) and bool((data == UNKNOWN).any())
+    scanned_map = (CORRIDOR_LOOPS or PARTITION_LINES) and scanned
     if CORRIDOR_LOOPS and scanned_map:  # scanned maps: corridors cut by clutter (CAD: doors);
         # after the outside pockets: no exterior recess is joined to a corridor
         labels, group_peak = _join_corridor_loops(labels, group_peak, res, stats)
     if PARTITION_LINES and WALL_CUTS and scanned_map:  # scanned maps: rooms open over their whole side
-        labels, group_peak = _cut_partition_lines(labels, space, dist, res, max(door_width + delta, envelope_gap),
-                                                  group_peak, stats, _observed_walls(data, space))
+        labels, group_peak = _cut_partition_lines(labels, space, dist, res, max_cut_m, group_peak, stats, occupied)
     stats["merge_s"] = time.perf_counter() - t
     progress.step(65, f"merged into {int(labels.max())} areas")
 
