@@ -231,7 +231,7 @@ def test_dxftoosmag_headless_makes_a_curved_flight_an_island_stair(tmp_path):
 
     info = sample_building.generate_open_anchors(str(tmp_path), curved=True)
     out = tmp_path / "open-anchors.osm"
-    _, res, log = run_alg("dxftoosmag", {"INPUT": info["dxf"], "OUTPUT": str(out), "LEVEL": 1, "VARIANT": "fix-id"})
+    _, res, log = run_alg("dxftoosmag", {"INPUT": info["dxf"], "OUTPUT": str(out), "LEVEL": 1, "VARIANT": 1})
     assert "stair/lift area(s) carved out" in log
     areas, passages, _root, report = osmag.read_osmag(str(out))
     assert report["dangling_refs"] == []
