@@ -487,11 +487,12 @@ def _keyhole(pieces: List[Polygon], fpoly: Polygon, ends=None, doors=()) -> Opti
             cands.append((tip.length, tuple(pts[k]), tip.coords[-1]))
         cands.sort(key=lambda c: c[0])
         main, parts = None, []
+        inside = g.buffer(1e-6)
         for n, a, b in cands[:200]:
             if n < 1e-9 or (not keep_off.is_empty and keep_off.contains(shapely.points(b))):
                 continue
             seg = LineString([a, b])
-            if not g.buffer(1e-6).contains(seg) or seg.intersection(fpoly).length > 1e-6:
+            if not inside.contains(seg) or seg.intersection(fpoly).length > 1e-6:
                 continue  # through a column or out of the piece, or along the footprint's border
             if ends is not None and seg.distance(ends) < SLIT_CLEAR - 1e-6:
                 continue  # in front of the flight's first or last tread, where it is entered
