@@ -470,7 +470,7 @@ DWG_VERTICAL = {
 # lobby named 无障碍货梯, and the code named E1-S1's shaft; since 2026-12-02 a lift code written inside an empty
 # walled box names that box (anchors.coded_lift_recesses): its own 5.5 m² elevator area, 3 -> 4 lifts on F5.
 # A-A3-10-05 (4F): 9 of 9. A-A3-10-04 (3F): 9 of 9 since 2026-12-02 (session 7, was 8): A3-ST-08 (tag at 11958.6,
-# -6417.6) is a fanned flight of 17 treads (A3-RV-3F$0$A-STRS, 2.5 -> 4.5 m long, the first ten parallel: a 9.1 m²
+# -6417.6) is a fanned flight of 17 treads (A3-RV-3F$0$A-STRS, 2.5 -> 4.5 m long, only the first ones parallel: a 9.1 m²
 # run box) standing free in the atrium gallery 中庭回廊, no wall around it; it was left in the hall ("free-standing
 # curved flight": the run's box is no footprint of it). anchors.carve_anchors now carves such a flight by its
 # chained treads (_flight_ribbon: 17.4 m², passages across its first and last tread) as an island the gallery
