@@ -23,6 +23,12 @@ their cross, ``area_types.find_lift_crosses``) and, when one lies inside a large
 - the rest of the area stays as it was (its id, type and passages), split into pieces when the footprint
   cuts it in two; slivers thinner than ``MIN_PIECE_WIDTH`` or smaller than ``MIN_PIECE_AREA`` go to the
   footprint.
+- a stair standing free in a hall (no wall within reach: an island) is never a cut through the hall: the hall
+  goes round it, one ring opened by a ``SLIT`` (1 cm) along the shortest way from the stair's side to the
+  hall's outer border, off the stair's ends and the hall's doors (``_keyhole``; an osmAG area is one closed
+  way, a hole would be dropped). When the run's treads go on beyond it (a curved or fanned flight,
+  ``_continuing``), the stair is the whole flight: its treads chained one to the next and the area between
+  neighbouring treads (``_flight_ribbon``), entered across its two end treads.
 - a passage joins the footprint and each piece along every straight stretch of their common boundary (the
   open sides), and the area's old passages go to the piece they lie on.
 
@@ -222,10 +228,11 @@ def _groups(shapes: Sequence[Polygon], gap: float, angles=None, flight_gap: floa
     return out
 
 
-def find_anchor_symbols(geometries: Sequence[CadGeometry], shapes=None) -> List[Tuple[str, Polygon, tuple, bool]]:
+def find_anchor_symbols(geometries: Sequence[CadGeometry], shapes=None) -> List[Tuple[str, Polygon, tuple, object]]:
     """Stair footprints' cores (runs of treads, flights of one stair grouped) and lift groups (crosses)
-    the drawing shows, on any layer: [(kind, hull, tread angles (stairs; radians modulo pi), whether treads
-    continue beyond the hull (a curved flight))]. ``shapes``: the drawing's ``area_types.Symbols`` (segments,
+    the drawing shows, on any layer: [(kind, hull, tread angles (stairs; radians modulo pi), the flight when
+    treads continue beyond the hull (a curved or fanned flight: (footprint, end treads), True when none can be
+    drawn; None (or False) otherwise))]. ``shapes``: the drawing's ``area_types.Symbols`` (segments,
     runs and crosses found once for the typing), used when they are of the same geometries."""
     geoms = [g for g in geometries if g.kind != "boundary"]
     if shapes is None or not shapes.same(geoms):
@@ -240,20 +247,22 @@ def find_anchor_symbols(geometries: Sequence[CadGeometry], shapes=None) -> List[
     # a cross on or beside a flight is its break line (the cut of the plan through the flight), not a lift car
     crosses = [b for b in shapes.crosses if not any(b.distance(r) < BREAK_GAP for r, _ in runs)]
     out += [("elevator", g, ()) for g, _ in _groups(crosses, GROUP_GAP["elevator"])]
-    return [(k, g, a, i < len(groups) and curved[i]) for i, (k, g, a) in enumerate(out)]
+    return [(k, g, a, curved[i] if i < len(groups) else None) for i, (k, g, a) in enumerate(out)]
 
 
-def _continuing(groups, segs: np.ndarray) -> List[bool]:
+def _continuing(groups, segs: np.ndarray) -> list:
     """Per stair group: do tread-like segments (tread length, within 40 % of the group's treads) continue
     beyond it, just outside its hull (>= CONTINUING_TREADS of them within 0.6 m)? Then the straight run is
-    part of a curved (or winding) flight the box does not describe."""
+    part of a curved (or winding, or fanned) flight the box does not describe, and the group's entry is that
+    flight (``_flight_ribbon``: its footprint and its end treads), or True when no footprint can be drawn;
+    else None."""
     from shapely import STRtree, points
 
     from .area_types import TREAD_LENGTH
 
-    out = []
+    out: list = []
     if not len(segs):
-        return [False] * len(groups)
+        return [None] * len(groups)
     L = np.linalg.norm(segs[:, 1] - segs[:, 0], axis=1)
     keep = L >= 0.6 * TREAD_LENGTH[0]
     S, L = segs[keep], L[keep]
@@ -262,7 +271,7 @@ def _continuing(groups, segs: np.ndarray) -> List[bool]:
     tree = STRtree(mids)
     for hull, angles in groups:
         if not len(S) or not angles:
-            out.append(False)
+            out.append(None)
             continue
         t = np.array([math.cos(angles[0]), math.sin(angles[0])])
         width = _extent(hull, t)
@@ -273,8 +282,76 @@ def _continuing(groups, segs: np.ndarray) -> List[bool]:
             if min(da, math.pi - da) <= math.radians(25) and abs(L[i] - width) <= 0.4 * width and \
                     not inner.contains(mids[i]):
                 n += 1
-        out.append(n >= CONTINUING_TREADS)
+        if n < CONTINUING_TREADS:
+            out.append(None)
+            continue
+        ribbon = _flight_ribbon(hull, angles[0], S, L, A, mids, tree)
+        out.append(ribbon if ribbon is not None else True)
     return out
+
+
+TREAD_STEP = 0.6  # m: a tread this close to a tread of the flight (and within 25°, 40 % of its length) continues it
+FLIGHT_MAX_TREADS = 60  # a chain of treads longer than this is no flight (a hatch, a grid of parallel lines)
+FLIGHT_MAX_AREA = 80.0  # m²: a flight's footprint larger than this is no flight (as names' vertical_max_area)
+RIBBON_CONVEX = 0.9  # a flight's footprint covering this share of its convex hull is that hull (no curve)
+
+
+def _flight_ribbon(hull: Polygon, angle: float, S: np.ndarray, L: np.ndarray, A: np.ndarray, mids, tree
+                   ) -> Optional[Tuple[Polygon, object]]:
+    """The footprint of the flight a straight run (``hull``, treads at ``angle``) is part of: its treads, and
+    the tread-like segments continuing it one by one (each within ``TREAD_STEP`` of a tread already in, within
+    25° of it and of a length within 40 % of its: the treads of a fanned or curved flight turn and lengthen
+    little by little), joined pairwise (the quadrilateral between two neighbouring treads): the area between
+    the flight's strings, following their curve; and its end treads (those lying along that footprint's
+    border: where the flight is entered and left). None when the chain is no flight (longer than
+    ``FLIGHT_MAX_TREADS`` treads, a footprint over ``FLIGHT_MAX_AREA`` or not one piece, not two ends)."""
+    import shapely
+
+    inner = hull.buffer(0.05)
+    cand = tree.query(inner, predicate="contains")
+    members = [int(i) for i in cand if _angle_diff(A[i], angle) <= math.radians(25)]
+    if len(members) < 2:
+        return None
+    lines = shapely.linestrings(S)
+    inside = set(members)
+    frontier = list(members)
+    while frontier:
+        if len(inside) > FLIGHT_MAX_TREADS:
+            return None
+        i = frontier.pop()
+        for j in tree.query(shapely.buffer(lines[i], TREAD_STEP + 0.5 * L[i]), predicate="contains"):
+            j = int(j)
+            if j in inside or _angle_diff(A[j], A[i]) > math.radians(25) or abs(L[j] - L[i]) > 0.4 * L[i]:
+                continue
+            if shapely.distance(lines[i], lines[j]) > TREAD_STEP:
+                continue
+            inside.add(j)
+            frontier.append(j)
+    idx = sorted(inside)
+    quads = []
+    for a, i in enumerate(idx):
+        for j in idx[a + 1:]:
+            if shapely.distance(lines[i], lines[j]) <= TREAD_STEP:
+                quads.append(shapely.convex_hull(shapely.multipoints(np.concatenate([S[i], S[j]]))))
+    if not quads:
+        return None
+    rib = unary_union(quads)
+    rib = rib.buffer(0.05, join_style=2).buffer(-0.05, join_style=2)
+    if rib.geom_type != "Polygon" or rib.area > FLIGHT_MAX_AREA:
+        return None
+    rib = Polygon(rib.exterior)
+    edge = rib.exterior.buffer(0.03)
+    ends = [lines[i] for i in idx if shapely.intersection(lines[i], edge).length >= 0.8 * L[i]]
+    if len(ends) < 2:
+        return None
+    if rib.area >= RIBBON_CONVEX * rib.convex_hull.area:  # a straight or fanned flight whose treads a break line
+        rib = rib.convex_hull                             # shortens (the notch is no edge of the flight)
+    return rib, shapely.multilinestrings(ends)
+
+
+def _angle_diff(a: float, b: float) -> float:
+    d = abs(a - b) % math.pi
+    return min(d, math.pi - d)
 
 
 def _island_hole(g: Polygon, fpoly: Polygon) -> bool:
@@ -318,6 +395,130 @@ def _cut_islands(pieces: List[Polygon], fpoly: Polygon) -> Optional[List[Polygon
             return None
         out.extend(flat)
     return out
+
+
+FREE_FLIGHTS = True  # free-standing flights are islands their hall goes round, curved ones by their treads' footprint
+# (off: as before session 7: a straight one cuts its hall from wall to wall, a curved one stays in its hall)
+SLIT = 0.01  # m: width of the slit by which a hall's ring goes round a free-standing flight (an area is one ring)
+
+
+def _free_flight(flight, seen: Polygon, hpoly: Polygon, others: Sequence[Area], doors=()):
+    """(footprint, end treads, host pieces) of a free-standing flight (``_flight_ribbon``'s (footprint, end
+    treads)) in host ``hpoly`` (``seen``: the host, with the part of the stair beyond the plan when the outline
+    cuts it): the footprint within the host and off its neighbours, and the host around it as one ring: a
+    notch when the footprint reaches the host's outer border (a bite from its edge), else the island opened
+    by a ``SLIT`` to the outer border (``_keyhole``; ``doors``: the host's passage lines, which it avoids). None
+    when that leaves no valid host."""
+    rib, ends = flight
+    fp = rib.intersection(seen)
+    near = [a.polygon for a in _intersecting(others, fp)]
+    if near:
+        fp = fp.difference(unary_union(near))
+    parts = [g for g in getattr(fp, "geoms", [fp]) if g.geom_type == "Polygon" and g.area > 1e-6]
+    if not parts:
+        return None
+    fp = max(parts, key=lambda g: g.area)
+    fp = Polygon(fp.exterior)
+    rest = hpoly.difference(fp)
+    pieces = [g for g in getattr(rest, "geoms", [rest]) if g.geom_type == "Polygon" and g.area > 1e-6]
+    if any(_island_hole(g, fp) for g in pieces):
+        pieces = _keyhole(pieces, fp, ends, doors)
+    return (fp, ends, pieces) if pieces else None
+
+
+def _faces(ln: LineString, a: Polygon, b: Polygon, band: float = 0.05) -> bool:
+    """The passage line ``ln`` from ``a`` has ``b`` beside it: ``b`` fills at least 30 % of a ``band`` wide strip
+    along it on one side (a border straightened within 5 cm, half the strip's two sides), not a zero-width
+    spike of ``b``'s ring running along ``a``'s border."""
+    return b.intersection(ln.buffer(band, cap_style=2)).area >= 0.3 * band * ln.length
+
+
+def _tread_sides(fpoly: Polygon, angles):
+    """The sides of a flight's footprint parallel to its treads (its first and last tread), as one geometry."""
+    xy = np.asarray(fpoly.exterior.coords)
+    sides = [LineString([p, q]) for p, q in zip(xy[:-1], xy[1:]) if np.hypot(*(q - p)) >= MIN_PASSAGE]
+    sides = [ln for ln in sides if angles and _parallel(ln, angles)]
+    return unary_union(sides) if sides else None
+
+
+SLIT_CLEAR = 0.3  # m: a slit starts this far from the flight's end treads and ends this far from the host's doors
+
+
+def _keyhole(pieces: List[Polygon], fpoly: Polygon, ends=None, doors=()) -> Optional[List[Polygon]]:
+    """Pieces with a hole where the footprint is, opened by a slit ``SLIT`` wide along the shortest straight
+    way out of the footprint (square to its border, or to the nearest point of the piece's outer border) to
+    their outer border that crosses nothing but the piece, starting and passing ``SLIT_CLEAR`` off the
+    footprint's ``ends`` (where the flight is entered) and ending as far off the ``doors`` on it: each piece
+    stays one piece, one ring going round the footprint (the osmAG way of an area is one closed ring; a hole
+    would be dropped and the stair's passages would be off the hall's way). Other holes (columns) stay holes.
+    None when no slit opens it."""
+    import shapely
+
+    out = []
+    keep_off = unary_union([g.buffer(SLIT_CLEAR) for g in ([ends] if ends is not None else []) + list(doors)])
+    ring = fpoly.exterior
+    if not ring.is_ccw:
+        ring = LineString(list(ring.coords)[::-1])
+    ts = np.arange(0.05, ring.length, 0.1)
+    pts = np.array([ring.interpolate(t).coords[0] for t in ts]).reshape(-1, 2)
+    ahead = np.array([ring.interpolate(min(t + 0.01, ring.length)).coords[0] for t in ts]).reshape(-1, 2)
+    tangent = ahead - pts
+    tangent /= np.maximum(np.linalg.norm(tangent, axis=1)[:, None], 1e-12)
+    normal = np.stack([tangent[:, 1], -tangent[:, 0]], axis=1)  # outward of a counter-clockwise ring
+    ok = np.array([keep_off.is_empty or not keep_off.contains(shapely.points(q)) for q in pts], bool)
+    if ok.any():
+        pts, normal = pts[ok], normal[ok]
+    for g in pieces:
+        if not _island_hole(g, fpoly):
+            out.append(g)
+            continue
+        ext = LineString(g.exterior.coords)
+        reach = float(np.hypot(g.bounds[2] - g.bounds[0], g.bounds[3] - g.bounds[1])) + 1.0
+        cands = []
+        # square to the footprint's border: the first crossing of the piece's outer border ahead
+        rays = shapely.linestrings(np.stack([pts + 0.001 * normal, pts + reach * normal], axis=1))
+        xy, idx = shapely.get_coordinates(shapely.intersection(rays, ext), return_index=True)
+        for k in np.unique(idx).tolist():
+            q = xy[idx == k]
+            d = np.hypot(*(q - pts[k]).T)
+            cands.append((float(d.min()), tuple(pts[k]), tuple(q[int(np.argmin(d))])))
+        # ... or to the nearest point of the outer border
+        for k, tip in enumerate(shapely.shortest_line(shapely.points(pts), ext).tolist()):
+            cands.append((tip.length, tuple(pts[k]), tip.coords[-1]))
+        cands.sort(key=lambda c: c[0])
+        main, parts = None, []
+        inside = g.buffer(1e-6)
+        for n, a, b in cands[:200]:
+            if n < 1e-9 or (not keep_off.is_empty and keep_off.contains(shapely.points(b))):
+                continue
+            seg = LineString([a, b])
+            if not inside.contains(seg) or seg.intersection(fpoly).length > 1e-6:
+                continue  # through a column or out of the piece, or along the footprint's border
+            if ends is not None and seg.distance(ends) < SLIT_CLEAR - 1e-6:
+                continue  # in front of the flight's first or last tread, where it is entered
+            d = (np.asarray(b) - np.asarray(a)) / n
+            # from inside the footprint to just beyond the outer border: the slit cuts both rings cleanly
+            line = LineString([(a[0] - 0.05 * d[0], a[1] - 0.05 * d[1]), (b[0] + 0.05 * d[0], b[1] + 0.05 * d[1])])
+            opened = g.difference(line.buffer(SLIT / 2.0, cap_style=2))
+            parts = [q for q in getattr(opened, "geoms", [opened]) if q.geom_type == "Polygon" and q.area > 1e-6]
+            main = _opened(parts, g, fpoly)
+            if main is not None:
+                break
+        if main is None:
+            return None
+        out.append(main)
+        out.extend(q for q in parts if q is not main)
+    return out
+
+
+def _opened(parts: List[Polygon], g: Polygon, fpoly: Polygon) -> Optional[Polygon]:
+    """The main piece of ``g`` opened by a slit (``parts``) when it is one valid ring round the footprint (what
+    the slit cut off besides is a sliver: <= 5 % of ``g``), else None."""
+    main = max(parts, key=lambda q: q.area) if parts else None
+    if main is None or not main.is_valid or _island_hole(main, fpoly) or \
+            sum(q.area for q in parts) - main.area > 0.05 * g.area:
+        return None
+    return main
 
 
 def _parallel(ln: LineString, angles, tol_deg: float = 25.0) -> bool:
@@ -433,7 +634,8 @@ def carve_anchors(areas: List[Area], passages: List[Passage], geometries: Sequen
     ``carved`` [(kind, new area id, host id, m²)], ``pieces`` {new area id: ids of the host's other
     pieces when the carve cut it in two}, ``typed`` [(kind, area id)] (areas that are the anchor
     themselves, typed), ``skipped`` counts by reason, ``beyond`` [new area ids] (stairs the plan's outline
-    cuts through, carved whole: ``_beyond_the_plan``)."""
+    cuts through, carved whole: ``_beyond_the_plan``), ``islands`` [host ids] (halls kept whole round a
+    free-standing stair), ``free_flights`` [m²] (curved or fanned free-standing flights carved by their treads)."""
     progress = ensure(progress)
     symbols = find_anchor_symbols(geometries) if symbols is None else symbols
     stats: Dict[str, object] = {"symbols": len(symbols), "carved": [], "typed": [], "skipped": {}, "pieces": {}}
@@ -505,18 +707,36 @@ def carve_anchors(areas: List[Area], passages: List[Passage], geometries: Sequen
             continue
         rest = hpoly.difference(fpoly)
         pieces = [g for g in getattr(rest, "geoms", [rest]) if g.geom_type == "Polygon" and g.area > 1e-6]
+        ends = None  # the flight's end treads, where its passages lie (a free-standing curved flight)
         if any(_island_hole(g, fpoly) for g in pieces):
-            # a free-standing stair (an island in a hall): an area is one ring, so the hall is cut from wall to
-            # wall through the stair, along the stair's shorter way to the walls
-            if continues:
+            # a free-standing stair (an island in a hall): an area is one ring, so the hall goes round the stair,
+            # its ring opened by a slit to its outer border (_keyhole; a wall-to-wall cut with FREE_FLIGHTS off)
+            if continues is True or (continues and not FREE_FLIGHTS):
                 # the run is a straight part of a curved flight standing free in a hall: its box is no footprint,
                 # and a cut through the hall for it would fragment the hall for a fragment of a stair
                 skip("free-standing curved flight")
                 continue
-            pieces = _cut_islands(pieces, fpoly)
+            if continues:
+                # ... whose treads go on: the flight's own footprint (its treads between its strings), an island
+                # the hall keeps around it (one ring, opened by a slit to its outer border, _keyhole)
+                free = _free_flight(continues, seen, hpoly, [a for a in areas if a is not host and a.type != "structure"],
+                                    [p.line for p in passages if host.id in (p.from_id, p.to_id)])
+                if free is None:
+                    skip("free-standing curved flight")
+                    continue
+                fpoly, ends, pieces = free
+                stats.setdefault("free_flights", []).append(round(fpoly.area, 2))
+            elif FREE_FLIGHTS:
+                # a straight flight standing free: the hall goes round it (one ring opened by a slit), never cut
+                pieces = _keyhole(pieces, fpoly, _tread_sides(fpoly, angles),
+                                  [p.line for p in passages if host.id in (p.from_id, p.to_id)])
+            else:
+                pieces = _cut_islands(pieces, fpoly)
             if pieces is None:
                 skip("island with no cut to the walls")
                 continue
+            if FREE_FLIGHTS:
+                stats.setdefault("islands", []).append(host.id)
         keep = [g for g in pieces if _width_ok(g)]
         small = [g for g in pieces if not _width_ok(g)]
         if small:
@@ -642,10 +862,18 @@ def carve_anchors(areas: List[Area], passages: List[Passage], geometries: Sequen
                 if not pieces_by_id[a_id].intersects(pieces_by_id[b_id]):
                     continue
                 lines = _passage_lines(pieces_by_id[a_id], pieces_by_id[b_id])
-                if a_id == new.id and angles:
+                if a_id == new.id and ends is not None:
+                    # a free flight is entered across its first and last tread only (never over a string, nor
+                    # across the slit by which the hall goes round it)
+                    lines = [ln for ln in lines if ln.intersection(ends.buffer(0.05)).length >= 0.5 * ln.length]
+                elif a_id == new.id and angles:
                     # a flight is entered across its first and last tread, not over its strings (handrails)
                     along = [ln for ln in lines if _parallel(ln, angles)]
                     lines = along or lines
+                if a_id == new.id and FREE_FLIGHTS:
+                    # never along a zero-width spike of the other piece's ring (an overlay leaves one where the
+                    # stair's end runs beside a gap in the hall; the next overlay drops it, and the passage's end)
+                    lines = [ln for ln in lines if _faces(ln, pieces_by_id[a_id], pieces_by_id[b_id])]
                 for ln in lines:
                     passages.append(Passage(id=next_pass, from_id=a_id, to_id=b_id, line=ln))
                     next_pass += 1

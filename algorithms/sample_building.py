@@ -1303,11 +1303,17 @@ def open_anchors_plan():
     return walls, rooms, stair, lift, labels
 
 
-def generate_open_anchors(out_dir: str, name: str = "open-anchors") -> dict:
+def _angles(a0: float, a1: float, n: int) -> List[float]:
+    return [a0 + (a1 - a0) * k / (n - 1) for k in range(n)]
+
+
+def generate_open_anchors(out_dir: str, name: str = "open-anchors", curved: bool = False) -> dict:
     """Write ``<out_dir>/<name>.dxf`` (metres, ``$INSUNITS`` = 6) of ``open_anchors_plan``: walls as solid
     hatches with outlines on ``A-WALL``, the open stair's treads and side strings on ``A-STAIR``, the lift
     car (outline and cross) on the lift layer, room names as TEXT on ``A-ANNO-TEXT``. Returns
-    ``{"dxf", "rooms", "stair", "lift", "labels"}``."""
+    ``{"dxf", "rooms", "stair", "lift", "labels"}``. ``curved``: the flight goes on beyond its 12 straight
+    treads, turning west through 90° on 12 radial treads between two arc strings (radii 0.6 and 2.0 m round
+    (8.7, 7.36)), a free-standing curved flight; ``stair`` is then the whole flight's footprint."""
     import ezdxf
 
     walls, rooms, stair, lift, labels = open_anchors_plan()
@@ -1328,6 +1334,18 @@ def generate_open_anchors(out_dir: str, name: str = "open-anchors") -> dict:
         msp.add_line((x0, y), (x1, y), dxfattribs=lay)
     msp.add_line((x0, y0), (x0, y1), dxfattribs=lay)  # strings
     msp.add_line((x1, y0), (x1, y1), dxfattribs=lay)
+    if curved:
+        cx, cy, r0, r1 = x0 - 0.6, y1, 0.6, 0.6 + (x1 - x0)
+        for k in range(1, 13):  # radial treads every 7.5°
+            a = math.radians(7.5 * k)
+            msp.add_line((cx + r0 * math.cos(a), cy + r0 * math.sin(a)), (cx + r1 * math.cos(a), cy + r1 * math.sin(a)),
+                         dxfattribs=lay)
+        for r in (r0, r1):  # the strings, as polylines of 5 cm-ish chords
+            msp.add_lwpolyline([(cx + r * math.cos(a), cy + r * math.sin(a)) for a in _angles(0.0, math.pi / 2, 25)],
+                               dxfattribs=lay)
+        arc = [(cx + r1 * math.cos(a), cy + r1 * math.sin(a)) for a in _angles(0.0, math.pi / 2, 60)]
+        arc += [(cx + r0 * math.cos(a), cy + r0 * math.sin(a)) for a in _angles(math.pi / 2, 0.0, 60)]
+        stair = unary_union([stair, Polygon(arc)])
     lx0, ly0, lx1, ly1 = lift.bounds
     c0, c1 = (lx0 + 0.15, ly0 + 0.25), (lx1 - 0.15, ly1 - 0.15)
     lay = {"layer": LIFT_LAYER}

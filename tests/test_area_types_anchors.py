@@ -67,8 +67,9 @@ def test_stair_core_open_onto_a_corridor_is_carved_and_the_corridor_stays():
 
 def test_open_stair_in_an_atrium_becomes_an_island_area_with_passages_at_both_ends():
     """A free-standing flight in a 20 x 14 m atrium: the stair (its treads' box) becomes a stairs area, the
-    atrium is cut from wall to wall through it (an area is one ring), and the stair's passages lie across
-    its first and last tread (never over its strings)."""
+    atrium goes round it as one area (one ring, opened by a 1 cm slit to its outer border: an area is one
+    ring; until session 7 it was cut from wall to wall into two), and the stair's passages lie across its
+    first and last tread (never over its strings). More in tests/test_anchors_free_flights.py."""
     hall = Area(id=7, polygon=box(0, 0, 20, 14), type="room")
     geoms = _flight(9.3, 4.0, width=1.4, n=12)
     areas, passages = [hall], []
@@ -77,16 +78,15 @@ def test_open_stair_in_an_atrium_becomes_an_island_area_with_passages_at_both_en
     assert [c[0] for c in st["carved"]] == ["stairs"]
     stair = [a for a in areas if a.type == "stairs"][0]
     assert stair.polygon.area == pytest.approx(1.4 * 12 * 0.28, rel=0.1)
-    assert sum(a.polygon.area for a in areas) == pytest.approx(280.0, rel=1e-6)  # nothing lost
+    assert sum(a.polygon.area for a in areas) == pytest.approx(280.0, abs=0.1)  # nothing lost but the slit
     sp = [p for p in passages if stair.id in (p.from_id, p.to_id)]
     assert sp
     for p in sp:  # every stair passage is parallel to the treads (horizontal) at y = 4.0 or 7.36
         (x0, y0), (x1, y1) = p.line.coords
         assert abs(y1 - y0) < 1e-6 and min(abs(y0 - 4.0), abs(y0 - 7.36)) < 0.02
     assert {round(p.line.coords[0][1], 1) for p in sp} == {4.0, 7.4}
-    # the atrium's pieces join each other where the cut runs through open floor
-    others = [a.id for a in areas if a.id != stair.id]
-    assert len(others) == 2 and any({p.from_id, p.to_id} == set(others) for p in passages)
+    # the atrium stays one area, joined to the stair at both ends
+    assert [a.id for a in areas if a.id != stair.id] == [7] and len(sp) == 2 and st["islands"] == [7]
 
 
 def test_lift_open_onto_a_corridor_is_carved_and_a_cross_in_a_hall_is_not():
@@ -129,7 +129,8 @@ def test_a_stair_that_is_its_own_area_is_left_alone_and_a_hall_is_never_carved_i
     assert closet.type == "stairs" and closet.polygon.wkt == before[3][1] and ("stairs", 3) in st["typed"]
     carved = [c for c in st["carved"] if c[2] == 4]
     assert len(carved) == 1 and carved[0][3] <= 1.5 * 15 * 0.28 * 1.15  # the flight, not the hall
-    assert sum(a.polygon.area for a in areas if a.id not in (1, 2, 3)) == pytest.approx(1200.0)
+    # nothing lost but the 1 cm slit by which the hall goes round the free-standing flight (anchors.SLIT)
+    assert sum(a.polygon.area for a in areas if a.id not in (1, 2, 3)) == pytest.approx(1200.0, abs=0.2)
 
 
 def test_no_symbols_no_change_and_cancel_is_honoured():

@@ -469,13 +469,16 @@ DWG_VERTICAL = {
 # empty shaft (a wheelchair sign in it) opens through its door gap onto the lift lobby and was merged into it, the
 # lobby named 无障碍货梯, and the code named E1-S1's shaft; since 2026-12-02 a lift code written inside an empty
 # walled box names that box (anchors.coded_lift_recesses): its own 5.5 m² elevator area, 3 -> 4 lifts on F5.
-# A-A3-10-05 (4F): 9 of 9. A-A3-10-04 (3F): 8 of 9; A3-ST-08 (tag at 11958.6, -6417.6) is a straight run of 17
-# treads (A3-RV-3F$0$A-STRS, 9.1 m² box) that continues along the curved stringers of a free-standing flight in
-# the 973 m² atrium gallery 中庭回廊: no wall around it; anchors.carve_anchors leaves such a run in its hall on
-# purpose ("free-standing curved flight": its box is no footprint of the flight, a cut would fragment the hall)
+# A-A3-10-05 (4F): 9 of 9. A-A3-10-04 (3F): 9 of 9 since 2026-12-02 (session 7, was 8): A3-ST-08 (tag at 11958.6,
+# -6417.6) is a fanned flight of 17 treads (A3-RV-3F$0$A-STRS, 2.5 -> 4.5 m long, only the first ones parallel: a 9.1 m²
+# run box) standing free in the atrium gallery 中庭回廊, no wall around it; it was left in the hall ("free-standing
+# curved flight": the run's box is no footprint of it). anchors.carve_anchors now carves such a flight by its
+# chained treads (_flight_ribbon: 17.4 m², passages across its first and last tread) as an island the gallery
+# goes round (_keyhole: one ring, never a cut; the gallery was cut in four by its free-standing runs before).
+# tests/test_anchors_free_flights.py checks the flight and the gallery round it
 TYPED_AT_LEAST = {"sist-original/SIST-F4.dwg": 17, "sist-original/SIST-F1.dwg": 21, "sist-original/SIST-F3.dwg": 20,
                   "library/A-A3-10-06.dwg": 7, "sist-original/SIST-F5.dwg": 13, "library/A-A3-10-05.dwg": 9,
-                  "library/A-A3-10-04.dwg": 8}
+                  "library/A-A3-10-04.dwg": 9}
 # A-A3-10-04's lift A3-T3 (tagged A3-T3: no lift-code pattern, so not in the hand count) draws its car block kt1
 # (客梯 1) on the stair layer 'A3-RI-3F$0$an-stairs': its shaft was typed stairs, and is an elevator since
 # area_types._lift_cars_on_stair_layers (2026-12-02, branch bays: 3F stairs 11 -> 10, elevators 2 -> 3, as on 4F)
