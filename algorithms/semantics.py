@@ -1535,18 +1535,11 @@ def _split_at_partition(a: Area, recs: List[TextRecord], names: Dict[str, TextRe
         if not poly.contains(mid):
             continue
         # the track, extended both ways to the outline: the piece of it through the span's middle
-        long = LineString([tuple(p - u * reach), tuple(q + u * reach)]).intersection(poly)
-        parts = [ln_ for ln_ in getattr(long, "geoms", [long]) if ln_.geom_type == "LineString"]
-        if not parts:
-            continue
-        cut = min(parts, key=lambda ln_: ln_.distance(mid))
-        e0, e1 = np.asarray(cut.coords[0]), np.asarray(cut.coords[-1])
-        cut = LineString([tuple(e0 - u * 0.01), tuple(e1 + u * 0.01)])  # across the outline, not onto it
         try:
-            halves = [h for h in shp_split(poly, cut).geoms if h.area > 0]
+            halves = _chord_halves(poly, p, q, u, mid, reach)
         except Exception:
             continue
-        if len(halves) != 2:
+        if halves is None or len(halves) != 2:
             continue
         keys = [{_key(r.text) for r in named if h.buffer(1e-6).contains(Point(r.x, r.y))} for h in halves]
         if not keys[0] or not keys[1] or keys[0] & keys[1]:
@@ -1668,8 +1661,23 @@ def _door_halves(poly, p, q, u, mid):
     leaves exactly two pieces of at least DOOR_SPLIT_MIN_PIECE."""
     if not poly.contains(mid):
         return None
-    e = DOOR_SPLIT_REACH + 0.05
-    long = LineString([tuple(p - u * e), tuple(q + u * e)]).intersection(poly)
+
+    def at_jambs(c0, c1):
+        return np.hypot(*(c0 - p)) <= DOOR_SPLIT_REACH and np.hypot(*(c1 - q)) <= DOOR_SPLIT_REACH
+
+    halves = _chord_halves(poly, p, q, u, mid, DOOR_SPLIT_REACH + 0.05, at_jambs)
+    if halves is None or len(halves) != 2 or min(g.area for g in halves) < DOOR_SPLIT_MIN_PIECE:
+        return None
+    return halves
+
+
+def _chord_halves(poly, p, q, u, mid, reach: float, accept=None):
+    """The pieces of ``poly`` cut along the line p-q (unit direction u), or None. The line, extended ``reach``
+    beyond p and q, meets ``poly`` in chords: the one nearest ``mid``, oriented along u (``accept(c0, c1)``,
+    when given, may still refuse its ends), extended 1 cm across the outline (not onto it), splits ``poly``.
+    Returns the pieces of positive area (any number: the caller wants two). Shared by the folding-partition
+    split and the door split."""
+    long = LineString([tuple(p - u * reach), tuple(q + u * reach)]).intersection(poly)
     parts = [g for g in getattr(long, "geoms", [long]) if g.geom_type == "LineString" and g.length > 0]
     if not parts:
         return None
@@ -1677,13 +1685,10 @@ def _door_halves(poly, p, q, u, mid):
     c0, c1 = np.asarray(chord.coords[0]), np.asarray(chord.coords[-1])
     if float(np.dot(c1 - c0, u)) < 0:
         c0, c1 = c1, c0
-    if np.hypot(*(c0 - p)) > DOOR_SPLIT_REACH or np.hypot(*(c1 - q)) > DOOR_SPLIT_REACH:
+    if accept is not None and not accept(c0, c1):
         return None
     cut = LineString([tuple(c0 - u * 0.01), tuple(c1 + u * 0.01)])
-    halves = [g for g in shp_split(poly, cut).geoms if g.area > 0]
-    if len(halves) != 2 or min(g.area for g in halves) < DOOR_SPLIT_MIN_PIECE:
-        return None
-    return halves
+    return [g for g in shp_split(poly, cut).geoms if g.area > 0]
 
 
 def _other_passage_on(part, rest, aid: int, passages, door_mid) -> bool:
