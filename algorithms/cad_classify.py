@@ -1460,3 +1460,112 @@ def counters_from_pieces(pieces, scale: float, rules, walls: Sequence[CadGeometr
         x0, y0, x1, y1 = extent
         found = [g for g in found if x0 <= g.coords[:, 0].mean() <= x1 and y0 <= g.coords[:, 1].mean() <= y1]
     return found
+
+
+# --------------------------------------------------------------------------- walls on layers no rule names
+STRAY_WALL_GAP = (0.05, 0.3)  # metres: the two faces of a partition wall
+STRAY_WALL_MIN = 1.0  # metres: both faces at least this long, overlapping at least this much
+STRAY_WALL_ANGLE = 3.0  # degrees: the faces are parallel within this
+STRAY_WALL_TYPES = ("LINE", "LWPOLYLINE", "POLYLINE")
+STRAY_WALL_REACH = 0.3  # metres: both ends of the partition lie this close to the drawing's walls
+
+
+def stray_wall_partitions(pieces, infos, scale: float, rules, walls: Sequence[CadGeometry] = (),
+                          extent=None) -> List[CadGeometry]:
+    """Partition walls drawn on a layer no rule names (a CAD repair layer ``AUDIT_D_...``, ``修改`` = changes,
+    a misc layer): two parallel faces (within ``STRAY_WALL_ANGLE``) ``STRAY_WALL_GAP`` apart, overlapping by at
+    least ``STRAY_WALL_MIN``, on the same layer that no rule names (not excluded, no kind: text, furniture and
+    dimension layers are excluded), outside door / window / furniture blocks, on no frozen or off layer; each
+    face has no other parallel partner (stair treads and racks come in series) and both ends of the wall lie
+    within ``STRAY_WALL_REACH`` of the drawing's walls (``walls``: a partition runs from wall to wall).
+    They are not walls of the raster (the layer says nothing; guessing walls from unnamed layers would close
+    doorways with their swings and leaves), but where two room names share the space one of them crosses,
+    ``semantics.assign_names(partitions=...)`` splits it along the wall, with no passage across it when both
+    rooms have a door of their own. Returns one line per wall (kind "partition", class "wall pair", metres, the
+    centre line of the faces' overlap); only walls whose middle lies in ``extent`` when given."""
+    from shapely import STRtree
+    from shapely.geometry import Point
+
+    from .cad_explode import BLOCK_SEP
+
+    walls = [g for g in walls if g.kind in ("wall", "column")]
+    ok_layer: Dict[str, bool] = {}
+    ok_chain: Dict[str, bool] = {}
+    segs, lay = [], []
+    for i in range(len(pieces.coords)):
+        if pieces.etype[i] not in STRAY_WALL_TYPES or pieces.filled[i] or len(pieces.coords[i]) < 2:
+            continue
+        name = pieces.layer[i]
+        ok = ok_layer.get(name)
+        if ok is None:
+            info = infos.get(name)
+            ok = ok_layer[name] = (info is not None and info.kind is None and info.rule == "no keyword"
+                                   and not info.frozen and not info.off)
+        if not ok:
+            continue
+        if i < len(pieces.dashed) and pieces.dashed[i]:
+            continue  # a projection line
+        chain = pieces.block[i]
+        if chain:
+            c_ok = ok_chain.get(chain)
+            if c_ok is None:
+                c_ok = ok_chain[chain] = rules.block_class(chain.split(BLOCK_SEP))[0] is None
+            if not c_ok:
+                continue
+        s = _segments(np.asarray(pieces.coords[i], float) * scale, bool(pieces.closed[i]))
+        if not len(s):
+            continue
+        d = s[:, 1] - s[:, 0]
+        keep = np.hypot(d[:, 0], d[:, 1]) >= STRAY_WALL_MIN
+        segs.append(s[keep])
+        lay.extend([name] * int(keep.sum()))
+    if not segs:
+        return []
+    segs = np.concatenate(segs)
+    if len(segs) < 2:
+        return []
+    d = segs[:, 1] - segs[:, 0]
+    length = np.hypot(d[:, 0], d[:, 1])
+    u = d / length[:, None]
+    out = []
+    cos_min = math.cos(math.radians(STRAY_WALL_ANGLE))
+    lines = _linestrings(list(segs))
+    pi, pj = STRtree(lines).query(lines, predicate="dwithin", distance=STRAY_WALL_GAP[1])
+    found = []
+    for i, j in zip(pi.tolist(), pj.tolist()):
+        if i >= j:
+            continue
+        if lay[i] != lay[j] or abs(float(u[i] @ u[j])) < cos_min:
+            continue
+        n = np.array([-u[i][1], u[i][0]])
+        gap = abs(float((segs[j, 0] - segs[i, 0]) @ n))
+        gap2 = abs(float((segs[j, 1] - segs[i, 0]) @ n))
+        if not (STRAY_WALL_GAP[0] <= min(gap, gap2) and max(gap, gap2) <= STRAY_WALL_GAP[1]):
+            continue
+        t = sorted([0.0, float(length[i])])
+        tj = sorted([float((segs[j, 0] - segs[i, 0]) @ u[i]), float((segs[j, 1] - segs[i, 0]) @ u[i])])
+        lo, hi = max(t[0], tj[0]), min(t[1], tj[1])
+        if hi - lo < STRAY_WALL_MIN:
+            continue
+        off = n * float(((segs[j, 0] + segs[j, 1]) / 2 - segs[i, 0]) @ n) / 2.0
+        found.append((i, j, segs[i, 0] + u[i] * lo + off, segs[i, 0] + u[i] * hi + off))
+    # a wall is two faces: a face with a second parallel partner is a series (stair treads, racks, a pattern)
+    partners = np.bincount(np.array([k for i, j, _, _ in found for k in (i, j)], dtype=np.int64),
+                           minlength=len(segs)) if found else np.zeros(len(segs), int)
+    wall_lines = _linestrings([g.coords for g in walls if len(g.coords) >= 2])
+    wtree = STRtree(wall_lines) if len(wall_lines) else None
+    for i, j, p, q in found:
+        if partners[i] != 1 or partners[j] != 1:
+            continue
+        if extent is not None:
+            x0, y0, x1, y1 = extent
+            m = (p + q) / 2
+            if not (x0 <= m[0] <= x1 and y0 <= m[1] <= y1):
+                continue
+        # a partition runs from wall to wall: both ends on the walls (a free-standing pair is a rack, a bench)
+        if wtree is None or any(not len(wtree.query(Point(*e), predicate="dwithin", distance=STRAY_WALL_REACH))
+                                for e in (p, q)):
+            continue
+        out.append(CadGeometry(layer=lay[i], kind="partition", coords=np.array([p, q]), entity="LINE",
+                               cls="wall pair"))
+    return out

@@ -810,10 +810,11 @@ def assign_names(areas: List[Area], texts: Sequence[CadText], level="1", rules=N
     layers (``CadDrawing.hidden_texts``): their room names and codes name only areas that no visible text
     names (a sheet often freezes one wing's annotation layer; the names are still the building's), they
     never split an area nor compete with a visible name. ``classified``: ``classify_labels(texts, rules)``
-    when the caller has it (a drawing's texts are classified once). ``partitions``: folding partitions
-    and counters standing wall to wall (``CadDrawing.partitions``: lines, metres; ``cad_classify``
-    ``folding_partitions`` / ``counter_partitions``): an area whose names lie on both sides of one is split
-    along it first (``_split_at_partition``). ``door_hints``: the import's doorways (``CadDrawing.doors``): a named
+    when the caller has it (a drawing's texts are classified once). ``partitions``: folding partitions,
+    counters standing wall to wall and partition walls on layers no rule names (``CadDrawing.partitions``:
+    lines, metres; ``cad_classify`` ``folding_partitions`` / ``counter_partitions`` /
+    ``stray_wall_partitions``): an area whose names lie on both sides of one is split along it first
+    (``_split_at_partition``; no passage across a wall when both rooms keep a door). ``door_hints``: the import's doorways (``CadDrawing.doors``): a named
     part of an area behind a door as wide as itself is split off at the door (``_split_at_doors``). Never
     raises on odd texts."""
     progress = ensure(progress)
@@ -1547,8 +1548,30 @@ def _split_at_partition(a: Area, recs: List[TextRecord], names: Dict[str, TextRe
         keys = [{_key(r.text) for r in named if h.buffer(1e-6).contains(Point(r.x, r.y))} for h in halves]
         if not keys[0] or not keys[1] or keys[0] & keys[1]:
             continue
-        return _finish(a, list(zip(halves, keys)), areas, passages, labels, grid, recs, 0.0)
+        pieces = _finish(a, list(zip(halves, keys)), areas, passages, labels, grid, recs, 0.0)
+        if getattr(g, "cls", "") == "wall pair":
+            _no_passage_across(pieces, passages)
+        return pieces
     return None
+
+
+def _no_passage_across(pieces: List[Area], passages: Optional[List[Passage]]) -> None:
+    """A split along a wall (``cad_classify.stray_wall_partitions``): the passages ``_finish`` made between the
+    pieces along it are dropped when every piece keeps a passage of its own (its door); else kept, so that
+    no room is orphaned by a wall the raster never had."""
+    if passages is None or len(pieces) != 2:
+        return
+    ids = {b.id for b in pieces}
+    new = set(pieces[0].tags.get("_new_passages", []))
+    across = [p for p in passages if p.id in new and {p.from_id, p.to_id} == ids]
+    if not across:
+        return
+    for b in pieces:
+        if not any(b.id in (p.from_id, p.to_id) for p in passages if p not in across):
+            return
+    drop = {p.id for p in across}
+    passages[:] = [p for p in passages if p.id not in drop]
+    pieces[0].tags["_new_passages"] = [i for i in pieces[0].tags.get("_new_passages", []) if i not in drop]
 
 
 DOOR_SPLIT_WIDTHS = (0.6, 2.4)  # m: door hints of this width (one leaf to a double door) may split an area
