@@ -1335,3 +1335,237 @@ def _crossed(segs: np.ndarray, box, p: np.ndarray, q: np.ndarray, skip: set) -> 
     d1, d2 = side(p, q, a), side(p, q, b)
     d3, d4 = side(a, b, p[None]), side(a, b, q[None])
     return bool(((d1 * d2 < 0) & (d3 * d4 < 0)).any())
+
+
+# --------------------------------------------------------------------------- counters closing a space
+COUNTER_JOIN = 0.03  # metres: furniture lines whose ends lie this close are one piece of furniture
+COUNTER_CONTACT = 0.1  # metres: a furniture vertex this close to a wall face stands against the wall
+COUNTER_CLUSTER = 1.0  # metres: contacts this close together are one end of the counter (its depth: both corners)
+COUNTER_SPAN = (1.0, 8.0)  # metres: between the counter's two ends on the walls (a service space is >= 1 m wide)
+COUNTER_DEPTH = 1.0  # metres: every line of the counter lies this close to the line between its two ends
+COUNTER_MAX_LINES = 200  # a furniture group with more lines is a furnished zone, not one counter
+
+
+def counter_partitions(furniture: Sequence[np.ndarray], walls: Sequence[CadGeometry]) -> List[CadGeometry]:
+    """Counters that close a space: a piece of fixed furniture (a bar or reception counter, a shelving run:
+    furniture lines touching end to end, ``COUNTER_JOIN``) that stands against a wall face at exactly two
+    places (its two ends: contacts within ``COUNTER_CONTACT`` of a wall, clustered at ``COUNTER_CLUSTER``),
+    ``COUNTER_SPAN`` apart, runs along the line between them (every vertex within ``COUNTER_DEPTH`` of it) and
+    crosses no wall on the way. The space behind it (the bar's service side, the back office behind a
+    reception desk) is closed off from the room in front: nobody walks across a counter. Furniture is never
+    a wall in the raster (chairs and desks would cut rooms up), so segmentation joins both sides; where two
+    room names share that space, ``semantics.assign_names(partitions=...)`` splits it along the counter, like
+    a folding partition. ``furniture``: vertex arrays (metres) of the furniture lines (furniture layers and
+    blocks); ``walls``: the wall and column geometry. Returns one line per counter (kind "partition", class
+    "counter", metres, from one end's contact to the other's)."""
+    from scipy.sparse import coo_matrix
+    from scipy.sparse.csgraph import connected_components
+    from scipy.spatial import cKDTree
+    from shapely import STRtree, points as shp_points
+
+    furniture = [np.asarray(c, float) for c in furniture if len(c) >= 2]
+    wall_segs, _ = _segments_many([g.coords for g in walls if len(g.coords) >= 2],
+                                  [g.closed for g in walls if len(g.coords) >= 2])
+    if not furniture or not len(wall_segs):
+        return []
+    segs, own = _segments_many(furniture, [False] * len(furniture))
+    if not len(segs):
+        return []
+    n = len(furniture)
+    # furniture lines touching end to end (or a vertex on another's vertex) are one piece
+    verts = segs.reshape(-1, 2)
+    vown = np.repeat(own, 2)
+    pairs = cKDTree(verts).query_pairs(COUNTER_JOIN, output_type="ndarray")
+    a, b = (vown[pairs[:, 0]], vown[pairs[:, 1]]) if len(pairs) else (np.zeros(0, int), np.zeros(0, int))
+    k, comp = connected_components(coo_matrix((np.ones(len(a)), (a, b)), shape=(n, n)), directed=False)
+    scomp = comp[own]
+    lines = _linestrings(list(wall_segs))
+    tree = STRtree(lines)
+    wall_box = (wall_segs.min(axis=1), wall_segs.max(axis=1))
+    order = np.argsort(scomp, kind="stable")
+    bounds = np.searchsorted(scomp[order], np.arange(k + 1))
+    out = []
+    for c in range(k):
+        mem = order[bounds[c]:bounds[c + 1]]
+        if not len(mem) or len(mem) > COUNTER_MAX_LINES:
+            continue
+        pts = np.unique(np.round(segs[mem].reshape(-1, 2), 4), axis=0)
+        lo, hi = pts.min(axis=0), pts.max(axis=0)
+        if np.hypot(*(hi - lo)) < COUNTER_SPAN[0] or np.hypot(*(hi - lo)) > COUNTER_SPAN[1] + 2 * COUNTER_DEPTH:
+            continue
+        hit = tree.query(shp_points(pts), predicate="dwithin", distance=COUNTER_CONTACT)
+        if not hit.size:
+            continue
+        touch = pts[np.unique(hit[0])]
+        if len(touch) < 2:
+            continue
+        # the contacts, clustered: a counter stands against the walls at its two ends only
+        cp = cKDTree(touch).query_pairs(COUNTER_CLUSTER, output_type="ndarray")
+        m = len(touch)
+        nc, lab = connected_components(coo_matrix((np.ones(len(cp)), (cp[:, 0], cp[:, 1])) if len(cp) else
+                                                  (np.zeros(0), (np.zeros(0, int), np.zeros(0, int))),
+                                                  shape=(m, m)), directed=False)
+        if nc != 2:
+            continue
+        p, q = touch[lab == 0].mean(axis=0), touch[lab == 1].mean(axis=0)
+        span = float(np.hypot(*(q - p)))
+        if not COUNTER_SPAN[0] <= span <= COUNTER_SPAN[1]:
+            continue
+        u = (q - p) / span
+        rel = pts - p
+        along = rel @ u
+        across = np.abs(rel[:, 0] * u[1] - rel[:, 1] * u[0])
+        if across.max() > COUNTER_DEPTH or along.min() < -COUNTER_DEPTH or along.max() > span + COUNTER_DEPTH:
+            continue
+        # the line between the ends crosses no wall (clear of the wall faces it starts and ends on)
+        e = min(2 * COUNTER_CONTACT, span / 4)
+        if _crossed(wall_segs, wall_box, p + u * e, q - u * e, set()):
+            continue
+        out.append(CadGeometry(layer="", kind="partition", coords=np.array([p, q]), entity="LINE", cls="counter"))
+    return out
+
+
+def counters_from_pieces(pieces, scale: float, rules, walls: Sequence[CadGeometry], extent=None) -> List[CadGeometry]:
+    """``counter_partitions`` of an import's exploded pieces: the furniture lines are the pieces on furniture
+    layers (the meaningful part of the layer name holds a furniture keyword of the rules' ``blocks``) or
+    exploded from furniture blocks (``rules.block_class``), scaled to metres; only counters whose middle lies
+    in ``extent`` (xmin, ymin, xmax, ymax, metres) when given."""
+    from .cad_explode import BLOCK_SEP
+    from .layer_rules import keyword_in
+
+    words = [w for w in getattr(rules, "blocks", {}).get("furniture", [])]
+    layer_ok: Dict[str, bool] = {}
+    chain_ok: Dict[str, bool] = {}
+    furn = []
+    for i in range(len(pieces.coords)):
+        c = pieces.coords[i]
+        if len(c) < 2 or pieces.filled[i]:
+            continue
+        lay = pieces.layer[i]
+        ok = layer_ok.get(lay)
+        if ok is None:
+            low = meaningful_part(lay).lower()
+            ok = layer_ok[lay] = any(keyword_in(w, low) for w in words)
+        if not ok:
+            chain = pieces.block[i]
+            if chain:
+                ok = chain_ok.get(chain)
+                if ok is None:
+                    ok = chain_ok[chain] = rules.block_class(chain.split(BLOCK_SEP))[0] == "furniture"
+        if ok:
+            furn.append(np.asarray(c, float) * scale)
+    walls = [g for g in walls if g.kind in ("wall", "column")]
+    found = counter_partitions(furn, walls)
+    if extent is not None:
+        x0, y0, x1, y1 = extent
+        found = [g for g in found if x0 <= g.coords[:, 0].mean() <= x1 and y0 <= g.coords[:, 1].mean() <= y1]
+    return found
+
+
+# --------------------------------------------------------------------------- walls on layers no rule names
+STRAY_WALL_GAP = (0.05, 0.3)  # metres: the two faces of a partition wall
+STRAY_WALL_MIN = 1.0  # metres: both faces at least this long, overlapping at least this much
+STRAY_WALL_ANGLE = 3.0  # degrees: the faces are parallel within this
+STRAY_WALL_TYPES = ("LINE", "LWPOLYLINE", "POLYLINE")
+STRAY_WALL_REACH = 0.3  # metres: both ends of the partition lie this close to the drawing's walls
+
+
+def stray_wall_partitions(pieces, infos, scale: float, rules, walls: Sequence[CadGeometry] = (),
+                          extent=None) -> List[CadGeometry]:
+    """Partition walls drawn on a layer no rule names (a CAD repair layer ``AUDIT_D_...``, ``修改`` = changes,
+    a misc layer): two parallel faces (within ``STRAY_WALL_ANGLE``) ``STRAY_WALL_GAP`` apart, overlapping by at
+    least ``STRAY_WALL_MIN``, on the same layer that no rule names (not excluded, no kind: text, furniture and
+    dimension layers are excluded), outside door / window / furniture blocks, on no frozen or off layer; each
+    face has no other parallel partner (stair treads and racks come in series) and both ends of the wall lie
+    within ``STRAY_WALL_REACH`` of the drawing's walls (``walls``: a partition runs from wall to wall).
+    They are not walls of the raster (the layer says nothing; guessing walls from unnamed layers would close
+    doorways with their swings and leaves), but where two room names share the space one of them crosses,
+    ``semantics.assign_names(partitions=...)`` splits it along the wall, with no passage across it when both
+    rooms have a door of their own. Returns one line per wall (kind "partition", class "wall pair", metres, the
+    centre line of the faces' overlap); only walls whose middle lies in ``extent`` when given."""
+    from shapely import STRtree
+    from shapely.geometry import Point
+
+    from .cad_explode import BLOCK_SEP
+
+    walls = [g for g in walls if g.kind in ("wall", "column")]
+    ok_layer: Dict[str, bool] = {}
+    ok_chain: Dict[str, bool] = {}
+    segs, lay = [], []
+    for i in range(len(pieces.coords)):
+        if pieces.etype[i] not in STRAY_WALL_TYPES or pieces.filled[i] or len(pieces.coords[i]) < 2:
+            continue
+        name = pieces.layer[i]
+        ok = ok_layer.get(name)
+        if ok is None:
+            info = infos.get(name)
+            ok = ok_layer[name] = (info is not None and info.kind is None and info.rule == "no keyword"
+                                   and not info.frozen and not info.off)
+        if not ok:
+            continue
+        if i < len(pieces.dashed) and pieces.dashed[i]:
+            continue  # a projection line
+        chain = pieces.block[i]
+        if chain:
+            c_ok = ok_chain.get(chain)
+            if c_ok is None:
+                c_ok = ok_chain[chain] = rules.block_class(chain.split(BLOCK_SEP))[0] is None
+            if not c_ok:
+                continue
+        s = _segments(np.asarray(pieces.coords[i], float) * scale, bool(pieces.closed[i]))
+        if not len(s):
+            continue
+        d = s[:, 1] - s[:, 0]
+        keep = np.hypot(d[:, 0], d[:, 1]) >= STRAY_WALL_MIN
+        segs.append(s[keep])
+        lay.extend([name] * int(keep.sum()))
+    if not segs:
+        return []
+    segs = np.concatenate(segs)
+    if len(segs) < 2:
+        return []
+    d = segs[:, 1] - segs[:, 0]
+    length = np.hypot(d[:, 0], d[:, 1])
+    u = d / length[:, None]
+    out = []
+    cos_min = math.cos(math.radians(STRAY_WALL_ANGLE))
+    lines = _linestrings(list(segs))
+    pi, pj = STRtree(lines).query(lines, predicate="dwithin", distance=STRAY_WALL_GAP[1])
+    found = []
+    for i, j in zip(pi.tolist(), pj.tolist()):
+        if i >= j:
+            continue
+        if lay[i] != lay[j] or abs(float(u[i] @ u[j])) < cos_min:
+            continue
+        n = np.array([-u[i][1], u[i][0]])
+        gap = abs(float((segs[j, 0] - segs[i, 0]) @ n))
+        gap2 = abs(float((segs[j, 1] - segs[i, 0]) @ n))
+        if not (STRAY_WALL_GAP[0] <= min(gap, gap2) and max(gap, gap2) <= STRAY_WALL_GAP[1]):
+            continue
+        t = sorted([0.0, float(length[i])])
+        tj = sorted([float((segs[j, 0] - segs[i, 0]) @ u[i]), float((segs[j, 1] - segs[i, 0]) @ u[i])])
+        lo, hi = max(t[0], tj[0]), min(t[1], tj[1])
+        if hi - lo < STRAY_WALL_MIN:
+            continue
+        off = n * float(((segs[j, 0] + segs[j, 1]) / 2 - segs[i, 0]) @ n) / 2.0
+        found.append((i, j, segs[i, 0] + u[i] * lo + off, segs[i, 0] + u[i] * hi + off))
+    # a wall is two faces: a face with a second parallel partner is a series (stair treads, racks, a pattern)
+    partners = np.bincount(np.array([k for i, j, _, _ in found for k in (i, j)], dtype=np.int64),
+                           minlength=len(segs)) if found else np.zeros(len(segs), int)
+    wall_lines = _linestrings([g.coords for g in walls if len(g.coords) >= 2])
+    wtree = STRtree(wall_lines) if len(wall_lines) else None
+    for i, j, p, q in found:
+        if partners[i] != 1 or partners[j] != 1:
+            continue
+        if extent is not None:
+            x0, y0, x1, y1 = extent
+            m = (p + q) / 2
+            if not (x0 <= m[0] <= x1 and y0 <= m[1] <= y1):
+                continue
+        # a partition runs from wall to wall: both ends on the walls (a free-standing pair is a rack, a bench)
+        if wtree is None or any(not len(wtree.query(Point(*e), predicate="dwithin", distance=STRAY_WALL_REACH))
+                                for e in (p, q)):
+            continue
+        out.append(CadGeometry(layer=lay[i], kind="partition", coords=np.array([p, q]), entity="LINE",
+                               cls="wall pair"))
+    return out

@@ -351,6 +351,17 @@ def _folding_partitions(p, scale: float, sel, classes: Dict[str, int]) -> list:
     return found
 
 
+def _counters(p, scale: float, rules, geoms, sel, infos) -> list:
+    """``cad_classify.counters_from_pieces`` (counters standing wall to wall) and ``stray_wall_partitions``
+    (partition walls on layers no rule names), within the selected plan: split lines for names only, like
+    folding partitions; not counted in ``classes`` (nothing is left out for them)."""
+    from .cad_classify import counters_from_pieces, stray_wall_partitions
+
+    extent = sel.extent if sel is not None else None
+    return counters_from_pieces(p, scale, rules, geoms, extent) + stray_wall_partitions(p, infos, scale, rules, geoms,
+                                                                                        extent)
+
+
 def _import(path, rules, layers, units, include_doors, fallback_walls, drop_door_swings, plan, classify,
             progress) -> CadDrawing:
     """Read a DXF and return the structural geometry (metres, CAD frame) and every visible text.
@@ -546,6 +557,8 @@ def _import(path, rules, layers, units, include_doors, fallback_walls, drop_door
                     and g.coords[:, 1].max() >= y0 - m and g.coords[:, 1].min() <= y1 + m]
     partitions = _folding_partitions(p, scale, sel, classes) if selected is None else []
     hidden_syms = _hidden_symbols(doc, raw, rules, scale, geoms, box, selected, progress)
+    if selected is None and classify:  # counters closing a space behind them, walls on unnamed layers (task T8)
+        partitions += _counters(p, scale, rules, geoms, sel, infos)
     kept_layers = sorted({g.layer for g in geoms})
     progress.info("CAD import stages: " + ", ".join(f"{k} {v:.1f} s" for k, v in timings.items()))
     progress.step(100, f"{len(geoms)} geometries on {len(kept_layers)} layers, {len(texts)} texts, unit {unit}"

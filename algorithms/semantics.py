@@ -810,9 +810,11 @@ def assign_names(areas: List[Area], texts: Sequence[CadText], level="1", rules=N
     layers (``CadDrawing.hidden_texts``): their room names and codes name only areas that no visible text
     names (a sheet often freezes one wing's annotation layer; the names are still the building's), they
     never split an area nor compete with a visible name. ``classified``: ``classify_labels(texts, rules)``
-    when the caller has it (a drawing's texts are classified once). ``partitions``: folding partitions
-    (``CadDrawing.partitions``: lines, metres): an area whose names lie on both sides of one is split along
-    it first (``_split_at_partition``). ``door_hints``: the import's doorways (``CadDrawing.doors``): a named
+    when the caller has it (a drawing's texts are classified once). ``partitions``: folding partitions,
+    counters standing wall to wall and partition walls on layers no rule names (``CadDrawing.partitions``:
+    lines, metres; ``cad_classify`` ``folding_partitions`` / ``counter_partitions`` /
+    ``stray_wall_partitions``): an area whose names lie on both sides of one is split along it first
+    (``_split_at_partition``; no passage across a wall when both rooms keep a door). ``door_hints``: the import's doorways (``CadDrawing.doors``): a named
     part of an area behind a door as wide as itself is split off at the door (``_split_at_doors``). Never
     raises on odd texts."""
     progress = ensure(progress)
@@ -837,7 +839,7 @@ def assign_names(areas: List[Area], texts: Sequence[CadText], level="1", rules=N
     by_id = {a.id: a for a in areas}
     _demote_shafts_in_anchors(best_by_area, by_id, rules)
     if split and door_hints:  # a named closet as wide as its door: split off at the door first
-        _split_at_doors(areas, by_id, best_by_area, door_hints, passages, labels, grid, report, progress)
+        _split_at_doors(areas, by_id, best_by_area, door_hints, passages, labels, grid, report, progress, rules)
     # ---- split areas holding several different names
     if split:
         # a piece still holding two names is split again (a hall with a lift lobby at one end and a round
@@ -868,6 +870,7 @@ def assign_names(areas: List[Area], texts: Sequence[CadText], level="1", rules=N
                 best_by_area.pop(aid)
                 for p in pieces:
                     best_by_area[p.id] = [r for r in recs if r.area_id == p.id]
+                _corridor_points_in_pieces(pieces, best_by_area, passages, rules, progress)
                 report.new_passages.extend(pieces[0].tags.pop("_new_passages", []))
                 progress.info(f"area {aid} held {len(names)} room names ({', '.join(r.text for r in names.values())}); "
                               f"split along the narrowing between them into areas {[p.id for p in pieces]}")
@@ -1299,7 +1302,7 @@ def _type_areas(areas, best_by_area, passages, rules: NameRules, report: NamesRe
             continue
         for k in ("indoor", "room", "ref", "name"):
             a.tags.pop(k, None)
-        named = bool(best_by_area.get(a.id))
+        named = any(r.role in ("name", "number") for r in best_by_area.get(a.id, ()))  # not only ignored labels
         entry = type_of_name(a.name, a.ref, rules) if named else None
         if entry is not None and entry["type"] in ("stairs", "elevator") and \
                 a.polygon.area > _max_area(rules, entry["type"]) and a.type not in ("stairs", "elevator"):
@@ -1512,7 +1515,8 @@ def _split_area(a: Area, recs: List[TextRecord], names: Dict[str, TextRecord], g
 def _split_at_partition(a: Area, recs: List[TextRecord], names: Dict[str, TextRecord], partitions, areas: List[Area],
                         passages: Optional[List[Passage]], labels, grid) -> Optional[List[Area]]:
     """Split area ``a`` along a folding partition (``cad_classify.folding_partitions``: a wall that opens,
-    drawn folded at both ends of its track) that has its room names on both sides: the track, extended to
+    drawn folded at both ends of its track) or a counter standing wall to wall (``counter_partitions``: the
+    service space behind a bar or reception counter) that has its room names on both sides: the track, extended to
     the area's outline, cuts the area in two, each piece holding names; the pieces get a passage along it
     (``_finish``). Returns the pieces or None (no partition crosses the area between its names)."""
     poly = a.polygon
@@ -1535,24 +1539,39 @@ def _split_at_partition(a: Area, recs: List[TextRecord], names: Dict[str, TextRe
         if not poly.contains(mid):
             continue
         # the track, extended both ways to the outline: the piece of it through the span's middle
-        long = LineString([tuple(p - u * reach), tuple(q + u * reach)]).intersection(poly)
-        parts = [ln_ for ln_ in getattr(long, "geoms", [long]) if ln_.geom_type == "LineString"]
-        if not parts:
-            continue
-        cut = min(parts, key=lambda ln_: ln_.distance(mid))
-        e0, e1 = np.asarray(cut.coords[0]), np.asarray(cut.coords[-1])
-        cut = LineString([tuple(e0 - u * 0.01), tuple(e1 + u * 0.01)])  # across the outline, not onto it
         try:
-            halves = [h for h in shp_split(poly, cut).geoms if h.area > 0]
+            halves = _chord_halves(poly, p, q, u, mid, reach)
         except Exception:
             continue
-        if len(halves) != 2:
+        if halves is None or len(halves) != 2:
             continue
         keys = [{_key(r.text) for r in named if h.buffer(1e-6).contains(Point(r.x, r.y))} for h in halves]
         if not keys[0] or not keys[1] or keys[0] & keys[1]:
             continue
-        return _finish(a, list(zip(halves, keys)), areas, passages, labels, grid, recs, 0.0)
+        pieces = _finish(a, list(zip(halves, keys)), areas, passages, labels, grid, recs, 0.0)
+        if getattr(g, "cls", "") == "wall pair":
+            _no_passage_across(pieces, passages)
+        return pieces
     return None
+
+
+def _no_passage_across(pieces: List[Area], passages: Optional[List[Passage]]) -> None:
+    """A split along a wall (``cad_classify.stray_wall_partitions``): the passages ``_finish`` made between the
+    pieces along it are dropped when every piece keeps a passage of its own (its door); else kept, so that
+    no room is orphaned by a wall the raster never had."""
+    if passages is None or len(pieces) != 2:
+        return
+    ids = {b.id for b in pieces}
+    new = set(pieces[0].tags.get("_new_passages", []))
+    across = [p for p in passages if p.id in new and {p.from_id, p.to_id} == ids]
+    if not across:
+        return
+    for b in pieces:
+        if not any(b.id in (p.from_id, p.to_id) for p in passages if p not in across):
+            return
+    drop = {p.id for p in across}
+    passages[:] = [p for p in passages if p.id not in drop]
+    pieces[0].tags["_new_passages"] = [i for i in pieces[0].tags.get("_new_passages", []) if i not in drop]
 
 
 DOOR_SPLIT_WIDTHS = (0.6, 2.4)  # m: door hints of this width (one leaf to a double door) may split an area
@@ -1562,7 +1581,7 @@ DOOR_SPLIT_MIN_PIECE = 0.8  # m²: each piece of a door split is at least this l
 
 def _split_at_doors(areas: List[Area], by_id: Dict[int, Area], best_by_area: Dict[int, List[TextRecord]],
                     door_hints, passages: Optional[List[Passage]], labels, grid, report: "NamesReport",
-                    progress) -> None:
+                    progress, rules=None) -> None:
     """Split off, along its door line, a named dead-end part of an area that opens through a door as wide as
     itself (a duct, shaft or storage closet 强电间 / 弱电间 / 管井: no narrowing at its mouth, so segmentation
     kept it in the space outside). A door hint (the import's doorways: door blocks, swings, door codes) cuts
@@ -1611,6 +1630,15 @@ def _split_at_doors(areas: List[Area], by_id: Dict[int, Area], best_by_area: Dic
                 part, rest = halves[k], halves[1 - k]
                 if part.area >= rest.area or _other_passage_on(part, rest, aid, passages, mids[j]):
                     continue
+            else:
+                k = _corridor_point_side(recs, keys, halves, aid, passages, mids[j], rules)
+                if k is not None:  # the corridor's branch behind the door: its label marks a point along it
+                    for r in recs:
+                        if r.role == "name" and _key(r.text) in keys[k]:
+                            r.role, r.reason = "ignored", "point in a corridor"
+                    progress.info(f"area {aid}: {', '.join(sorted(keys[k]))} labels a point in the corridor "
+                                  "behind a door, not the corridor")
+                    keys[k] = set()
             for r, xy in moves:  # a label drawn twice is where its copy inside a piece is (_merge_copies)
                 r.alts = [q for q in r.alts if q != xy] + [(r.x, r.y)]
                 r.x, r.y = xy
@@ -1626,6 +1654,78 @@ def _split_at_doors(areas: List[Area], by_id: Dict[int, Area], best_by_area: Dic
                           f"({' | '.join(', '.join(sorted(k)) or '-' for k in keys)}) into areas "
                           f"{[b.id for b in pieces]}")
             break
+
+
+def _corridor_point_side(recs: Sequence[TextRecord], keys, halves, aid: int, passages, door_mid, rules):
+    """Which of the two door-split ``halves`` is a corridor's branch named only by a room label standing in
+    it (a water point 开水间, a vending corner or a niche drawn along the corridor), or None. The other half
+    holds a corridor name (``type_of_name``), this half no corridor or hall name, and it is corridor-shaped
+    (``_corridor_shaped``: long, narrow) with at least the corridor geometry's ``min_degree`` passages of
+    the area ending on it besides the door (the doors of the rooms along it): a space people walk through
+    to other rooms is the corridor, whatever label a fixture in it carries. Its labels are then ignored
+    ('point in a corridor'): the branch is split off at its door unnamed (an auto id, typed corridor by
+    its shape), the label no longer renames it."""
+    rules = _resolve(rules)
+    by_key = {_key(r.text): r for r in recs if r.role == "name"}
+
+    def kind(key):
+        e = type_of_name(by_key[key].text, "", rules) if key in by_key else None
+        return e["type"] if e else None, (e or {}).get("indoor")
+
+    geo = dict({"min_elongation": 3.0, "max_width": 4.0, "min_degree": 3}, **rules.corridor_geometry)
+    for k in (0, 1):
+        mine, other = keys[k], keys[1 - k]
+        if not mine or not other or not any(kind(x)[0] == "corridor" for x in other):
+            continue
+        if any(kind(x)[0] == "corridor" or kind(x)[1] == "area" for x in mine):
+            continue
+        part, rest = halves[k], halves[1 - k]
+        on = 0
+        for ps in passages or ():
+            if aid not in (ps.from_id, ps.to_id) or ps.line is None:
+                continue
+            m = ps.line.interpolate(0.5, normalized=True)
+            if m.distance(door_mid) >= 0.5 and part.distance(m) < rest.distance(m):
+                on += 1
+        if on >= geo["min_degree"] and _corridor_shaped(Area(id=-1, polygon=part), on + 1, geo):
+            return k
+    return None
+
+
+def _corridor_points_in_pieces(pieces: Sequence[Area], best_by_area: Dict[int, List[TextRecord]], passages,
+                               rules, progress) -> None:
+    """After a split between room names: a piece named only by room labels (no corridor or hall name) that
+    is a corridor's branch -- another piece holds a corridor name and this one is corridor-shaped with at
+    least ``min_degree`` passages (``_corridor_point_side``'s rule, on the pieces as split) -- keeps no name
+    from them: its labels are ignored ('point in a corridor')."""
+    rules = _resolve(rules)
+    geo = dict({"min_elongation": 3.0, "max_width": 4.0, "min_degree": 3}, **rules.corridor_geometry)
+
+    def types(recs):
+        out = set()
+        for r in _competing(recs):
+            e = type_of_name(r.text, "", rules)
+            out.add("corridor" if e and e["type"] == "corridor" else "area" if e and e.get("indoor") == "area"
+                    else "room")
+        return out
+
+    kinds = {b.id: types(best_by_area.get(b.id, [])) for b in pieces}
+    if not any("corridor" in k for k in kinds.values()):
+        return
+    degree: Dict[int, int] = {}
+    for ps in passages or ():
+        degree[ps.from_id] = degree.get(ps.from_id, 0) + 1
+        degree[ps.to_id] = degree.get(ps.to_id, 0) + 1
+    for b in pieces:
+        if kinds[b.id] != {"room"} or degree.get(b.id, 0) < geo["min_degree"] + 1:
+            continue
+        if not _corridor_shaped(b, degree.get(b.id, 0), geo):
+            continue
+        names = sorted({r.text for r in _competing(best_by_area[b.id])})
+        for r in best_by_area[b.id]:
+            if r.role == "name":
+                r.role, r.reason = "ignored", "point in a corridor"
+        progress.info(f"area {b.id}: {', '.join(names)} labels a point in a corridor's branch, not the corridor")
 
 
 def _door_keys(recs: Sequence[TextRecord], halves, hint):
@@ -1668,8 +1768,23 @@ def _door_halves(poly, p, q, u, mid):
     leaves exactly two pieces of at least DOOR_SPLIT_MIN_PIECE."""
     if not poly.contains(mid):
         return None
-    e = DOOR_SPLIT_REACH + 0.05
-    long = LineString([tuple(p - u * e), tuple(q + u * e)]).intersection(poly)
+
+    def at_jambs(c0, c1):
+        return np.hypot(*(c0 - p)) <= DOOR_SPLIT_REACH and np.hypot(*(c1 - q)) <= DOOR_SPLIT_REACH
+
+    halves = _chord_halves(poly, p, q, u, mid, DOOR_SPLIT_REACH + 0.05, at_jambs)
+    if halves is None or len(halves) != 2 or min(g.area for g in halves) < DOOR_SPLIT_MIN_PIECE:
+        return None
+    return halves
+
+
+def _chord_halves(poly, p, q, u, mid, reach: float, accept=None):
+    """The pieces of ``poly`` cut along the line p-q (unit direction u), or None. The line, extended ``reach``
+    beyond p and q, meets ``poly`` in chords: the one nearest ``mid``, oriented along u (``accept(c0, c1)``,
+    when given, may still refuse its ends), extended 1 cm across the outline (not onto it), splits ``poly``.
+    Returns the pieces of positive area (any number: the caller wants two). Shared by the folding-partition
+    split and the door split."""
+    long = LineString([tuple(p - u * reach), tuple(q + u * reach)]).intersection(poly)
     parts = [g for g in getattr(long, "geoms", [long]) if g.geom_type == "LineString" and g.length > 0]
     if not parts:
         return None
@@ -1677,13 +1792,10 @@ def _door_halves(poly, p, q, u, mid):
     c0, c1 = np.asarray(chord.coords[0]), np.asarray(chord.coords[-1])
     if float(np.dot(c1 - c0, u)) < 0:
         c0, c1 = c1, c0
-    if np.hypot(*(c0 - p)) > DOOR_SPLIT_REACH or np.hypot(*(c1 - q)) > DOOR_SPLIT_REACH:
+    if accept is not None and not accept(c0, c1):
         return None
     cut = LineString([tuple(c0 - u * 0.01), tuple(c1 + u * 0.01)])
-    halves = [g for g in shp_split(poly, cut).geoms if g.area > 0]
-    if len(halves) != 2 or min(g.area for g in halves) < DOOR_SPLIT_MIN_PIECE:
-        return None
-    return halves
+    return [g for g in shp_split(poly, cut).geoms if g.area > 0]
 
 
 def _other_passage_on(part, rest, aid: int, passages, door_mid) -> bool:

@@ -2,6 +2,7 @@
 import json
 import math
 
+import numpy as np
 import pytest
 from shapely.geometry import LineString, Polygon, box
 
@@ -372,25 +373,24 @@ def test_archweb_texts_classified_as_read_by_hand(shared_data, plan):
 
 # known defects, reported as expected failures until fixed (the floor stays the target)
 NAMES_KNOWN_BELOW = {
-    "schema-ufficio-1.dxf": "one honest conflict, not segmentation (89.5 %, 17 of 19, since the two general secretaries' "
-                            "25.6 m² room splits along its folding partition, drawn folded at both ends at x 325 on "
-                            "the furniture layer (cad_classify.folding_partitions): 78.9 % before): 'area bar' / "
-                            "'wine & water bar' name one open bar space (re-checked 2026-12-02 on a picture: the wine "
-                            "bar's counter, 'bancone refrigerato per esposizione vini', is furniture, and the "
-                            "octagonal showroom behind it opens onto the bar over its whole width: no wall, no "
-                            "narrowing, no partition)",
+    # (empty since 2026-12-02 session 7: schema-ufficio-1's last conflict, 'area bar' / 'wine & water bar', was
+    # under-segmentation after all: the wine bar's service space is closed by its counter, 'bancone refrigerato
+    # per esposizione vini', drawn on the furniture layer from the bar's north wall to the jamb of its service
+    # door; furniture is never a wall in the raster, so the space joined the octagonal showroom. It splits
+    # along the counter now (cad_classify.counter_partitions, tests/test_cad_classify_counter.py))
 }
 
 
 @pytest.mark.slow
 @pytest.mark.parametrize("plan,floors", [
     # measured figures (make evaluate-cad), kept as floors against regressions; see README for the targets
-    # (2026-12-02 session 6: ufficio 100 / 89.5 / 100 / 1 since the secretaries' room splits along its folding
+    # (2026-12-02 session 7: ufficio 100 / 100 / 100 / 0 since the wine bar splits off along its counter;
+    # 2026-12-02 session 6: ufficio 100 / 89.5 / 100 / 1 since the secretaries' room splits along its folding
     # partition; session 5: ufficio 100 / 78.9 / 100 / 2 since the washroom splits off at its door;
     # 2026-12-01 session 4: ufficio 100 / 73.7 / 100 / 2, museum 97.0 / 93.9 / 96.8 / 0 since the hall and
     # the void split at their narrowing, Aule 100 / 100 / 100 / 0, CASONA 100 / 100 / 100 / 0 since a label on a
     # pillar is inside its room)
-    ("schema-ufficio-1.dxf", {"inside_pct": 95, "own_area_pct": 89, "semantic_accuracy_pct": 95, "max_conflicts": 1}),
+    ("schema-ufficio-1.dxf", {"inside_pct": 95, "own_area_pct": 95, "semantic_accuracy_pct": 95, "max_conflicts": 0}),
     ("historical_museum.dxf", {"inside_pct": 95, "own_area_pct": 90, "semantic_accuracy_pct": 95, "max_conflicts": 1}),
     ("Aule-scolastiche-pianta-1.dxf", {"inside_pct": 95, "own_area_pct": 95, "semantic_accuracy_pct": 95, "max_conflicts": 0}),
     ("CASONA_DE_YANAHUARA.dxf", {"inside_pct": 95, "own_area_pct": 95, "semantic_accuracy_pct": 95, "max_conflicts": 0}),
@@ -571,11 +571,15 @@ DWG_NAMES_KNOWN_BELOW = {
 # 残疾人出入口): inside 96.4 -> 98.2 %, own 93.6 -> 92.7 %, conflicts 3 -> 4;
 # named parts split at a door drawn across their area (semantics._split_at_doors, 2026-12-02): SIST-F1 own
 # 92.7 -> 94.5 %, conflicts 4 -> 3 (走道 and 大厅, 储藏室 and 开水间 apart; 清洁间 off its lobby); SIST-F3 own
-# 96.7 -> 98.4 %, conflicts 2 -> 1 (开水间 and 走道 apart; two 清洁间 closets off their lobbies)
+# 96.7 -> 98.4 %, conflicts 2 -> 1 (开水间 and 走道 apart; two 清洁间 closets off their lobbies); session 7:
+# SIST-F3's two '开水间' labels of water points in corridor branches no longer name the branches (ignored,
+# 'point in a corridor'): 122 -> 120 room texts, own 98.4 -> 98.3 % (the same two misses, fewer texts); then
+# partition walls on layers no rule names split two names (cad_classify.stray_wall_partitions): SIST-F1 own
+# 94.5 -> 96.3 %, conflicts 3 -> 2 (空调机房 / 开水间); SIST-F3 own 98.3 -> 100 %, conflicts 1 -> 0 (弱电间 / 强电间)
 DWG_NAMES_FLOORS = {
     "library/A-A3-10-04.dwg": (100.0, 100.0, 0), "library/A-A3-10-05.dwg": (100.0, 100.0, 0),
-    "library/A-A3-10-06.dwg": (100.0, 100.0, 0), "sist-original/SIST-F1.dwg": (98.0, 94.0, 3),
-    "sist-original/SIST-F3.dwg": (97.0, 98.0, 1), "sist-original/SIST-F4.dwg": (99.0, 98.0, 1),
+    "library/A-A3-10-06.dwg": (100.0, 100.0, 0), "sist-original/SIST-F1.dwg": (98.0, 96.0, 2),
+    "sist-original/SIST-F3.dwg": (97.0, 99.0, 0), "sist-original/SIST-F4.dwg": (99.0, 98.0, 1),
     "sist-original/SIST-F5.dwg": (97.0, 98.0, 0),
 }
 
@@ -842,3 +846,58 @@ def test_a_washroom_behind_its_door_splits_off_the_room_it_opens_onto():
     areas = [Area(id=1, polygon=big.union(box(10, 3.0, 12.3, 4.3)))]
     rep = S.assign_names(areas, [T("area bar", 5, 4), T("washroom", 11.3, 3.65)])
     assert not rep.splits and rep.conflicts == [1]
+
+
+def _corridor_with_branch(rooms_on_branch: int):
+    """A 2 m wide corridor 0..32 m, a door drawn across it at x 20; rooms along it (4 m wide, above it),
+    ``rooms_on_branch`` of them along the branch 20..32; passages from the corridor to every room."""
+    from algorithms.model import DoorHint, Passage
+
+    corridor = box(0, 0, 32, 2)
+    areas = [Area(id=1, polygon=corridor)]
+    passages = []
+    xs = [0, 4, 8, 12, 16] + [20 + 4 * k for k in range(rooms_on_branch)]
+    for k, x in enumerate(xs, 2):
+        areas.append(Area(id=k, polygon=box(x, 2.2, x + 4, 6), name=f"R{k}"))
+        passages.append(Passage(id=k, from_id=1, to_id=k, line=LineString([(x + 1.5, 2.0), (x + 2.5, 2.0)])))
+    return areas, passages, [DoorHint(20.0, 0.0, 20.0, 2.0, "block")]
+
+
+def test_a_room_label_in_a_corridor_branch_behind_a_door_marks_a_point_along_it():
+    # SIST-F3: a corridor's branch behind its double door, six offices opening onto it, carries '开水间' where a
+    # water boiler stands along its wall: the branch splits off at the door, but it is a corridor, not the 开水间
+    areas, passages, doors = _corridor_with_branch(3)
+    rep = S.assign_names(areas, [T("走道", 8, 1), T("开水间", 21, 1)], passages=passages, door_hints=doors)
+    corridor = [a for a in areas if a.polygon.bounds[1] < 1]
+    assert len(corridor) == 2 and len(rep.splits) == 1 and not rep.conflicts
+    main, branch = sorted(corridor, key=lambda a: a.polygon.bounds[0])
+    assert main.name == "走道" and main.type == "corridor"
+    assert branch.polygon.bounds[0] == pytest.approx(20.0) and branch.name == S.auto_id("1", branch.id)
+    assert branch.type == "corridor"
+    assert [r.reason for r in rep.texts if r.text == "开水间"] == ["point in a corridor"]
+    assert any({p.from_id, p.to_id} == {main.id, branch.id} for p in passages)
+    # a dead-end part behind the door (one room on it: no corridor) is the 开水间: named as before
+    areas, passages, doors = _corridor_with_branch(1)
+    rep = S.assign_names(areas, [T("走道", 8, 1), T("开水间", 21, 1)], passages=passages, door_hints=doors)
+    assert {a.name for a in areas} >= {"走道", "开水间"} and not rep.conflicts
+
+
+def test_a_room_label_in_a_corridor_piece_of_a_narrowing_split_marks_a_point_along_it():
+    # SIST-F3: an upper corridor along eight offices, joined to the main corridor through a narrowing, with
+    # '开水间' at a water point along its wall: split at the narrowing, it is a corridor named by no label
+    from algorithms.model import OccupancyGrid, Passage
+
+    main = box(0, 0, 30, 3)
+    upper = box(0, 4, 30, 6.5)
+    neck = box(14.5, 2.9, 15.5, 4.1)  # a 1 m doorway between them
+    areas = [Area(id=1, polygon=main.union(upper).union(neck))]
+    passages = []
+    for k, x in enumerate(range(0, 30, 6), 2):  # five offices along the upper corridor, above it
+        areas.append(Area(id=k, polygon=box(x, 6.7, x + 6, 10), name=f"R{k}"))
+        passages.append(Passage(id=k, from_id=1, to_id=k, line=LineString([(x + 2.5, 6.5), (x + 3.5, 6.5)])))
+    grid = OccupancyGrid(np.zeros((10, 10), np.uint8), 0.0, 10.0, 0.05)
+    rep = S.assign_names(areas, [T("走道", 8, 1.5), T("开水间", 27, 5)], passages=passages, grid=grid)
+    pieces = sorted([a for a in areas if a.id == 1 or a.id > 6], key=lambda a: a.polygon.centroid.y)
+    assert len(pieces) == 2 and len(rep.splits) == 1 and not rep.conflicts
+    assert pieces[0].name == "走道" and pieces[1].name == S.auto_id("1", pieces[1].id)
+    assert pieces[1].type == "corridor" and [r.reason for r in rep.texts if r.text == "开水间"] == ["point in a corridor"]
