@@ -16,7 +16,7 @@ from typing import Dict, Optional, Sequence
 from shapely.geometry import Polygon
 from shapely.ops import unary_union
 
-from . import anchors, cad_import, osmag, rasterize, refine, segmentation, semantics
+from . import anchors, cad_import, kernels, osmag, rasterize, refine, segmentation, semantics
 from .area_types import Symbols, classify_vertical_areas
 from .georef import LocalFrame
 from .errors import Canceled, InputError
@@ -157,6 +157,9 @@ def process_floor(dxf_path: str, *, rules=None, layers=None, units=None, include
 
     drawing = timed("cad_import", 0, 25, cad_import.import_dxf, dxf_path, rules=rules, layers=layers,
                     units=units, include_doors=include_doors, plan=plan)
+    # the compiled kernels load in a thread beside rasterize and the segmentation's first steps (their OpenCV
+    # and numpy calls release the GIL); segmentation waits for them at their first use (kernels.py)
+    kernels.preload()
     # projection lines no rule keeps count for the extent (a corridor closed by one lies beyond the walls)
     grid = timed("rasterize", 25, 35, rasterize.rasterize, drawing.geometries + drawing.boundary,
                  resolution=resolution, extent=extent, door_hints=drawing.doors)

@@ -229,3 +229,47 @@ def test_qgis_process_segment_runs_the_kernels_and_gives_the_numpy_result(tmp_pa
     assert res["AREA_COUNT"] == len(ref.areas)
     lab = gdal.Open(str(out)).ReadAsArray()
     assert np.array_equal(lab, ref.labels)
+
+
+def test_preload_loads_in_a_thread_and_get_waits_for_it(monkeypatch):
+    """``preload`` starts the load beside the caller; ``get`` returns the same choice as a load in the caller's
+    thread (it waits for the load, never answers "numpy" because the load is still running); ``describe``
+    does not wait, and says the kernels are still loading."""
+    import threading
+
+    expected = kernels.get() is not None  # this environment's choice, loaded in the caller's thread
+    kernels.set_enabled(None)
+    gate = threading.Event()
+    real = kernels._load
+
+    def slow_load():
+        gate.wait(10)
+        return real()
+
+    monkeypatch.setattr(kernels, "_load", slow_load)
+    try:
+        kernels.preload()
+        kernels.preload()  # a second call starts no second load
+        th = kernels._STATE["thread"]
+        assert th is not None and th.name == "cad2osmag-kernels"
+        if expected:
+            assert "loading" in kernels.describe() and not kernels._STATE["loaded"]
+        gate.set()
+        assert (kernels.get() is not None) == expected
+        assert kernels._STATE["loaded"] and not th.is_alive()
+        assert ("numba" in kernels.describe()) == expected and "loading" not in kernels.describe()
+    finally:
+        gate.set()
+        monkeypatch.setattr(kernels, "_load", real)
+        kernels.set_enabled(None)
+
+
+def test_preload_respects_the_environment_switch(monkeypatch):
+    monkeypatch.setenv("CAD2OSMAG_NUMBA", "0")
+    kernels.set_enabled(None)
+    try:
+        kernels.preload()
+        assert kernels.get() is None and "CAD2OSMAG_NUMBA=0" in kernels.describe()
+    finally:
+        monkeypatch.delenv("CAD2OSMAG_NUMBA")
+        kernels.set_enabled(None)
