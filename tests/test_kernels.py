@@ -273,3 +273,28 @@ def test_preload_respects_the_environment_switch(monkeypatch):
     finally:
         monkeypatch.delenv("CAD2OSMAG_NUMBA")
         kernels.set_enabled(None)
+
+
+@pytest.mark.slow
+@pytest.mark.qgis_process
+def test_qgis_process_conversion_preloads_the_kernels_and_writes_the_same_map(tmp_path):
+    """``cad2osmag:dxftoosmag`` headless: the kernels load in their thread beside the conversion
+    (``kernels.preload``), the log names the path, and the map is the one this process writes with the
+    kernels loaded before the conversion started (the areas and passages of both files are equal)."""
+    from algorithms import osmag, pipeline, sample_building
+
+    from .qgis_process import run_alg
+
+    info = sample_building.generate_open_anchors(str(tmp_path))
+    out = tmp_path / "qgis.osm"
+    _, res, log = run_alg("dxftoosmag", {"INPUT": info["dxf"], "OUTPUT": str(out), "LEVEL": 1}, headless=True)
+    assert "pixel loops:" in log
+    if kernels.get() is not None:  # loaded here first: this process's conversion does not preload
+        assert "pixel loops: compiled kernels (numba" in log, log[-2000:]
+    ref = tmp_path / "here.osm"
+    pipeline.convert_dxf(info["dxf"], str(ref), level="1")
+    a1, p1, _r1, _ = osmag.read_osmag(str(out))
+    a2, p2, _r2, _ = osmag.read_osmag(str(ref))
+    key = lambda a: (a.type, round(a.polygon.area, 3), round(a.polygon.centroid.x, 3), round(a.polygon.centroid.y, 3))
+    assert sorted(map(key, a1)) == sorted(map(key, a2)) and len(a1) > 3
+    assert len(p1) == len(p2) > 2
