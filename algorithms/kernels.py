@@ -110,8 +110,20 @@ def describe() -> str:
         load = _STATE.get("load_s", 0.0)
         note = (f", compiled on this first use in {load:.0f} s CPU, cached for the next runs" if load > 3.0
                 else f", loaded in {load:.2f} s")
+        _STATE["noted"] = _STATE.get("noted") or load > 3.0  # said here: compile_note stays silent
         return f"pixel loops: compiled kernels (numba {numba.__version__}{note})"
     return f"pixel loops: numpy ({_STATE['why'] or 'numba not installed'}; install numba for speed)"
+
+
+def compile_note() -> str:
+    """Once per process, after a load that compiled the kernels (the first use on a machine, > 3 CPU s):
+    the line that says so. A preloaded conversion logs it after the segmentation, since ``describe``
+    said only "loading" then; '' otherwise."""
+    load = _STATE.get("load_s", 0.0)
+    if _STATE["module"] is None or load <= 3.0 or _STATE.get("noted"):
+        return ""
+    _STATE["noted"] = True
+    return f"pixel loops: the compiled kernels were compiled on this first use in {load:.0f} s CPU, cached for the next runs"
 
 
 def set_enabled(flag: Optional[bool]) -> None:
@@ -120,7 +132,7 @@ def set_enabled(flag: Optional[bool]) -> None:
     th = _STATE["thread"]
     if th is not None:
         th.join()
-    _STATE.update(loaded=False, module=None, why="", load_s=0.0, thread=None)
+    _STATE.update(loaded=False, module=None, why="", load_s=0.0, thread=None, noted=False)
     if flag is False:
         _STATE.update(loaded=True, why="disabled")
     elif flag is True:

@@ -169,6 +169,9 @@ def process_floor(dxf_path: str, *, rules=None, layers=None, units=None, include
                 corridor_width=corridor_width, delta=delta, prune=prune,
                 inside_points=_inside_points(drawing, name_rules, classified), door_hints=drawing.doors, footprint=True,
                 boundary=rasterize.boundary_mask(drawing.boundary, grid))
+    note = kernels.compile_note()  # compiled beside the first steps on this machine's first run: say so
+    if note:
+        progress.info(note)
     t0, c0 = time.perf_counter(), time.process_time()
     symbols = Symbols(drawing.geometries)  # segments, stair runs and lift crosses: found once, typing and carve
     vertical = classify_vertical_areas(seg.areas, drawing.geometries, symbols=symbols)

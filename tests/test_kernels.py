@@ -298,3 +298,19 @@ def test_qgis_process_conversion_preloads_the_kernels_and_writes_the_same_map(tm
     key = lambda a: (a.type, round(a.polygon.area, 3), round(a.polygon.centroid.x, 3), round(a.polygon.centroid.y, 3))
     assert sorted(map(key, a1)) == sorted(map(key, a2)) and len(a1) > 3
     assert len(p1) == len(p2) > 2
+
+
+def test_a_compiling_load_is_noted_once():
+    """A load that compiled (> 3 CPU s: the first use on a machine) is reported once by ``compile_note``,
+    which a preloaded conversion logs after the segmentation; a cached load is not."""
+    kernels.set_enabled(None)
+    try:
+        if kernels.get() is None:
+            assert kernels.compile_note() == ""
+            return
+        assert kernels.compile_note() == ""  # loaded from the cache in well under 3 s
+        kernels._STATE["load_s"] = 14.2
+        note = kernels.compile_note()
+        assert "compiled on this first use in 14 s" in note and kernels.compile_note() == ""
+    finally:
+        kernels.set_enabled(None)
