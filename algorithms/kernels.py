@@ -46,6 +46,10 @@ def _get_locked() -> None:
             mod.selftest()
             _STATE["module"] = mod
             _STATE["load_s"] = time.thread_time() - t0
+            if _STATE["load_s"] > 3.0:  # it compiled (first use on a machine): ~50 MB of numba's cyclic garbage,
+                import gc  # kept while a conversion pauses the collector (pipeline._gc_paused)
+
+                gc.collect()
         except Exception as exc:  # numba missing, a numba that does not fit this numpy, a bad cache
             _STATE["why"] = f"numba not usable ({type(exc).__name__}: {exc})"
     _STATE["loaded"] = True
