@@ -8,6 +8,8 @@ and scripts. Outputs are written atomically, and only after every stage succeede
 from __future__ import annotations
 
 import contextlib
+import functools
+import gc
 import os
 import time
 from dataclasses import dataclass, field
@@ -16,7 +18,7 @@ from typing import Dict, Optional, Sequence
 from shapely.geometry import Polygon
 from shapely.ops import unary_union
 
-from . import anchors, cad_import, osmag, rasterize, refine, segmentation, semantics
+from . import anchors, cad_import, kernels, osmag, rasterize, refine, segmentation, semantics
 from .area_types import Symbols, classify_vertical_areas, symbol_evidence
 from .georef import LocalFrame
 from .errors import Canceled, InputError
@@ -126,6 +128,25 @@ class _OutlineReach:
         return k > 1
 
 
+def _gc_paused(func):
+    """Run ``func`` with Python's cyclic garbage collector paused (re-enabled after, if it was on). A conversion
+    allocates ~10^5-10^6 tracked objects (the DXF document, numba's modules as the kernels load, shapely and
+    area lists): the collector's passes over them were 0.37-0.61 CPU s of a fresh SIST floor (gc.callbacks),
+    for almost no garbage. The one large cyclic structure, the ezdxf document, is freed right after the import
+    (``gc.collect(0)``: it was all made while the collector was paused, so it is in the youngest generation)."""
+    @functools.wraps(func)
+    def run(*args, **kwargs):
+        was = gc.isenabled()
+        gc.disable()
+        try:
+            return func(*args, **kwargs)
+        finally:
+            if was:
+                gc.enable()
+    return run
+
+
+@_gc_paused
 def process_floor(dxf_path: str, *, rules=None, layers=None, units=None, include_doors: bool = False, plan=None,
                   resolution: float = rasterize.DEFAULT_RESOLUTION, extent=None,
                   door_width: float = segmentation.DEFAULT_DOOR_WIDTH,
@@ -157,6 +178,10 @@ def process_floor(dxf_path: str, *, rules=None, layers=None, units=None, include
 
     drawing = timed("cad_import", 0, 25, cad_import.import_dxf, dxf_path, rules=rules, layers=layers,
                     units=units, include_doors=include_doors, plan=plan)
+    gc.collect(0)  # the DXF/DWG document's cycles (see _gc_paused): its memory back before the raster's
+    # the compiled kernels load in a thread beside rasterize and the segmentation's first steps (their OpenCV
+    # and numpy calls release the GIL); segmentation waits for them at their first use (kernels.py)
+    kernels.preload()
     # projection lines no rule keeps count for the extent (a corridor closed by one lies beyond the walls)
     grid = timed("rasterize", 25, 35, rasterize.rasterize, drawing.geometries + drawing.boundary,
                  resolution=resolution, extent=extent, door_hints=drawing.doors)
@@ -166,6 +191,9 @@ def process_floor(dxf_path: str, *, rules=None, layers=None, units=None, include
                 corridor_width=corridor_width, delta=delta, prune=prune,
                 inside_points=_inside_points(drawing, name_rules, classified), door_hints=drawing.doors, footprint=True,
                 boundary=rasterize.boundary_mask(drawing.boundary, grid))
+    note = kernels.compile_note()  # compiled beside the first steps on this machine's first run: say so
+    if note:
+        progress.info(note)
     t0, c0 = time.perf_counter(), time.process_time()
     evidence = symbol_evidence(drawing)  # the drawing's geometries, plus the stair/lift symbols it hides
     symbols = Symbols(evidence)  # segments, stair runs and lift crosses: found once, typing and carve

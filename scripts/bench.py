@@ -116,6 +116,10 @@ def summarise(runs):
     if not ok:
         return dict(runs[0], runs=len(runs))
     s = dict(ok[0])
+    warm = [r["warm"] for r in ok if (r.get("warm") or {}).get("ok")]
+    if warm:  # the second conversion in the same process (plugin loaded): its own medians
+        s["warm"] = {"runs": len(warm), "wall_s": med([w["wall_s"] for w in warm]),
+                     "cpu_s": med([w["cpu_s"] for w in warm])}
     s.update({"runs": len(ok), "wall_s": med([r["wall_s"] for r in ok]), "cpu_s": med([r["cpu_s"] for r in ok]),
               "peak_mb": max(r["peak_mb"] for r in ok), "walls": [round(r["wall_s"], 2) for r in ok],
               "stages_wall": {k: med([r["stages_wall"].get(k) for r in ok]) for k in STAGES},
@@ -181,7 +185,8 @@ def main():
         runs = []
         for i in range(args.runs):
             payload = {"path": path, "out_osm": str(work / "osm" / f"{label}.osm"), "level": level,
-                       "png": str(gallery / f"{label}.png") if i == 0 else None}
+                       "png": str(gallery / f"{label}.png") if i == 0 else None,
+                       "warm": group == "SIST filtered DXF" and i == 0}  # + a second conversion, same process
             r = spawn("plan", payload)
             runs.append(r)
             if not r.get("ok") or (i == 0 and r["cpu_s"] > args.max_repeat_cpu):
@@ -345,6 +350,10 @@ def write_markdown(path: Path, rows, scaling, total, args, pending=0):
                    med([r["cpu_s"] for r in sist]), max(r["peak_mb"] for r in sist))
     else:
         target_row(TARGETS[0][0], TARGETS[0][1], TARGETS[0][2], None, None, None)
+    warm = [r["warm"] for r in sist if r.get("warm")]
+    if warm:  # never instead of the cold figure: what a QGIS user sees from the second conversion on
+        target_row(TARGETS[0][0].replace("(median)", "(median), second conversion in the same process"),
+                   TARGETS[0][1], None, med([w["wall_s"] for w in warm]), med([w["cpu_s"] for w in warm]), None)
     if dwg5 and dwg5.get("ok"):
         target_row(TARGETS[1][0], TARGETS[1][1], TARGETS[1][2], dwg5["wall_s"], dwg5["cpu_s"], dwg5["peak_mb"])
     else:
@@ -355,7 +364,15 @@ def write_markdown(path: Path, rows, scaling, total, args, pending=0):
     else:
         target_row(TARGETS[2][0], TARGETS[2][1], TARGETS[2][2], None, None, None)
     L += ["", "For the building, *CPU* is the CPU seconds of all processes divided by the 2 workers (the wall time "
-          "the 2 cores would need unloaded).", ""]
+          "the 2 cores would need unloaded)."]
+    if warm:
+        fixed = med([r["cpu_s"] - r["warm"]["cpu_s"] for r in sist if r.get("warm")])
+        L += ["*Second conversion in the same process* (not the target's figure, which is the fresh process "
+              "above): the same floor converted again by the process that converted it first, as in QGIS from the "
+              "second conversion on (plugin imported, compiled kernels loaded, first-use imports done); peak RSS "
+              f"is the cold run's. A fresh process pays {_f(fixed)} CPU s more (median of the floors): the "
+              "fixed per-process cost that every worker of the building's process pool pays once."]
+    L += [""]
 
     L += ["## Every plan", "",
           "| plan | group | runs | wall s (median) | CPU s | peak RSS MB | raster px | areas | passages | named | "

@@ -214,3 +214,96 @@ def test_floor_markings_same_on_both_paths():
         n = floor_markings(geoms, cls, {"0"})
         assert n == len(court), (n, cls)
         assert [c == "marking" for c in cls] == [False] * len(walls) + [True] * len(court) + [False] * len(tied)
+
+
+def _tags_of(path):
+    """The tags ezdxf's own reader compiles for an ASCII DXF (``tag_compiler(ascii_tags_loader(...))``)."""
+    from ezdxf.filemanagement import dxf_file_info
+    from ezdxf.lldxf.tagger import ascii_tags_loader, tag_compiler
+
+    with open(path, mode="rt", encoding=dxf_file_info(str(path)).encoding, errors="surrogateescape") as fp:
+        return [(type(t).__name__, t.code, tuple(t.value) if type(t).__name__ == "DXFVertex" else t.value)
+                for t in tag_compiler(ascii_tags_loader(fp))]
+
+
+def _entities(doc):
+    return [(e.dxftype(), e.dxf.handle, e.dxf.layer) for e in doc.modelspace()] + \
+        [(b.name, len(b)) for b in doc.blocks]
+
+
+def _small_dxf(folder: Path) -> Path:
+    """A drawing with 2-D and 3-D points, a block, texts, a binary-data tag (a proxy graphic) and
+    CRLF line ends: every kind of tag the fast reader compiles."""
+    import ezdxf
+
+    doc = ezdxf.new("R2010")
+    msp = doc.modelspace()
+    msp.add_line((0, 0), (5.25, 0), dxfattribs={"layer": "WALL"})
+    msp.add_lwpolyline([(0, 0), (1, 0), (1, 1)], close=True, dxfattribs={"layer": "A-WALL"})
+    msp.add_text("Room 101", dxfattribs={"insert": (1, 2, 0), "height": 0.3})
+    blk = doc.blocks.new("DOOR")
+    blk.add_arc((0, 0), 0.9, 0, 90)
+    msp.add_blockref("DOOR", (3, 3))
+    x = doc.objects.add_xrecord(doc.rootdict.dxf.handle)
+    x.reset([(1, "note"), (310, b"\x00\x01\xfe")])
+    path = folder / "small.dxf"
+    doc.saveas(path)
+    path.write_bytes(path.read_bytes().replace(b"\r\n", b"\n").replace(b"\n", b"\r\n"))
+    return path
+
+
+def test_fast_dxf_reader_compiles_ezdxfs_tags_and_document(tmp_path):
+    """``cad_read._readfile`` reads an ASCII DXF into the same tags and document as ``ezdxf.readfile``."""
+    import ezdxf
+
+    from algorithms import cad_read
+    from ezdxf.filemanagement import dxf_file_info
+
+    path = _small_dxf(tmp_path)
+    with open(path, mode="rt", encoding=dxf_file_info(str(path)).encoding, errors="surrogateescape") as fp:
+        mine = cad_read._compiled_tags(fp.read().split("\n"))
+    got = [(type(t).__name__, t.code, tuple(t.value) if type(t).__name__ == "DXFVertex" else t.value) for t in mine]
+    ref = _tags_of(path)
+    assert got == ref and len(ref) > 500
+    kinds = {k for k, _c, _v in ref}
+    assert kinds == {"DXFTag", "DXFVertex", "DXFBinaryTag"}
+    assert any(k == "DXFVertex" and len(v) == 2 for k, _c, v in ref) and any(
+        k == "DXFVertex" and len(v) == 3 for k, _c, v in ref)  # 2-D (LWPOLYLINE) and 3-D points
+    assert _entities(cad_read._readfile(str(path))) == _entities(ezdxf.readfile(str(path)))
+
+
+@pytest.mark.parametrize("damage", ["comment", "proe_int", "no_eof", "bad_code", "after_eof"])
+def test_fast_dxf_reader_leaves_the_unusual_to_ezdxf(tmp_path, damage):
+    """What the fast loop does not compile as ezdxf would (comments, an int written as a float, no end
+    marker, a bad group code; garbage after EOF, which both ignore) gives ezdxf's own result or error."""
+    import ezdxf
+
+    from algorithms import cad_read
+
+    path = _small_dxf(tmp_path)
+    text = path.read_bytes().decode()
+    if damage == "comment":
+        text = text.replace("ENTITIES\r\n", "ENTITIES\r\n999\r\nexported by a test\r\n", 1)
+    elif damage == "proe_int":  # ProE writes ints as floats: ezdxf reads them, the fast loop passes
+        text = text.replace("AcDbEntity\r\n  8\r\n", "AcDbEntity\r\n 62\r\n1.0\r\n  8\r\n", 1)
+    elif damage == "no_eof":
+        text = text[:text.rindex("EOF")]
+    elif damage == "bad_code":
+        text = text.replace("ENTITIES\r\n", "ENTITIES\r\nxx\r\nLINE\r\n", 1)
+    elif damage == "after_eof":
+        text = text + "garbage\r\n"
+    assert text != path.read_bytes().decode()
+    path.write_bytes(text.encode())
+    lines = text.replace("\r\n", "\n").split("\n")
+    if damage == "after_eof":  # read by the fast loop, which stops at EOF as ezdxf does
+        assert len(cad_read._compiled_tags(lines)) == len(_tags_of(path))
+    else:
+        with pytest.raises(Exception):
+            cad_read._compiled_tags(lines)  # the fast loop declines: ezdxf's reader decides
+    try:
+        ref = _entities(ezdxf.readfile(str(path)))
+    except Exception as exc:
+        with pytest.raises(type(exc)):
+            cad_read._readfile(str(path))
+        return
+    assert _entities(cad_read._readfile(str(path))) == ref

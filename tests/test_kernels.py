@@ -229,3 +229,88 @@ def test_qgis_process_segment_runs_the_kernels_and_gives_the_numpy_result(tmp_pa
     assert res["AREA_COUNT"] == len(ref.areas)
     lab = gdal.Open(str(out)).ReadAsArray()
     assert np.array_equal(lab, ref.labels)
+
+
+def test_preload_loads_in_a_thread_and_get_waits_for_it(monkeypatch):
+    """``preload`` starts the load beside the caller; ``get`` returns the same choice as a load in the caller's
+    thread (it waits for the load, never answers "numpy" because the load is still running); ``describe``
+    does not wait, and says the kernels are still loading."""
+    import threading
+
+    expected = kernels.get() is not None  # this environment's choice, loaded in the caller's thread
+    kernels.set_enabled(None)
+    gate = threading.Event()
+    real = kernels._load
+
+    def slow_load():
+        gate.wait(10)
+        return real()
+
+    monkeypatch.setattr(kernels, "_load", slow_load)
+    try:
+        kernels.preload()
+        kernels.preload()  # a second call starts no second load
+        th = kernels._STATE["thread"]
+        assert th is not None and th.name == "cad2osmag-kernels"
+        if expected:
+            assert "loading" in kernels.describe() and not kernels._STATE["loaded"]
+        gate.set()
+        assert (kernels.get() is not None) == expected
+        assert kernels._STATE["loaded"] and not th.is_alive()
+        assert ("numba" in kernels.describe()) == expected and "loading" not in kernels.describe()
+    finally:
+        gate.set()
+        monkeypatch.setattr(kernels, "_load", real)
+        kernels.set_enabled(None)
+
+
+def test_preload_respects_the_environment_switch(monkeypatch):
+    monkeypatch.setenv("CAD2OSMAG_NUMBA", "0")
+    kernels.set_enabled(None)
+    try:
+        kernels.preload()
+        assert kernels.get() is None and "CAD2OSMAG_NUMBA=0" in kernels.describe()
+    finally:
+        monkeypatch.delenv("CAD2OSMAG_NUMBA")
+        kernels.set_enabled(None)
+
+
+@pytest.mark.slow
+@pytest.mark.qgis_process
+def test_qgis_process_conversion_preloads_the_kernels_and_writes_the_same_map(tmp_path):
+    """``cad2osmag:dxftoosmag`` headless: the kernels load in their thread beside the conversion
+    (``kernels.preload``), the log names the path, and the map is the one this process writes with the
+    kernels loaded before the conversion started (the areas and passages of both files are equal)."""
+    from algorithms import osmag, pipeline, sample_building
+
+    from .qgis_process import run_alg
+
+    info = sample_building.generate_open_anchors(str(tmp_path))
+    out = tmp_path / "qgis.osm"
+    _, res, log = run_alg("dxftoosmag", {"INPUT": info["dxf"], "OUTPUT": str(out), "LEVEL": 1}, headless=True)
+    assert "pixel loops:" in log
+    if kernels.get() is not None:  # loaded here first: this process's conversion does not preload
+        assert "pixel loops: compiled kernels (numba" in log, log[-2000:]
+    ref = tmp_path / "here.osm"
+    pipeline.convert_dxf(info["dxf"], str(ref), level="1")
+    a1, p1, _r1, _ = osmag.read_osmag(str(out))
+    a2, p2, _r2, _ = osmag.read_osmag(str(ref))
+    key = lambda a: (a.type, round(a.polygon.area, 3), round(a.polygon.centroid.x, 3), round(a.polygon.centroid.y, 3))
+    assert sorted(map(key, a1)) == sorted(map(key, a2)) and len(a1) > 3
+    assert len(p1) == len(p2) > 2
+
+
+def test_a_compiling_load_is_noted_once():
+    """A load that compiled (> 3 CPU s: the first use on a machine) is reported once by ``compile_note``,
+    which a preloaded conversion logs after the segmentation; a cached load is not."""
+    kernels.set_enabled(None)
+    try:
+        if kernels.get() is None:
+            assert kernels.compile_note() == ""
+            return
+        assert kernels.compile_note() == ""  # loaded from the cache in well under 3 s
+        kernels._STATE["load_s"] = 14.2
+        note = kernels.compile_note()
+        assert "compiled on this first use in 14 s" in note and kernels.compile_note() == ""
+    finally:
+        kernels.set_enabled(None)
