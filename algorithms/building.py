@@ -1455,6 +1455,11 @@ def _convert_one(args):
     return out, _t.perf_counter() - t0, stats.get("areas"), stats.get("passages")
 
 
+def _one_thread_worker() -> None:
+    """Pool initializer: the worker's segmentation runs on one thread (``CAD2OSMAG_THREADS=1``)."""
+    os.environ["CAD2OSMAG_THREADS"] = "1"
+
+
 def convert_floors(dxf_paths: Sequence[str], out_dir: str, levels: Optional[Sequence[str]] = None,
                    workers: int = 2, progress=None, **convert_kwargs) -> List[Tuple[str, float, int, int]]:
     """Convert DXF floors to osmAG files in ``out_dir`` (``<stem>.osm``), ``workers`` at a time in a
@@ -1495,7 +1500,11 @@ def convert_floors(dxf_paths: Sequence[str], out_dir: str, levels: Optional[Sequ
         import multiprocessing as mp
 
         ctx = mp.get_context("spawn")  # no fork of a process that may hold QGIS/Qt state
-        with cf.ProcessPoolExecutor(max_workers=workers, mp_context=ctx) as ex:
+        # as many workers as CPUs keep every core busy: a worker's own second thread (segmentation) would only
+        # compete with the other workers for the cores
+        busy = workers >= (len(os.sched_getaffinity(0)) if hasattr(os, "sched_getaffinity") else (os.cpu_count() or 1))
+        with cf.ProcessPoolExecutor(max_workers=workers, mp_context=ctx,
+                                    initializer=_one_thread_worker if busy else None) as ex:
             futs = {ex.submit(_convert_one, job): k for k, job in enumerate(jobs)}
             for f in cf.as_completed(futs):
                 k = futs[f]

@@ -1,6 +1,7 @@
 """Multi-floor fusion (algorithms.building): levels, anchor registration, vertical passages, hierarchy,
 bad input; on small synthetic floors, on the sample building, and on real data (slow)."""
 import math
+import os
 import xml.etree.ElementTree as ET
 from pathlib import Path
 
@@ -998,3 +999,16 @@ def test_hidden_stair_marks_type_an_enclosed_core_drawn_without_treads():
     geoms[-1].cls = HIDDEN_SYMBOL_CLS
     assert hidden_stair_marks([core, hall, store], geoms) == {1: "stairs"}
     assert hidden_stair_marks([Area(4, box(0, 0, 3.5, 7.5))], mark(1, 3, "")) == {}  # shown: treads decide
+
+
+def test_pool_workers_as_many_as_cpus_run_their_segmentation_on_one_thread(monkeypatch):
+    """convert_floors' pool initializer (used when the workers fill every CPU): the segmentation's second
+    thread would only compete with the other workers."""
+    from algorithms import segmentation
+
+    monkeypatch.delenv("CAD2OSMAG_THREADS", raising=False)
+    monkeypatch.setattr(segmentation, "_cpus", lambda: 2)
+    assert segmentation._threads_on()
+    building._one_thread_worker()
+    assert os.environ["CAD2OSMAG_THREADS"] == "1" and not segmentation._threads_on()
+    monkeypatch.delenv("CAD2OSMAG_THREADS")
