@@ -749,8 +749,12 @@ class _Exploder:
 # its layer): an INSERT on an *off* layer hides only the block entities that inherit that layer (those on layer
 # "0", nested INSERTs on "0" included); entities on their own layers stay visible when those layers are on and
 # thawed. An INSERT on a *frozen* layer hides the whole block, nested contents included. False: the old rule
-# (an INSERT on an off layer dropped whole, like a frozen one).
-OFF_INSERT_SHOWS_OWN_LAYERS = True
+# (an INSERT on an off layer dropped whole, like a frozen one). Off by default (session 7, T10b): on the
+# filtered SIST floors it shows what AutoCAD shows (F1's curtain walls and glass lift, F2's E1 wing walls, F4's
+# columns), but F1's newly shown glass lift becomes its only anchor and the fusion registers F1 on it, 74 m off
+# (building.register_anchors accepts one matched anchor; propagate_shafts skips a floor with anchors): vertical
+# passages 37 -> 32. Switch on once the fusion checks a one-anchor match (see /work/briefs/readme-T10b.md).
+OFF_INSERT_SHOWS_OWN_LAYERS = False
 
 HIDDEN_TEXT_TYPES = ("TEXT", "MTEXT", "ATTRIB")  # texts are read on every layer, then split by visibility
 HIDDEN_BLOCK_MAX = 50  # a block inserted on a frozen / off layer gives its texts when it is this small
@@ -869,8 +873,11 @@ def hidden_symbols(doc, states, rules, scale: float, extent=None, max_depth: int
                     t = np.array((m[3, 0], m[3, 1]))
                     # what AutoCAD hides: a frozen INSERT layer hides the whole block; an off one only the
                     # layer-0 entities that take it (resolved below, on the entity's resolved layer)
-                    hid = (frozen_layer(layer) if OFF_INSERT_SHOWS_OWN_LAYERS else hidden_layer(layer)) \
-                        if layer != "0" or depth == 0 else False
+                    # (an INSERT on "0" inside a block has its parent's layer, decided where the parent is placed)
+                    if not OFF_INSERT_SHOWS_OWN_LAYERS:
+                        hid = hidden_layer(layer)
+                    else:
+                        hid = frozen_layer(layer) if layer != "0" or depth == 0 else False
                     for L, c, h, lift in sub:
                         out.append((layer if L == "0" else L, c @ A.T + t, h or hid, lift))
                     continue

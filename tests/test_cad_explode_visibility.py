@@ -1,6 +1,7 @@
 """Layer visibility of block contents as AutoCAD shows it (cad_explode.OFF_INSERT_SHOWS_OWN_LAYERS): an INSERT on
 an *off* layer hides only the block entities that inherit its layer (layer "0"); an INSERT on a *frozen* layer
-hides the whole block, nested contents included. Small synthetic DXFs written with ezdxf."""
+hides the whole block, nested contents included. Small synthetic DXFs written with ezdxf. The rule is off by
+default (cad_explode's comment says why); these tests switch it on."""
 import ezdxf
 import pytest
 
@@ -9,6 +10,12 @@ from algorithms.cad_explode import HIDDEN_SYMBOL_CLS, _explode, hidden_symbols
 from algorithms.cad_import import import_dxf
 from algorithms.cad_read import _layer_states
 from algorithms.layer_rules import default_rules
+
+
+@pytest.fixture(autouse=True)
+def _rule_on(monkeypatch):
+    """The rule is off by default (the fusion of filtered SIST floors is not ready for it): tested switched on."""
+    monkeypatch.setattr(cad_explode, "OFF_INSERT_SHOWS_OWN_LAYERS", True)
 
 
 def _doc():
@@ -96,11 +103,18 @@ def test_walls_inside_an_insert_on_an_off_layer_are_imported(tmp_path):
     assert len(d.geometries) == 4 and {g.layer for g in d.geometries} == {"A-WALL"}
 
 
-def test_rule_switched_off_drops_an_off_layer_insert_whole(tmp_path, monkeypatch):
+def test_rule_switched_off_drops_an_off_layer_insert_whole_and_hides_its_symbols(tmp_path, monkeypatch):
     monkeypatch.setattr(cad_explode, "OFF_INSERT_SHOWS_OWN_LAYERS", False)
     doc = _doc()
     doc.modelspace().add_blockref("B", (10, 0), dxfattribs={"layer": "OFF"})
     assert _pieces(doc, tmp_path)[0] == []
+    doc = ezdxf.new("R2010")
+    doc.layers.add("OFF").off()
+    doc.layers.add("A-STAIR")
+    doc.blocks.new("S").add_line((0, 0), (3, 0), dxfattribs={"layer": "A-STAIR"})
+    doc.modelspace().add_blockref("S", (0, 5), dxfattribs={"layer": "OFF"})
+    got = hidden_symbols(doc, _layer_states(doc), default_rules(), 1.0)
+    assert [(g.layer, float(g.coords[0, 1])) for g in got] == [("A-STAIR", 5.0)]  # the whole insert is hidden
 
 
 def test_hidden_symbols_are_what_autocad_does_not_show(tmp_path):
