@@ -479,6 +479,11 @@ class _Exploder:
         layer = e.dxf.get("layer", "0") or "0"
         if not self._keep_layer(layer) and et not in HIDDEN_TEXT_TYPES:
             if et == "INSERT":
+                if OFF_INSERT_SHOWS_OWN_LAYERS and self.visible(layer, frozen_only=True):
+                    # an INSERT on an *off* (not frozen) layer: AutoCAD hides only what inherits that layer
+                    # (the block's layer-0 entities, dropped by ``_inherited_ok``); its own-layer ones stay
+                    self._insert(e, layer, out)
+                    return
                 self._hidden_insert_texts(e, layer, out)
             return
         if et in DASHABLE_TYPES:
@@ -697,7 +702,7 @@ class _Exploder:
 
     def _insert(self, e, layer, out, hidden: bool = False):
         name = e.dxf.name
-        if layer != "0" and not hidden and not self.visible(layer, frozen_only=True):
+        if not hidden and not self.visible(layer, frozen_only=True) and (layer != "0" or self._top_frozen_zero()):
             return
         rows = int(e.dxf.get("row_count", 1) or 1)
         cols = int(e.dxf.get("column_count", 1) or 1)
@@ -729,10 +734,27 @@ class _Exploder:
                                       float(a.dxf.get("rotation", 0.0)), alay, "ATTRIB", name,
                                       str(a.dxf.get("tag", "") or "")))
 
+    def _top_frozen_zero(self) -> bool:
+        """An INSERT on a frozen layer "0" is hidden whole at the top level (model space); inside a block
+        layer "0" is the parent INSERT's layer, decided when that INSERT is placed."""
+        return OFF_INSERT_SHOWS_OWN_LAYERS and not self.stack
+
     def _inherited_ok(self, layer, etype) -> bool:
         return etype in HIDDEN_TEXT_TYPES or self._keep_layer(layer)
 
 
+
+# Layer visibility of block contents, as AutoCAD shows it (ezdxf's drawing add-on agrees for *off*: an INSERT's
+# visibility "depends only on the invisible flag, the layer state has no effect", and its layer-0 entities take
+# its layer): an INSERT on an *off* layer hides only the block entities that inherit that layer (those on layer
+# "0", nested INSERTs on "0" included); entities on their own layers stay visible when those layers are on and
+# thawed. An INSERT on a *frozen* layer hides the whole block, nested contents included. False: the old rule
+# (an INSERT on an off layer dropped whole, like a frozen one). Off by default (session 7, T10b): on the
+# filtered SIST floors it shows what AutoCAD shows (F1's curtain walls and glass lift, F2's E1 wing walls, F4's
+# columns), but F1's newly shown glass lift becomes its only anchor and the fusion registers F1 on it, 74 m off
+# (building.register_anchors accepts one matched anchor; propagate_shafts skips a floor with anchors): vertical
+# passages 37 -> 32. Switch on once the fusion checks a one-anchor match (see /work/briefs/readme-T10b.md).
+OFF_INSERT_SHOWS_OWN_LAYERS = False
 
 HIDDEN_TEXT_TYPES = ("TEXT", "MTEXT", "ATTRIB")  # texts are read on every layer, then split by visibility
 HIDDEN_BLOCK_MAX = 50  # a block inserted on a frozen / off layer gives its texts when it is this small
@@ -820,6 +842,10 @@ def hidden_symbols(doc, states, rules, scale: float, extent=None, max_depth: int
         st = states.get(name) or lower.get(name.lower())
         return bool(st and (st[0] or st[1]))
 
+    def frozen_layer(name: str) -> bool:
+        st = states.get(name) or lower.get(name.lower())
+        return bool(st and st[0])
+
     cache = {}
 
     def pieces(entities, depth):
@@ -845,7 +871,13 @@ def hidden_symbols(doc, states, rules, scale: float, extent=None, max_depth: int
                     m = e.matrix44()
                     A = np.array(((m[0, 0], m[1, 0]), (m[0, 1], m[1, 1])))
                     t = np.array((m[3, 0], m[3, 1]))
-                    hid = hidden_layer(layer)
+                    # what AutoCAD hides: a frozen INSERT layer hides the whole block; an off one only the
+                    # layer-0 entities that take it (resolved below, on the entity's resolved layer)
+                    # (an INSERT on "0" inside a block has its parent's layer, decided where the parent is placed)
+                    if not OFF_INSERT_SHOWS_OWN_LAYERS:
+                        hid = hidden_layer(layer)
+                    else:
+                        hid = frozen_layer(layer) if layer != "0" or depth == 0 else False
                     for L, c, h, lift in sub:
                         out.append((layer if L == "0" else L, c @ A.T + t, h or hid, lift))
                     continue

@@ -795,6 +795,9 @@ def _filtered_plan(tmp_path, name, hidden_layers=False, door_block=False):
     if hidden_layers:
         doc.layers.add("A-FLOR-STRS").off()
         doc.layers.add("$1$INDEX").off()
+        # the xref's lift layer is off too (as SIST-F2's E1-RV-2F$0$A-EVTR): an INSERT on an off layer hides only
+        # its layer-0 entities, so a cross on a shown layer inside it would be shown (cad_explode)
+        doc.layers.add("X-RV-2F$0$A-EVTR").off()
         for x0, x1 in ((3.1, 4.4), (4.6, 5.9)):
             for y in np.arange(4.0, 8.6, 0.28):
                 msp.add_line((x0, y), (x1, y), dxfattribs={"layer": "A-FLOR-STRS"})
