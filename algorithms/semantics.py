@@ -540,6 +540,8 @@ def _merge_copies(labels: List[Label]) -> List[Label]:
         if twin is not None:
             twin.ids = list(dict.fromkeys(twin.ids + lab.ids))
             twin.alts.append((lab.x, lab.y))
+            if PLAIN_SPELLING and _floor_prefix(twin.text) and not _floor_prefix(lab.text):
+                twin.text = lab.text  # one label: its plain spelling ('中庭回廊' over '2F中庭回廊', see _spelling)
             continue
         seen.setdefault(key, []).append(lab)
         keep.append(lab)
@@ -794,6 +796,46 @@ def _key(name: str) -> str:
     return _LEVEL_PREFIX.sub("", " ".join(normalize_text(name).casefold().split()))
 
 
+def _floor_prefix(name: str) -> str:
+    """The floor prefix of a CJK name ('2f' for '2F中庭回廊'), '' when it has none."""
+    m = _LEVEL_PREFIX.match(" ".join(normalize_text(name).casefold().split()))
+    return m.group(1) if m else ""
+
+
+def _level_prefixes(level) -> set:
+    """The floor prefixes that mean this plan's ``level`` ('3', 'L3', '3F' -> {'3f'}; '-1', 'B1' -> {'b1'})."""
+    low = str(level or "").strip().casefold()
+    m = re.fullmatch(r"(?:l|level\s*)?(-?\d{1,2})f?|b(\d)", low)
+    if not m:
+        return set()
+    if m.group(2):
+        return {f"b{m.group(2)}"}
+    n = int(m.group(1))
+    return {f"{n}f"} if n > 0 else {f"b{-n}"} if n < 0 else set()
+
+
+PLAIN_SPELLING = True  # switch of the rule below (tests turn it off to show what it does)
+
+
+def _spelling(rec: TextRecord, recs: Sequence[TextRecord], level) -> str:
+    """The spelling an area is named by, among the copies of its name (one ``_key``): a copy written with a
+    floor prefix ('2F中庭回廊' on the 3F plan: an atrium gallery labelled for every floor it spans, the labels
+    copied from another floor's sheet) never wins over the plain spelling ('中庭回廊') of the same name in
+    the area; when every copy carries a prefix, the one naming this plan's ``level`` wins. Otherwise (one
+    spelling, or no copy matching the level) the best-placed copy ``rec`` names it, as before."""
+    if not PLAIN_SPELLING or not _floor_prefix(rec.text):
+        return rec.text
+    key = _key(rec.text)
+    copies = sorted([r for r in recs if r.role == "name" and _key(r.text) == key],
+                    key=lambda r: (r.match == "nearby", r.hidden, not _strong(r), -r.score, r.ids[0]))
+    plain = [r for r in copies if not _floor_prefix(r.text)]
+    if plain:
+        return plain[0].text
+    own = _level_prefixes(level)
+    mine = [r for r in copies if _floor_prefix(r.text) in own]
+    return mine[0].text if mine else rec.text
+
+
 def auto_id(level: str, area_id: int) -> str:
     """The stable generated id of an unnamed area: ``<level>-<area id>``."""
     return f"{str(level).strip() or '1'}-{int(area_id)}"
@@ -911,7 +953,7 @@ def assign_names(areas: List[Area], texts: Sequence[CadText], level="1", rules=N
         a.name = a.name if (a.name and not recs and not _looks_auto(a.name)) else ""
         a.ref = ""
         if distinct:
-            a.name = distinct[0].text
+            a.name = _spelling(distinct[0], recs, level)
         if nums:
             a.ref = nums[0].text
             if not a.name:

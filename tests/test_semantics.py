@@ -901,3 +901,37 @@ def test_a_room_label_in_a_corridor_piece_of_a_narrowing_split_marks_a_point_alo
     assert len(pieces) == 2 and len(rep.splits) == 1 and not rep.conflicts
     assert pieces[0].name == "走道" and pieces[1].name == S.auto_id("1", pieces[1].id)
     assert pieces[1].type == "corridor" and [r.reason for r in rep.texts if r.text == "开水间"] == ["point in a corridor"]
+
+
+def test_a_name_with_another_floors_prefix_yields_to_its_plain_spelling(monkeypatch):
+    # A-A3-10-04 (3F): the atrium gallery spans floors and carries seven copies of its label, some written
+    # '2F中庭回廊' (copied from the 2F sheet), some '中庭回廊': one name for the names stage (_key drops the
+    # prefix); the best-placed copy is a '2F' one, but the plan's name is the plain spelling
+    def run(level="1", texts=None):
+        areas = [Area(id=1, polygon=box(0, 0, 40, 20))]
+        texts = texts or [T("2F中庭回廊", 20, 10), T("中庭回廊", 3, 3), T("2F 中庭回廊", 37, 17)]
+        rep = S.assign_names(areas, texts, level=level)
+        return areas[0], rep
+
+    a, rep = run()
+    assert a.name == "中庭回廊" and "label_conflict" not in a.tags and not rep.conflicts
+    assert a.tags["label_score"] == f"{max(r.score for r in rep.texts):.1f}"  # the best copy still scores it
+    # every copy prefixed: the one naming this plan's level, else the best-placed one
+    prefixed = [T("2F中庭回廊", 20, 10), T("3F中庭回廊", 3, 3)]
+    assert run("3", prefixed)[0].name == "3F中庭回廊"
+    assert run("L3", prefixed)[0].name == "3F中庭回廊"
+    assert run("1", prefixed)[0].name == "2F中庭回廊"
+    # two copies at one spot (merged into one label): the plain spelling is the label's text
+    a, rep = run(texts=[T("2F中庭回廊", 20, 10, layer="A"), T("中庭回廊", 20, 10, layer="B")])
+    assert a.name == "中庭回廊" and len([r for r in rep.texts if r.role == "name"]) == 1
+    # the rule off: the best-placed copy names the gallery, prefix and all (session 7's slip)
+    monkeypatch.setattr(S, "PLAIN_SPELLING", False)
+    assert run()[0].name == "2F中庭回廊"
+    assert run("3", prefixed)[0].name == "2F中庭回廊"
+
+
+def test_floor_prefixes_of_a_level():
+    assert S._level_prefixes("3") == {"3f"} and S._level_prefixes("L3") == {"3f"} and S._level_prefixes("3F") == {"3f"}
+    assert S._level_prefixes("-1") == {"b1"} and S._level_prefixes("B1") == {"b1"}
+    assert S._level_prefixes("0") == set() and S._level_prefixes("roof") == set()
+    assert S._floor_prefix("2F中庭回廊") == "2f" and S._floor_prefix("中庭回廊") == "" and S._floor_prefix("2F office") == ""
