@@ -935,3 +935,41 @@ def test_floor_prefixes_of_a_level():
     assert S._level_prefixes("-1") == {"b1"} and S._level_prefixes("B1") == {"b1"}
     assert S._level_prefixes("0") == set() and S._level_prefixes("roof") == set()
     assert S._floor_prefix("2F中庭回廊") == "2f" and S._floor_prefix("中庭回廊") == "" and S._floor_prefix("2F office") == ""
+
+
+def _long_corridor(doors: int = 8, length: float = 40.0):
+    """A 3 m wide corridor ``length`` m long, ``doors`` offices (5 m wide) above it, a passage to each."""
+    areas = [Area(id=1, polygon=box(0, 0, length, 3))]
+    passages = []
+    for k in range(doors):
+        x = 5.0 * k
+        areas.append(Area(id=k + 2, polygon=box(x, 3.2, x + 5, 8), name=f"R{k}"))
+        passages.append(Passage(id=k + 2, from_id=1, to_id=k + 2, line=LineString([(x + 2, 3), (x + 3, 3)])))
+    return areas, passages
+
+
+def test_a_service_room_label_at_a_corridors_end_marks_a_point_along_it(monkeypatch):
+    # SIST-F1: a 60 m corridor with 24 doors was '开水间 (2)' after a water point's label at its far end (no
+    # corridor label in it, nothing to split); the same kind: a 清洁间 in a corridor's side niche, a 弱电
+    # closet label at a corridor's end (A-A3-10-06, SIST-F3)
+    def run(text, x, y=1.5, doors=8, length=40.0, box_=None):
+        areas, passages = _long_corridor(doors, length)
+        if box_ is not None:
+            areas[0] = Area(id=1, polygon=box_)
+        rep = S.assign_names(areas, [T(text, x, y)], passages=passages)
+        return areas[0], rep
+
+    for text in ("开水间", "清洁间", "弱电", "janitor"):
+        a, rep = run(text, 1.0)
+        assert a.name == S.auto_id("1", 1) and a.type == "corridor", text
+        assert [r.reason for r in rep.texts] == ["point in a corridor"] and rep.named == 0
+    # controls: the label near the centre names it; a room name no service keyword (前室, a fire lobby: long,
+    # narrow and busy); a small area (a 开水间 room of 15 m² with three doors); too few doors (not a corridor)
+    assert run("开水间", 20.0)[0].name == "开水间"
+    assert run("前室", 1.0)[0].name == "前室"
+    assert run("开水间", 0.5, doors=3, box_=box(0, 0, 10, 1.5), y=0.75)[0].name == "开水间"
+    assert run("开水间", 1.0, doors=2)[0].name == "开水间"
+    # the rule off: the corridor is named after the water point (session 7's slip on SIST-F1)
+    monkeypatch.setattr(S, "SERVICE_POINTS", False)
+    a, rep = run("开水间", 1.0)
+    assert a.name == "开水间" and a.type == "room"
