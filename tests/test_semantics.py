@@ -973,3 +973,23 @@ def test_a_service_room_label_at_a_corridors_end_marks_a_point_along_it(monkeypa
     monkeypatch.setattr(S, "SERVICE_POINTS", False)
     a, rep = run("开水间", 1.0)
     assert a.name == "开水间" and a.type == "room"
+
+
+@pytest.mark.slow
+def test_dwg_gallery_keeps_its_plain_name_and_corridors_no_water_point_name(shared_data, floor_cache):
+    # the session's conversions (test_dwg_room_name_figures): A-A3-10-04's 3F atrium gallery (seven copies of
+    # its label, the best-placed one '2F中庭回廊') is '中庭回廊'; SIST-F1's 60 m corridor, '开水间 (2)' after the
+    # water point's label at its far end, is a corridor with an auto id, and the two 开水间 rooms keep the name
+    _dwg_reader()
+    lib = floor_cache.process_floor(shared_data / "dwg" / "library" / "A-A3-10-04.dwg")
+    gallery = [a for a in lib.refined.areas if S._key(a.name or "") == S._key("中庭回廊")]
+    assert len(gallery) == 1 and gallery[0].name == "中庭回廊" and gallery[0].polygon.area > 1000
+    assert not any(S._floor_prefix(a.name or "") for a in lib.refined.areas)
+    f1 = floor_cache.process_floor(shared_data / "dwg" / "sist-original" / "SIST-F1.dwg")
+    water = [a for a in f1.refined.areas if "开水间" in (a.name or "")]
+    assert len(water) == 2 and all(a.polygon.area < 20 for a in water), [(a.name, a.polygon.area) for a in water]
+    points = [r for r in f1.names.texts if r.reason == "point in a corridor"]
+    assert [r.text for r in points] == ["开水间"]
+    by_id = {a.id: a for a in f1.refined.areas}
+    corridor = by_id[points[0].area_id]
+    assert corridor.type == "corridor" and corridor.polygon.area > 150 and corridor.name == S.auto_id("1", corridor.id)
