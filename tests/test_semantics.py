@@ -993,3 +993,46 @@ def test_dwg_gallery_keeps_its_plain_name_and_corridors_no_water_point_name(shar
     by_id = {a.id: a for a in f1.refined.areas}
     corridor = by_id[points[0].area_id]
     assert corridor.type == "corridor" and corridor.polygon.area > 150 and corridor.name == S.auto_id("1", corridor.id)
+
+
+@pytest.mark.qgis_process
+def test_naming_slips_headless(tmp_path):
+    # assignnames on small layers: a gallery labelled '2F中庭回廊' (best placed) and '中庭回廊' is '中庭回廊'; a
+    # 40 m corridor with eight doors and a '开水间' label at its end is a corridor with a generated id
+    from osgeo import ogr
+
+    from .qgis_process import run_alg
+
+    areas, passages = _long_corridor(8)
+    areas.append(Area(id=20, polygon=box(0, 20, 40, 40)))
+    drv = ogr.GetDriverByName("GPKG")
+
+    def layer(path, geom, fields, rows):
+        ds = drv.CreateDataSource(str(path))
+        lyr = ds.CreateLayer("l", None, geom)
+        for name, typ in fields:
+            lyr.CreateField(ogr.FieldDefn(name, typ))
+        for g, vals in rows:
+            f = ogr.Feature(lyr.GetLayerDefn())
+            f.SetGeometry(ogr.CreateGeometryFromWkt(g.wkt))
+            for k, v in vals.items():
+                f.SetField(k, v)
+            lyr.CreateFeature(f)
+        ds = None
+
+    layer(tmp_path / "areas.gpkg", ogr.wkbPolygon, [("id", ogr.OFTInteger), ("type", ogr.OFTString)],
+          [(a.polygon, {"id": a.id, "type": "room"}) for a in areas])
+    layer(tmp_path / "pass.gpkg", ogr.wkbLineString, [("id", ogr.OFTInteger), ("from_id", ogr.OFTInteger),
+                                                      ("to_id", ogr.OFTInteger)],
+          [(p.line, {"id": p.id, "from_id": p.from_id, "to_id": p.to_id}) for p in passages])
+    from shapely.geometry import Point
+    texts = [("2F中庭回廊", 20, 30), ("中庭回廊", 3, 23), ("开水间", 1, 1.5)]
+    layer(tmp_path / "texts.gpkg", ogr.wkbPoint, [("text", ogr.OFTString), ("id", ogr.OFTInteger)],
+          [(Point(x, y), {"text": t, "id": k}) for k, (t, x, y) in enumerate(texts)])
+    _, res, log = run_alg("assignnames", {"AREAS": str(tmp_path / "areas.gpkg"), "TEXTS": str(tmp_path / "texts.gpkg"),
+                                          "PASSAGES": str(tmp_path / "pass.gpkg"), "LEVEL": "3",
+                                          "OUTPUT_AREAS": str(tmp_path / "named.gpkg")})
+    ds = ogr.Open(str(tmp_path / "named.gpkg"))
+    got = {f.GetField("id"): (f.GetField("name"), f.GetField("type")) for f in ds.GetLayer(0)}
+    assert got[20][0] == "中庭回廊" and got[1] == ("3-1", "corridor"), got
+    assert "marks a point along it" in log
