@@ -100,6 +100,11 @@ class NameRules:
     outdoor_keywords: List[str] = field(default_factory=list)
     # zones of an open space (阅览区, 开放性坐区, open space, zona): no room where another name labels the space
     zone_keywords: List[str] = field(default_factory=list)
+    # small service rooms (开水间 water points, 清洁间 cleaners' closets, 弱电/强电 electrical closets): their
+    # label off the centre of a long, busy corridor-shaped area larger than ``point_max_area`` (m²) marks a
+    # point along the corridor, not its name (``_demote_service_points``)
+    point_keywords: List[str] = field(default_factory=list)
+    point_max_area: float = 20.0
 
     def __post_init__(self):
         # keyword -> (type entry) sorted longest first: the longest keyword found in a name wins
@@ -178,7 +183,8 @@ def load_name_rules(path: Optional[str] = None) -> NameRules:
                      callout_tail=re.compile(data["callout_tail"], re.IGNORECASE) if data.get("callout_tail") else None,
                      weak_name_layers=words("weak_name_layers"),
                      vertical_max_area=vmax, shaft_keywords=words("shaft_keywords"),
-                     outdoor_keywords=words("outdoor_keywords"), zone_keywords=words("zone_keywords"))
+                     outdoor_keywords=words("outdoor_keywords"), zone_keywords=words("zone_keywords"),
+                     point_keywords=words("point_keywords"), point_max_area=float(data.get("point_max_area", 20.0)))
 
 
 _DEFAULT: Optional[NameRules] = None
@@ -540,6 +546,8 @@ def _merge_copies(labels: List[Label]) -> List[Label]:
         if twin is not None:
             twin.ids = list(dict.fromkeys(twin.ids + lab.ids))
             twin.alts.append((lab.x, lab.y))
+            if PLAIN_SPELLING and _floor_prefix(twin.text) and not _floor_prefix(lab.text):
+                twin.text = lab.text  # one label: its plain spelling ('中庭回廊' over '2F中庭回廊', see _spelling)
             continue
         seen.setdefault(key, []).append(lab)
         keep.append(lab)
@@ -794,6 +802,46 @@ def _key(name: str) -> str:
     return _LEVEL_PREFIX.sub("", " ".join(normalize_text(name).casefold().split()))
 
 
+def _floor_prefix(name: str) -> str:
+    """The floor prefix of a CJK name ('2f' for '2F中庭回廊'), '' when it has none."""
+    m = _LEVEL_PREFIX.match(" ".join(normalize_text(name).casefold().split()))
+    return m.group(1) if m else ""
+
+
+def _level_prefixes(level) -> set:
+    """The floor prefixes that mean this plan's ``level`` ('3', 'L3', '3F' -> {'3f'}; '-1', 'B1' -> {'b1'})."""
+    low = str(level or "").strip().casefold()
+    m = re.fullmatch(r"(?:l|level\s*)?(-?\d{1,2})f?|b(\d)", low)
+    if not m:
+        return set()
+    if m.group(2):
+        return {f"b{m.group(2)}"}
+    n = int(m.group(1))
+    return {f"{n}f"} if n > 0 else {f"b{-n}"} if n < 0 else set()
+
+
+PLAIN_SPELLING = True  # switch of the rule below (tests turn it off to show what it does)
+
+
+def _spelling(rec: TextRecord, recs: Sequence[TextRecord], level) -> str:
+    """The spelling an area is named by, among the copies of its name (one ``_key``): a copy written with a
+    floor prefix ('2F中庭回廊' on the 3F plan: an atrium gallery labelled for every floor it spans, the labels
+    copied from another floor's sheet) never wins over the plain spelling ('中庭回廊') of the same name in
+    the area; when every copy carries a prefix, the one naming this plan's ``level`` wins. Otherwise (one
+    spelling, or no copy matching the level) the best-placed copy ``rec`` names it, as before."""
+    if not PLAIN_SPELLING or not _floor_prefix(rec.text):
+        return rec.text
+    key = _key(rec.text)
+    copies = sorted([r for r in recs if r.role == "name" and _key(r.text) == key],
+                    key=lambda r: (r.match == "nearby", r.hidden, not _strong(r), -r.score, r.ids[0]))
+    plain = [r for r in copies if not _floor_prefix(r.text)]
+    if plain:
+        return plain[0].text
+    own = _level_prefixes(level)
+    mine = [r for r in copies if _floor_prefix(r.text) in own]
+    return mine[0].text if mine else rec.text
+
+
 def auto_id(level: str, area_id: int) -> str:
     """The stable generated id of an unnamed area: ``<level>-<area id>``."""
     return f"{str(level).strip() or '1'}-{int(area_id)}"
@@ -879,6 +927,7 @@ def assign_names(areas: List[Area], texts: Sequence[CadText], level="1", rules=N
                     if len({_key(r.text) for r in _competing(best_by_area[p.id])}) >= 2:
                         queue.append(p.id)
     _demote_zones(best_by_area, rules, progress)
+    _demote_service_points(best_by_area, by_id, passages, rules, progress)
     # ---- texts of frozen / off layers: names for areas that no visible text names
     if hidden_texts:
         hl = [l for l in classify_labels(list(hidden_texts), rules) if l.role in ("name", "number")]
@@ -911,7 +960,7 @@ def assign_names(areas: List[Area], texts: Sequence[CadText], level="1", rules=N
         a.name = a.name if (a.name and not recs and not _looks_auto(a.name)) else ""
         a.ref = ""
         if distinct:
-            a.name = distinct[0].text
+            a.name = _spelling(distinct[0], recs, level)
         if nums:
             a.ref = nums[0].text
             if not a.name:
@@ -1181,6 +1230,43 @@ def _demote_zones(best_by_area: Dict[int, List[TextRecord]], rules: NameRules, p
             if r.role == "name" and _key(r.text) in keys:
                 r.role, r.reason = "ignored", "zone in a named space"
         progress.info(f"area {aid}: {', '.join(sorted(keys))} is a zone of the space, not a room of its own")
+
+
+SERVICE_POINTS = True  # switch of _demote_service_points (tests turn it off to show what it does)
+POINT_SCORE = 50.0  # an inside score below this: the label lies beyond rho_max, off the area's centre
+
+
+def _demote_service_points(best_by_area: Dict[int, List[TextRecord]], by_id: Dict[int, Area], passages,
+                           rules: NameRules, progress) -> None:
+    """A small service room's label (``point_keywords``: 开水间 water point, 清洁间, 弱电 / 强电 closets)
+    written off the centre (inside score < POINT_SCORE: beyond rho_max, at an end or a side niche) of an area
+    that is corridor-shaped (``_corridor_shaped``: long, narrow, at least ``min_degree`` passages) and larger
+    than ``point_max_area`` marks a point along a corridor (a water boiler, a cleaners' sink, a closet drawn
+    open onto it), not the corridor's name: SIST-F1's 60 m corridor with 24 doors was '开水间 (2)' after a
+    label at its far end. Such labels are ignored ('point in a corridor'); the corridor keeps an auto id and
+    is typed corridor by its shape. A label near the centre of such an area still names it (a long 开水间
+    room), as does any other name (a fire lobby 前室 is long, narrow and busy too, and it is a room)."""
+    if not SERVICE_POINTS or not rules.point_keywords:
+        return
+    geo = dict({"min_elongation": 3.0, "max_width": 4.0, "min_degree": 3}, **rules.corridor_geometry)
+    degree: Dict[int, int] = {}
+    for ps in passages or ():
+        degree[ps.from_id] = degree.get(ps.from_id, 0) + 1
+        degree[ps.to_id] = degree.get(ps.to_id, 0) + 1
+    for aid, recs in best_by_area.items():
+        a = by_id.get(aid)
+        if a is None or a.polygon is None or a.type in ("stairs", "elevator", "structure"):
+            continue
+        pts = [r for r in recs if r.role == "name" and r.match == "inside" and r.score < POINT_SCORE
+               and _matches(rules.point_keywords, r.text)]
+        if not pts or a.polygon.area <= rules.point_max_area:
+            continue
+        if not _corridor_shaped(a, degree.get(aid, 0), geo):
+            continue
+        for r in pts:
+            r.role, r.reason = "ignored", "point in a corridor"
+        progress.info(f"area {aid} ({a.polygon.area:.0f} m², corridor-shaped, {degree.get(aid, 0)} passages): "
+                      f"{', '.join(sorted({r.text for r in pts}))} marks a point along it, not its name")
 
 
 def _place_vertical(deferred, index, best_by_area, rules, rho_max, d_max, allow=None) -> None:

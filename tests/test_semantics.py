@@ -901,3 +901,138 @@ def test_a_room_label_in_a_corridor_piece_of_a_narrowing_split_marks_a_point_alo
     assert len(pieces) == 2 and len(rep.splits) == 1 and not rep.conflicts
     assert pieces[0].name == "走道" and pieces[1].name == S.auto_id("1", pieces[1].id)
     assert pieces[1].type == "corridor" and [r.reason for r in rep.texts if r.text == "开水间"] == ["point in a corridor"]
+
+
+def test_a_name_with_another_floors_prefix_yields_to_its_plain_spelling(monkeypatch):
+    # A-A3-10-04 (3F): the atrium gallery spans floors and carries seven copies of its label, some written
+    # '2F中庭回廊' (copied from the 2F sheet), some '中庭回廊': one name for the names stage (_key drops the
+    # prefix); the best-placed copy is a '2F' one, but the plan's name is the plain spelling
+    def run(level="1", texts=None):
+        areas = [Area(id=1, polygon=box(0, 0, 40, 20))]
+        texts = texts or [T("2F中庭回廊", 20, 10), T("中庭回廊", 3, 3), T("2F 中庭回廊", 37, 17)]
+        rep = S.assign_names(areas, texts, level=level)
+        return areas[0], rep
+
+    a, rep = run()
+    assert a.name == "中庭回廊" and "label_conflict" not in a.tags and not rep.conflicts
+    assert a.tags["label_score"] == f"{max(r.score for r in rep.texts):.1f}"  # the best copy still scores it
+    # every copy prefixed: the one naming this plan's level, else the best-placed one
+    prefixed = [T("2F中庭回廊", 20, 10), T("3F中庭回廊", 3, 3)]
+    assert run("3", prefixed)[0].name == "3F中庭回廊"
+    assert run("L3", prefixed)[0].name == "3F中庭回廊"
+    assert run("1", prefixed)[0].name == "2F中庭回廊"
+    # two copies at one spot (merged into one label): the plain spelling is the label's text
+    a, rep = run(texts=[T("2F中庭回廊", 20, 10, layer="A"), T("中庭回廊", 20, 10, layer="B")])
+    assert a.name == "中庭回廊" and len([r for r in rep.texts if r.role == "name"]) == 1
+    # the rule off: the best-placed copy names the gallery, prefix and all (session 7's slip)
+    monkeypatch.setattr(S, "PLAIN_SPELLING", False)
+    assert run()[0].name == "2F中庭回廊"
+    assert run("3", prefixed)[0].name == "2F中庭回廊"
+
+
+def test_floor_prefixes_of_a_level():
+    assert S._level_prefixes("3") == {"3f"} and S._level_prefixes("L3") == {"3f"} and S._level_prefixes("3F") == {"3f"}
+    assert S._level_prefixes("-1") == {"b1"} and S._level_prefixes("B1") == {"b1"}
+    assert S._level_prefixes("0") == set() and S._level_prefixes("roof") == set()
+    assert S._floor_prefix("2F中庭回廊") == "2f" and S._floor_prefix("中庭回廊") == "" and S._floor_prefix("2F office") == ""
+
+
+def _long_corridor(doors: int = 8, length: float = 40.0):
+    """A 3 m wide corridor ``length`` m long, ``doors`` offices (5 m wide) above it, a passage to each."""
+    areas = [Area(id=1, polygon=box(0, 0, length, 3))]
+    passages = []
+    for k in range(doors):
+        x = 5.0 * k
+        areas.append(Area(id=k + 2, polygon=box(x, 3.2, x + 5, 8), name=f"R{k}"))
+        passages.append(Passage(id=k + 2, from_id=1, to_id=k + 2, line=LineString([(x + 2, 3), (x + 3, 3)])))
+    return areas, passages
+
+
+def test_a_service_room_label_at_a_corridors_end_marks_a_point_along_it(monkeypatch):
+    # SIST-F1: a 60 m corridor with 24 doors was '开水间 (2)' after a water point's label at its far end (no
+    # corridor label in it, nothing to split); the same kind: a 清洁间 in a corridor's side niche, a 弱电
+    # closet label at a corridor's end (A-A3-10-06, SIST-F3)
+    def run(text, x, y=1.5, doors=8, length=40.0, box_=None):
+        areas, passages = _long_corridor(doors, length)
+        if box_ is not None:
+            areas[0] = Area(id=1, polygon=box_)
+        rep = S.assign_names(areas, [T(text, x, y)], passages=passages)
+        return areas[0], rep
+
+    for text in ("开水间", "清洁间", "弱电", "janitor"):
+        a, rep = run(text, 1.0)
+        assert a.name == S.auto_id("1", 1) and a.type == "corridor", text
+        assert [r.reason for r in rep.texts] == ["point in a corridor"] and rep.named == 0
+    # controls: the label near the centre names it; a room name no service keyword (前室, a fire lobby: long,
+    # narrow and busy); a small area (a 开水间 room of 15 m² with three doors); too few doors (not a corridor)
+    assert run("开水间", 20.0)[0].name == "开水间"
+    assert run("前室", 1.0)[0].name == "前室"
+    assert run("开水间", 0.5, doors=3, box_=box(0, 0, 10, 1.5), y=0.75)[0].name == "开水间"
+    assert run("开水间", 1.0, doors=2)[0].name == "开水间"
+    # the rule off: the corridor is named after the water point (session 7's slip on SIST-F1)
+    monkeypatch.setattr(S, "SERVICE_POINTS", False)
+    a, rep = run("开水间", 1.0)
+    assert a.name == "开水间" and a.type == "room"
+
+
+@pytest.mark.slow
+def test_dwg_gallery_keeps_its_plain_name_and_corridors_no_water_point_name(shared_data, floor_cache):
+    # the session's conversions (test_dwg_room_name_figures): A-A3-10-04's 3F atrium gallery (seven copies of
+    # its label, the best-placed one '2F中庭回廊') is '中庭回廊'; SIST-F1's 60 m corridor, '开水间 (2)' after the
+    # water point's label at its far end, is a corridor with an auto id, and the two 开水间 rooms keep the name
+    _dwg_reader()
+    lib = floor_cache.process_floor(shared_data / "dwg" / "library" / "A-A3-10-04.dwg")
+    gallery = [a for a in lib.refined.areas if S._key(a.name or "") == S._key("中庭回廊")]
+    assert len(gallery) == 1 and gallery[0].name == "中庭回廊" and gallery[0].polygon.area > 1000
+    assert not any(S._floor_prefix(a.name or "") for a in lib.refined.areas)
+    f1 = floor_cache.process_floor(shared_data / "dwg" / "sist-original" / "SIST-F1.dwg")
+    water = [a for a in f1.refined.areas if "开水间" in (a.name or "")]
+    assert len(water) == 2 and all(a.polygon.area < 20 for a in water), [(a.name, a.polygon.area) for a in water]
+    points = [r for r in f1.names.texts if r.reason == "point in a corridor"]
+    assert [r.text for r in points] == ["开水间"]
+    by_id = {a.id: a for a in f1.refined.areas}
+    corridor = by_id[points[0].area_id]
+    assert corridor.type == "corridor" and corridor.polygon.area > 150 and corridor.name == S.auto_id("1", corridor.id)
+
+
+@pytest.mark.qgis_process
+def test_naming_slips_headless(tmp_path):
+    # assignnames on small layers: a gallery labelled '2F中庭回廊' (best placed) and '中庭回廊' is '中庭回廊'; a
+    # 40 m corridor with eight doors and a '开水间' label at its end is a corridor with a generated id
+    from osgeo import ogr
+
+    from .qgis_process import run_alg
+
+    areas, passages = _long_corridor(8)
+    areas.append(Area(id=20, polygon=box(0, 20, 40, 40)))
+    drv = ogr.GetDriverByName("GPKG")
+
+    def layer(path, geom, fields, rows):
+        ds = drv.CreateDataSource(str(path))
+        lyr = ds.CreateLayer("l", None, geom)
+        for name, typ in fields:
+            lyr.CreateField(ogr.FieldDefn(name, typ))
+        for g, vals in rows:
+            f = ogr.Feature(lyr.GetLayerDefn())
+            f.SetGeometry(ogr.CreateGeometryFromWkt(g.wkt))
+            for k, v in vals.items():
+                f.SetField(k, v)
+            lyr.CreateFeature(f)
+        ds = None
+
+    layer(tmp_path / "areas.gpkg", ogr.wkbPolygon, [("id", ogr.OFTInteger), ("type", ogr.OFTString)],
+          [(a.polygon, {"id": a.id, "type": "room"}) for a in areas])
+    layer(tmp_path / "pass.gpkg", ogr.wkbLineString, [("id", ogr.OFTInteger), ("from_id", ogr.OFTInteger),
+                                                      ("to_id", ogr.OFTInteger)],
+          [(p.line, {"id": p.id, "from_id": p.from_id, "to_id": p.to_id}) for p in passages])
+    from shapely.geometry import Point
+    texts = [("2F中庭回廊", 20, 30), ("中庭回廊", 3, 23), ("开水间", 1, 1.5)]
+    layer(tmp_path / "texts.gpkg", ogr.wkbPoint, [("text", ogr.OFTString), ("id", ogr.OFTInteger)],
+          [(Point(x, y), {"text": t, "id": k}) for k, (t, x, y) in enumerate(texts)])
+    _, res, log = run_alg("assignnames", {"AREAS": str(tmp_path / "areas.gpkg"), "TEXTS": str(tmp_path / "texts.gpkg"),
+                                          "PASSAGES": str(tmp_path / "pass.gpkg"), "LEVEL": "3",
+                                          "OUTPUT_AREAS": str(tmp_path / "named.gpkg")})
+    ds = ogr.Open(str(tmp_path / "named.gpkg"))
+    got = {f.GetField("id"): (f.GetField("name"), f.GetField("type")) for f in ds.GetLayer(0)}
+    assert got[20][0] == "中庭回廊" and got[1] == ("3-1", "corridor"), got
+    assert "marks a point along it" in log
