@@ -405,7 +405,10 @@ def test_filtered_sist_floors_hide_their_stair_and_lift_symbols(shared_data, flo
     xref 'E1-RV-2F' on the off layer '$1$A-A-建筑索引': 291 stair lines of 4 cores with treads and 3 arrow marks,
     66 lift-layer lines (5 cars with crosses) and 5 elevator door blocks of 8 lines). F3-F5 hold none, hidden or
     not. The hidden ones are the typing evidence (``CadDrawing.hidden_symbols``): F2 gets 7 stair cores (4 by
-    their treads, E1-ST-01/-03/-05 by the break line left in the enclosed core) and 5 lifts; F1's glass lift has no walls in the drawing (the walls of block 'ae' are hidden with it), so no area."""
+    their treads, E1-ST-01/-03/-05 by the break line left in the enclosed core) and 5 lifts. F1's glass lift: the
+    walls of block 'ae' are on their own (shown) wall layer, so AutoCAD shows them (cad_explode.
+    OFF_INSERT_SHOWS_OWN_LAYERS, on by default since T10c) and the lift is an area; its car lines, on the off
+    lift layer, stay hidden evidence (13 + 8 above, either way)."""
     from algorithms.area_types import find_lift_crosses, find_stair_runs
 
     folder = shared_data / "dxf" / "sist"
@@ -422,7 +425,17 @@ def test_filtered_sist_floors_hide_their_stair_and_lift_symbols(shared_data, flo
         assert got == want[k], k
     f2 = floor_cache.process_floor(str(folder / "SIST-F2.dxf"), level="2")
     typed = sorted(a.type for a in f2.refined.areas if a.type in ("stairs", "elevator"))
-    assert typed == ["elevator"] * 5 + ["stairs"] * 7  # 4 cores by their treads, 3 by their break marks
+    from algorithms import cad_explode
+
+    # 4 cores by their treads, 3 by their break marks; with AutoCAD's off-layer rule (on by default since T10c)
+    # the xref's texts show too and name them (E1-ST-01..09, E1-P1..P4, E1-S1), and an 8th stair is the
+    # 5.5 m² piece of the outdoor fire-escape stair E1-ST-07 beyond the glazing (its code label stands in it; no
+    # passage: nothing walkable joins it inside the plan, as on SIST-F4)
+    rule = cad_explode.OFF_INSERT_SHOWS_OWN_LAYERS
+    assert typed == ["elevator"] * 5 + ["stairs"] * (8 if rule else 7)
+    if rule:
+        names = {a.name for a in f2.refined.areas if a.type in ("stairs", "elevator")}
+        assert {"E1-ST-01", "E1-ST-07", "E1-P1", "E1-S1"} <= names
 
 
 # --------------------------------------------------------------------------- SIST, the whole building
@@ -450,7 +463,13 @@ def test_sist_five_filtered_floors_fuse_into_one_routable_building(shared_data, 
     stand above); F5's E1-ST-06 is part of a 47 m² room, and F5 has no lift E1-P2 (the DWG F5 agrees: the
     room goes on where the F4 shaft ends). Every typed shaft of F1/F3/F4/F5 coincides with a stair or lift of
     the DWG original (73-100 % of its area). E2-ST-01 (an enclosed room on every floor, no mark on any) stays
-    a room. The osmAG authors' parser must read the result (checked by hand: all passages)."""
+    a room. The osmAG authors' parser must read the result (checked by hand: all passages).
+
+    F1 also shows a courtyard glass lift (its walls are on a shown layer inside a block on an off layer:
+    AutoCAD's rule, cad_explode.OFF_INSERT_SHOWS_OWN_LAYERS). It is F1's only anchor and matches F2's E1-P1 by
+    type and size, 74 m away: that fit is rejected against the outline fit (building._few_anchor_fit_rejected,
+    overlap 40 % against 98 %), and F1, with one anchor against F2's 12 shafts, still takes F2's shafts
+    (building.shaft_targets): the same figures as without the glass lift."""
     import time
 
     folder = shared_data / "dxf" / "sist"
@@ -473,6 +492,11 @@ def test_sist_five_filtered_floors_fuse_into_one_routable_building(shared_data, 
                        "5": "footprint, refined on 8 shared shafts"}
     assert st["overall_rms"] < 0.05  # cm: the shafts were typed where they coincide (the outline fit was 1 cm off)
     assert len([w for w in st["warnings"] if "registered by its outline" in w]) == 4
+    from algorithms import cad_explode
+
+    if cad_explode.OFF_INSERT_SHOWS_OWN_LAYERS:  # F1's glass lift, matched to E1-P1 74 m away, is rejected
+        assert any("on E1-P1" in w and "not the same shafts" in w for w in st["warnings"])
+        assert not any("only one anchor matched" in w for w in st["warnings"])
     s2, s4 = np.array(st["transforms"]["2"][:2]), np.array(st["transforms"]["4"][:2])
     assert np.hypot(*(s2 - s4)) < 0.1  # F4 onto F3 onto F2, F3 drawn 11.8 km away: back in F2's frame
     assert min(np.hypot(*st["transforms"][lv][:2]) for lv in ("1", "3", "5")) > 1000  # kilometres apart before
