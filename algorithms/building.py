@@ -1038,6 +1038,16 @@ def fuse_floors(floors: Sequence[FloorData], out_path: str, frame, building_name
                     break
                 if got is None:
                     got = (R, matches, j)  # one match only: keep looking for a better-supported partner
+            if got is not None and len(got[1]) < FEW_ANCHORS:
+                rejected = _few_anchor_fit_rejected(fl, floors[got[2]], T[got[2]], got[0], got[1], anchors[k],
+                                                    anchors[got[2]], floors[got[2]].areas)
+                if rejected is not None:
+                    RF, msg = rejected
+                    j = got[2]
+                    T[k] = RF
+                    transforms[fl.level] = (RF.tx, RF.ty, 0.0, "footprint")
+                    warn(msg)
+                    continue
             if got is not None:
                 R, matches, j = got
                 T[k] = R
@@ -1077,7 +1087,7 @@ def fuse_floors(floors: Sequence[FloorData], out_path: str, frame, building_name
         for p in fl.passages:
             p.line = R.geometry(p.line)
     progress.step(55)
-    propagated = propagate_shafts(floors, [not a for a in anchors], progress) if register else []
+    propagated = propagate_shafts(floors, shaft_targets(floors), progress) if register else []
     if propagated:
         _refine_on_propagated(floors, T, ref, propagated, transforms, residuals, centroid_res, rms, medians, progress)
     # ---- floor outlines and overlap check
@@ -1203,6 +1213,49 @@ def fuse_floors(floors: Sequence[FloorData], out_path: str, frame, building_name
     return stats
 
 
+FEW_ANCHORS = 3  # an anchor fit on fewer matches than this is cross-checked against the floor's outline
+OUTLINE_AGREE = 3.0  # metres at the floor's centre: an anchor fit this close to the outline fit is not questioned
+OUTLINE_WORSE = 0.1  # outline overlap (share of the smaller outline) the anchor fit may lose against the outline fit
+
+
+def _outline_overlap(moving_outline, fixed_outline, T: Rigid) -> float:
+    a = T.geometry(moving_outline)
+    return float(a.intersection(fixed_outline).area / max(min(a.area, fixed_outline.area), 1e-9))
+
+
+def _few_anchor_fit_rejected(fl: FloorData, other: FloorData, T_other: Rigid, R: Rigid, matches, mine, theirs,
+                             their_areas):
+    """One or two stair/lift matches prove little: a floor's only anchor may be a shaft its neighbour does not
+    have (a courtyard glass lift on the ground floor), matched by type and size to another one far away, and
+    a translation onto it moves the whole floor by tens of metres. Such a fit (fewer than ``FEW_ANCHORS``
+    matches) is checked against the outline (footprint) registration: when the two put the floor's centre
+    more than ``OUTLINE_AGREE`` m apart and the floor's outline overlaps its neighbour's clearly less under
+    the anchor fit (by more than ``OUTLINE_WORSE`` of the smaller outline), the anchors matched different
+    shafts and the outline fit is kept. Returns ``(outline fit, warning)`` then, else None (the anchor fit
+    stands, e.g. a floor whose outline differs from its neighbour's but whose shared lift says where it is)."""
+    try:
+        RF = register_footprint(fl, other, T_other)
+    except InputError:
+        return None
+    own = _outline_of(fl)
+    c = np.array(own.centroid.coords[0])
+    apart = float(np.hypot(*(R.apply(c) - RF.apply(c))))
+    if apart <= OUTLINE_AGREE:
+        return None
+    fixed = T_other.geometry(_outline_of(other))
+    ov_a, ov_f = _outline_overlap(own, fixed, R), _outline_overlap(own, fixed, RF)
+    if ov_a >= ov_f - OUTLINE_WORSE:
+        return None
+    ids = ", ".join(f"{fl.areas[mine[i].index].name or fl.areas[mine[i].index].id} on "
+                    f"{their_areas[theirs[jj].index].name or their_areas[theirs[jj].index].id}"
+                    for i, jj, _d in matches)
+    msg = (f"level {fl.level} ('{fl.label}'): its {len(matches)} matched stair/lift anchor(s) ({ids}) would put it "
+           f"{apart:.1f} m from where its outline lies over level {other.level} (outline overlap {ov_a:.0%} against "
+           f"{ov_f:.0%}): they are not the same shafts; registered by its outline instead (shift {RF.tx:.2f}, "
+           f"{RF.ty:.2f} m, no rotation): check it, or name the shafts alike on both floors and merge again")
+    return RF, msg
+
+
 def _refine_on_propagated(floors, T, ref, propagated, transforms, residuals, centroid_res, rms, medians,
                           progress) -> None:
     """A floor registered by its outline that took shafts from a consecutive floor (``propagate_shafts``) is
@@ -1238,10 +1291,42 @@ def _refine_on_propagated(floors, T, ref, propagated, transforms, residuals, cen
         centroid_res[fl.level] = [(r[0], r[1], round(float(np.hypot(*v)), 3)) for r, v in zip(res, cen)]
         rms[fl.level] = float(math.sqrt(np.mean([d * d for _, _, d in res])))
         medians[fl.level] = float(np.median([d for _, _, d in res]))
-        transforms[fl.level] = (T[k].tx, T[k].ty, T[k].degrees, f"footprint, refined on {len(matches)} shared shafts")
+        base = str(transforms.get(fl.level, (0, 0, 0, "footprint"))[3]).split(", refined")[0]
+        transforms[fl.level] = (T[k].tx, T[k].ty, T[k].degrees, f"{base}, refined on {len(matches)} shared shafts")
         progress.info(f"level {fl.level}: registered again on level {floors[j].level} by the {len(matches)} shafts "
                       f"they share, moved {np.hypot(*(R.apply(c) - c)):.3f} m, rotation {R.degrees:.3f}°, residual "
                       f"RMS {rms[fl.level]:.3f} m, median {medians[fl.level]:.3f} m")
+
+
+FEW_SHAFTS_COVERED = 0.5  # a floor whose anchors cover less than this share of a neighbour's shafts takes them
+
+
+def shaft_targets(floors: Sequence[FloorData]) -> List[bool]:
+    """Which floors (registered, in one frame) take their neighbours' shafts (:func:`propagate_shafts`): a
+    floor with no stair or lift of its own, and a floor with fewer anchors than a consecutive floor has shafts
+    (≤ SHAFT_MAX_AREA) that covers less than ``FEW_SHAFTS_COVERED`` of them (a plan filtered down to its walls
+    that still shows one courtyard glass lift). A floor that shows most of its neighbours' shafts, or as many
+    as they have, is left as drawn (a shaft missing there is the drawing's choice, not a filter's loss).
+    Within a target floor, areas already typed or named are never retyped (:func:`propagate_shafts`)."""
+    anchors = [floor_anchors(fl) for fl in floors]
+    out = []
+    for k in range(len(floors)):
+        if not anchors[k]:
+            out.append(True)
+            continue
+        few = False
+        for j in (k - 1, k + 1):
+            if not 0 <= j < len(floors):
+                continue
+            shafts = [b for b in anchors[j] if b.size <= SHAFT_MAX_AREA]
+            if not shafts:
+                continue
+            covered = sum(1 for b in shafts if any(
+                a.kind == b.kind and a.polygon.intersection(b.polygon).area >= MIN_SHAFT_OVERLAP * min(a.size, b.size)
+                for a in anchors[k]))
+            few = few or (covered < FEW_SHAFTS_COVERED * len(shafts) and len(anchors[k]) < len(shafts))
+        out.append(few)
+    return out
 
 
 SHAFT_PRISM_OVERLAP = 0.6  # shared area / each of the two outlines for an area to be the same shaft a floor up or down
@@ -1254,8 +1339,9 @@ def propagate_shafts(floors: Sequence[FloorData], targets: Sequence[bool], progr
     an area of it that is not typed, not named (a generated name or none) and shares at least
     ``SHAFT_PRISM_OVERLAP`` of its own outline and of a shaft's outline on the floor above or below (at most
     ``SHAFT_MAX_AREA``) is that shaft, typed alike with ``cad2osmag:shaft_from`` = the level it came from.
-    Chains through consecutive such floors (F2's lifts type F3's shafts, those F4's). Floors with anchors of
-    their own are never retyped. A shaft the segmentation joined to a larger area is carved out of it
+    Chains through consecutive such floors (F2's lifts type F3's shafts, those F4's). A target floor with a
+    few anchors of its own (:func:`shaft_targets`) takes only the shafts its anchors do not cover; its typed
+    and named areas are never retyped. A shaft the segmentation joined to a larger area is carved out of it
     (:func:`_carve_shaft`). Returns [(from level, to level, area id, kind, carved)]."""
     from shapely.strtree import STRtree
 

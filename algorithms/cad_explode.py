@@ -749,12 +749,13 @@ class _Exploder:
 # its layer): an INSERT on an *off* layer hides only the block entities that inherit that layer (those on layer
 # "0", nested INSERTs on "0" included); entities on their own layers stay visible when those layers are on and
 # thawed. An INSERT on a *frozen* layer hides the whole block, nested contents included. False: the old rule
-# (an INSERT on an off layer dropped whole, like a frozen one). Off by default (session 7, T10b): on the
+# (an INSERT on an off layer dropped whole, like a frozen one). On by default since session 7 (T10c): on the
 # filtered SIST floors it shows what AutoCAD shows (F1's curtain walls and glass lift, F2's E1 wing walls, F4's
-# columns), but F1's newly shown glass lift becomes its only anchor and the fusion registers F1 on it, 74 m off
-# (building.register_anchors accepts one matched anchor; propagate_shafts skips a floor with anchors): vertical
-# passages 37 -> 32. Switch on once the fusion checks a one-anchor match (see /work/briefs/readme-T10b.md).
-OFF_INSERT_SHOWS_OWN_LAYERS = False
+# columns). It was off while F1's newly shown glass lift, its only anchor, registered F1 74 m off in the fusion;
+# building._few_anchor_fit_rejected now checks a fit on < 3 anchors against the outline fit and
+# building.shaft_targets lets a floor with a few anchors take its neighbours' shafts: 37 vertical passages
+# either way, F1 within 4 mm of where the rule off puts it.
+OFF_INSERT_SHOWS_OWN_LAYERS = True
 
 HIDDEN_TEXT_TYPES = ("TEXT", "MTEXT", "ATTRIB")  # texts are read on every layer, then split by visibility
 HIDDEN_BLOCK_MAX = 50  # a block inserted on a frozen / off layer gives its texts when it is this small

@@ -177,6 +177,84 @@ def test_floor_without_anchors_falls_back_to_its_outline_with_a_warning(tmp_path
     assert st["vertical"] == []  # nothing typed on level 2: no link, but the floor is in place
 
 
+def _with_glass_lift(fl, level, dx=0.0, dy=0.0, lift=(20, 10, 23, 12)):
+    """``fl`` (a ``_floor``) with a 6 m² lift standing in room R3 (a courtyard glass lift): R3 loses its box."""
+    g = affinity.translate(box(*lift), dx, dy)
+    r3 = [a for a in fl.areas if a.id == 10 * level + 3][0]
+    r3.polygon = r3.polygon.difference(g)
+    fl.areas.append(Area(10 * level + 9, g, type="elevator", name=""))
+    return fl
+
+
+def test_one_wrong_anchor_match_does_not_move_a_floor(tmp_path):
+    """Each floor shows one lift, and they are different lifts 8 m apart (a glass lift on level 2 where level 1
+    has none, level 1's lift not drawn on level 2): alike by type and size, they match, and a translation
+    onto that one match would move level 2 by 8 m. Its outline says otherwise (outline overlap far lower
+    under the lift fit): the outline fit is kept, with a warning naming the anchors. Where the one lift is
+    the same shaft on both floors, it registers the floor as before."""
+    lower = _floor(1, stairs=False)
+    lower.areas[4].type = "elevator"  # level 1: its lift at (27..30, 4..7)
+    upper = _with_glass_lift(_floor(2, dx=700.0, dy=300.0, stairs=False), 2, 700.0, 300.0)
+    rec = RecordingProgress()
+    st = fuse_floors([lower, upper], str(tmp_path / "b.osm"), FRAME, progress=rec)
+    assert st["reference"] == "1" and st["transforms"]["2"][3] == "footprint"
+    assert st["transforms"]["2"][:2] == pytest.approx((-700.0, -300.0), abs=0.1)
+    msg = [w for w in st["warnings"] if "not the same shafts" in w]
+    assert len(msg) == 1 and "29 on 15" in msg[0] and "registered by its outline" in msg[0]
+    assert not any("only one anchor matched" in w for w in st["warnings"])
+    assert "2" not in st["residuals"] and st["vertical"] == []
+    # the same lift on both floors: one match, and the outline agrees with it
+    upper = _floor(2, dx=700.0, dy=300.0, stairs=False)
+    upper.areas[4].type = "elevator"
+    lower = _floor(1, stairs=False)
+    lower.areas[4].type = "elevator"
+    st = fuse_floors([lower, upper], str(tmp_path / "c.osm"), FRAME)
+    assert st["transforms"]["2"][3] == "anchors (1 matched)"
+    assert st["transforms"]["2"][:2] == pytest.approx((-700.0, -300.0), abs=1e-6)
+    assert [(lo, hi, k) for lo, hi, _a, _b, k, _o in st["vertical"]] == [("1", "2", "elevator")]
+
+
+def test_a_floor_with_one_lift_of_its_own_takes_the_shafts_it_does_not_show(tmp_path):
+    """Level 2 shows its stair core, its lift and a second lift (in R2's corner); level 1, filtered down to
+    its walls, still shows one courtyard glass lift. That lift is its only anchor, matched to a lift it is not
+    (rejected by the outline, above); level 1 still takes the shafts its own anchor does not cover where
+    their walls stand on it (core and lift, typed from level 2, then registered again on them), keeps its
+    glass lift as drawn (typed already), and does not retype the named room R2 under the second lift. Links:
+    the stairs and the lift both show."""
+    upper = _floor(2)
+    r2 = upper.areas[1]
+    r2.polygon = r2.polygon.difference(box(0, 9, 3, 12))
+    upper.areas.append(Area(29, box(0, 9, 3, 12), type="elevator", name=""))
+    lower = _with_glass_lift(_floor(1, dx=-1500.0, dy=900.0, stairs=False), 1, -1500.0, 900.0)
+    rec = RecordingProgress()
+    st = fuse_floors([lower, upper], str(tmp_path / "b.osm"), FRAME, variant="fix-id", progress=rec)
+    assert st["reference"] == "2"
+    assert st["transforms"]["1"][3] == "footprint, refined on 2 shared shafts"
+    assert st["transforms"]["1"][:2] == pytest.approx((1500.0, -900.0), abs=0.05)
+    assert sorted((a, b, i, k) for a, b, i, k, _c in st["propagated"]) == [
+        ("2", "1", 14, "stairs"), ("2", "1", 15, "elevator")]
+    assert sorted((lo, hi, k) for lo, hi, _a, _b, k, _o in st["vertical"]) == [
+        ("1", "2", "elevator"), ("1", "2", "stairs")]
+    areas, _passages, _root, rep = osmag.read_osmag(str(tmp_path / "b.osm"))
+    lv1 = {a.name: a for a in areas if a.tags.get("level") == "1"}
+    assert lv1["R2 (level 1)"].type == "room"
+    glass = [a for a in areas if a.tags.get("level") == "1" and a.type == "elevator"
+             and "cad2osmag:shaft_from" not in a.tags]
+    assert len(glass) == 1  # the glass lift, as drawn
+    assert any("level 1 shows no stair or lift" in m for _k, m in rec.messages)
+
+
+def test_shaft_targets_are_floors_without_anchors_or_with_a_few_that_miss_their_neighbours_shafts():
+    """A floor showing as many shafts as its neighbour, or most of its neighbour's, is left as drawn."""
+    full = [_floor(1), _floor(2), _floor(3, stairs=False)]
+    assert building.shaft_targets(full) == [False, False, True]
+    one = _with_glass_lift(_floor(1, stairs=False), 1)
+    assert building.shaft_targets([one, _floor(2)]) == [True, False]  # 1 anchor, covers 0 of 2 shafts
+    same = _floor(1, stairs=False)
+    same.areas[4].type = "elevator"  # its one lift is the neighbour's lift: 1 of 2 covered
+    assert building.shaft_targets([same, _floor(2)]) == [False, False]
+
+
 def test_bad_input_is_reported_and_nothing_is_written(tmp_path):
     out = tmp_path / "b.osm"
     f = _floor(1)
@@ -327,7 +405,10 @@ def test_filtered_sist_floors_hide_their_stair_and_lift_symbols(shared_data, flo
     xref 'E1-RV-2F' on the off layer '$1$A-A-建筑索引': 291 stair lines of 4 cores with treads and 3 arrow marks,
     66 lift-layer lines (5 cars with crosses) and 5 elevator door blocks of 8 lines). F3-F5 hold none, hidden or
     not. The hidden ones are the typing evidence (``CadDrawing.hidden_symbols``): F2 gets 7 stair cores (4 by
-    their treads, E1-ST-01/-03/-05 by the break line left in the enclosed core) and 5 lifts; F1's glass lift has no walls in the drawing (the walls of block 'ae' are hidden with it), so no area."""
+    their treads, E1-ST-01/-03/-05 by the break line left in the enclosed core) and 5 lifts. F1's glass lift: the
+    walls of block 'ae' are on their own (shown) wall layer, so AutoCAD shows them (cad_explode.
+    OFF_INSERT_SHOWS_OWN_LAYERS, on by default since T10c) and the lift is an area; its car lines, on the off
+    lift layer, stay hidden evidence (13 + 8 above, either way)."""
     from algorithms.area_types import find_lift_crosses, find_stair_runs
 
     folder = shared_data / "dxf" / "sist"
@@ -344,7 +425,17 @@ def test_filtered_sist_floors_hide_their_stair_and_lift_symbols(shared_data, flo
         assert got == want[k], k
     f2 = floor_cache.process_floor(str(folder / "SIST-F2.dxf"), level="2")
     typed = sorted(a.type for a in f2.refined.areas if a.type in ("stairs", "elevator"))
-    assert typed == ["elevator"] * 5 + ["stairs"] * 7  # 4 cores by their treads, 3 by their break marks
+    from algorithms import cad_explode
+
+    # 4 cores by their treads, 3 by their break marks; with AutoCAD's off-layer rule (on by default since T10c)
+    # the xref's texts show too and name them (E1-ST-01..09, E1-P1..P4, E1-S1), and an 8th stair is the
+    # 5.5 m² piece of the outdoor fire-escape stair E1-ST-07 beyond the glazing (its code label stands in it; no
+    # passage: nothing walkable joins it inside the plan, as on SIST-F4)
+    rule = cad_explode.OFF_INSERT_SHOWS_OWN_LAYERS
+    assert typed == ["elevator"] * 5 + ["stairs"] * (8 if rule else 7)
+    if rule:
+        names = {a.name for a in f2.refined.areas if a.type in ("stairs", "elevator")}
+        assert {"E1-ST-01", "E1-ST-07", "E1-P1", "E1-S1"} <= names
 
 
 # --------------------------------------------------------------------------- SIST, the whole building
@@ -372,7 +463,13 @@ def test_sist_five_filtered_floors_fuse_into_one_routable_building(shared_data, 
     stand above); F5's E1-ST-06 is part of a 47 m² room, and F5 has no lift E1-P2 (the DWG F5 agrees: the
     room goes on where the F4 shaft ends). Every typed shaft of F1/F3/F4/F5 coincides with a stair or lift of
     the DWG original (73-100 % of its area). E2-ST-01 (an enclosed room on every floor, no mark on any) stays
-    a room. The osmAG authors' parser must read the result (checked by hand: all passages)."""
+    a room. The osmAG authors' parser must read the result (checked by hand: all passages).
+
+    F1 also shows a courtyard glass lift (its walls are on a shown layer inside a block on an off layer:
+    AutoCAD's rule, cad_explode.OFF_INSERT_SHOWS_OWN_LAYERS). It is F1's only anchor and matches F2's E1-P1 by
+    type and size, 74 m away: that fit is rejected against the outline fit (building._few_anchor_fit_rejected,
+    overlap 40 % against 98 %), and F1, with one anchor against F2's 12 shafts, still takes F2's shafts
+    (building.shaft_targets): the same figures as without the glass lift."""
     import time
 
     folder = shared_data / "dxf" / "sist"
@@ -395,6 +492,11 @@ def test_sist_five_filtered_floors_fuse_into_one_routable_building(shared_data, 
                        "5": "footprint, refined on 8 shared shafts"}
     assert st["overall_rms"] < 0.05  # cm: the shafts were typed where they coincide (the outline fit was 1 cm off)
     assert len([w for w in st["warnings"] if "registered by its outline" in w]) == 4
+    from algorithms import cad_explode
+
+    if cad_explode.OFF_INSERT_SHOWS_OWN_LAYERS:  # F1's glass lift, matched to E1-P1 74 m away, is rejected
+        assert any("on E1-P1" in w and "not the same shafts" in w for w in st["warnings"])
+        assert not any("only one anchor matched" in w for w in st["warnings"])
     s2, s4 = np.array(st["transforms"]["2"][:2]), np.array(st["transforms"]["4"][:2])
     assert np.hypot(*(s2 - s4)) < 0.1  # F4 onto F3 onto F2, F3 drawn 11.8 km away: back in F2's frame
     assert min(np.hypot(*st["transforms"][lv][:2]) for lv in ("1", "3", "5")) > 1000  # kilometres apart before
