@@ -272,6 +272,28 @@ def _hidden_symbols(doc, raw, rules, scale, geoms, box, selected, progress) -> L
     return out
 
 
+_PER_PIECE = ("coords", "layer", "etype", "closed", "filled", "width", "block", "dashed")
+
+
+def _sound_pieces(pieces: _Pieces, scale: float) -> _Pieces:
+    """The pieces without those ``_unusable`` calls broken (NaN/inf or beyond 1e15 m): for the searches that
+    read every layer (folding partitions, counters, stray walls, door swings), whose KD-trees and distances a
+    1e308 coordinate of a damaged file would overflow. The same object when nothing is broken."""
+    import dataclasses
+
+    n = len(pieces.coords)
+    bad = _unusable(pieces, range(n), scale)[0] if n else np.zeros(0, dtype=bool)
+    if not bad.any():
+        return pieces
+    keep = np.flatnonzero(~bad)
+    out = {}
+    for f in dataclasses.fields(pieces):
+        v = getattr(pieces, f.name)
+        per_piece = f.name in _PER_PIECE and isinstance(v, list) and len(v) == n
+        out[f.name] = [v[i] for i in keep] if per_piece else v
+    return type(pieces)(**out)
+
+
 def _unusable(pieces: _Pieces, idx: Sequence[int], scale: float) -> Tuple[np.ndarray, np.ndarray]:
     """Per piece of ``idx``, tested on all vertices at once: (broken: it holds a NaN/inf coordinate or one beyond
     1e15 m once scaled (a filled piece's all-NaN rows only separate its rings); overlong: its extent in x or y,
@@ -555,10 +577,11 @@ def _import(path, rules, layers, units, include_doors, fallback_walls, drop_door
         x0, y0, x1, y1 = sel.extent
         boundary = [g for g in boundary if g.coords[:, 0].max() >= x0 - m and g.coords[:, 0].min() <= x1 + m
                     and g.coords[:, 1].max() >= y0 - m and g.coords[:, 1].min() <= y1 + m]
-    partitions = _folding_partitions(p, scale, sel, classes) if selected is None else []
+    sound = _sound_pieces(p, scale) if selected is None else p
+    partitions = _folding_partitions(sound, scale, sel, classes) if selected is None else []
     hidden_syms = _hidden_symbols(doc, raw, rules, scale, geoms, box, selected, progress)
     if selected is None and classify:  # counters closing a space behind them, walls on unnamed layers (task T8)
-        partitions += _counters(p, scale, rules, geoms, sel, infos)
+        partitions += _counters(sound, scale, rules, geoms, sel, infos)
     kept_layers = sorted({g.layer for g in geoms})
     progress.info("CAD import stages: " + ", ".join(f"{k} {v:.1f} s" for k, v in timings.items()))
     progress.step(100, f"{len(geoms)} geometries on {len(kept_layers)} layers, {len(texts)} texts, unit {unit}"

@@ -656,3 +656,22 @@ def test_dxf_and_dwg_get_the_same_file_checks(tmp_path):
     (tmp_path / "dir.dxf").mkdir()
     with pytest.raises(InputError, match="is a folder, not a DXF file"):
         import_dxf(str(tmp_path / "dir.dxf"))
+
+
+def test_a_1e308_coordinate_never_reaches_the_every_layer_searches(tmp_path):
+    """A damaged coordinate of 1e308 (found by the fuzz: scipy's KD-tree of the folding-partition search
+    overflowed with a raw ValueError) leaves the partition / counter searches; the import goes on."""
+    import numpy as np
+
+    from algorithms import cad_import
+    from algorithms.cad_explode import _Pieces
+
+    p = _Pieces()
+    p.add(np.array([[0.0, 0.0], [1000.0, 0.0]]), "A-WALL", "LINE")
+    p.add(np.array([[0.0, 1.0e308], [-1.0e308, 5.0]]), "A-WALL", "LINE")
+    p.add(np.array([[0.0, 500.0], [1000.0, 500.0]]), "0", "LINE")
+    p.texts.append((0.0, 0.0, "x", 1.0, 0.0, "0", "TEXT", "", ""))
+    s = cad_import._sound_pieces(p, 0.001)
+    assert len(s.coords) == 2 and s.layer == ["A-WALL", "0"] and len(s.texts) == 1
+    assert cad_import._sound_pieces(s, 0.001) is s  # nothing broken: the same object
+    assert cad_import._folding_partitions(s, 0.001, None, {}) == []
