@@ -1425,11 +1425,10 @@ def counter_partitions(furniture: Sequence[np.ndarray], walls: Sequence[CadGeome
     return out
 
 
-def counters_from_pieces(pieces, scale: float, rules, walls: Sequence[CadGeometry], extent=None) -> List[CadGeometry]:
+def counters_from_pieces(pieces, scale: float, rules, walls: Sequence[CadGeometry]) -> List[CadGeometry]:
     """``counter_partitions`` of an import's exploded pieces: the furniture lines are the pieces on furniture
     layers (the meaningful part of the layer name holds a furniture keyword of the rules' ``blocks``) or
-    exploded from furniture blocks (``rules.block_class``), scaled to metres; only counters whose middle lies
-    in ``extent`` (xmin, ymin, xmax, ymax, metres) when given."""
+    exploded from furniture blocks (``rules.block_class``), scaled to metres."""
     from .cad_explode import BLOCK_SEP
     from .layer_rules import keyword_in
 
@@ -1454,12 +1453,7 @@ def counters_from_pieces(pieces, scale: float, rules, walls: Sequence[CadGeometr
                     ok = chain_ok[chain] = rules.block_class(chain.split(BLOCK_SEP))[0] == "furniture"
         if ok:
             furn.append(np.asarray(c, float) * scale)
-    walls = [g for g in walls if g.kind in ("wall", "column")]
-    found = counter_partitions(furn, walls)
-    if extent is not None:
-        x0, y0, x1, y1 = extent
-        found = [g for g in found if x0 <= g.coords[:, 0].mean() <= x1 and y0 <= g.coords[:, 1].mean() <= y1]
-    return found
+    return counter_partitions(furn, [g for g in walls if g.kind in ("wall", "column")])
 
 
 # --------------------------------------------------------------------------- walls on layers no rule names
@@ -1470,8 +1464,7 @@ STRAY_WALL_TYPES = ("LINE", "LWPOLYLINE", "POLYLINE")
 STRAY_WALL_REACH = 0.3  # metres: both ends of the partition lie this close to the drawing's walls
 
 
-def stray_wall_partitions(pieces, infos, scale: float, rules, walls: Sequence[CadGeometry] = (),
-                          extent=None) -> List[CadGeometry]:
+def stray_wall_partitions(pieces, infos, scale: float, rules, walls: Sequence[CadGeometry] = ()) -> List[CadGeometry]:
     """Partition walls drawn on a layer no rule names (a CAD repair layer ``AUDIT_D_...``, ``修改`` = changes,
     a misc layer): two parallel faces (within ``STRAY_WALL_ANGLE``) ``STRAY_WALL_GAP`` apart, overlapping by at
     least ``STRAY_WALL_MIN``, on the same layer that no rule names (not excluded, no kind: text, furniture and
@@ -1482,7 +1475,7 @@ def stray_wall_partitions(pieces, infos, scale: float, rules, walls: Sequence[Ca
     doorways with their swings and leaves), but where two room names share the space one of them crosses,
     ``semantics.assign_names(partitions=...)`` splits it along the wall, with no passage across it when both
     rooms have a door of their own. Returns one line per wall (kind "partition", class "wall pair", metres, the
-    centre line of the faces' overlap); only walls whose middle lies in ``extent`` when given."""
+    centre line of the faces' overlap)."""
     from shapely import STRtree
     from shapely.geometry import Point
 
@@ -1557,11 +1550,6 @@ def stray_wall_partitions(pieces, infos, scale: float, rules, walls: Sequence[Ca
     for i, j, p, q in found:
         if partners[i] != 1 or partners[j] != 1:
             continue
-        if extent is not None:
-            x0, y0, x1, y1 = extent
-            m = (p + q) / 2
-            if not (x0 <= m[0] <= x1 and y0 <= m[1] <= y1):
-                continue
         # a partition runs from wall to wall: both ends on the walls (a free-standing pair is a rack, a bench)
         if wtree is None or any(not len(wtree.query(Point(*e), predicate="dwithin", distance=STRAY_WALL_REACH))
                                 for e in (p, q)):

@@ -282,10 +282,12 @@ def _sound_pieces(pieces: _Pieces, scale: float) -> _Pieces:
     import dataclasses
 
     n = len(pieces.coords)
-    bad = _unusable(pieces, range(n), scale)[0] if n else np.zeros(0, dtype=bool)
+    drawn = [i for i in range(n) if len(pieces.coords[i])]  # an empty piece is sound; one would force the slow path
+    bad = _unusable(pieces, drawn, scale)[0]
     if not bad.any():
         return pieces
-    keep = np.flatnonzero(~bad)
+    broken = {drawn[k] for k in np.flatnonzero(bad)}
+    keep = [i for i in range(n) if i not in broken]
     out = {}
     for f in dataclasses.fields(pieces):
         v = getattr(pieces, f.name)
@@ -364,10 +366,7 @@ def _folding_partitions(p, scale: float, sel, classes: Dict[str, int]) -> list:
     """``cad_classify.folding_partitions`` of the pieces (every layer), within the selected plan."""
     from .cad_classify import folding_partitions
 
-    found = folding_partitions(p, scale)
-    if sel is not None:
-        x0, y0, x1, y1 = sel.extent
-        found = [g for g in found if x0 <= g.coords[:, 0].mean() <= x1 and y0 <= g.coords[:, 1].mean() <= y1]
+    found = _in_plan(folding_partitions(p, scale), sel)
     if found:
         classes["folding partition"] = len(found)
     return found
@@ -379,9 +378,16 @@ def _counters(p, scale: float, rules, geoms, sel, infos) -> list:
     folding partitions; not counted in ``classes`` (nothing is left out for them)."""
     from .cad_classify import counters_from_pieces, stray_wall_partitions
 
-    extent = sel.extent if sel is not None else None
-    return counters_from_pieces(p, scale, rules, geoms, extent) + stray_wall_partitions(p, infos, scale, rules, geoms,
-                                                                                        extent)
+    return _in_plan(counters_from_pieces(p, scale, rules, geoms) + stray_wall_partitions(p, infos, scale, rules, geoms),
+                    sel)
+
+
+def _in_plan(lines: list, sel) -> list:
+    """The split lines whose middle lies in the selected plan's extent (all of them without a selection)."""
+    if sel is None:
+        return lines
+    x0, y0, x1, y1 = sel.extent
+    return [g for g in lines if x0 <= g.coords[:, 0].mean() <= x1 and y0 <= g.coords[:, 1].mean() <= y1]
 
 
 def _import(path, rules, layers, units, include_doors, fallback_walls, drop_door_swings, plan, classify,

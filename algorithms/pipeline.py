@@ -245,7 +245,8 @@ def _inside_points(drawing: CadDrawing, name_rules, classified):
 def _carve_anchors(refined: AreaGraph, drawing: CadDrawing, grid, timings, cpu, progress, symbols=None) -> None:
     """``anchors.carve_anchors`` on the refined graph (labels repainted), timed with stage "types"."""
     t0, c0 = time.perf_counter(), time.process_time()
-    found = anchors.find_anchor_symbols(symbol_evidence(drawing), shapes=symbols)
+    evidence = symbols.geometries if symbols is not None else symbol_evidence(drawing)  # typed from the same list
+    found = anchors.find_anchor_symbols(evidence, shapes=symbols)
     st = anchors.carve_anchors(refined.areas, refined.passages, drawing.geometries, progress=progress.sub(95, 95),
                                symbols=found,
                                texts=list(drawing.texts) + list(getattr(drawing, "hidden_texts", None) or []))
