@@ -1248,11 +1248,8 @@ def _demote_service_points(best_by_area: Dict[int, List[TextRecord]], by_id: Dic
     room), as does any other name (a fire lobby 前室 is long, narrow and busy too, and it is a room)."""
     if not SERVICE_POINTS or not rules.point_keywords:
         return
-    geo = dict({"min_elongation": 3.0, "max_width": 4.0, "min_degree": 3}, **rules.corridor_geometry)
-    degree: Dict[int, int] = {}
-    for ps in passages or ():
-        degree[ps.from_id] = degree.get(ps.from_id, 0) + 1
-        degree[ps.to_id] = degree.get(ps.to_id, 0) + 1
+    geo = _corridor_geometry(rules)
+    degree = _passage_degrees(passages)
     for aid, recs in best_by_area.items():
         a = by_id.get(aid)
         if a is None or a.polygon is None or a.type in ("stairs", "elevator", "structure"):
@@ -1377,12 +1374,23 @@ def _looks_auto(name: str) -> bool:
     return bool(re.fullmatch(r"-?\w{1,6}-\d+(-\d+)?|L-?\w+-[ASP]\d+", name or ""))
 
 
-def _type_areas(areas, best_by_area, passages, rules: NameRules, report: NamesReport) -> None:
+def _corridor_geometry(rules: NameRules) -> dict:
+    """The corridor shape test's parameters: the rules' ``corridor_geometry`` over the defaults."""
+    return dict({"min_elongation": 3.0, "max_width": 4.0, "min_degree": 3}, **rules.corridor_geometry)
+
+
+def _passage_degrees(passages) -> Dict[int, int]:
+    """{area id: the number of passage ends on it}."""
     degree: Dict[int, int] = {}
-    for p in passages or []:
-        degree[p.from_id] = degree.get(p.from_id, 0) + 1
-        degree[p.to_id] = degree.get(p.to_id, 0) + 1
-    geo = dict({"min_elongation": 3.0, "max_width": 4.0, "min_degree": 3}, **rules.corridor_geometry)
+    for ps in passages or ():
+        degree[ps.from_id] = degree.get(ps.from_id, 0) + 1
+        degree[ps.to_id] = degree.get(ps.to_id, 0) + 1
+    return degree
+
+
+def _type_areas(areas, best_by_area, passages, rules: NameRules, report: NamesReport) -> None:
+    degree = _passage_degrees(passages)
+    geo = _corridor_geometry(rules)
     for a in areas:
         if a.type == "structure":
             continue
@@ -1758,7 +1766,7 @@ def _corridor_point_side(recs: Sequence[TextRecord], keys, halves, aid: int, pas
         e = type_of_name(by_key[key].text, "", rules) if key in by_key else None
         return e["type"] if e else None, (e or {}).get("indoor")
 
-    geo = dict({"min_elongation": 3.0, "max_width": 4.0, "min_degree": 3}, **rules.corridor_geometry)
+    geo = _corridor_geometry(rules)
     for k in (0, 1):
         mine, other = keys[k], keys[1 - k]
         if not mine or not other or not any(kind(x)[0] == "corridor" for x in other):
@@ -1785,7 +1793,7 @@ def _corridor_points_in_pieces(pieces: Sequence[Area], best_by_area: Dict[int, L
     least ``min_degree`` passages (``_corridor_point_side``'s rule, on the pieces as split) -- keeps no name
     from them: its labels are ignored ('point in a corridor')."""
     rules = _resolve(rules)
-    geo = dict({"min_elongation": 3.0, "max_width": 4.0, "min_degree": 3}, **rules.corridor_geometry)
+    geo = _corridor_geometry(rules)
 
     def types(recs):
         out = set()
@@ -1798,10 +1806,7 @@ def _corridor_points_in_pieces(pieces: Sequence[Area], best_by_area: Dict[int, L
     kinds = {b.id: types(best_by_area.get(b.id, [])) for b in pieces}
     if not any("corridor" in k for k in kinds.values()):
         return
-    degree: Dict[int, int] = {}
-    for ps in passages or ():
-        degree[ps.from_id] = degree.get(ps.from_id, 0) + 1
-        degree[ps.to_id] = degree.get(ps.to_id, 0) + 1
+    degree = _passage_degrees(passages)
     for b in pieces:
         if kinds[b.id] != {"room"} or degree.get(b.id, 0) < geo["min_degree"] + 1:
             continue
