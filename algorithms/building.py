@@ -1051,14 +1051,8 @@ def fuse_floors(floors: Sequence[FloorData], out_path: str, frame, building_name
             if got is not None:
                 R, matches, j = got
                 T[k] = R
-                res = [(fl.areas[anchors[k][i].index].name or str(fl.areas[anchors[k][i].index].id),
-                        floors[j].areas[anchors[j][jj].index].name or str(floors[j].areas[anchors[j][jj].index].id),
-                        round(d, 3)) for i, jj, d in matches]
-                residuals[fl.level] = res
-                cen = [R.apply(anchors[k][i].xy) - T[j].apply(anchors[j][jj].xy) for i, jj, _ in matches]
-                centroid_res[fl.level] = [(r[0], r[1], round(float(np.hypot(*c)), 3)) for r, c in zip(res, cen)]
-                rms[fl.level] = float(math.sqrt(np.mean([d * d for _, _, d in res]))) if res else 0.0
-                medians[fl.level] = float(np.median([d for _, _, d in res])) if res else 0.0
+                res = _record_residuals(fl, floors[j], anchors[k], anchors[j], matches, R, T[j], residuals,
+                                        centroid_res, rms, medians)
                 transforms[fl.level] = (R.tx, R.ty, R.degrees, f"anchors ({len(matches)} matched)")
                 progress.info(f"level {fl.level}: registered on level {floors[j].level} by {len(matches)} anchors, "
                               f"shift ({R.tx:.2f}, {R.ty:.2f}) m, rotation {R.degrees:.2f}°, residual RMS "
@@ -1082,10 +1076,7 @@ def fuse_floors(floors: Sequence[FloorData], out_path: str, frame, building_name
         R = T[k]
         if R.theta == 0 and R.tx == 0 and R.ty == 0:
             continue
-        for a in fl.areas + fl.structures + ([fl.outline] if fl.outline is not None else []):
-            a.polygon = R.geometry(a.polygon)
-        for p in fl.passages:
-            p.line = R.geometry(p.line)
+        _move_floor(fl, R)
     progress.step(55)
     propagated = propagate_shafts(floors, shaft_targets(floors), progress) if register else []
     if propagated:
@@ -1256,6 +1247,29 @@ def _few_anchor_fit_rejected(fl: FloorData, other: FloorData, T_other: Rigid, R:
     return RF, msg
 
 
+def _move_floor(fl: FloorData, R: Rigid) -> None:
+    """Apply ``R`` to a floor in place: its areas, structures, outline and passages."""
+    for a in fl.areas + fl.structures + ([fl.outline] if fl.outline is not None else []):
+        a.polygon = R.geometry(a.polygon)
+    for p in fl.passages:
+        p.line = R.geometry(p.line)
+
+
+def _record_residuals(fl: FloorData, other: FloorData, mine, theirs, matches, R: Rigid, T_other: Rigid, residuals,
+                      centroid_res, rms, medians) -> list:
+    """The per-anchor residuals of ``fl`` registered by ``R`` on ``other`` (placed by ``T_other``) through
+    ``matches``, recorded under its level (names, residual, centroid distance; RMS and median): returns them."""
+    res = [(fl.areas[mine[i].index].name or str(fl.areas[mine[i].index].id),
+            other.areas[theirs[jj].index].name or str(other.areas[theirs[jj].index].id), round(d, 3))
+           for i, jj, d in matches]
+    cen = [R.apply(mine[i].xy) - T_other.apply(theirs[jj].xy) for i, jj, _ in matches]
+    residuals[fl.level] = res
+    centroid_res[fl.level] = [(r[0], r[1], round(float(np.hypot(*c)), 3)) for r, c in zip(res, cen)]
+    rms[fl.level] = float(math.sqrt(np.mean([d * d for _, _, d in res]))) if res else 0.0
+    medians[fl.level] = float(np.median([d for _, _, d in res])) if res else 0.0
+    return res
+
+
 def _refine_on_propagated(floors, T, ref, propagated, transforms, residuals, centroid_res, rms, medians,
                           progress) -> None:
     """A floor registered by its outline that took shafts from a consecutive floor (``propagate_shafts``) is
@@ -1278,19 +1292,9 @@ def _refine_on_propagated(floors, T, ref, propagated, transforms, residuals, cen
         c = np.array(_outline_of(fl).centroid.coords[0])
         if np.hypot(*(R.apply(c) - c)) > MATCH_TOLERANCE:
             continue
-        for a in fl.areas + fl.structures + ([fl.outline] if fl.outline is not None else []):
-            a.polygon = R.geometry(a.polygon)
-        for p in fl.passages:
-            p.line = R.geometry(p.line)
+        _move_floor(fl, R)
         T[k] = T[k].then(R)
-        res = [(fl.areas[mine[i].index].name or str(fl.areas[mine[i].index].id),
-                floors[j].areas[theirs[jj].index].name or str(floors[j].areas[theirs[jj].index].id), round(d, 3))
-               for i, jj, d in matches]
-        cen = [R.apply(mine[i].xy) - theirs[jj].xy for i, jj, _ in matches]
-        residuals[fl.level] = res
-        centroid_res[fl.level] = [(r[0], r[1], round(float(np.hypot(*v)), 3)) for r, v in zip(res, cen)]
-        rms[fl.level] = float(math.sqrt(np.mean([d * d for _, _, d in res])))
-        medians[fl.level] = float(np.median([d for _, _, d in res]))
+        _record_residuals(fl, floors[j], mine, theirs, matches, R, Rigid(), residuals, centroid_res, rms, medians)
         base = str(transforms.get(fl.level, (0, 0, 0, "footprint"))[3]).split(", refined")[0]
         transforms[fl.level] = (T[k].tx, T[k].ty, T[k].degrees, f"{base}, refined on {len(matches)} shared shafts")
         progress.info(f"level {fl.level}: registered again on level {floors[j].level} by the {len(matches)} shafts "
