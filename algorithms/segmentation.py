@@ -257,12 +257,7 @@ def _edt_upto(mask: np.ndarray, radii) -> np.ndarray:
     rows = mask.shape[0]
     if not (_threads_on() and rows >= 6 * m and mask.size >= 1 << 20 and all(_tie_free(r) for r in radii)):
         return _edt(mask)
-    mid = rows // 2
-    low = _Background(lambda: _edt(mask[mid - m:]))
-    out = np.empty(mask.shape, np.float32)
-    out[:mid] = _edt(mask[:mid + m])[:mid]
-    out[mid:] = low.result()[m:]
-    return out
+    return _edt_strips(mask, m, checked=False)
 
 
 SPLIT_MARGIN = 192  # rows by which each strip of ``_edt_split`` reaches into the other half
@@ -280,20 +275,30 @@ def _edt_split(mask: np.ndarray) -> np.ndarray:
     m = SPLIT_MARGIN
     if not (_threads_on() and rows >= 6 * m and mask.size >= 1 << 20):  # (small images: OpenCV's IPP path)
         return _edt(mask)
+    out = _edt_strips(mask, m, checked=True)
+    return out if out is not None else _edt(mask)
+
+
+def _edt_strips(mask: np.ndarray, m: int, checked: bool) -> Optional[np.ndarray]:
+    """``_edt`` of the two row halves of ``mask``, each computed on a strip reaching ``m`` rows into the other
+    half (the lower one on the second core, ``_Background``). ``checked``: every row must hold its
+    whole-raster values (its largest distance within its strip's far edge), else None."""
+    rows = mask.shape[0]
     mid = rows // 2
     low = _Background(lambda: _edt(mask[mid - m:]))
     out = np.empty(mask.shape, np.float32)
     high = _edt(mask[:mid + m])
     # row r of the upper half is exact when its largest distance is at most mid + m - r (its far edge)
-    ok = bool(np.all(high[:mid].max(axis=1) <= np.arange(mid + m, m, -1, dtype=np.float32)))
+    ok = not checked or bool(np.all(high[:mid].max(axis=1) <= np.arange(mid + m, m, -1, dtype=np.float32)))
     out[:mid] = high[:mid]
     del high
     below = low.result()
     # row mid + i of the lower half: its far (upper) edge is m + i rows away
-    ok = ok and bool(np.all(below[m:].max(axis=1) <= np.arange(m, m + rows - mid, dtype=np.float32) + 1))
+    ok = ok and (not checked or bool(np.all(below[m:].max(axis=1)
+                                            <= np.arange(m, m + rows - mid, dtype=np.float32) + 1)))
     out[mid:] = below[m:]
     del below
-    return out if ok else _edt(mask)
+    return out if ok else None
 
 
 def _exact_root(dist: np.ndarray) -> np.ndarray:
