@@ -256,6 +256,7 @@ def _continuing(groups, segs: np.ndarray) -> list:
     part of a curved (or winding, or fanned) flight the box does not describe, and the group's entry is that
     flight (``_flight_ribbon``: its footprint and its end treads), or True when no footprint can be drawn;
     else None."""
+    import shapely
     from shapely import STRtree, points
 
     from .area_types import TREAD_LENGTH
@@ -269,6 +270,7 @@ def _continuing(groups, segs: np.ndarray) -> list:
     A = np.arctan2(S[:, 1, 1] - S[:, 0, 1], S[:, 1, 0] - S[:, 0, 0]) % math.pi
     mids = points(S.mean(axis=1))
     tree = STRtree(mids)
+    lines = None
     for hull, angles in groups:
         if not len(S) or not angles:
             out.append(None)
@@ -278,14 +280,15 @@ def _continuing(groups, segs: np.ndarray) -> list:
         inner = hull.buffer(0.05)
         n = 0
         for i in tree.query(hull.buffer(0.9), predicate="contains"):
-            da = abs(A[i] - angles[0]) % math.pi
-            if min(da, math.pi - da) <= math.radians(25) and abs(L[i] - width) <= 0.4 * width and \
+            if _angle_diff(A[i], angles[0]) <= math.radians(25) and abs(L[i] - width) <= 0.4 * width and \
                     not inner.contains(mids[i]):
                 n += 1
         if n < CONTINUING_TREADS:
             out.append(None)
             continue
-        ribbon = _flight_ribbon(hull, angles[0], S, L, A, mids, tree)
+        if lines is None:
+            lines = shapely.linestrings(S)  # the segments as lines, once for every flight
+        ribbon = _flight_ribbon(hull, angles[0], S, L, A, lines, tree)
         out.append(ribbon if ribbon is not None else True)
     return out
 
@@ -296,7 +299,7 @@ FLIGHT_MAX_AREA = 80.0  # m²: a flight's footprint larger than this is no fligh
 RIBBON_CONVEX = 0.9  # a flight's footprint covering this share of its convex hull is that hull (no curve)
 
 
-def _flight_ribbon(hull: Polygon, angle: float, S: np.ndarray, L: np.ndarray, A: np.ndarray, mids, tree
+def _flight_ribbon(hull: Polygon, angle: float, S: np.ndarray, L: np.ndarray, A: np.ndarray, lines, tree
                    ) -> Optional[Tuple[Polygon, object]]:
     """The footprint of the flight a straight run (``hull``, treads at ``angle``) is part of: its treads, and
     the tread-like segments continuing it one by one (each within ``TREAD_STEP`` of a tread already in, within
@@ -312,7 +315,6 @@ def _flight_ribbon(hull: Polygon, angle: float, S: np.ndarray, L: np.ndarray, A:
     members = [int(i) for i in cand if _angle_diff(A[i], angle) <= math.radians(25)]
     if len(members) < 2:
         return None
-    lines = shapely.linestrings(S)
     inside = set(members)
     frontier = list(members)
     while frontier:
