@@ -14,6 +14,8 @@ from shapely.geometry import LineString, Point, box
 from algorithms import anchors
 from algorithms.model import Area, CadGeometry, Passage
 
+from .test_area_types_anchors import _graph_ok
+
 
 def _line(p, q, kind="stair", layer="A-STRS"):
     return CadGeometry(layer=layer, kind=kind, coords=np.array([p, q], float))
@@ -66,18 +68,6 @@ def _one_ring_hall(areas, hall_id):
     return hall[0].polygon
 
 
-def _check(areas, passages):
-    ids = {a.id for a in areas}
-    assert len(ids) == len(areas)
-    for a in areas:
-        assert a.polygon.geom_type == "Polygon" and a.polygon.is_valid and not a.polygon.interiors, a
-    for p in passages:
-        assert p.from_id in ids and p.to_id in ids and p.from_id != p.to_id
-    for i, a in enumerate(areas):
-        for b in areas[i + 1:]:
-            assert a.polygon.intersection(b.polygon).area < 1e-6, (a.id, b.id)
-
-
 def _carve(geoms, hall, passages=(), free=True):
     areas, passages = [hall], list(passages)
     old = anchors.FREE_FLIGHTS
@@ -95,7 +85,7 @@ def test_a_straight_flight_standing_free_is_an_island_the_hall_goes_round():
     its outer border). With the rule off the hall was cut from wall to wall into two areas."""
     geoms = _straight(9.3, 4.0, width=1.4, n=12)
     areas, passages, st = _carve(geoms, Area(id=7, polygon=box(0, 0, 20, 14), type="room"))
-    _check(areas, passages)
+    _graph_ok(areas, passages)
     assert [c[0] for c in st["carved"]] == ["stairs"] and not st["pieces"]
     stair = [a for a in areas if a.type == "stairs"][0]
     hall = _one_ring_hall(areas, 7)
@@ -127,7 +117,7 @@ def test_a_curved_flight_standing_free_is_its_treads_footprint_not_its_box():
     geoms, truth, ends = _quarter_turn()
     hall = Area(id=3, polygon=box(0, 0, 24, 16), type="room")
     areas, passages, st = _carve(geoms, hall)
-    _check(areas, passages)
+    _graph_ok(areas, passages)
     stairs = [a for a in areas if a.type == "stairs"]
     assert len(stairs) == 1 and st["free_flights"]
     s = stairs[0].polygon
@@ -153,7 +143,7 @@ def test_a_fanned_flight_near_the_hall_wall_keeps_the_hall_one_ring_and_its_door
     door = Passage(id=1, from_id=1, to_id=2, line=LineString([(14.0, -12.0), (15.5, -12.0)]))
     areas, passages = [hall, room], [door]
     st = anchors.carve_anchors(areas, passages, geoms)
-    _check(areas, passages)
+    _graph_ok(areas, passages)
     stairs = [a for a in areas if a.type == "stairs"]
     assert len(stairs) == 1 and st["free_flights"]
     s = stairs[0].polygon
