@@ -295,7 +295,7 @@ def _chain_lengths(labels: np.ndarray, n: int, idx: Optional[np.ndarray] = None)
 
     The pairs are counted from the labelled pixels (``idx``: their flat indices in raster order, when
     known), not over the whole raster: the skeleton is a few per cent of its box. The same counts as the
-    whole-raster comparison (``_chain_lengths_raster``), added in the same order."""
+    whole-raster comparison (``tests/test_skeleton_speed.py``'s reference), added in the same order."""
     length = np.zeros(n + 1)
     rows, cols = labels.shape
     flat = np.ascontiguousarray(labels).ravel()
@@ -313,26 +313,6 @@ def _chain_lengths(labels: np.ndarray, n: int, idx: Optional[np.ndarray] = None)
         xi = x[ok]
         same = (flat[i + dy] == xi) & (flat[i + p] != xi) & (flat[i + q] != xi)
         length += SQRT2 * np.bincount(xi[same], minlength=n + 1)
-    return length
-
-
-def _chain_lengths_raster(labels: np.ndarray, n: int) -> np.ndarray:
-    """``_chain_lengths`` by whole-raster comparisons (the reference the tests compare it with)."""
-    length = np.zeros(n + 1)
-    a = labels
-    for dr, dc, w in ((0, 1, 1.0), (1, 0, 1.0)):
-        x, y = a[:a.shape[0] - dr, :a.shape[1] - dc], a[dr:, dc:]
-        same = (x == y) & (x > 0)
-        length += w * np.bincount(x[same], minlength=n + 1)
-    for dc in (1, -1):
-        if dc == 1:
-            x, y = a[:-1, :-1], a[1:, 1:]
-            p, q = a[:-1, 1:], a[1:, :-1]  # the two 4-neighbours shared by the diagonal pair
-        else:
-            x, y = a[:-1, 1:], a[1:, :-1]
-            p, q = a[:-1, :-1], a[1:, 1:]
-        same = (x == y) & (x > 0) & (p != x) & (q != x)
-        length += SQRT2 * np.bincount(x[same], minlength=n + 1)
     return length
 
 
