@@ -1488,12 +1488,20 @@ def _short_side(poly) -> float:
 def _open_samples(host, pts: np.ndarray, normal: np.ndarray, step: float, probe: float) -> np.ndarray:
     """Which samples ``pts`` of a shaft's outline are open onto ``host``: the host holds every probe point
     ``pts + r * normal``, r = step, 2 step, ... up to ``probe`` (a wall anywhere on the probe: walled). All
-    probe points in one ``contains_xy`` call (the host is prepared once, not once per step)."""
+    probe points in one ``contains_xy`` call on the prepared host (GEOS's indexed point-in-area test, the same
+    answers as the unprepared one, ~100x faster on a hall of a thousand vertices); a host the caller had not
+    prepared is left unprepared."""
     import shapely
 
     r = np.arange(step, probe + 1e-9, step)[:, None, None]
     out = pts[None] + r * normal[None]
-    return shapely.contains_xy(host, out[..., 0], out[..., 1]).all(axis=0)
+    was = bool(shapely.is_prepared(host))
+    shapely.prepare(host)
+    try:
+        return shapely.contains_xy(host, out[..., 0], out[..., 1]).all(axis=0)
+    finally:
+        if not was:
+            shapely.destroy_prepared(host)
 
 
 def _shaft_mouth(shaft, host, step: float = 0.05, probe: float = 0.3):

@@ -155,6 +155,28 @@ def test_open_samples_in_one_call_equal_the_per_step_loop(seed):
         assert 0 < got.sum() < len(got) or probe < step
 
 
+def test_open_samples_on_a_prepared_host_equal_the_unprepared_test_also_on_its_boundary():
+    """The probes run on the prepared host: the same answers as the unprepared test, also for probe points on
+    the host's vertices and edges (not inside), and the host is left as it came."""
+    import shapely
+
+    rng = np.random.default_rng(5)
+    hall = Point(0, 0).buffer(12, 200).difference(box(-1, -1, 1, 1))  # ~800 vertices, a hole
+    ring = np.asarray(hall.exterior.coords)[:-1]
+    pts = np.vstack([ring[::7], (ring[:-1:5] + ring[1::5]) / 2, rng.uniform(-13, 13, (400, 2))])
+    normal = np.zeros_like(pts)
+    normal[:, 0] = 1.0
+    for step, probe in ((0.05, 0.3), (0.5, 1.0)):
+        # probe from 0.05 m behind each point: its first probe point is the point itself (on the boundary)
+        got = building._open_samples(hall, pts - step * normal, normal, step, probe)
+        ref = _open_probes_reference(hall, pts - step * normal, normal, step, probe)
+        assert np.array_equal(got, ref)
+        assert not shapely.is_prepared(hall)
+    shapely.prepare(hall)
+    building._open_samples(hall, pts, normal, 0.05, 0.3)
+    assert shapely.is_prepared(hall)  # a host prepared by its caller stays prepared
+
+
 def test_shaft_mouth_finds_the_door_of_a_lift_in_a_hall():
     hall = box(-10, -10, 10, 10).difference(box(0, 0, 2, 2).buffer(0.1, join_style=2)).union(
         LineString([(0.6, -0.2), (1.5, -0.2)]).buffer(0.25, cap_style=2))
