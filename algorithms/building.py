@@ -221,7 +221,7 @@ def _attach_passage_ends(areas: List[Area], passages: List[Passage], tol: float 
     from shapely.geometry import Point, Polygon
 
     by_id = {a.id: a for a in areas}
-    n = 0
+    ends = []  # (area, end) in the order they are judged
     for p in passages:
         if p.line is None or p.line.is_empty:
             continue
@@ -229,20 +229,27 @@ def _attach_passage_ends(areas: List[Area], passages: List[Passage], tol: float 
             a = by_id.get(aid)
             if a is None or getattr(a.polygon, "geom_type", "") != "Polygon" or a.polygon.is_empty:
                 continue
-            for c in (p.line.coords[0], p.line.coords[-1]):
-                ext = a.polygon.exterior
-                pt = Point(c[:2])
-                d = ext.distance(pt)
-                if not (1e-9 < d <= tol):
-                    continue
-                xy = np.asarray(ext.coords, float)[:, :2]
-                segs = shapely.linestrings(np.stack([xy[:-1], xy[1:]], axis=1))
-                k = int(np.argmin(shapely.distance(segs, pt)))
-                new = np.insert(xy, k + 1, np.asarray(c[:2], float), axis=0)
-                cand = Polygon(new, [list(r.coords) for r in a.polygon.interiors])
-                if cand.is_valid and abs(cand.area - a.polygon.area) <= max(tol * tol, 1e-4 * a.polygon.area):
-                    a.polygon = cand
-                    n += 1
+            ends += [(a, p.line.coords[0]), (a, p.line.coords[-1])]
+    if not ends:
+        return 0
+    # every end's distance to its ring in one call; an area whose ring took a vertex meanwhile is measured again
+    before = [a.polygon for a, _ in ends]
+    first = shapely.distance(shapely.get_exterior_ring(np.array(before, dtype=object)),
+                             shapely.points(np.array([c[:2] for _, c in ends], float)))
+    n = 0
+    for i, (a, c) in enumerate(ends):
+        d = float(first[i]) if a.polygon is before[i] else a.polygon.exterior.distance(Point(c[:2]))
+        if not (1e-9 < d <= tol):
+            continue
+        pt = Point(c[:2])
+        xy = np.asarray(a.polygon.exterior.coords, float)[:, :2]
+        segs = shapely.linestrings(np.stack([xy[:-1], xy[1:]], axis=1))
+        k = int(np.argmin(shapely.distance(segs, pt)))
+        new = np.insert(xy, k + 1, np.asarray(c[:2], float), axis=0)
+        cand = Polygon(new, [list(r.coords) for r in a.polygon.interiors])
+        if cand.is_valid and abs(cand.area - a.polygon.area) <= max(tol * tol, 1e-4 * a.polygon.area):
+            a.polygon = cand
+            n += 1
     return n
 
 

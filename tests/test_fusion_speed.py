@@ -183,3 +183,63 @@ def test_shaft_mouth_finds_the_door_of_a_lift_in_a_hall():
     mouth = building._shaft_mouth(box(0, 0, 2, 2), hall)
     assert mouth is not None and 0.6 <= mouth.length <= 1.5
     assert abs(mouth.centroid.y) < 0.01 and 0.6 <= mouth.centroid.x <= 1.5
+
+
+def _attach_passage_ends_reference(areas, passages, tol=building.PASSAGE_END_TOL):
+    """building._attach_passage_ends as it was: one Point and one distance call per passage end."""
+    import shapely
+
+    by_id = {a.id: a for a in areas}
+    n = 0
+    for p in passages:
+        if p.line is None or p.line.is_empty:
+            continue
+        for aid in (p.from_id, p.to_id):
+            a = by_id.get(aid)
+            if a is None or getattr(a.polygon, "geom_type", "") != "Polygon" or a.polygon.is_empty:
+                continue
+            for c in (p.line.coords[0], p.line.coords[-1]):
+                ext = a.polygon.exterior
+                pt = Point(c[:2])
+                d = ext.distance(pt)
+                if not (1e-9 < d <= tol):
+                    continue
+                xy = np.asarray(ext.coords, float)[:, :2]
+                segs = shapely.linestrings(np.stack([xy[:-1], xy[1:]], axis=1))
+                k = int(np.argmin(shapely.distance(segs, pt)))
+                new = np.insert(xy, k + 1, np.asarray(c[:2], float), axis=0)
+                cand = Polygon(new, [list(r.coords) for r in a.polygon.interiors])
+                if cand.is_valid and abs(cand.area - a.polygon.area) <= max(tol * tol, 1e-4 * a.polygon.area):
+                    a.polygon = cand
+                    n += 1
+    return n
+
+
+@pytest.mark.parametrize("seed", [0, 1, 2, 3])
+def test_attach_passage_ends_in_one_distance_call_equals_the_per_end_loop(seed):
+    """Passage ends on, near (1-2 mm: inserted, several into one ring) and far from their areas' rings, a
+    passage to a missing area and an empty line: the same rings and the same count as the per-end loop."""
+    import copy
+
+    from algorithms.model import Area, Passage
+
+    rng = np.random.default_rng(seed)
+    areas = [Area(id=k + 1, polygon=box(12 * k, 0, 12 * k + 10, 8.0 + k % 3)) for k in range(6)]
+    passages = []
+    for k in range(40):
+        a, b = (int(v) for v in rng.integers(1, 8, 2))  # 7: no such area
+        poly = areas[min(a, 6) - 1].polygon
+        ring = np.asarray(poly.exterior.coords)
+        e = int(rng.integers(0, len(ring) - 1))
+        t = float(rng.uniform(0.1, 0.9))
+        p0 = ring[e] + t * (ring[e + 1] - ring[e])
+        off = float(rng.choice([0.0, 0.001, -0.0015, 0.002, 0.5]))
+        n = np.array([-(ring[e + 1] - ring[e])[1], (ring[e + 1] - ring[e])[0]])
+        p0 = p0 + off * n / np.linalg.norm(n)
+        line = LineString([p0, p0 + rng.uniform(-0.4, 0.4, 2)]) if k % 13 else LineString()
+        passages.append(Passage(id=k + 1, from_id=a, to_id=b, line=line))
+    ref_areas = copy.deepcopy(areas)
+    got = building._attach_passage_ends(areas, passages)
+    ref = _attach_passage_ends_reference(ref_areas, passages)
+    assert got == ref and got > 0
+    assert [a.polygon.wkb for a in areas] == [a.polygon.wkb for a in ref_areas]
