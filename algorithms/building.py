@@ -218,7 +218,7 @@ def _attach_passage_ends(areas: List[Area], passages: List[Passage], tol: float 
     """Insert every passage end lying within ``tol`` of one of its two areas' exterior ring, but not on it,
     into that ring as a vertex (on the nearest edge), when the ring stays valid. Returns the count."""
     import shapely
-    from shapely.geometry import Point, Polygon
+    from shapely.geometry import Point
 
     by_id = {a.id: a for a in areas}
     ends = []  # (area, end) in the order they are judged
@@ -239,18 +239,26 @@ def _attach_passage_ends(areas: List[Area], passages: List[Passage], tol: float 
     n = 0
     for i, (a, c) in enumerate(ends):
         d = float(first[i]) if a.polygon is before[i] else a.polygon.exterior.distance(Point(c[:2]))
-        if not (1e-9 < d <= tol):
-            continue
-        pt = Point(c[:2])
-        xy = np.asarray(a.polygon.exterior.coords, float)[:, :2]
-        segs = shapely.linestrings(np.stack([xy[:-1], xy[1:]], axis=1))
-        k = int(np.argmin(shapely.distance(segs, pt)))
-        new = np.insert(xy, k + 1, np.asarray(c[:2], float), axis=0)
-        cand = Polygon(new, [list(r.coords) for r in a.polygon.interiors])
-        if cand.is_valid and abs(cand.area - a.polygon.area) <= max(tol * tol, 1e-4 * a.polygon.area):
-            a.polygon = cand
-            n += 1
+        if 1e-9 < d <= tol:
+            n += _insert_end(a, c, tol)
     return n
+
+
+def _insert_end(a: Area, c, tol: float) -> bool:
+    """Insert the passage end ``c`` into ``a``'s exterior ring on the ring's nearest edge, when the ring stays
+    valid and the area changes by at most max(tol², 1e-4 of it) (:func:`_attach_passage_ends`): True if done."""
+    import shapely
+    from shapely.geometry import Point, Polygon
+
+    xy = np.asarray(a.polygon.exterior.coords, float)[:, :2]
+    segs = shapely.linestrings(np.stack([xy[:-1], xy[1:]], axis=1))
+    k = int(np.argmin(shapely.distance(segs, Point(c[:2]))))
+    new = np.insert(xy, k + 1, np.asarray(c[:2], float), axis=0)
+    cand = Polygon(new, [list(r.coords) for r in a.polygon.interiors])
+    if cand.is_valid and abs(cand.area - a.polygon.area) <= max(tol * tol, 1e-4 * a.polygon.area):
+        a.polygon = cand
+        return True
+    return False
 
 
 def _split_structures(fl: FloorData, structures: List[Area], ids) -> None:

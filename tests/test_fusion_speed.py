@@ -186,9 +186,8 @@ def test_shaft_mouth_finds_the_door_of_a_lift_in_a_hall():
 
 
 def _attach_passage_ends_reference(areas, passages, tol=building.PASSAGE_END_TOL):
-    """building._attach_passage_ends as it was: one Point and one distance call per passage end."""
-    import shapely
-
+    """building._attach_passage_ends as it was: one Point and one distance call per passage end (the insertion
+    itself is building._insert_end, unchanged)."""
     by_id = {a.id: a for a in areas}
     n = 0
     for p in passages:
@@ -202,16 +201,8 @@ def _attach_passage_ends_reference(areas, passages, tol=building.PASSAGE_END_TOL
                 ext = a.polygon.exterior
                 pt = Point(c[:2])
                 d = ext.distance(pt)
-                if not (1e-9 < d <= tol):
-                    continue
-                xy = np.asarray(ext.coords, float)[:, :2]
-                segs = shapely.linestrings(np.stack([xy[:-1], xy[1:]], axis=1))
-                k = int(np.argmin(shapely.distance(segs, pt)))
-                new = np.insert(xy, k + 1, np.asarray(c[:2], float), axis=0)
-                cand = Polygon(new, [list(r.coords) for r in a.polygon.interiors])
-                if cand.is_valid and abs(cand.area - a.polygon.area) <= max(tol * tol, 1e-4 * a.polygon.area):
-                    a.polygon = cand
-                    n += 1
+                if 1e-9 < d <= tol:
+                    n += building._insert_end(a, c, tol)
     return n
 
 
