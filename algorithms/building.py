@@ -1504,8 +1504,8 @@ def _open_samples(host, pts: np.ndarray, normal: np.ndarray, step: float, probe:
     """Which samples ``pts`` of a shaft's outline are open onto ``host``: the host holds every probe point
     ``pts + r * normal``, r = step, 2 step, ... up to ``probe`` (a wall anywhere on the probe: walled). All
     probe points in one ``contains_xy`` call on the prepared host (GEOS's indexed point-in-area test, the same
-    answers as the unprepared one, ~100x faster on a hall of a thousand vertices); a host the caller had not
-    prepared is left unprepared."""
+    answers as the unprepared one; 6000 points in a 2000-vertex polygon: 0.8 ms instead of 190); a host the caller
+    had not prepared is left unprepared."""
     import shapely
 
     r = np.arange(step, probe + 1e-9, step)[:, None, None]
