@@ -218,10 +218,10 @@ def _attach_passage_ends(areas: List[Area], passages: List[Passage], tol: float 
     """Insert every passage end lying within ``tol`` of one of its two areas' exterior ring, but not on it,
     into that ring as a vertex (on the nearest edge), when the ring stays valid. Returns the count."""
     import shapely
-    from shapely.geometry import Point, Polygon
+    from shapely.geometry import Point
 
     by_id = {a.id: a for a in areas}
-    n = 0
+    ends = []  # (area, end) in the order they are judged
     for p in passages:
         if p.line is None or p.line.is_empty:
             continue
@@ -229,21 +229,36 @@ def _attach_passage_ends(areas: List[Area], passages: List[Passage], tol: float 
             a = by_id.get(aid)
             if a is None or getattr(a.polygon, "geom_type", "") != "Polygon" or a.polygon.is_empty:
                 continue
-            for c in (p.line.coords[0], p.line.coords[-1]):
-                ext = a.polygon.exterior
-                pt = Point(c[:2])
-                d = ext.distance(pt)
-                if not (1e-9 < d <= tol):
-                    continue
-                xy = np.asarray(ext.coords, float)[:, :2]
-                segs = shapely.linestrings(np.stack([xy[:-1], xy[1:]], axis=1))
-                k = int(np.argmin(shapely.distance(segs, pt)))
-                new = np.insert(xy, k + 1, np.asarray(c[:2], float), axis=0)
-                cand = Polygon(new, [list(r.coords) for r in a.polygon.interiors])
-                if cand.is_valid and abs(cand.area - a.polygon.area) <= max(tol * tol, 1e-4 * a.polygon.area):
-                    a.polygon = cand
-                    n += 1
+            ends += [(a, p.line.coords[0]), (a, p.line.coords[-1])]
+    if not ends:
+        return 0
+    # every end's distance to its ring in one call; an area whose ring took a vertex meanwhile is measured again
+    before = [a.polygon for a, _ in ends]
+    first = shapely.distance(shapely.get_exterior_ring(np.array(before, dtype=object)),
+                             shapely.points(np.array([c[:2] for _, c in ends], float)))
+    n = 0
+    for i, (a, c) in enumerate(ends):
+        d = float(first[i]) if a.polygon is before[i] else a.polygon.exterior.distance(Point(c[:2]))
+        if 1e-9 < d <= tol:
+            n += _insert_end(a, c, tol)
     return n
+
+
+def _insert_end(a: Area, c, tol: float) -> bool:
+    """Insert the passage end ``c`` into ``a``'s exterior ring on the ring's nearest edge, when the ring stays
+    valid and the area changes by at most max(tol², 1e-4 of it) (:func:`_attach_passage_ends`): True if done."""
+    import shapely
+    from shapely.geometry import Point, Polygon
+
+    xy = np.asarray(a.polygon.exterior.coords, float)[:, :2]
+    segs = shapely.linestrings(np.stack([xy[:-1], xy[1:]], axis=1))
+    k = int(np.argmin(shapely.distance(segs, Point(c[:2]))))
+    new = np.insert(xy, k + 1, np.asarray(c[:2], float), axis=0)
+    cand = Polygon(new, [list(r.coords) for r in a.polygon.interiors])
+    if cand.is_valid and abs(cand.area - a.polygon.area) <= max(tol * tol, 1e-4 * a.polygon.area):
+        a.polygon = cand
+        return True
+    return False
 
 
 def _split_structures(fl: FloorData, structures: List[Area], ids) -> None:
@@ -693,6 +708,75 @@ def shaft_residual(moved, partner, moved_openings=None, partner_openings=None) -
     return min(r, float(moved.centroid.distance(partner.centroid)))
 
 
+def _nelder_mead(fun, simplex, xatol: float, fatol: float, maxiter: int):
+    """``scipy.optimize.minimize(fun, simplex[0], method="Nelder-Mead", options={"initial_simplex": simplex,
+    "xatol": xatol, "fatol": fatol, "maxiter": maxiter})`` step for step (scipy 1.14's
+    ``_minimize_neldermead`` without bounds, not adaptive: the same points in the same order, the same
+    arithmetic on each coordinate, the same tie order of the sort, the same stop), on Python floats instead of
+    2x3 numpy arrays and without ``minimize``'s set-up: the registration runs it ~270 times on cheap costs,
+    where scipy's bookkeeping cost as much as the costs. ``fun`` gets a list of floats. Returns ``(x (numpy),
+    fun, success)`` as scipy's result's ``x``, ``fun``, ``success``."""
+    sim = [[float(c) for c in row] for row in np.asarray(simplex, float)]
+    n = len(sim[0])
+    if len(sim) != n + 1:
+        raise ValueError("`initial_simplex` should be an array of shape (N+1,N)")
+
+    def order(fs):  # numpy's argsort, as scipy sorts; a plain sort gives the same when no two values tie
+        if len(set(fs)) == len(fs) and all(f == f for f in fs):
+            return sorted(range(len(fs)), key=fs.__getitem__)
+        return np.argsort(np.asarray(fs, float)).tolist()
+
+    fsim = [float(fun(list(x))) for x in sim]
+    for _ in range(2):  # scipy sorts twice here (and once more on a stop): ties may move under numpy's sort
+        ind = order(fsim)
+        sim, fsim = [sim[i] for i in ind], [fsim[i] for i in ind]
+    iterations = 1
+    while iterations < maxiter:
+        s0 = sim[0]
+        if (all(abs(x[i] - s0[i]) <= xatol for x in sim[1:] for i in range(n))
+                and all(abs(fsim[0] - f) <= fatol for f in fsim[1:])):
+            ind = order(fsim)
+            sim, fsim = [sim[i] for i in ind], [fsim[i] for i in ind]
+            break
+        xbar = list(sim[0])
+        for x in sim[1:-1]:
+            xbar = [a + b for a, b in zip(xbar, x)]
+        xbar = [a / n for a in xbar]
+        last = sim[-1]
+        xr = [2 * a - 1 * b for a, b in zip(xbar, last)]
+        fxr = float(fun(list(xr)))
+        if fxr < fsim[0]:
+            xe = [3 * a - 2 * b for a, b in zip(xbar, last)]
+            fxe = float(fun(list(xe)))
+            sim[-1], fsim[-1] = (xe, fxe) if fxe < fxr else (xr, fxr)
+        elif fxr < fsim[-2]:
+            sim[-1], fsim[-1] = xr, fxr
+        else:
+            shrink = False
+            if fxr < fsim[-1]:
+                xc = [1.5 * a - 0.5 * b for a, b in zip(xbar, last)]
+                fxc = float(fun(list(xc)))
+                if fxc <= fxr:
+                    sim[-1], fsim[-1] = xc, fxc
+                else:
+                    shrink = True
+            else:
+                xcc = [0.5 * a + 0.5 * b for a, b in zip(xbar, last)]
+                fxcc = float(fun(list(xcc)))
+                if fxcc < fsim[-1]:
+                    sim[-1], fsim[-1] = xcc, fxcc
+                else:
+                    shrink = True
+            if shrink:
+                for j in range(1, n + 1):
+                    sim[j] = [a + 0.5 * (b - a) for a, b in zip(sim[0], sim[j])]
+                    fsim[j] = float(fun(list(sim[j])))
+        iterations += 1
+        ind = order(fsim)
+        sim, fsim = [sim[i] for i in ind], [fsim[i] for i in ind]
+    return np.array(sim[0], float), float(np.min(fsim)), iterations < maxiter
+
+
 def anchor_shift(moved, partner, max_move: float = MATCH_TOLERANCE) -> np.ndarray:
     """The registration error at one shaft: the smallest shift (x, y, metres) that lays the moved shaft's
     outline on its partner's, i.e. minimises the part of the smaller of the two outside the other (plus
@@ -703,16 +787,18 @@ def anchor_shift(moved, partner, max_move: float = MATCH_TOLERANCE) -> np.ndarra
     (the flight lies inside the larger outline), while two shafts drawn alike but offset by 0.3 m need
     exactly that shift. Nelder-Mead from no shift; (0, 0) when nothing better is found within ``max_move``."""
     import shapely
-    from scipy.optimize import minimize
 
     small, big = (moved, partner) if moved.area <= partner.area else (partner, moved)
     sign = 1.0 if small is moved else -1.0
     a_small = max(float(small.area), 1e-9)
     shapely.prepare(big)
+    # shapely.transform(small, lambda xy: xy + v) with its coordinates read once, and the intersection and
+    # area ufuncs without shapely's argument wrappers: the same GEOS calls on the same coordinates
+    xy = shapely.get_coordinates(small)
 
     def cost(v):
-        g = shapely.transform(small, lambda xy: xy + (v[0], v[1]))
-        return 1.0 - float(shapely.area(shapely.intersection(g, big))) / a_small + 0.01 * math.hypot(v[0], v[1])
+        g = shapely.lib.set_coordinates(np.array(small, dtype=np.object_), xy + (v[0], v[1])).item()
+        return 1.0 - float(shapely.lib.area(shapely.lib.intersection(g, big))) / a_small + 0.01 * math.hypot(v[0], v[1])
 
     c0 = cost((0.0, 0.0))
     best = np.zeros(2)
@@ -720,12 +806,11 @@ def anchor_shift(moved, partner, max_move: float = MATCH_TOLERANCE) -> np.ndarra
         x0 = best
         simplex = np.array([x0, x0 + [step, 0.0], x0 + [0.0, step]])
         try:
-            res = minimize(cost, x0, method="Nelder-Mead",
-                           options={"initial_simplex": simplex, "xatol": 1e-3, "fatol": 1e-6, "maxiter": 300})
+            x, fun, _ok = _nelder_mead(cost, simplex, xatol=1e-3, fatol=1e-6, maxiter=300)
         except Exception:  # noqa: BLE001 - a degenerate outline: no correction
             return np.zeros(2)
-        if res.fun < c0 - 1e-9 and math.hypot(*res.x) <= max_move:
-            best, c0 = np.asarray(res.x, float), float(res.fun)
+        if fun < c0 - 1e-9 and math.hypot(*x) <= max_move:
+            best, c0 = x, fun
     return sign * best
 
 
@@ -799,8 +884,6 @@ def _polish_on_shapes(T: Rigid, pairs, rotate: bool, max_move: float = MATCH_TOL
     exactly on each other, and one drawn differently (a landing included on one floor) costs about the
     same wherever it is, so it cannot pull. Kept only when it lowers the cost and moves less than
     ``max_move``."""
-    from scipy.optimize import minimize
-
     if not pairs:
         return T
 
@@ -826,19 +909,17 @@ def _polish_on_shapes(T: Rigid, pairs, rotate: bool, max_move: float = MATCH_TOL
         x0, simplex = x0[:2], simplex[:3, :2]
         simplex[1:] = x0 + np.array([[0.3, 0], [0, 0.3]])
     try:
-        res = minimize(cost, x0, method="Nelder-Mead",
-                       options={"initial_simplex": simplex, "xatol": 1e-4, "fatol": 1e-7, "maxiter": 400})
+        v, fun, ok = _nelder_mead(cost, simplex, xatol=1e-4, fatol=1e-7, maxiter=400)
     except Exception:  # noqa: BLE001 - a degenerate shape: keep the point fit
         return T
-    if not res.success and res.fun >= c0:
+    if not ok and fun >= c0:
         return T
-    v = res.x
     R = Rigid(float(v[2]) if rotate else T.theta, float(v[0]), float(v[1]))
     moved = float(np.max(np.linalg.norm(R.apply(np.array([[0.0, 0.0]])) - T.apply(np.array([[0.0, 0.0]])), axis=1)))
     # judge the move where the shafts are, not at the frame origin kilometres away
     pts = np.array([[pm.centroid.x, pm.centroid.y] for pm, _ in pairs])
     moved = float(np.max(np.linalg.norm(R.apply(pts) - T.apply(pts), axis=1)))
-    if res.fun < c0 - 1e-6 and moved <= max_move:
+    if fun < c0 - 1e-6 and moved <= max_move:
         return R
     return T
 
@@ -881,7 +962,8 @@ def _outline_of(fl: FloorData):
 def _shaft_segment(poly):
     """A short segment (≤ 1 m) around the pole of inaccessibility of ``poly``: inside it."""
     from shapely.geometry import LineString
-    from shapely.ops import polylabel
+
+    from .model import polylabel
 
     try:
         c = polylabel(poly, tolerance=0.02)
@@ -1418,6 +1500,25 @@ def _short_side(poly) -> float:
     return float(min(np.hypot(*(r[1] - r[0])), np.hypot(*(r[2] - r[1]))))
 
 
+def _open_samples(host, pts: np.ndarray, normal: np.ndarray, step: float, probe: float) -> np.ndarray:
+    """Which samples ``pts`` of a shaft's outline are open onto ``host``: the host holds every probe point
+    ``pts + r * normal``, r = step, 2 step, ... up to ``probe`` (a wall anywhere on the probe: walled). All
+    probe points in one ``contains_xy`` call on the prepared host (GEOS's indexed point-in-area test, the same
+    answers as the unprepared one; 6000 points in a 2000-vertex polygon: 0.8 ms instead of 190); a host the caller
+    had not prepared is left unprepared."""
+    import shapely
+
+    r = np.arange(step, probe + 1e-9, step)[:, None, None]
+    out = pts[None] + r * normal[None]
+    was = bool(shapely.is_prepared(host))
+    shapely.prepare(host)
+    try:
+        return shapely.contains_xy(host, out[..., 0], out[..., 1]).all(axis=0)
+    finally:
+        if not was:
+            shapely.destroy_prepared(host)
+
+
 def _shaft_mouth(shaft, host, step: float = 0.05, probe: float = 0.3):
     """The opening of ``shaft`` onto ``host`` (a LineString across it), when the shaft's walls stand on the
     host's floor: walking its outline every ``step`` m, a point is open when the host holds the whole probe
@@ -1438,10 +1539,7 @@ def _shaft_mouth(shaft, host, step: float = 0.05, probe: float = 0.3):
     t = nxt - pts
     t /= np.maximum(np.hypot(t[:, 0], t[:, 1]), 1e-12)[:, None]
     normal = np.column_stack([t[:, 1], -t[:, 0]])
-    open_ = np.ones(n, bool)
-    for r in np.arange(step, probe + 1e-9, step):  # open: the host all along the probe (a wall anywhere: walled)
-        out = pts + r * normal
-        open_ &= shapely.contains_xy(host, out[:, 0], out[:, 1])
+    open_ = _open_samples(host, pts, normal, step, probe)
     if open_.mean() > 1.0 - SHAFT_WALLED or not open_.any() or open_.all():
         return None
     k = int(np.argmin(open_))  # start the walk on a wall: every open run is then whole

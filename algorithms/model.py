@@ -313,3 +313,77 @@ def open_ring_pinches(poly, dist: float = PINCH_OPEN):
     if new is None:
         return None
     return Polygon(new if ccw else new[::-1], [list(r.coords) for r in poly.interiors])
+
+
+class _LabelCell:
+    """A cell of :func:`polylabel`'s priority queue: ordered as shapely's ``polylabel`` orders its cells (a
+    cell is "less" when its bound on the distance is larger; only ``<`` is used by ``heapq``, so cells with
+    equal bounds come out in the same order as there)."""
+
+    __slots__ = ("x", "y", "h", "distance", "max_distance")
+
+    def __init__(self, x: float, y: float, h: float, distance: float):
+        self.x, self.y, self.h, self.distance = x, y, h, distance
+        self.max_distance = distance + h * 1.4142135623730951  # sqrt(2)
+
+    def __lt__(self, other: "_LabelCell") -> bool:
+        return self.max_distance > other.max_distance
+
+
+def polylabel(polygon, tolerance: float = 1.0):
+    """The pole of inaccessibility of ``polygon``: exactly ``shapely.ops.polylabel(polygon, tolerance)``
+    (the same grid, cells, queue order and GEOS predicates), but each batch of cells (the first grid, the
+    four children of a split) is measured in one vectorised ``contains`` / ``distance`` call instead of one
+    Point and four GEOS calls per cell (~8x less CPU on a shaft outline). Raises shapely's
+    ``TopologicalError`` for an invalid polygon, as shapely's does."""
+    from heapq import heappop, heappush
+
+    import shapely
+    from shapely.errors import TopologicalError
+    from shapely.geometry import Point
+
+    if not polygon.is_valid:
+        raise TopologicalError("Invalid polygon")
+    rings = [polygon.exterior] + list(polygon.interiors)
+
+    def signed(xs, ys) -> list:
+        pts = shapely.points(np.asarray(xs, float), np.asarray(ys, float))
+        inside = shapely.contains(polygon, pts)
+        d = shapely.distance(pts, rings[0])
+        for ring in rings[1:]:
+            d = np.minimum(d, shapely.distance(pts, ring))
+        return np.where(inside, d, -d).tolist()
+
+    minx, miny, maxx, maxy = polygon.bounds
+    width = maxx - minx
+    height = maxy - miny
+    cell_size = min(width, height)
+    h = cell_size / 2.0
+    cx, cy = polygon.centroid.coords[0]
+    bx, by = minx + width / 2.0, miny + height / 2
+    d_c, d_b = signed([cx, bx], [cy, by])
+    best = _LabelCell(bx, by, 0, d_b) if d_b > d_c else _LabelCell(cx, cy, 0, d_c)
+    xs, ys = [], []
+    x = minx
+    while x < maxx:
+        y = miny
+        while y < maxy:
+            xs.append(x + h)
+            ys.append(y + h)
+            y += cell_size
+        x += cell_size
+    queue: list = []
+    for x, y, d in zip(xs, ys, signed(xs, ys) if xs else []):
+        heappush(queue, _LabelCell(x, y, h, d))
+    while queue:
+        cell = heappop(queue)
+        if cell.distance > best.distance:
+            best = cell
+        if cell.max_distance - best.distance <= tolerance:
+            continue
+        h = cell.h / 2.0
+        xs = [cell.x - h, cell.x + h, cell.x - h, cell.x + h]
+        ys = [cell.y - h, cell.y - h, cell.y + h, cell.y + h]
+        for x, y, d in zip(xs, ys, signed(xs, ys)):
+            heappush(queue, _LabelCell(x, y, h, d))
+    return Point(best.x, best.y)

@@ -1135,7 +1135,7 @@ class RouteMap:
 
     def area_point(self, k: int, robot_radius: float = DEFAULT_ROBOT_RADIUS) -> Tuple[float, float]:
         """A point well inside area k where the robot fits (the most interior point of its largest piece)."""
-        from shapely.ops import polylabel
+        from .model import polylabel
 
         g = self.graph(robot_radius)
         pcs = g.pieces_by_area.get(k, [])

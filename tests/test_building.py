@@ -1,5 +1,6 @@
 """Multi-floor fusion (algorithms.building): levels, anchor registration, vertical passages, hierarchy,
 bad input; on small synthetic floors, on the sample building, and on real data (slow)."""
+import hashlib
 import math
 import os
 import xml.etree.ElementTree as ET
@@ -440,6 +441,10 @@ def test_filtered_sist_floors_hide_their_stair_and_lift_symbols(shared_data, flo
 
 # --------------------------------------------------------------------------- SIST, the whole building
 SIST_FRAMES = {"2": "4", "4": "2"}  # F2 and F4 are drawn in one frame (../shared/data/README.md)
+# sha256 of the merged building below (fix-id, the five floors as converted by this code): pinned by session 8's
+# fusion speed-ups (polylabel, Nelder-Mead, shaft mouth probes; the same bytes as before them). It moves with any
+# SIST floor's pin (tests/test_speed_equivalence.py) and with any fusion rule: re-pin then, saying which rule.
+SIST_BUILDING_SHA256 = "cd33f0f5f7935a292d68821c65f62ba9b3aba6346c758118da6463dae6458ee6"
 
 
 @pytest.mark.slow
@@ -518,6 +523,7 @@ def test_sist_five_filtered_floors_fuse_into_one_routable_building(shared_data, 
         assert a.intersection(b).area / min(a.area, b.area) > 0.5, (lo, hi)
     names = [a.name for a in areas]
     assert len(names) == len(set(names))
+    assert hashlib.sha256((tmp_path / "SIST.osm").read_bytes()).hexdigest() == SIST_BUILDING_SHA256
 
 
 # --------------------------------------------------------------------------- rules from the DWG sheets
