@@ -256,15 +256,15 @@ def _callouts_beside_plan(raw_texts, scale: float, extent, first_id: int) -> Lis
     return out
 
 
-def _hidden_symbols(doc, raw, rules, scale, geoms, box, selected, progress) -> List[CadGeometry]:
-    """``cad_explode.hidden_symbols`` of a drawing that shows no stair or lift symbol (a plan whose stair / lift
+def _hidden_symbols(raw, rules, scale, geoms, box, selected, progress) -> List[CadGeometry]:
+    """``cad_explode.kept_symbols`` of a drawing that shows no stair or lift symbol (a plan whose stair / lift
     layers were turned off), within the kept plan; nothing when it shows some or the user chose the layers."""
-    from .cad_explode import hidden_symbols
+    from .cad_explode import kept_symbols
 
     if selected is not None or any(g.kind in ("stair", "elevator") for g in geoms):
         return []
     t0 = time.perf_counter()
-    out = hidden_symbols(doc, raw.states, rules, scale, box if isinstance(box, tuple) else None)
+    out = kept_symbols(raw.pieces, rules, scale, box if isinstance(box, tuple) else None)
     if out:
         n = sum(g.cls != "lift door" for g in out)
         progress.info(f"{n} stair/lift line(s) on hidden layers and {len(out) - n} of lift-named blocks kept as "
@@ -585,7 +585,7 @@ def _import(path, rules, layers, units, include_doors, fallback_walls, drop_door
                     and g.coords[:, 1].max() >= y0 - m and g.coords[:, 1].min() <= y1 + m]
     sound = _sound_pieces(p, scale) if selected is None else p
     partitions = _folding_partitions(sound, scale, sel, classes) if selected is None else []
-    hidden_syms = _hidden_symbols(doc, raw, rules, scale, geoms, box, selected, progress)
+    hidden_syms = _hidden_symbols(raw, rules, scale, geoms, box, selected, progress)
     if selected is None and classify:  # counters closing a space behind them, walls on unnamed layers (task T8)
         partitions += _counters(sound, scale, rules, geoms, sel, infos)
     kept_layers = sorted({g.layer for g in geoms})
