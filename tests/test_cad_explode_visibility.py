@@ -192,3 +192,44 @@ def test_nested_hidden_pieces_come_out_where_the_inserts_place_them():
     assert "A-STAIR" not in raw.pieces.layer and "A-FLOR-STRS" not in raw.pieces.layer  # hidden: never drawn
     assert sorted(map(str, got)) == sorted(str((g.layer, g.kind, g.cls, tuple(round(float(v), 6) for v in g.coords.ravel())))
                                            for g in hidden_symbols(doc, _layer_states(doc), rules, 1.0))
+
+
+def _walled(doc):
+    msp = doc.modelspace()
+    msp.add_lwpolyline([(0, 0), (12, 0), (12, 8), (0, 8)], close=True, dxfattribs={"layer": "A-WALL"})
+    msp.add_lwpolyline([(0.2, 0.2), (11.8, 0.2), (11.8, 7.8), (0.2, 7.8)], close=True, dxfattribs={"layer": "A-WALL"})
+
+
+@pytest.mark.parametrize("shown", [True, False])
+def test_hidden_pieces_are_flattened_only_for_a_plan_that_shows_no_stairs(tmp_path, monkeypatch, shown):
+    """The walk keeps the hidden lines as references; they are flattened (``_Exploder.hidden_entity``) only
+    when the import reads them: for a plan that shows no stair or lift symbol. A block that hides an INSERT of
+    itself (on a frozen layer) is read once, without recursing."""
+    doc = ezdxf.new("R2010")
+    doc.header["$INSUNITS"] = 6
+    doc.layers.add("A-WALL")
+    doc.layers.add("A-STAIR")
+    doc.layers.add("A-FLOR-STRS").off()
+    doc.layers.add("FRZ").freeze()
+    _walled(doc)
+    msp = doc.modelspace()
+    for k in range(8):
+        msp.add_line((2, 1 + 0.3 * k), (4, 1 + 0.3 * k), dxfattribs={"layer": "A-FLOR-STRS"})
+    loop = doc.blocks.new("LOOP")
+    loop.add_line((0, 0), (1, 0), dxfattribs={"layer": "A-FLOR-STRS"})
+    loop.add_blockref("LOOP", (0, 1), dxfattribs={"layer": "FRZ"})
+    msp.add_blockref("LOOP", (6, 2), dxfattribs={"layer": "FRZ"})
+    if shown:
+        msp.add_line((8, 1), (10, 1), dxfattribs={"layer": "A-STAIR"})
+    doc.saveas(tmp_path / "s.dxf")
+    calls = []
+    flatten = cad_explode._Exploder.hidden_entity
+    monkeypatch.setattr(cad_explode._Exploder, "hidden_entity", lambda self, *a: calls.append(a[1]) or flatten(self, *a))
+    d = import_dxf(str(tmp_path / "s.dxf"))
+    if shown:
+        assert calls == [] and d.hidden_symbols == []
+        return
+    # 8 treads, the LOOP insert and its own line, the LOOP it hides inside (read as empty: no recursion)
+    assert calls.count("LINE") == 9 and calls.count("INSERT") == 2
+    got = sorted((round(float(g.coords[0, 0]), 3), round(float(g.coords[0, 1]), 3)) for g in d.hidden_symbols)
+    assert got == [(2.0, round(1 + 0.3 * k, 3)) for k in range(8)] + [(6.0, 2.0)]
