@@ -272,28 +272,17 @@ def _hidden_symbols(raw, rules, scale, geoms, box, selected, progress) -> List[C
     return out
 
 
-_PER_PIECE = ("coords", "layer", "etype", "closed", "filled", "width", "block", "dashed")
-
-
 def _sound_pieces(pieces: _Pieces, scale: float) -> _Pieces:
     """The pieces without those ``_unusable`` calls broken (NaN/inf or beyond 1e15 m): for the searches that
     read every layer (folding partitions, counters, stray walls, door swings), whose KD-trees and distances a
     1e308 coordinate of a damaged file would overflow. The same object when nothing is broken."""
-    import dataclasses
-
     n = len(pieces.coords)
     drawn = [i for i in range(n) if len(pieces.coords[i])]  # an empty piece is sound; one would force the slow path
     bad = _unusable(pieces, drawn, scale)[0]
     if not bad.any():
         return pieces
     broken = {drawn[k] for k in np.flatnonzero(bad)}
-    keep = [i for i in range(n) if i not in broken]
-    out = {}
-    for f in dataclasses.fields(pieces):
-        v = getattr(pieces, f.name)
-        per_piece = f.name in _PER_PIECE and isinstance(v, list) and len(v) == n
-        out[f.name] = [v[i] for i in keep] if per_piece else v
-    return type(pieces)(**out)
+    return pieces.select([i for i in range(n) if i not in broken])
 
 
 def _unusable(pieces: _Pieces, idx: Sequence[int], scale: float) -> Tuple[np.ndarray, np.ndarray]:
