@@ -18,7 +18,7 @@ An area that holds most of a stair run becomes ``stairs``; the smallest area hol
 becomes ``elevator`` (when it is not much larger than the cross's box).
 
 A plan reduced to its structure by turning layers off still holds its symbols: ``symbol_evidence`` adds the
-drawing's hidden stair/lift lines and the lines of lift-named blocks (``cad_explode.hidden_symbols``, kept
+drawing's hidden stair/lift lines and the lines of lift-named blocks (``cad_explode.kept_symbols``, read
 when the drawing shows none) to the evidence, never to the walls; an elevator door symbol types the car-sized
 box behind it (:func:`lift_door_boxes`).
 """

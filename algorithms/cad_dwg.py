@@ -674,31 +674,23 @@ def read_dwg(path: str, progress=None):
                            _guard(base, "block references", raw.decode_insert_minsert_entities, p))
     inserts: Dict[int, _Insert] = {}
     nameless = 0
-    for row in ins_rows:
-        h, px, py, pz, sx, sy, sz, rot, name = row[:9]
-        if not name:
-            nameless += 1
-            got.add(h)
-            continue
-        d = common(h)
-        d.update(name=name, insert=(px, py, pz), xscale=sx, yscale=sy, zscale=sz, rotation=math.degrees(rot),
-                 extrusion=extrusion(h))
-        e = _Insert(h, d, doc)
-        inserts[h] = e
-        add(e, "INSERT")
-    for row in mins_rows:
-        h, px, py, pz, sx, sy, sz, rot, info = row[:9]
-        ncol, nrow, csp, rsp, name = info
-        if not name:
-            nameless += 1
-            got.add(h)
-            continue
-        d = common(h)
-        d.update(name=name, insert=(px, py, pz), xscale=sx, yscale=sy, zscale=sz, rotation=math.degrees(rot),
-                 extrusion=extrusion(h), column_count=ncol, row_count=nrow, column_spacing=csp, row_spacing=rsp)
-        e = _Insert(h, d, doc)
-        inserts[h] = e
-        add(e, "MINSERT")
+    for rows, kind in ((ins_rows, "INSERT"), (mins_rows, "MINSERT")):
+        for row in rows:
+            h, px, py, pz, sx, sy, sz, rot, name = row[:9]
+            grid = {}
+            if kind == "MINSERT":  # the last field: (columns, rows, column spacing, row spacing, name)
+                ncol, nrow, csp, rsp, name = name
+                grid = dict(column_count=ncol, row_count=nrow, column_spacing=csp, row_spacing=rsp)
+            if not name:
+                nameless += 1
+                got.add(h)
+                continue
+            d = common(h)
+            d.update(name=name, insert=(px, py, pz), xscale=sx, yscale=sy, zscale=sz, rotation=math.degrees(rot),
+                     extrusion=extrusion(h), **grid)
+            e = _Insert(h, d, doc)
+            inserts[h] = e
+            add(e, kind)
     n_attr = 0
     for row in _soft(raw.decode_attrib_entities, p, default=[]) or []:
         h, text, tag, _prompt, ins, align, ex, metrics, aflags, flags, _lock, so = row

@@ -7,12 +7,12 @@ import math
 import os
 import re
 from dataclasses import dataclass, field
-from typing import Dict, Iterable, List, Optional, Tuple
+from typing import Dict, Iterable, List, Optional, Sequence, Tuple
 
 import numpy as np
 
 from .cad_read import _layer_states, _read_doc
-from .cad_units import _header_unit
+from .cad_units import CHORD_TOL, _header_unit
 from .errors import InputError
 
 MAX_SEGMENTS_PER_TURN = 1024
@@ -26,6 +26,7 @@ SKIP_TYPES = {"DIMENSION", "ARC_DIMENSION", "LARGE_RADIAL_DIMENSION", "LEADER", 
               "DWFUNDERLAY", "DGNUNDERLAY", "ACAD_TABLE", "ACAD_PROXY_ENTITY", "SEQEND", "VERTEX",
               "SHAPE", "MESH", "LIGHT", "SUN", "HELIX"}
 TEXT_TYPES = {"TEXT", "MTEXT", "ATTRIB"}
+SYMBOL_TYPES = ("LINE", "LWPOLYLINE", "POLYLINE", "ARC")  # what is kept when hidden (``_Hidden``)
 
 
 # ------------------------------------------------------------------------------------------ flattening
@@ -222,6 +223,8 @@ class _Pieces:
 
     # drawn with a dashed/dash-dot linetype (by entity or by layer): projection lines, see ``is_dashed_linetype``
     dashed: List[bool] = field(default_factory=list)
+    # the lines, polylines and arcs AutoCAD does not show (``_Hidden``): never drawn, read by ``kept_symbols``
+    hidden: Optional["_Hidden"] = None
 
     def add(self, coords, layer, etype, closed=False, filled=False, width=0.0, block="", dashed=False):
         self.dashed.append(dashed)
@@ -235,6 +238,64 @@ class _Pieces:
 
     def __len__(self):
         return len(self.coords)
+
+    def hidden_part(self) -> "_Hidden":
+        """``hidden``, created when first needed."""
+        if self.hidden is None:
+            self.hidden = _Hidden()
+        return self.hidden
+
+    def extend(self, src: "_Pieces", idx: Sequence[int], coords: Iterable[np.ndarray], layers: Sequence[str],
+               width_scale: float = 1.0, chain: str = "") -> None:
+        """Append the pieces ``idx`` of ``src`` with ``coords`` and ``layers`` (their new geometry and layers),
+        widths scaled by ``width_scale``, block chains under ``chain``."""
+        self.coords.extend(coords)
+        self.layer.extend(layers)
+        self.etype.extend(src.etype[i] for i in idx)
+        self.closed.extend(src.closed[i] for i in idx)
+        self.filled.extend(src.filled[i] for i in idx)
+        self.width.extend(src.width[i] * width_scale if src.width[i] else 0.0 for i in idx)
+        self.block.extend(_chain_name(chain, src.block[i]) for i in idx)
+        self.dashed.extend(src.dashed[i] for i in idx)
+
+    def select(self, idx: Sequence[int]) -> "_Pieces":
+        """The pieces ``idx`` (everything else shared: texts, counts, xrefs, hidden texts and pieces)."""
+        out = _Pieces(texts=self.texts, counts=self.counts, xrefs=self.xrefs, hidden_texts=self.hidden_texts,
+                      hidden=self.hidden)
+        out.extend(self, idx, [self.coords[i] for i in idx], [self.layer[i] for i in idx])
+        return out
+
+
+class _Hidden:
+    """The lines, polylines and arcs (``SYMBOL_TYPES``) a block (or the model space) holds but AutoCAD does not
+    show: on an off / frozen layer (their own or the one they take), or inside an INSERT on a frozen layer.
+    The exploder keeps them in its one walk as cheaply as it can: references to the entities (flattened only
+    when read), the placements of the hidden parts of the blocks placed here (one per INSERT, not one per
+    piece), and the pieces it flattened already. ``flat`` reads them, in the block's coordinates, only for a
+    drawing whose stair / lift symbols are needed (``kept_symbols``)."""
+
+    def __init__(self):
+        self.pieces = _Pieces()  # flattened already: pieces hidden by the layer they take (layer "0" of an off INSERT)
+        self.refs: List[tuple] = []  # (exploder, entity, type, layer, tolerance): on an off / frozen layer of
+        # their own, or an INSERT hidden whole (frozen layer)
+        self.placed: List[tuple] = []  # (_Hidden of a block, A, t, layer, block name): the blocks placed here
+        self._flat: Optional[_Pieces] = None
+
+    def __bool__(self) -> bool:
+        return bool(self.pieces.coords or self.refs or self.placed)
+
+    def flat(self) -> _Pieces:
+        """The hidden pieces, flattened and placed (cached: a block's hidden part is shared by its inserts)."""
+        if self._flat is None:
+            self._flat = _Pieces()  # a block that hides an INSERT of itself: its own hidden part is empty inside
+            out = _Pieces()
+            out.extend(self.pieces, range(len(self.pieces)), self.pieces.coords, self.pieces.layer)
+            for ex, e, et, layer, tol in self.refs:
+                ex.hidden_entity(e, et, layer, tol, out)
+            for sub, A, t, layer, name in self.placed:
+                _transform_pieces(sub.flat(), A, t, layer, out, _any_layer, name)
+            self._flat = out
+        return self._flat
 
 
 BLOCK_SEP = "\x1f"
@@ -279,7 +340,8 @@ def innermost_block(chain: str) -> str:
 
 def _transform_pieces(src: _Pieces, A: np.ndarray, t: np.ndarray, layer: str, dst: _Pieces,
                       layer_ok, name: str = "") -> None:
-    """Append ``src`` transformed by x' = A @ x + t to ``dst``; layer "0" takes ``layer``."""
+    """Append ``src`` transformed by x' = A @ x + t to ``dst``; layer "0" takes ``layer``. The pieces
+    ``layer_ok`` refuses go to ``dst.hidden`` when they are ``SYMBOL_TYPES``; ``src.hidden`` is placed there."""
     n = len(src.coords)
     if n:
         lens = np.fromiter((len(c) for c in src.coords), dtype=np.int64, count=n)
@@ -290,7 +352,7 @@ def _transform_pieces(src: _Pieces, A: np.ndarray, t: np.ndarray, layer: str, ds
         # the pieces kept (layer_ok once per layer and type), appended list by list: a block inserted
         # hundreds of times made this per-piece loop a tenth of the explosion
         ok_of: Dict[Tuple[str, str], bool] = {}
-        keep, lays = [], []
+        keep, lays, gone, gone_lays = [], [], [], []
         for i, (lay, et) in enumerate(zip(src.layer, src.etype)):
             if lay == "0":
                 lay = layer
@@ -300,15 +362,16 @@ def _transform_pieces(src: _Pieces, A: np.ndarray, t: np.ndarray, layer: str, ds
             if ok:
                 keep.append(i)
                 lays.append(lay)
+            elif et in SYMBOL_TYPES:  # hidden by the layer it takes (an INSERT on an off layer)
+                gone.append(i)
+                gone_lays.append(lay)
         if keep:
-            dst.coords.extend(allc[ends[i] - lens[i]:ends[i]] for i in keep)
-            dst.layer.extend(lays)
-            dst.etype.extend(src.etype[i] for i in keep)
-            dst.closed.extend(src.closed[i] for i in keep)
-            dst.filled.extend(src.filled[i] for i in keep)
-            dst.width.extend(src.width[i] * s if src.width[i] else 0.0 for i in keep)
-            dst.block.extend(_chain_name(name, src.block[i]) for i in keep)
-            dst.dashed.extend(src.dashed[i] for i in keep)
+            dst.extend(src, keep, (allc[ends[i] - lens[i]:ends[i]] for i in keep), lays, s, name)
+        if gone:
+            dst.hidden_part().pieces.extend(src, gone, (allc[ends[i] - lens[i]:ends[i]] for i in gone), gone_lays, s,
+                                            name)
+    if src.hidden:
+        dst.hidden_part().placed.append((src.hidden, A, t, layer, name))
     for src_texts, dst_texts in ((src.texts, dst.texts), (src.hidden_texts, dst.hidden_texts)):
         if not src_texts:
             continue
@@ -325,6 +388,10 @@ def _transform_pieces(src: _Pieces, A: np.ndarray, t: np.ndarray, layer: str, ds
     for (lay, et, k) in src.counts:
         dst.counts.append((layer if lay == "0" else lay, et, k))
     dst.xrefs.extend(src.xrefs)
+
+
+def _any_layer(layer: str, etype: str) -> bool:
+    return True
 
 
 def _minsert_offsets(e, rows: int, cols: int, ex, name: str) -> np.ndarray:
@@ -484,7 +551,9 @@ class _Exploder:
                     # (the block's layer-0 entities, dropped by ``_inherited_ok``); its own-layer ones stay
                     self._insert(e, layer, out)
                     return
-                self._hidden_insert_texts(e, layer, out)
+                self._hidden_insert(e, layer, out)
+            elif et in SYMBOL_TYPES:  # a line AutoCAD hides: kept apart, stair / lift evidence (kept_symbols)
+                out.hidden_part().refs.append((self, e, et, layer, self.tol))
             return
         if et in DASHABLE_TYPES:
             n0 = len(out.coords)
@@ -686,23 +755,50 @@ class _Exploder:
                 "too deeply, repeats one entity massively or holds a huge MINSERT array; purge or explode those "
                 "blocks in CAD (OVERKILL removes duplicates) and export again")
 
-    def _hidden_insert_texts(self, e, layer, out) -> None:
-        """The texts of a small block inserted on a frozen / off layer (an annotation group: a callout
-        with its leader), kept as hidden texts; larger hidden blocks are not exploded at all."""
+    def _hidden_insert(self, e, layer, out, texts: bool = True) -> None:
+        """An INSERT AutoCAD hides whole (on a frozen layer, or on an off one with ``OFF_INSERT_SHOWS_OWN_LAYERS``
+        switched off): kept in ``out.hidden`` (stair / lift evidence, exploded when read); with ``texts``, the
+        texts of a small block (an annotation group: a callout with its leader) are kept as hidden texts."""
+        out.hidden_part().refs.append((self, e, "INSERT", layer, self.tol))
+        if not texts:
+            return
         blk = self.doc.blocks.get(e.dxf.get("name", ""))
         try:
             small = blk is not None and len(blk) <= HIDDEN_BLOCK_MAX
         except TypeError:
             small = False
-        if not small:
+        if small:
+            tmp = _Pieces()
+            self._insert(e, layer, tmp, hidden=True)
+            out.hidden_texts.extend(tmp.texts + tmp.hidden_texts)
+
+    def hidden_entity(self, e, et: str, layer: str, tol: float, out: _Pieces) -> None:
+        """A hidden entity kept by ``_Hidden.refs``, flattened at ``tol`` into ``out``: its lines, polylines and
+        arcs, those of the whole block for an INSERT. A broken entity, or a block too large to explode
+        (``MAX_EXPLODED``), gives nothing: it is evidence only."""
+        saved, self.tol = self.tol, tol
+        try:
+            if et != "INSERT":
+                self._entity(e, et, layer, out)
+                return
+            if self.doc.blocks.get(e.dxf.get("name", "")) is None:
+                return
+            tmp = _Pieces()
+            self._insert(e, layer, tmp, hidden=True)
+            sym = [i for i, t in enumerate(tmp.etype) if t in SYMBOL_TYPES]
+            out.extend(tmp, sym, [tmp.coords[i] for i in sym], [tmp.layer[i] for i in sym])
+            if tmp.hidden:
+                flat = tmp.hidden.flat()
+                out.extend(flat, range(len(flat)), flat.coords, flat.layer)
+        except Exception:
             return
-        tmp = _Pieces()
-        self._insert(e, layer, tmp, hidden=True)
-        out.hidden_texts.extend(tmp.texts + tmp.hidden_texts)
+        finally:
+            self.tol = saved
 
     def _insert(self, e, layer, out, hidden: bool = False):
         name = e.dxf.name
         if not hidden and not self.visible(layer, frozen_only=True) and (layer != "0" or self._top_frozen_zero()):
+            self._hidden_insert(e, layer, out, texts=False)
             return
         rows = int(e.dxf.get("row_count", 1) or 1)
         cols = int(e.dxf.get("column_count", 1) or 1)
@@ -774,10 +870,11 @@ class _Raw:
     n_entities: int
 
 
-def _explode(path: str, tol_du: float, progress, doc=None, repairs=None) -> _Raw:
+def _explode(path: str, tol_du: float, progress, doc=None, repairs=None, states=None) -> _Raw:
     if doc is None:
         doc, repairs = _read_doc(path, progress)
-    states = _layer_states(doc)
+    if states is None:
+        states = _layer_states(doc)
     lower_states = {k.lower(): v for k, v in states.items()}
 
     def visible(name: str, frozen_only: bool = False) -> bool:
@@ -796,13 +893,12 @@ def _explode(path: str, tol_du: float, progress, doc=None, repairs=None) -> _Raw
     out = _Pieces()
     ex.entities(msp, out, top=True)
     # layer "0" (and any other) at the top level must itself be visible
-    keep = [i for i, lay in enumerate(out.layer) if visible(lay)]
-    if len(keep) != len(out.layer):
-        out = _Pieces(coords=[out.coords[i] for i in keep], layer=[out.layer[i] for i in keep],
-                      etype=[out.etype[i] for i in keep], closed=[out.closed[i] for i in keep],
-                      filled=[out.filled[i] for i in keep], width=[out.width[i] for i in keep],
-                      block=[out.block[i] for i in keep], dashed=[out.dashed[i] for i in keep],
-                      texts=out.texts, counts=out.counts, xrefs=out.xrefs, hidden_texts=out.hidden_texts)
+    shown = [visible(lay) for lay in out.layer]
+    if not all(shown):
+        gone = [i for i, (ok, et) in enumerate(zip(shown, out.etype)) if not ok and et in SYMBOL_TYPES]
+        if gone:
+            out.hidden_part().pieces.extend(out, gone, [out.coords[i] for i in gone], [out.layer[i] for i in gone])
+        out = out.select([i for i, ok in enumerate(shown) if ok])
     # texts on frozen / off layers are not drawn: kept apart (a sheet often freezes the annotation layer of
     # one wing, e.g. the stair callouts or room names of a bound xref; stage 5 may still name rooms by them)
     out.hidden_texts = out.hidden_texts + [t for t in out.texts if not visible(t[5])]
@@ -814,7 +910,6 @@ def _explode(path: str, tol_du: float, progress, doc=None, repairs=None) -> _Raw
 # ------------------------------------------------------------------- stair / lift symbols the drawing hides
 LIFT_DOOR_CLS = "lift door"  # CadGeometry.cls of the lines of a lift-named block (an elevator door symbol)
 HIDDEN_SYMBOL_CLS = "hidden"  # CadGeometry.cls of a stair / lift line on a hidden layer
-_SYMBOL_TYPES = ("LINE", "LWPOLYLINE", "POLYLINE", "ARC")
 
 
 def _lift_block(name: str, rules) -> bool:
@@ -827,93 +922,61 @@ def _lift_block(name: str, rules) -> bool:
     return any(keyword_in(w, low) for w in words)
 
 
-def hidden_symbols(doc, states, rules, scale: float, extent=None, max_depth: int = 12):
-    """Stair and lift symbols a drawing holds but does not show, as ``CadGeometry`` (metres, kind "stair" /
-    "elevator"): lines on stair / lift layers (by the layer rules) that are off or frozen, or inside a block
-    inserted on an off / frozen layer (``cls`` = ``HIDDEN_SYMBOL_CLS``); and the lines of lift-named blocks
-    ('Elevator - Single Side Open ...', elevator door symbols, ``cls`` = ``LIFT_DOOR_CLS``), shown or not. A plan reduced to its structure by
-    turning layers off keeps its stair treads and lift cars there: evidence of which area is a stair or a lift,
-    never walls (nothing here is rasterized). ``extent`` (xmin, ymin, xmax, ymax, metres): only symbols within
-    it (+ 1 m). Each block is flattened once, in its own coordinates."""
+def kept_symbols(pieces: _Pieces, rules, scale: float, extent=None):
+    """Stair and lift symbols a drawing holds but does not show, read from what the exploder kept (``pieces``
+    of ``_explode``), as ``CadGeometry`` (metres, kind "stair" / "elevator"): its hidden lines, polylines and
+    arcs (``_Hidden``: on an off / frozen layer, their own or the one they take, or inside an INSERT on
+    a frozen layer) on stair / lift layers by the layer rules (``cls`` = ``HIDDEN_SYMBOL_CLS``); and those of
+    lift-named blocks ('Elevator - Single Side Open ...', elevator door symbols, ``cls`` = ``LIFT_DOOR_CLS``),
+    shown or not. A plan reduced to its structure by turning layers off keeps its stair treads and lift cars
+    there: evidence of which area is a stair or a lift, never walls (nothing here is rasterized). ``extent``
+    (xmin, ymin, xmax, ymax, metres): only symbols whose mean point is within it (+ 1 m)."""
     from .model import CadGeometry
 
-    lower = {k.lower(): v for k, v in states.items()}
+    lift_name: Dict[str, bool] = {}
+    lift_chain: Dict[str, bool] = {"": False}
+    kind_of: Dict[str, Optional[str]] = {}
 
-    def hidden_layer(name: str) -> bool:
-        st = states.get(name) or lower.get(name.lower())
-        return bool(st and (st[0] or st[1]))
+    def lift_named(name: str) -> bool:
+        if name not in lift_name:
+            lift_name[name] = _lift_block(name, rules)
+        return lift_name[name]
 
-    def frozen_layer(name: str) -> bool:
-        st = states.get(name) or lower.get(name.lower())
-        return bool(st and st[0])
-
-    cache = {}
-
-    def pieces(entities, depth):
-        """[(layer, coords (n, 2), hidden, lift block)] of ``entities`` in their own coordinates; layer "0"
-        is resolved by the caller (the INSERT's layer)."""
-        out = []
-        for e in entities:
-            try:
-                et = e.dxftype()
-                layer = e.dxf.get("layer", "0") or "0"
-                if et == "INSERT":
-                    if depth >= max_depth:
-                        continue
-                    name = e.dxf.get("name", "")
-                    if name not in cache:
-                        blk = doc.blocks.get(name)
-                        cache[name] = [] if blk is None or blk.block.is_xref else pieces(blk, depth + 1)
-                        if cache[name] and _lift_block(name, rules):
-                            cache[name] = [(L, c, h, True) for L, c, h, _ in cache[name]]
-                    sub = cache[name]
-                    if not sub:
-                        continue
-                    m = e.matrix44()
-                    A = np.array(((m[0, 0], m[1, 0]), (m[0, 1], m[1, 1])))
-                    t = np.array((m[3, 0], m[3, 1]))
-                    # what AutoCAD hides: a frozen INSERT layer hides the whole block; an off one only the
-                    # layer-0 entities that take it (resolved below, on the entity's resolved layer)
-                    # (an INSERT on "0" inside a block has its parent's layer, decided where the parent is placed)
-                    if not OFF_INSERT_SHOWS_OWN_LAYERS:
-                        hid = hidden_layer(layer)
-                    else:
-                        hid = frozen_layer(layer) if layer != "0" or depth == 0 else False
-                    for L, c, h, lift in sub:
-                        out.append((layer if L == "0" else L, c @ A.T + t, h or hid, lift))
-                    continue
-                if et not in _SYMBOL_TYPES:
-                    continue
-                if et == "LINE":
-                    s, f = e.dxf.start, e.dxf.end
-                    c = np.array(((s[0], s[1]), (f[0], f[1])), float)
-                elif et == "LWPOLYLINE":
-                    c = np.array([p[:2] for p in e.get_points("xy")], float)
-                    if e.closed and len(c) > 2:
-                        c = np.vstack([c, c[:1]])
-                elif et == "POLYLINE":
-                    c = np.array([(v.dxf.location[0], v.dxf.location[1]) for v in e.vertices], float)
-                else:
-                    c = np.array([(p[0], p[1]) for p in e.flattening(0.05 / max(scale, 1e-9))], float)
-                if len(c) >= 2 and np.isfinite(c).all():
-                    out.append((layer, c, hidden_layer(layer) if layer != "0" else False, False))
-            except Exception:  # a broken entity gives no evidence
-                continue
-        return out
+    def in_lift_block(chain: str) -> bool:
+        if chain not in lift_chain:
+            lift_chain[chain] = any(lift_named(b) for b in chain.split(BLOCK_SEP))
+        return lift_chain[chain]
 
     geoms = []
-    for layer, c, hid, lift in pieces(doc.modelspace(), 0):
-        hid = hid or hidden_layer(layer)
-        kind = rules.classify(layer)[0]
-        if lift:
-            kind = "elevator"
-        elif not hid or kind not in ("stair", "elevator"):
-            continue
-        xy = c * scale
-        if extent is not None:
-            cx, cy = xy.mean(axis=0)
-            if not (extent[0] - 1 <= cx <= extent[2] + 1 and extent[1] - 1 <= cy <= extent[3] + 1):
+    for src, hidden in ((pieces, False), (pieces.hidden.flat() if pieces.hidden else _Pieces(), True)):
+        for c, layer, et, closed, chain in zip(src.coords, src.layer, src.etype, src.closed, src.block):
+            if et not in SYMBOL_TYPES:
                 continue
-        geoms.append(CadGeometry(layer=layer, kind=kind, coords=xy, entity="LINE",
-                                 cls=LIFT_DOOR_CLS if lift else HIDDEN_SYMBOL_CLS))
+            lift = in_lift_block(chain)
+            if not lift:
+                if not hidden:
+                    continue
+                if layer not in kind_of:
+                    kind_of[layer] = rules.classify(layer)[0]
+                kind = kind_of[layer]
+                if kind not in ("stair", "elevator"):
+                    continue
+            if len(c) < 2 or not np.isfinite(c).all():
+                continue
+            if closed and len(c) > 2:  # a closed polyline as a ring
+                c = np.vstack([c, c[:1]])
+            xy = c * scale
+            if extent is not None:
+                cx, cy = xy.mean(axis=0)
+                if not (extent[0] - 1 <= cx <= extent[2] + 1 and extent[1] - 1 <= cy <= extent[3] + 1):
+                    continue
+            geoms.append(CadGeometry(layer=layer, kind="elevator" if lift else kind, coords=xy, entity="LINE",
+                                     cls=LIFT_DOOR_CLS if lift else HIDDEN_SYMBOL_CLS))
     return geoms
+
+
+def hidden_symbols(doc, states, rules, scale: float, extent=None):
+    """``kept_symbols`` of the document ``doc`` (layer ``states`` as ``cad_read._layer_states`` reads them),
+    exploded at the import's chord tolerance for ``scale`` (metres per drawing unit)."""
+    raw = _explode(getattr(doc, "filename", None) or "drawing", CHORD_TOL / scale, None, doc=doc, states=states)
+    return kept_symbols(raw.pieces, rules, scale, extent)

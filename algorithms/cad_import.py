@@ -256,15 +256,15 @@ def _callouts_beside_plan(raw_texts, scale: float, extent, first_id: int) -> Lis
     return out
 
 
-def _hidden_symbols(doc, raw, rules, scale, geoms, box, selected, progress) -> List[CadGeometry]:
-    """``cad_explode.hidden_symbols`` of a drawing that shows no stair or lift symbol (a plan whose stair / lift
+def _hidden_symbols(raw, rules, scale, geoms, box, selected, progress) -> List[CadGeometry]:
+    """``cad_explode.kept_symbols`` of a drawing that shows no stair or lift symbol (a plan whose stair / lift
     layers were turned off), within the kept plan; nothing when it shows some or the user chose the layers."""
-    from .cad_explode import hidden_symbols
+    from .cad_explode import kept_symbols
 
     if selected is not None or any(g.kind in ("stair", "elevator") for g in geoms):
         return []
     t0 = time.perf_counter()
-    out = hidden_symbols(doc, raw.states, rules, scale, box if isinstance(box, tuple) else None)
+    out = kept_symbols(raw.pieces, rules, scale, box if isinstance(box, tuple) else None)
     if out:
         n = sum(g.cls != "lift door" for g in out)
         progress.info(f"{n} stair/lift line(s) on hidden layers and {len(out) - n} of lift-named blocks kept as "
@@ -272,28 +272,17 @@ def _hidden_symbols(doc, raw, rules, scale, geoms, box, selected, progress) -> L
     return out
 
 
-_PER_PIECE = ("coords", "layer", "etype", "closed", "filled", "width", "block", "dashed")
-
-
 def _sound_pieces(pieces: _Pieces, scale: float) -> _Pieces:
     """The pieces without those ``_unusable`` calls broken (NaN/inf or beyond 1e15 m): for the searches that
     read every layer (folding partitions, counters, stray walls, door swings), whose KD-trees and distances a
     1e308 coordinate of a damaged file would overflow. The same object when nothing is broken."""
-    import dataclasses
-
     n = len(pieces.coords)
     drawn = [i for i in range(n) if len(pieces.coords[i])]  # an empty piece is sound; one would force the slow path
     bad = _unusable(pieces, drawn, scale)[0]
     if not bad.any():
         return pieces
     broken = {drawn[k] for k in np.flatnonzero(bad)}
-    keep = [i for i in range(n) if i not in broken]
-    out = {}
-    for f in dataclasses.fields(pieces):
-        v = getattr(pieces, f.name)
-        per_piece = f.name in _PER_PIECE and isinstance(v, list) and len(v) == n
-        out[f.name] = [v[i] for i in keep] if per_piece else v
-    return type(pieces)(**out)
+    return pieces.select([i for i in range(n) if i not in broken])
 
 
 def _unusable(pieces: _Pieces, idx: Sequence[int], scale: float) -> Tuple[np.ndarray, np.ndarray]:
@@ -585,7 +574,7 @@ def _import(path, rules, layers, units, include_doors, fallback_walls, drop_door
                     and g.coords[:, 1].max() >= y0 - m and g.coords[:, 1].min() <= y1 + m]
     sound = _sound_pieces(p, scale) if selected is None else p
     partitions = _folding_partitions(sound, scale, sel, classes) if selected is None else []
-    hidden_syms = _hidden_symbols(doc, raw, rules, scale, geoms, box, selected, progress)
+    hidden_syms = _hidden_symbols(raw, rules, scale, geoms, box, selected, progress)
     if selected is None and classify:  # counters closing a space behind them, walls on unnamed layers (task T8)
         partitions += _counters(sound, scale, rules, geoms, sel, infos)
     kept_layers = sorted({g.layer for g in geoms})

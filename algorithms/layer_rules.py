@@ -145,6 +145,16 @@ class LayerRules:
         return []
 
 
+def _keywords(val, source: str, what: str) -> List[str]:
+    """``val`` as a list of keywords (one string is a list of one); an InputError saying ``what`` it is for
+    when it is something else."""
+    if isinstance(val, str):
+        val = [val]
+    if not isinstance(val, list) or not all(isinstance(w, str) for w in val):
+        raise InputError(f"layer rules '{source}': {what} must be a list of strings")
+    return val
+
+
 def _parse(data, source: str) -> LayerRules:
     if not isinstance(data, dict):
         raise InputError(f"layer rules '{source}' must be a JSON object with a 'kinds' mapping")
@@ -156,19 +166,10 @@ def _parse(data, source: str) -> LayerRules:
     for kind, words in kinds.items():
         if kind not in KINDS:
             raise InputError(f"layer rules '{source}': unknown category '{kind}'; use one of {', '.join(KINDS)}")
-        if isinstance(words, str):
-            words = [words]
-        if not isinstance(words, list) or not all(isinstance(w, str) for w in words):
-            raise InputError(f"layer rules '{source}': the keywords of '{kind}' must be a list of strings")
-        items.append((kind, words))
+        items.append((kind, _keywords(words, source, f"the keywords of '{kind}'")))
 
     def str_list(key, default):
-        val = data.get(key, default)
-        if isinstance(val, str):
-            val = [val]
-        if not isinstance(val, list) or not all(isinstance(w, str) for w in val):
-            raise InputError(f"layer rules '{source}': '{key}' must be a list of strings")
-        return val
+        return _keywords(data.get(key, default), source, f"'{key}'")
 
     raster = str_list("raster_kinds", list(DEFAULT_RASTER_KINDS))
     bad = [k for k in raster if k not in KINDS]
@@ -182,11 +183,7 @@ def _parse(data, source: str) -> LayerRules:
         for k, words in val.items():
             if k not in allowed:
                 raise InputError(f"layer rules '{source}': unknown '{key}' entry '{k}'; use {', '.join(allowed)}")
-            if isinstance(words, str):
-                words = [words]
-            if not isinstance(words, list) or not all(isinstance(w, str) for w in words):
-                raise InputError(f"layer rules '{source}': '{key}.{k}' must be a list of strings")
-            out[k] = words
+            out[k] = _keywords(words, source, f"'{key}.{k}'")
         return out
 
     blocks = str_map("blocks", BLOCK_CLASSES)

@@ -120,7 +120,7 @@ class CadDrawing:
     # folding partitions (cad_classify.folding_partitions): lines where a room may be split between two names
     partitions: List[CadGeometry] = field(default_factory=list)
     # stair / lift symbols the drawing holds but does not show (off / frozen layers, lift-named blocks), found when
-    # it shows none (cad_explode.hidden_symbols): evidence of stair / lift areas only, never drawn or rasterized
+    # it shows none (cad_explode.kept_symbols): evidence of stair / lift areas only, never drawn or rasterized
     hidden_symbols: List[CadGeometry] = field(default_factory=list)
 
 

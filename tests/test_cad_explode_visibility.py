@@ -147,3 +147,89 @@ def test_visible_drawings_do_not_change_with_the_rule(tmp_path, monkeypatch, fla
     doc.modelspace().add_blockref("B", (10, 0), dxfattribs={"layer": "A-WALL"})
     lines, texts, _h = _pieces(doc, tmp_path)
     assert lines == [("A-WALL", 0.0, 10.0), ("A-WALL", 1.0, 10.0)] and texts == ["R1", "R2"]
+
+
+def test_nested_hidden_pieces_come_out_where_the_inserts_place_them():
+    """The hidden stair/lift pieces are kept by the exploder's one walk (``_Pieces.hidden``), through the same
+    nesting transforms as the drawn ones: a tread on the off stair layer in block T, placed in block C at (2, 0)
+    scaled 2 and turned 90°, C placed at (10, 20) scaled 3 and turned 90° on a shown layer; the same C mirrored
+    (x scale -1) at (100, 0) on a frozen stair layer, whose layer-0 line takes that layer; and an elevator
+    door block nested in C (a lift-named block: its shown line is lift evidence). Positions worked by hand."""
+    from algorithms.cad_explode import LIFT_DOOR_CLS, kept_symbols
+
+    doc = ezdxf.new("R2010")
+    doc.header["$INSUNITS"] = 6
+    doc.layers.add("A-STAIR").off()
+    doc.layers.add("A-FLOR-STRS").freeze()
+    doc.layers.add("A-WALL")
+    doc.layers.add("A-DOOR")
+    t = doc.blocks.new("T")
+    t.add_line((0, 0), (1, 0), dxfattribs={"layer": "A-STAIR"})
+    t.add_line((0, 0.5), (1, 0.5), dxfattribs={"layer": "0"})
+    door = doc.blocks.new("Elevator - Single Side Open - 48_w x 94_h")
+    door.add_line((0, 0), (1, 0), dxfattribs={"layer": "A-DOOR"})
+    c = doc.blocks.new("C")
+    c.add_blockref("T", (2, 0), dxfattribs={"layer": "0", "xscale": 2, "yscale": 2, "rotation": 90})
+    c.add_blockref(door.name, (0, 5), dxfattribs={"layer": "A-DOOR"})
+    msp = doc.modelspace()
+    msp.add_blockref("C", (10, 20), dxfattribs={"layer": "A-WALL", "xscale": 3, "yscale": 3, "rotation": 90})
+    msp.add_blockref("C", (100, 0), dxfattribs={"layer": "A-FLOR-STRS", "xscale": -1})
+    rules = default_rules()
+    raw = _explode("nested.dxf", 0.01, None, doc=doc)
+    got = sorted((g.layer, g.kind, g.cls, tuple(round(float(v), 6) for v in g.coords.ravel()))
+                 for g in kept_symbols(raw.pieces, rules, 1.0))
+    assert got == [
+        # shown C: T's tread (0,0)-(1,0) -> (2,0)-(2,2) in C -> (10,26)-(4,26); its layer-0 line is a drawn wall
+        ("A-DOOR", "elevator", LIFT_DOOR_CLS, (-5.0, 20.0, -5.0, 23.0)),  # door (0,5)-(1,5) in C, turned and scaled
+        ("A-DOOR", "elevator", LIFT_DOOR_CLS, (100.0, 5.0, 99.0, 5.0)),  # the mirrored copy's door, hidden (frozen)
+        ("A-FLOR-STRS", "stair", HIDDEN_SYMBOL_CLS, (99.0, 0.0, 99.0, 2.0)),  # layer "0": (1,0)-(1,2) in C, mirrored
+        ("A-STAIR", "stair", HIDDEN_SYMBOL_CLS, (10.0, 26.0, 4.0, 26.0)),
+        ("A-STAIR", "stair", HIDDEN_SYMBOL_CLS, (98.0, 0.0, 98.0, 2.0)),
+    ]
+    walls = sorted(tuple(round(float(v), 6) for v in cc.ravel()) for cc, lay in zip(raw.pieces.coords, raw.pieces.layer)
+                   if lay == "A-WALL")
+    assert walls == [(10.0, 23.0, 4.0, 23.0)]  # (1,0)-(1,2) in C: only the shown insert's layer-0 line is drawn
+    assert "A-STAIR" not in raw.pieces.layer and "A-FLOR-STRS" not in raw.pieces.layer  # hidden: never drawn
+    assert sorted(map(str, got)) == sorted(str((g.layer, g.kind, g.cls, tuple(round(float(v), 6) for v in g.coords.ravel())))
+                                           for g in hidden_symbols(doc, _layer_states(doc), rules, 1.0))
+
+
+def _walled(doc):
+    msp = doc.modelspace()
+    msp.add_lwpolyline([(0, 0), (12, 0), (12, 8), (0, 8)], close=True, dxfattribs={"layer": "A-WALL"})
+    msp.add_lwpolyline([(0.2, 0.2), (11.8, 0.2), (11.8, 7.8), (0.2, 7.8)], close=True, dxfattribs={"layer": "A-WALL"})
+
+
+@pytest.mark.parametrize("shown", [True, False])
+def test_hidden_pieces_are_flattened_only_for_a_plan_that_shows_no_stairs(tmp_path, monkeypatch, shown):
+    """The walk keeps the hidden lines as references; they are flattened (``_Exploder.hidden_entity``) only
+    when the import reads them: for a plan that shows no stair or lift symbol. A block that hides an INSERT of
+    itself (on a frozen layer) is read once, without recursing."""
+    doc = ezdxf.new("R2010")
+    doc.header["$INSUNITS"] = 6
+    doc.layers.add("A-WALL")
+    doc.layers.add("A-STAIR")
+    doc.layers.add("A-FLOR-STRS").off()
+    doc.layers.add("FRZ").freeze()
+    _walled(doc)
+    msp = doc.modelspace()
+    for k in range(8):
+        msp.add_line((2, 1 + 0.3 * k), (4, 1 + 0.3 * k), dxfattribs={"layer": "A-FLOR-STRS"})
+    loop = doc.blocks.new("LOOP")
+    loop.add_line((0, 0), (1, 0), dxfattribs={"layer": "A-FLOR-STRS"})
+    loop.add_blockref("LOOP", (0, 1), dxfattribs={"layer": "FRZ"})
+    msp.add_blockref("LOOP", (6, 2), dxfattribs={"layer": "FRZ"})
+    if shown:
+        msp.add_line((8, 1), (10, 1), dxfattribs={"layer": "A-STAIR"})
+    doc.saveas(tmp_path / "s.dxf")
+    calls = []
+    flatten = cad_explode._Exploder.hidden_entity
+    monkeypatch.setattr(cad_explode._Exploder, "hidden_entity", lambda self, *a: calls.append(a[1]) or flatten(self, *a))
+    d = import_dxf(str(tmp_path / "s.dxf"))
+    if shown:
+        assert calls == [] and d.hidden_symbols == []
+        return
+    # 8 treads, the LOOP insert and its own line, the LOOP it hides inside (read as empty: no recursion)
+    assert calls.count("LINE") == 9 and calls.count("INSERT") == 2
+    got = sorted((round(float(g.coords[0, 0]), 3), round(float(g.coords[0, 1]), 3)) for g in d.hidden_symbols)
+    assert got == [(2.0, round(1 + 0.3 * k, 3)) for k in range(8)] + [(6.0, 2.0)]
