@@ -500,7 +500,8 @@ def cross_building(path, n_pairs, rng, log, label):
             continue
         eu = min(c[0] for c in cand)
         rows.append({"ours": ours, "grid8": best8, "grid_any": best_any, "euclid": eu, "q_wall": qw[0],
-                     "q_cpu": qc[0], "q_cpu_best": min(qc), "g_wall": g_wall, "g_cpu": g_cpu})
+                     "q_cpu": qc[0], "q_cpu_best": min(qc), "g_wall": g_wall, "g_cpu": g_cpu,
+                     "pair": [list(map(float, a)), la, list(map(float, b)), lb]})
         if len(rows) % 5 == 1:
             log(f"  {label} pair {len(rows) - 1} ({la} -> {lb}): osmAG cost {ours:.2f} in {qw[0] * 1000:.2f} ms; grid "
                 f"{best8:.2f} (string-pulled {best_any:.2f}) in {g_wall:.1f} s")
@@ -601,6 +602,7 @@ def main():
                     help="pairs for the fused building's cross-floor row (default: --pairs; its grid reference "
                          "takes ~10-20 s a pair)")
     ap.add_argument("--only-building", action="store_true", help="only the fused building's cross-floor row")
+    ap.add_argument("--dump", help="JSON file for the per-pair rows of every table row (to replay the pairs)")
     args = ap.parse_args()
     rng = np.random.default_rng(args.seed)
     log = lambda m: print(m, flush=True)  # noqa: E731
@@ -640,6 +642,12 @@ def main():
                             if not args.building else f"{Path(building).name}, adjacent levels (lift, avoid stairs)")
         crosses.append(cb)
     lines = table(results, crosses)
+    if args.dump:
+        import json
+
+        with open(args.dump, "w", encoding="utf-8") as f:
+            json.dump({r["label"]: r["rows"] for r in results + [c for c in crosses if c and c.get("rows")]}, f,
+                      default=float)
     try:
         commit = subprocess.run(["git", "-C", str(ROOT), "rev-parse", "--short", "HEAD"], capture_output=True,
                                 text=True).stdout.strip()
