@@ -71,7 +71,7 @@ PORTAL_SPACING = 1.0  # metres between crossing nodes on a wide opening
 PORTAL_MIN_SPAN = 0.05  # a usable span shorter than this gets a single crossing node
 MAX_PORTAL_NODES = 9
 PULL_CROSSINGS = True  # slide the crossing points of a route along their passages' spans (see _pull_crossings)
-PULL_SWEEPS = 4
+PULL_SWEEPS = 3
 PULL_MIN_SPAN = 1.0  # metres: only crossings of spans this wide slide (on narrower ones the nodes at both
 # ends leave at most a few centimetres to gain)
 PULL_MIN_GAIN = 5e-3  # metres: a crossing moves only when that shortens the route by more than this
@@ -474,6 +474,13 @@ class _Piece:
         w = np.hypot(self.V[i, 0] - self.V[j, 0], self.V[i, 1] - self.V[j, 1]) + 1e-12
         g = coo_matrix((w, (i, j)), shape=(n, n)).tocsr()
         self.D, self.pred = shortest_path(g, method="D", directed=False, return_predecessors=True)
+
+    def path_between(self, a: int, b: int) -> np.ndarray:
+        """The shortest path a -> b as points, kept (also as [(x, y, vertex)] in ``tpaths``)."""
+        idx = self.vertex_path(a, b)
+        xy = self.paths[(a, b)] = self.V[idx]
+        self.tpaths[(a, b)] = [(float(p[0]), float(p[1]), v) for p, v in zip(xy.tolist(), idx)]
+        return xy
 
     def vertex_path(self, i: int, j: int) -> List[int]:
         """Vertex indices of the shortest path i -> j (both included)."""
@@ -1679,9 +1686,7 @@ class RouteMap:
             key = (a, b)
             xy = pc.paths.get(key)
             if xy is None:  # polylines inside a piece, kept once rebuilt (the same doors recur)
-                idx = pc.vertex_path(a, b)
-                xy = pc.paths[key] = pc.V[idx]
-                pc.tpaths[key] = [(float(p[0]), float(p[1]), v) for p, v in zip(xy, idx)]
+                xy = pc.path_between(a, b)
             chunks.append(xy)
             ct.append(pc.tpaths[key])
             clev.append(pc.level)
