@@ -31,6 +31,10 @@ radius ``r`` is planned for in its configuration space, built once per map and r
   of "planar straight-line distance + ``vertical_cost`` × levels still to cross" (admissible because every
   vertical link costs at least that and every planar edge is at least the straight distance between its
   ends) and landmark (ALT) bounds.
+* **Crossing points.** The search fixes the areas and passages crossed; then every crossing slides along
+  its passage's span to where the route is locally shortest (:func:`_pull_crossings`: a closed-form shift
+  per crossing, the neighbouring corners kept, dropped or completed, every new segment tested to lie in
+  its piece), so an oblique crossing of a wide opening is not bent at the nearest node.
 * **Query speed.** A point is located by a grid of cells wholly inside one piece; in large pieces (halls)
   the corners a point sees come from the corners' visibility polygons (one binary search and one side
   test per corner, :meth:`_Piece.build_visibility`), elsewhere from a segment test against the piece's
