@@ -31,6 +31,10 @@ radius ``r`` is planned for in its configuration space, built once per map and r
   of "planar straight-line distance + ``vertical_cost`` × levels still to cross" (admissible because every
   vertical link costs at least that and every planar edge is at least the straight distance between its
   ends) and landmark (ALT) bounds.
+* **Crossing points.** The search fixes the areas and passages crossed; then every crossing slides along
+  its passage's span to where the route is locally shortest (:func:`_pull_crossings`: a closed-form shift
+  per crossing, the neighbouring corners kept, dropped or completed, every new segment tested to lie in
+  its piece), so an oblique crossing of a wide opening is not bent at the nearest node.
 * **Query speed.** A point is located by a grid of cells wholly inside one piece; in large pieces (halls)
   the corners a point sees come from the corners' visibility polygons (one binary search and one side
   test per corner, :meth:`_Piece.build_visibility`), elsewhere from a segment test against the piece's
@@ -70,6 +74,11 @@ SNAP = 1.0  # start/goal (and passages) farther than this from the robot's free 
 PORTAL_SPACING = 1.0  # metres between crossing nodes on a wide opening
 PORTAL_MIN_SPAN = 0.05  # a usable span shorter than this gets a single crossing node
 MAX_PORTAL_NODES = 9
+PULL_CROSSINGS = True  # slide the crossing points of a route along their passages' spans (see _pull_crossings)
+PULL_SWEEPS = 3
+PULL_MIN_SPAN = 1.0  # metres: only crossings of spans this wide slide (on narrower ones the nodes at both
+# ends leave at most a few centimetres to gain)
+PULL_MIN_GAIN = 5e-3  # metres: a crossing moves only when that shortens the route by more than this
 MIN_RADIUS = 0.01  # walls are grown by at least 1 cm so that a zero radius still cannot cross them
 OPENING_TOL = 0.05  # a wall within 5 cm of a passage segment is part of the opening
 QUAD_SEGS = 2  # 45 degree chords on the rounded corners of grown walls (sagitta 7.6 % of r)
@@ -146,6 +155,7 @@ class RouteResult:
     query_ms: float  # time of the search alone (map already loaded)
     expanded: int = 0
     warnings: List[str] = field(default_factory=list)
+    graph_cost: float = math.nan  # the node graph's optimum, before the crossings are pulled (cost <= it)
 
 
 # =========================================================================== geometry helpers
@@ -313,6 +323,7 @@ class _Piece:
         self.queries = 0
         self._vp = None
         self.paths: Dict[Tuple[int, int], np.ndarray] = {}  # (vertex, vertex) -> polyline, once rebuilt
+        self.tpaths: Dict[Tuple[int, int], list] = {}  # the same as [(x, y, vertex)] (_pull_crossings)
 
     def large(self) -> bool:
         """Worth visibility polygons: testing a point against all corners and edges would be slow."""
@@ -467,6 +478,13 @@ class _Piece:
         w = np.hypot(self.V[i, 0] - self.V[j, 0], self.V[i, 1] - self.V[j, 1]) + 1e-12
         g = coo_matrix((w, (i, j)), shape=(n, n)).tocsr()
         self.D, self.pred = shortest_path(g, method="D", directed=False, return_predecessors=True)
+
+    def path_between(self, a: int, b: int) -> np.ndarray:
+        """The shortest path a -> b as points, kept (also as [(x, y, vertex)] in ``tpaths``)."""
+        idx = self.vertex_path(a, b)
+        xy = self.paths[(a, b)] = self.V[idx]
+        self.tpaths[(a, b)] = [(float(p[0]), float(p[1]), v) for p, v in zip(xy.tolist(), idx)]
+        return xy
 
     def vertex_path(self, i: int, j: int) -> List[int]:
         """Vertex indices of the shortest path i -> j (both included)."""
@@ -722,6 +740,136 @@ def _point_grid(g, lev):
     return (float(x0), float(y0), float(h), lab, pcs)
 
 
+# =========================================================================== crossing points
+def _back(L, i):
+    """Index of the last point of L (a list of (x, y, vertex)) before index i that differs from L[i]; -1:
+    none."""
+    x, y = L[i][0], L[i][1]
+    j = i - 1
+    while j >= 0 and abs(L[j][0] - x) + abs(L[j][1] - y) <= 1e-9:
+        j -= 1
+    return j
+
+
+def _segments_in(segs, pcs) -> np.ndarray:
+    """(S,) bool: does segment k (segs (S, 2, 2)) stay in piece pcs[k]? Inside the piece grown by 10⁻⁶ m
+    (a segment may graze a corner or run along an edge), tested on its prepared polygon: one GEOS call
+    for all the segments."""
+    import shapely
+
+    return shapely.contains_properly(np.array([pc.tol_poly for pc in pcs], dtype=object), shapely.linestrings(segs))
+
+
+def _pull_crossings(T, cpc, cross, span) -> Tuple[float, set]:
+    """Make a route locally shortest at its passage crossings; returns (length saved, chunks changed).
+
+    The search crosses every passage at one of its fixed nodes (both ends of the usable span and every
+    ``PORTAL_SPACING`` metres between), so a route that should cut a wide opening obliquely bends at the
+    nearest node. Here each crossing (entry point in the area piece before it, node on the passage, entry
+    point in the piece after it) slides as one along its passage's span, to the shift that minimises the
+    distance from the route's previous point to the entry before plus from the entry after to the route's
+    next point (closed form: where the straight line between them, or its mirror image, meets the span;
+    clamped to the span). Next to a moved entry the route keeps its previous point, drops it (the point
+    before it sees the new entry) or first bends at one of that corner's ring neighbours (a grown wall
+    corner is several vertices), whichever is shortest and fits. Every new segment is tested to lie in its
+    piece (shapely, all the segments of a round in one call), so the route stays in the robot's free space
+    and crosses the same areas and passages; a shift that does not fit is halved in the next round. A round
+    moves the even and then the odd crossings (neighbours stay fixed while one moves), at most
+    ``PULL_SWEEPS`` rounds; a crossing moves only if that saves more than ``PULL_MIN_GAIN``, so the route is
+    never longer than the search's, and deterministic. ``T``: the route's chunks (the start, then piece
+    paths and crossing nodes alternately, the goal), each a list of (x, y, vertex index in its piece or -1);
+    ``cpc`` the piece of every chunk (None for points), ``cross`` [(chunk, node)], ``span`` node -> the two
+    ends of its passage's span, as :meth:`RouteMap._rebuild` builds them."""
+    last = len(T) - 2  # the goal's piece path (the goal point is the last chunk)
+    scale = [1.0] * len(cross)
+    changed = set()
+    saved = 0.0
+    todo = [k for k, (c, n) in enumerate(cross) if span[n][2] >= PULL_MIN_SPAN]
+    for _ in range(PULL_SWEEPS):
+        if not todo:
+            break
+        again = set()
+        if True:
+            props, polys, segs = [], [], []
+            prev = -9  # chunk of the last crossing proposed to move in this round
+            for k in todo:
+                c, n = cross[k]
+                pa, pb = cpc[c - 1], cpc[c + 1]
+                if pa is None or pb is None or scale[k] < 0.2:
+                    continue
+                L = T[c - 1] if c - 1 > 1 else T[0] + T[c - 1]  # the start point belongs to its piece's path
+                R = T[c + 1][::-1] if c + 1 < last else T[-1] + T[c + 1][::-1]
+                ia, ib = _back(L, len(L) - 1), _back(R, len(R) - 1)
+                if ia < 0 or ib < 0:
+                    continue  # the entry point is the neighbouring crossing's too
+                if ia == 0 and prev == c - 2 and c - 1 > 1:
+                    again.add(k)  # its previous point is the entry of a crossing moving in this round
+                    continue
+                qa, qb, a, b = L[-1], R[-1], L[ia], R[ib]
+                (q0x, q0y), (ux, uy), w = span[n]
+                x = T[c][0]
+                lo = -((x[0] - q0x) * ux + (x[1] - q0y) * uy)
+                p1x, p1y, p2x, p2y = a[0] - qa[0], a[1] - qa[1], b[0] - qb[0], b[1] - qb[1]
+                # the shift s minimising |p1 - s u| + |p2 - s u|: where the segment p1 p2 (or p1 and p2
+                # mirrored across the line) meets the line through the origin along u
+                t1, t2 = p1x * ux + p1y * uy, p2x * ux + p2y * uy
+                h1, h2 = abs(p1y * ux - p1x * uy), abs(p2y * ux - p2x * uy)
+                sh = t1 + (t2 - t1) * h1 / (h1 + h2) if h1 + h2 > 1e-12 else min(max(0.0, min(t1, t2)), max(t1, t2))
+                sh = scale[k] * min(max(sh, lo), lo + w)
+                dx, dy = sh * ux, sh * uy
+                old = math.hypot(p1x, p1y) + math.hypot(p2x, p2y)
+                if math.hypot(p1x - dx, p1y - dy) + math.hypot(p2x - dx, p2y - dy) >= old - PULL_MIN_GAIN:
+                    continue
+                na, nb = (qa[0] + dx, qa[1] + dy, -1), (qb[0] + dx, qb[1] + dy, -1)
+                opts = []  # per side: [(segment, index of the point kept before the new entry, bend, extra)]
+                for Q, i, pc, nq in ((L, ia, pa, na), (R, ib, pb, nb)):
+                    o = [(len(segs), i, None, 0.0)]  # keep the previous point
+                    segs.append((Q[i][:2], nq[:2]))
+                    polys.append(pc)
+                    i0 = _back(Q, i)
+                    if i0 >= 0:  # drop it: the point before it sees the new entry
+                        o.append((len(segs), i0, None, -math.hypot(Q[i0][0] - Q[i][0], Q[i0][1] - Q[i][1])))
+                        segs.append((Q[i0][:2], nq[:2]))
+                        polys.append(pc)
+                    v = Q[i][2]
+                    if v >= 0 and pc.prv[v, 0] == pc.prv[v, 0]:  # a corner: bend at a ring neighbour first
+                        for nbr in (pc.prv[v], pc.nxt[v]):
+                            bx, by = float(nbr[0]), float(nbr[1])
+                            o.append((len(segs), i, (bx, by, -1), math.hypot(bx - Q[i][0], by - Q[i][1])))
+                            segs.append(((bx, by), nq[:2]))
+                            polys.append(pc)
+                    opts.append(o)
+                props.append((k, c, L, R, na, nb, dx, dy, old, opts))
+                prev = c
+            if not props:
+                continue
+            ok = _segments_in(np.array(segs, float), polys)
+            for (k, c, L, R, na, nb, dx, dy, old, opts) in props:
+                best = []
+                for Q, nq, o in ((L, na, opts[0]), (R, nb, opts[1])):
+                    cand = [(math.hypot((v or Q[i])[0] - nq[0], (v or Q[i])[1] - nq[1]) + extra, i, v)
+                            for j, i, v, extra in o if ok[j]]
+                    best.append(min(cand, key=lambda t: t[0]) if cand else None)
+                if best[0] is None or best[1] is None:
+                    scale[k] *= 0.5  # does not fit: a smaller shift next round
+                    again.add(k)
+                    continue
+                if best[0][0] + best[1][0] >= old - 1e-9:
+                    continue
+                (_, i, v), (_, j, u) = best[0][:3], best[1][:3]
+                A = L[:i + 1] + ([v] if v else []) + [na]
+                B = (R[:j + 1] + ([u] if u else []) + [nb])[::-1]
+                T[c - 1] = A if c - 1 > 1 else A[1:]
+                T[c + 1] = B if c + 1 < last else B[:-1]
+                x = T[c][0]
+                T[c] = [(x[0] + dx, x[1] + dy, -1)]
+                changed.update((c - 1, c, c + 1))
+                saved += old - best[0][0] - best[1][0]
+                again.update((k - 1, k, k + 1))  # its neighbours' targets moved
+        todo = [k for k in sorted(again) if 0 <= k < len(cross) and span[cross[k][1]][2] >= PULL_MIN_SPAN]
+    return saved, changed
+
+
 # =========================================================================== the graph
 class _Graph:
     """The routing graph of a map for one robot radius."""
@@ -747,6 +895,7 @@ class _Graph:
         self.edata: List[tuple] = []
         self.piece_tree = None
         self.piece_list: List[_Piece] = []
+        self.span: Dict[int, tuple] = {}  # crossing node -> its passage's usable span: (start, direction, length)
 
     def csr(self) -> Dict[str, np.ndarray]:
         """The adjacency as flat arrays (built once): per node a slice of neighbours, planar costs,
@@ -948,6 +1097,9 @@ class RouteMap:
         for lev in [None] + list(self.level_list):
             if lev not in g.grids:
                 g.grids[lev] = _point_grid(g, lev)
+        for pc in g.pieces.values():  # the per-piece query constants (else built by a piece's first query)
+            if getattr(pc, "_qt", None) is None:
+                pc._query_tables()
         big = [pc for pc in g.pieces.values() if pc._vp is None and pc.large()]
         for m, pc in enumerate(big):
             if m % 8 == 0:
@@ -1016,6 +1168,7 @@ class RouteMap:
                     if any(e is None for e in ends):
                         continue
                     node = g.add_node(x, li, lev, i)
+                    g.span[node] = ((float(q0[0]), float(q0[1])), (float(u[0]), float(u[1])), float(span))
                     for (pc, q, d) in ends:
                         vi = pc.add_point(q)
                         pc.entries.append((node, vi, d))
@@ -1529,20 +1682,32 @@ class RouteMap:
             if i >= 0 and (not pass_seq or pass_seq[-1] != i):
                 pass_seq.append(i)
 
+        cpc: List[Optional[_Piece]] = []  # the piece of every chunk (None: a point)
+        cross: List[Tuple[int, int]] = []  # (chunk, node) of the passage crossings on the route
+        ct: List[list] = []  # the chunks as lists of (x, y, vertex in the piece or -1), for _pull_crossings
+
         def piece_path(pc, a, b):
             key = (a, b)
             xy = pc.paths.get(key)
             if xy is None:  # polylines inside a piece, kept once rebuilt (the same doors recur)
-                xy = pc.paths[key] = pc.V[pc.vertex_path(a, b)]
+                xy = pc.path_between(a, b)
             chunks.append(xy)
+            ct.append(pc.tpaths[key])
             clev.append(pc.level)
+            cpc.append(pc)
 
         def node(n):
+            if n in g.span:
+                cross.append((len(chunks), n))
             chunks.append(gpos[n:n + 1])
+            ct.append([g.pos[n] + (-1,)])
             clev.append(g.level[n])
+            cpc.append(None)
 
         chunks.append(np.asarray(sp, float).reshape(1, 2))
+        ct.append([(float(sp[0]), float(sp[1]), -1)])
         clev.append(spc.level)
+        cpc.append(None)
         add_area(spc.area_index)
         if not nodes:  # start and goal in one piece
             if came_t[1] is not None:
@@ -1566,7 +1731,15 @@ class RouteMap:
             vi = came_t[1]
             piece_path(tpc, vi, int(tvia[vi]))
         chunks.append(np.asarray(tp, float).reshape(1, 2))
+        ct.append([(float(tp[0]), float(tp[1]), -1)])
         clev.append(tpc.level)
+        cpc.append(None)
+        graph_cost = cost
+        if cross and PULL_CROSSINGS:
+            saved, changed = _pull_crossings(ct, cpc, cross, g.span)
+            for c in changed:
+                chunks[c] = np.array([p[:2] for p in ct[c]], float).reshape(-1, 2)
+            cost -= saved
         P = np.concatenate(chunks)
         d = np.diff(P, axis=0)
         keep = np.ones(len(P), bool)  # drop repeated points (a level change repeats the position)
@@ -1598,7 +1771,8 @@ class RouteMap:
                            start=(float(sp[0]), float(sp[1])), goal=(float(tp[0]), float(tp[1])),
                            start_snap=ssnap, goal_snap=tsnap, query_ms=0.0, expanded=expanded,
                            warnings=[f"start moved {ssnap:.2f} m into the free space"] * (ssnap > 0.005)
-                           + [f"goal moved {tsnap:.2f} m into the free space"] * (tsnap > 0.005))
+                           + [f"goal moved {tsnap:.2f} m into the free space"] * (tsnap > 0.005),
+                           graph_cost=float(graph_cost))
 
     def _passage_name(self, i: int) -> str:
         p = self.passages[i]

@@ -46,6 +46,7 @@ SHARED = Path(os.environ.get("CAD2OSMAG_SHARED_DATA", ROOT.parent / "shared" / "
 ROBOT_RADIUS = 0.3
 VERTICAL_COST = 15.0
 MIN_DIST = 5.0
+AVOID = ("stairs",)  # the fused building's row: a lifts-only robot (wheelchair, wheeled robot)
 ROUNDS = 7  # each osmAG query is repeated: CPU best of these rounds (the machine is shared)
 MARK_START = "<!-- bench-route:start -->"
 MARK_END = "<!-- bench-route:end -->"
@@ -350,11 +351,13 @@ def cross_floor(fl1, fl2, n_pairs, rng, log):
 
 
 # =========================================================================== a fused building (osmAG file)
-def level_raster(rm, lev, res=0.05):
+def level_raster(rm, lev, res=0.05, avoid=()):
     """The floor raster of one level of an osmAG map: free inside its areas, walls (1 px) along every area
     border, and at every passage a 1 m deep opening as wide as the passage (converted maps keep the wall's
     thickness between two rooms; the route map joins a passage to areas up to 1 m away): returns the grid
-    and the shapes the grid planner may use (the areas and the openings)."""
+    and the shapes the grid planner may use (the areas and the openings). Areas of the types in ``avoid``
+    (and their passages) stay blocked: the grid planner then solves the route's problem (a lifts-only
+    robot does not cross a stair area); the raster's frame is the same with or without them."""
     from types import SimpleNamespace
 
     import cv2
@@ -374,6 +377,7 @@ def level_raster(rm, lev, res=0.05):
 
     free = np.zeros((rows, cols), np.uint8)
     walls = np.zeros((rows, cols), np.uint8)
+    ks = [k for k in ks if rm.types[k] not in avoid]
     for k in ks:
         for poly in getattr(rm.areas[k].polygon, "geoms", [rm.areas[k].polygon]):
             rings = [px(poly.exterior.coords)] + [px(h.coords) for h in poly.interiors]
@@ -383,6 +387,8 @@ def level_raster(rm, lev, res=0.05):
     openings = []
     for i, p in enumerate(rm.passages):
         if i in vset or rm.levels[rm.index[p.from_id]] != lev or p.line.length < 1e-6:
+            continue
+        if rm.types[rm.index[p.from_id]] in avoid or rm.types[rm.index[p.to_id]] in avoid:
             continue
         op = p.line.buffer(0.5, cap_style="flat")
         for part in getattr(op, "geoms", [op]):
@@ -426,15 +432,17 @@ def cross_building(path, n_pairs, rng, log, label):
     most of the slow grid runs)."""
     t0, c0 = time.perf_counter(), time.process_time()
     rm = RouteMap.from_osmag(str(path))
-    rm.prepare(ROBOT_RADIUS, VERTICAL_COST, avoid=("stairs",))
+    rm.prepare(ROBOT_RADIUS, VERTICAL_COST, avoid=AVOID)
     build, build_cpu = time.perf_counter() - t0, time.process_time() - c0
     g = rm.graph(ROBOT_RADIUS)
     links = lift_links(rm, g)
     levels = rm.level_list
-    floors = {}
+    floors, ref = {}, {}  # pairs are drawn on the rasters of all areas, grid A* runs without the stair areas
     for lev in levels:
         grid, areas = level_raster(rm, lev)
         floors[lev] = GridFloor(grid, areas, ROBOT_RADIUS)
+        grid, areas = level_raster(rm, lev, avoid=AVOID)
+        ref[lev] = GridFloor(grid, areas, ROBOT_RADIUS)
     adj = [(a, b) for a, b in zip(levels, levels[1:]) if any(l[0] == a and l[2] == b for l in links)]
     log(f"  {label}: {len(rm.areas)} areas on levels {levels}, {len(links)} lift links, level pairs {adj}; "
         f"map build {build:.1f} s ({build_cpu:.1f} s CPU)")
@@ -454,27 +462,30 @@ def cross_building(path, n_pairs, rng, log, label):
                 continue
         except Exception:
             continue
+        ga, gb = ref[la], ref[lb]
+        if not (ga.ok[ra[i], ca[i]] and gb.ok[rb[j], cb[j]]):
+            continue  # in a stair area: not a place for a lifts-only robot
         cand = []
         for (l1, p1, l2, p2) in links:
             if {l1, l2} != {la, lb}:
                 continue
             pa, pb = (p1, p2) if l1 == la else (p2, p1)
             qa, qb = nearest_ok(ga, pa), nearest_ok(gb, pb)
-            if qa is None or qb is None or not (ga.main[qa] and gb.main[qb]):
+            if qa is None or qb is None or not (floors[la].main[qa] and floors[lb].main[qb]):
                 continue
             lb_cost = math.hypot(a[0] - pa[0], a[1] - pa[1]) + VERTICAL_COST + math.hypot(b[0] - pb[0], b[1] - pb[1])
             cand.append((lb_cost, qa, qb))
         if not cand:
             continue
         if first:
-            rm.route(a, b, la, lb, robot_radius=ROBOT_RADIUS, avoid=["stairs"], vertical_cost=VERTICAL_COST)
+            rm.route(a, b, la, lb, robot_radius=ROBOT_RADIUS, avoid=AVOID, vertical_cost=VERTICAL_COST)
             first = False
         qw, qc = [], []
         res = None
         for _ in range(ROUNDS):
             w0, p0 = time.perf_counter(), time.process_time()
             try:
-                res = rm.route(a, b, la, lb, robot_radius=ROBOT_RADIUS, avoid=["stairs"], vertical_cost=VERTICAL_COST)
+                res = rm.route(a, b, la, lb, robot_radius=ROBOT_RADIUS, avoid=AVOID, vertical_cost=VERTICAL_COST)
             except Exception as exc:
                 log(f"  {label} pair {len(rows)}: osmAG route failed: {exc}")
                 res = None
@@ -500,7 +511,8 @@ def cross_building(path, n_pairs, rng, log, label):
             continue
         eu = min(c[0] for c in cand)
         rows.append({"ours": ours, "grid8": best8, "grid_any": best_any, "euclid": eu, "q_wall": qw[0],
-                     "q_cpu": qc[0], "q_cpu_best": min(qc), "g_wall": g_wall, "g_cpu": g_cpu})
+                     "q_cpu": qc[0], "q_cpu_best": min(qc), "g_wall": g_wall, "g_cpu": g_cpu,
+                     "pair": [list(map(float, a)), la, list(map(float, b)), lb]})
         if len(rows) % 5 == 1:
             log(f"  {label} pair {len(rows) - 1} ({la} -> {lb}): osmAG cost {ours:.2f} in {qw[0] * 1000:.2f} ms; grid "
                 f"{best8:.2f} (string-pulled {best_any:.2f}) in {g_wall:.1f} s")
@@ -601,6 +613,7 @@ def main():
                     help="pairs for the fused building's cross-floor row (default: --pairs; its grid reference "
                          "takes ~10-20 s a pair)")
     ap.add_argument("--only-building", action="store_true", help="only the fused building's cross-floor row")
+    ap.add_argument("--dump", help="JSON file for the per-pair rows of every table row (to replay the pairs)")
     args = ap.parse_args()
     rng = np.random.default_rng(args.seed)
     log = lambda m: print(m, flush=True)  # noqa: E731
@@ -640,6 +653,12 @@ def main():
                             if not args.building else f"{Path(building).name}, adjacent levels (lift, avoid stairs)")
         crosses.append(cb)
     lines = table(results, crosses)
+    if args.dump:
+        import json
+
+        with open(args.dump, "w", encoding="utf-8") as f:
+            json.dump({r["label"]: r["rows"] for r in results + [c for c in crosses if c and c.get("rows")]}, f,
+                      default=float)
     try:
         commit = subprocess.run(["git", "-C", str(ROOT), "rev-parse", "--short", "HEAD"], capture_output=True,
                                 text=True).stdout.strip()

@@ -181,8 +181,9 @@ def check_astar_matches_dijkstra(rm, r, vc=15.0, avoid=(), pairs=20, seed=0):
         mat = coo_matrix((W, (R, C)), shape=(n + 2, n + 2)).tocsr()
         ref = dijkstra(mat, directed=True, indices=n)[n + 1]
         if s[0] is t[0]:
-            ref = min(ref, res.cost)  # same piece: the direct in-area path is not in the node graph
-        assert res.cost == pytest.approx(ref, rel=1e-6, abs=1e-6)
+            ref = min(ref, res.graph_cost)  # same piece: the direct in-area path is not in the node graph
+        assert res.graph_cost == pytest.approx(ref, rel=1e-6, abs=1e-6)
+        assert res.cost <= res.graph_cost + 1e-9  # crossings pulled: never longer than the graph's optimum
 
 
 # --------------------------------------------------------------------------- several levels
@@ -681,3 +682,55 @@ def test_campus_map_fast_paths_give_the_reference_answers(shared_data, monkeypat
     rm2 = RouteMap.from_osmag(str(shared_data / "osmag" / "fix_id_ShanghaiTech_merge_2.osm"))
     for x, y in zip(plain, routes(rm2)):
         assert x == pytest.approx(y, abs=1e-6)
+
+
+# --------------------------------------------------------------------------- crossing points pulled taut
+def oblique_opening():
+    """Two 10 x 20 rooms joined along x = 10 by a 20 m wide opening; a wall tongue hangs into the west
+    room from the top (x 8..9, down to y = 7.55), another rises in the east room from the bottom (x 11..12,
+    up to y = 10.05). From the top left to the bottom right the shortest path bends under the first
+    tongue, crosses the opening obliquely between the two tongue corners (at y = 8.8, between the fixed
+    crossing nodes at 7.5 and 10.0) and bends over the second tongue."""
+    west = box(0, 0, 10, 20).difference(box(8, 7.55, 9, 20))
+    east = box(10, 0, 20, 20).difference(box(11, 0, 12, 10.05))
+    areas = [area(1, west, "West", atype="corridor"), area(2, east, "East", atype="corridor")]
+    passages = [passage(10, 1, 2, (10, 0), (10, 20), "Opening")]
+    s, t = (6, 18), (14, 1)
+    exact = (math.hypot(2, 18 - 7.55) + 1 + math.hypot(2, 10.05 - 7.55) + 1 + math.hypot(2, 10.05 - 1))
+    return areas, passages, s, t, exact
+
+
+def test_oblique_crossing_of_a_wide_opening_is_the_analytic_shortest_path(monkeypatch):
+    from algorithms import routing
+
+    areas, passages, s, t, exact = oblique_opening()
+    res = RouteMap.from_areas(areas, passages).route(s, t, robot_radius=0.0)  # walls grown by 1 cm only
+    assert res.passages == ["Opening"] and res.areas == ["West", "East"]
+    assert exact - 1e-6 <= res.length <= exact * 1.005
+    k = int(np.argmin(np.abs(res.points[:, 0] - 10)))
+    assert res.points[k, 0] == pytest.approx(10, abs=1e-6) and res.points[k, 1] == pytest.approx(8.8, abs=0.02)
+    assert res.cost == pytest.approx(res.length, abs=1e-9) and res.graph_cost >= res.cost
+    # with a robot radius: the path keeps r from the tongues (but for the 45 degree corner chords)
+    r = 0.3
+    res3 = RouteMap.from_areas(areas, passages).route(s, t, robot_radius=r)
+    walls = areas[0].polygon.boundary.union(areas[1].polygon.boundary).difference(passages[0].line.buffer(1e-6))
+    assert clearance_ok(res3.points, walls, r)
+    assert res3.length <= res3.graph_cost - 0.2  # the nodes on the opening cost ~2 % here
+    # the fixed crossing nodes alone (the rule switched off) bend at a node: ~1.8 % longer
+    monkeypatch.setattr(routing, "PULL_CROSSINGS", False)
+    fixed = RouteMap.from_areas(areas, passages).route(s, t, robot_radius=0.0)
+    assert fixed.length > exact * 1.01
+    assert fixed.length == pytest.approx(res.graph_cost, abs=1e-6)
+
+
+def test_route_through_a_chain_of_wide_openings_is_the_straight_line():
+    # a 20 x 20 hall cut into four strips by three 20 m wide openings: nothing blocks the straight line
+    areas = [area(k + 1, box(5 * k, 0, 5 * k + 5, 20), f"S{k}", atype="corridor") for k in range(4)]
+    passages = [passage(10 + k, k + 1, k + 2, (5 * k + 5, 0), (5 * k + 5, 20), f"O{k}") for k in range(3)]
+    rm = RouteMap.from_areas(areas, passages)
+    for s, t in (((1, 2), (19, 17.3)), ((1, 18), (19, 0.7)), ((4, 9), (16, 12))):
+        res = rm.route(s, t, robot_radius=0.3)
+        assert res.passages == ["O0", "O1", "O2"]
+        straight = math.hypot(t[0] - s[0], t[1] - s[1])
+        assert straight - 1e-9 <= res.length <= straight * 1.001
+        assert res.graph_cost > res.length  # the fixed nodes alone bend
