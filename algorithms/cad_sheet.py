@@ -340,13 +340,80 @@ def split_elevations(allp: np.ndarray, plab: np.ndarray, ncomp: int, texts: Sequ
     return plab, ncomp, split
 
 
+ALIGN_SHEET = True  # a plan whose walls run at an angle to the CAD frame is grouped in the frame of its walls ...
+ALIGN_MIN_DEG = 7.5  # ... when they are at least this far from the axes (degrees; as segmentation.ALIGN_MIN_DEG)
+ALIGN_MIN_COHERENCE = 0.25  # ... and have a dominant direction at all (see ``wall_direction``)
+
+
+def wall_direction(geoms: Sequence[CadGeometry]) -> Tuple[float, float]:
+    """The dominant direction of the wall geometry, modulo 90 degrees: ``(angle, coherence)``, ``angle`` in
+    (-45, 45] degrees counter-clockwise in the CAD frame, ``coherence`` in [0, 1] (1: every wall segment
+    parallel or square to it). Each segment of a wall-kind geometry votes with its length on its quadrupled
+    angle (walls and the walls square to them agree)."""
+    z = 0j
+    total = 0.0
+    for g in geoms:
+        if g.kind not in WALL_KINDS or len(g.coords) < 2:
+            continue
+        d = np.diff(g.coords[:, :2], axis=0)
+        d = d[np.isfinite(d).all(axis=1)]
+        length = np.hypot(d[:, 0], d[:, 1])
+        a = 4.0 * np.arctan2(d[:, 1], d[:, 0])
+        z += complex(float((length * np.cos(a)).sum()), float((length * np.sin(a)).sum()))
+        total += float(length.sum())
+    if total <= 0:
+        return 0.0, 0.0
+    angle = math.degrees(math.atan2(z.imag, z.real) / 4.0)
+    return (45.0 if angle <= -45.0 else angle), abs(z) / total
+
+
 def find_plans(geoms: Sequence[CadGeometry], texts: Sequence[CadText], rules: LayerRules,
                plan: PlanArg = None, gap: float = GAP, progress=None):
     """Group the sheet's structural geometry into plans and select one.
 
     Returns ``(plans, keep_geom, keep_text, dropped_frames)``: ``plans`` a list of PlanInfo (index 0 =
     the default plan, the selected one flagged), boolean masks over ``geoms`` and ``texts`` of what lies
-    in the selected plan, and the number of frame/legend geometries left out."""
+    in the selected plan, and the number of frame/legend geometries left out.
+
+    The groups' boxes, the bands that split an elevation off and the titles' reach are taken along the
+    axes: a plan whose walls run at an angle (``ALIGN_MIN_DEG`` or more: a building drawn in site or
+    survey coordinates, a turned wing) is grouped turned onto its walls' direction, and each plan's
+    extent is the box of its turned box turned back."""
+    choice = parse_plan(plan)
+    if ALIGN_SHEET and not isinstance(choice, tuple):
+        angle, coherence = wall_direction(geoms)
+        if abs(angle) >= ALIGN_MIN_DEG and coherence >= ALIGN_MIN_COHERENCE:
+            return _find_plans_turned(geoms, texts, rules, plan, gap, angle)
+    return _find_plans(geoms, texts, rules, plan, gap)
+
+
+def _find_plans_turned(geoms, texts, rules, plan, gap, angle):
+    """``find_plans`` with the geometry and texts turned by ``-angle`` about the origin; the extents turned
+    back (the box of each turned box's corners)."""
+    import dataclasses
+
+    c, s = math.cos(math.radians(angle)), math.sin(math.radians(angle))
+    turn = np.array(((c, -s), (s, c)))  # row vectors @ turn: turned by -angle
+
+    def pts(xy):
+        return np.asarray(xy, np.float64) @ turn
+
+    tg = [dataclasses.replace(g, coords=pts(g.coords[:, :2])) for g in geoms]
+    tt = []
+    for t in texts:
+        (x, y), = pts([(t.x, t.y)])
+        tt.append(dataclasses.replace(t, x=float(x), y=float(y)))
+    plans, keep, tkeep, n_frames = _find_plans(tg, tt, rules, plan, gap)
+    for p in plans:
+        x0, y0, x1, y1 = p.extent
+        back = np.array(((x0, y0), (x1, y0), (x1, y1), (x0, y1))) @ turn.T
+        p.extent = (*(float(v) for v in back.min(axis=0)), *(float(v) for v in back.max(axis=0)))
+    return plans, keep, tkeep, n_frames
+
+
+def _find_plans(geoms: Sequence[CadGeometry], texts: Sequence[CadText], rules: LayerRules,
+                plan: PlanArg = None, gap: float = GAP):
+    """``find_plans`` in the CAD frame as it is."""
     from scipy.sparse import coo_matrix
     from scipy.sparse.csgraph import connected_components
     from scipy.spatial import cKDTree
