@@ -341,7 +341,8 @@ def split_elevations(allp: np.ndarray, plab: np.ndarray, ncomp: int, texts: Sequ
 
 
 ALIGN_SHEET = True  # a plan whose walls run at an angle to the CAD frame is grouped in the frame of its walls ...
-ALIGN_MIN_DEG = 7.5  # ... when they are at least this far from the axes (degrees; as segmentation.ALIGN_MIN_DEG)
+ALIGN_MIN_DEG = 1.0  # ... when they are at least this far from the axes (degrees): 1 degree turns a 1.5 m band
+#                     by 1.5 m over 86 m, the width of a large plan
 ALIGN_MIN_COHERENCE = 0.25  # ... and have a dominant direction at all (see ``wall_direction``)
 
 
@@ -376,44 +377,24 @@ def find_plans(geoms: Sequence[CadGeometry], texts: Sequence[CadText], rules: La
     in the selected plan, and the number of frame/legend geometries left out.
 
     The groups' boxes, the bands that split an elevation off and the titles' reach are taken along the
-    axes: a plan whose walls run at an angle (``ALIGN_MIN_DEG`` or more: a building drawn in site or
-    survey coordinates, a turned wing) is grouped turned onto its walls' direction, and each plan's
-    extent is the box of its turned box turned back."""
+    axes: on a plan whose walls run at an angle (``ALIGN_MIN_DEG`` or more: a building drawn in site or
+    survey coordinates, a turned sheet) they are taken along its walls' directions instead. The extents
+    returned and the texts kept are in the CAD frame either way."""
     choice = parse_plan(plan)
     if ALIGN_SHEET and not isinstance(choice, tuple):
         angle, coherence = wall_direction(geoms)
         if abs(angle) >= ALIGN_MIN_DEG and coherence >= ALIGN_MIN_COHERENCE:
-            return _find_plans_turned(geoms, texts, rules, plan, gap, angle)
+            c, s = math.cos(math.radians(angle)), math.sin(math.radians(angle))
+            return _find_plans(geoms, texts, rules, plan, gap, turn=np.array(((c, -s), (s, c))))
     return _find_plans(geoms, texts, rules, plan, gap)
 
 
-def _find_plans_turned(geoms, texts, rules, plan, gap, angle):
-    """``find_plans`` with the geometry and texts turned by ``-angle`` about the origin; the extents turned
-    back (the box of each turned box's corners)."""
+def _find_plans(geoms: Sequence[CadGeometry], texts: Sequence[CadText], rules: LayerRules,
+                plan: PlanArg = None, gap: float = GAP, turn: Optional[np.ndarray] = None):
+    """``find_plans``; ``turn`` (2x2, row vectors @ turn): the frame of the walls' directions, in which the
+    elevation bands, the groups' boxes and the titles' reach are judged (None: the CAD frame)."""
     import dataclasses
 
-    c, s = math.cos(math.radians(angle)), math.sin(math.radians(angle))
-    turn = np.array(((c, -s), (s, c)))  # row vectors @ turn: turned by -angle
-
-    def pts(xy):
-        return np.asarray(xy, np.float64) @ turn
-
-    tg = [dataclasses.replace(g, coords=pts(g.coords[:, :2])) for g in geoms]
-    tt = []
-    for t in texts:
-        (x, y), = pts([(t.x, t.y)])
-        tt.append(dataclasses.replace(t, x=float(x), y=float(y)))
-    plans, keep, tkeep, n_frames = _find_plans(tg, tt, rules, plan, gap)
-    for p in plans:
-        x0, y0, x1, y1 = p.extent
-        back = np.array(((x0, y0), (x1, y0), (x1, y1), (x0, y1))) @ turn.T
-        p.extent = (*(float(v) for v in back.min(axis=0)), *(float(v) for v in back.max(axis=0)))
-    return plans, keep, tkeep, n_frames
-
-
-def _find_plans(geoms: Sequence[CadGeometry], texts: Sequence[CadText], rules: LayerRules,
-                plan: PlanArg = None, gap: float = GAP):
-    """``find_plans`` in the CAD frame as it is."""
     from scipy.sparse import coo_matrix
     from scipy.sparse.csgraph import connected_components
     from scipy.spatial import cKDTree
@@ -448,7 +429,12 @@ def _find_plans(geoms: Sequence[CadGeometry], texts: Sequence[CadText], rules: L
     ncomp, clab = connected_components(graph, directed=False)
     plab = clab[inv]
     n_joined = ncomp
-    plab, ncomp, _ = split_elevations(allp, plab, ncomp, texts, rules)
+    allo, texts_d = allp, texts  # the CAD frame: the extents returned and the texts kept
+    if turn is not None:  # boxes, bands and titles' reach along the walls' directions
+        allp = allp @ turn
+        tp = np.array([(t.x, t.y) for t in texts], dtype=np.float64).reshape(-1, 2) @ turn
+        texts_d = [dataclasses.replace(t, x=float(x), y=float(y)) for t, (x, y) in zip(texts, tp)]
+    plab, ncomp, _ = split_elevations(allp, plab, ncomp, texts_d, rules)
     # a geometry's samples are at most SAMPLE apart, so all of them fall in one group
     geom_group = np.full(n, -1, dtype=np.int64)
     geom_group[own] = plab
@@ -461,12 +447,19 @@ def _find_plans(geoms: Sequence[CadGeometry], texts: Sequence[CadText], rules: L
     np.minimum.at(ext[:, 1], plab, allp[:, 1])
     np.maximum.at(ext[:, 2], plab, allp[:, 0])
     np.maximum.at(ext[:, 3], plab, allp[:, 1])
+    exto = ext.copy()
+    if turn is not None:
+        exto[:] = (np.inf, np.inf, -np.inf, -np.inf)
+        np.minimum.at(exto[:, 0], plab, allo[:, 0])
+        np.minimum.at(exto[:, 1], plab, allo[:, 1])
+        np.maximum.at(exto[:, 2], plab, allo[:, 0])
+        np.maximum.at(exto[:, 3], plab, allo[:, 1])
     mass = np.where(wall > 0, wall, 0.0)
     if mass.max() <= 0:  # no wall layer at all (spaghetti drawings on reference layers): all structure counts
         mass = total.copy()
     # islands inside a larger group's box (free-standing columns in a hall, a kiosk in an atrium) belong
     # to it, unless a title says they are a detail view
-    tk = _title_kinds(texts, rules)
+    tk = _title_kinds(texts_d, rules)
     own = _own_titles(tk, ext)
     titles = [_title_of(tuple(ext[k]), own[k], rules) for k in range(ncomp)]
     for k in range(n_joined, ncomp):  # elevations split off: never merged back as a wing
@@ -516,12 +509,14 @@ def _find_plans(geoms: Sequence[CadGeometry], texts: Sequence[CadText], rules: L
         plab = new[plab]
         geom_group = np.where(geom_group >= 0, new[np.maximum(geom_group, 0)], -1)
         ext2 = np.tile(np.array([np.inf, np.inf, -np.inf, -np.inf]), (len(uniq_roots), 1))
+        exto2 = ext2.copy()
         for k in range(ncomp):
             j = new[k]
-            ext2[j, :2] = np.minimum(ext2[j, :2], ext[k, :2])
-            ext2[j, 2:] = np.maximum(ext2[j, 2:], ext[k, 2:])
+            for e2, e1 in ((ext2, ext), (exto2, exto)):
+                e2[j, :2] = np.minimum(e2[j, :2], e1[k, :2])
+                e2[j, 2:] = np.maximum(e2[j, 2:], e1[k, 2:])
         wall, total, mass = (np.bincount(new, weights=v, minlength=len(uniq_roots)) for v in (wall, total, mass))
-        ext, ncomp = ext2, len(uniq_roots)
+        ext, exto, ncomp = ext2, exto2, len(uniq_roots)
     infos = []
     own = _own_titles(tk, ext)
     biggest = float(mass.max())
@@ -543,7 +538,8 @@ def _find_plans(geoms: Sequence[CadGeometry], texts: Sequence[CadText], rules: L
             kind = "detail" if diag < DETAIL_SIZE_SHARE * big_diag else "other"
         else:
             kind = "plan"
-        infos.append([k, PlanInfo(index=-1, extent=e, wall_length=round(float(mass[k]), 2), title=title, kind=kind)])
+        infos.append([k, PlanInfo(index=-1, extent=tuple(float(v) for v in exto[k]), wall_length=round(float(mass[k]), 2),
+                                  title=title, kind=kind)])
     if not any(info.kind != "other" for _, info in infos):
         # nothing on the sheet is plan-sized: a small drawing, not a sheet; keep it whole
         allc = np.concatenate([g.coords[np.isfinite(g.coords).all(axis=1)] for g in geoms])
@@ -597,7 +593,7 @@ def _find_plans(geoms: Sequence[CadGeometry], texts: Sequence[CadText], rules: L
     keep = geom_group == k
     # non-structural geometry kept by the import (doors when asked, hatches...) follows the nearest group
     others = np.flatnonzero((geom_group < 0) & ~frames)
-    tree = cKDTree(allp)
+    tree = cKDTree(allo)
     if len(others):
         cen = np.array([np.nanmean(geoms[i].coords, axis=0) for i in others])
         ok = np.isfinite(cen).all(axis=1)
@@ -610,7 +606,11 @@ def _find_plans(geoms: Sequence[CadGeometry], texts: Sequence[CadText], rules: L
         hit = np.isfinite(d)
         jj = np.where(hit, j, 0)
         x0, y0, x1, y1 = plans[sel].extent
-        inside = (texts_xy[:, 0] >= x0) & (texts_xy[:, 0] <= x1) & (texts_xy[:, 1] >= y0) & (texts_xy[:, 1] <= y1)
+        txy = texts_xy
+        if turn is not None:  # (a whole small drawing returned above: k is a group here)
+            x0, y0, x1, y1 = ext[k]  # the plan's box along its walls (the CAD frame's box has empty corners)
+            txy = texts_xy @ turn
+        inside = (txy[:, 0] >= x0) & (txy[:, 0] <= x1) & (txy[:, 1] >= y0) & (txy[:, 1] <= y1)
         tkeep = (hit & (plab[jj] == k)) | (inside & ~hit)
     else:
         tkeep = np.zeros(0, dtype=bool)
