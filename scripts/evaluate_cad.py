@@ -76,11 +76,12 @@ def transformed(deg: float = 0.0, mirror: bool = False, scale: float = 1.0):
     """While active, every drawing the importer reads is turned by ``deg`` about the median of its geometry,
     mirrored and scaled: the exploded pieces, texts (position, rotation, height), and the hidden stair / lift
     symbols, exactly as an INSERT of the model space with that transform would explode (cad_explode). Nothing
-    changes when the transform is the identity."""
+    changes when the transform is the identity. Yields ``forward(xy, unit)``: (n, 2) metres of the last drawing
+    read, as delivered (``unit``: metres per drawing unit), in the transformed drawing's frame."""
     from algorithms import cad_explode, cad_import, cad_units
 
     if not deg % 360 and not mirror and scale == 1.0:
-        yield
+        yield lambda xy, unit=1.0: np.asarray(xy, np.float64)
         return
     if not (scale > 0 and math.isfinite(scale)):
         raise InputError(f"--scale must be a positive number, got {scale}")
@@ -123,8 +124,11 @@ def transformed(deg: float = 0.0, mirror: bool = False, scale: float = 1.0):
 
     cad_import._explode, cad_explode.hidden_symbols = explode, hidden
     cad_import._header_unit = lambda doc: _header_after(cad_units._header_unit(doc), scale)
+    def forward(xy, unit=1.0):
+        return move(np.asarray(xy, np.float64), centre.get("last", np.zeros(2)), unit)
+
     try:
-        yield
+        yield forward
     finally:
         cad_import._explode, cad_explode.hidden_symbols, cad_import._header_unit = orig_explode, orig_hidden, orig_header
 
