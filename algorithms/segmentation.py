@@ -3087,125 +3087,6 @@ def room_name_points(texts, rules=None) -> np.ndarray:
     return np.asarray(pts, dtype=np.float64).reshape(-1, 2)
 
 
-# --------------------------------------------------------------------------- walls at an angle
-ALIGN_WALLS = False  # a map whose walls run at an angle to the raster is segmented turned onto the axes ...
-ALIGN_MIN_DEG = 7.5  # ... when its dominant wall direction is at least this far from them (degrees) ...
-ALIGN_MIN_COHERENCE = 0.25  # ... and the walls have a dominant direction at all (see ``wall_direction``)
-
-
-def wall_direction(data: np.ndarray) -> Tuple[float, float]:
-    """The dominant direction of the walls of an occupancy raster, modulo 90 degrees: ``(angle, coherence)``.
-    ``angle`` in (-45, 45] degrees, counter-clockwise as the raster is shown (rows down): turning the raster
-    by ``angle`` (``raster_io.rotate_raster``) brings its walls onto the axes. Every boundary between free
-    and non-free space votes with its gradient (a blurred mask, so a scanned or rasterized staircase votes
-    for the line it follows), on the quadrupled angle (walls and the walls square to them agree);
-    ``coherence`` in [0, 1] is the length of the mean vote: about 0.4-0.8 on rectilinear buildings, near 0
-    where no direction dominates (round or organic plans)."""
-    import cv2
-
-    obst = (np.asarray(data) != FREE).astype(np.float32)
-    if obst.size == 0 or obst.min() == obst.max():
-        return 0.0, 0.0
-    b = cv2.GaussianBlur(obst, (0, 0), 1.5)
-    gx = cv2.Sobel(b, cv2.CV_32F, 1, 0, ksize=3)
-    gy = cv2.Sobel(b, cv2.CV_32F, 0, 1, ksize=3)
-    mag = np.hypot(gx, gy, dtype=np.float64)
-    total = float(mag.sum())
-    if total <= 0:
-        return 0.0, 0.0
-    th = np.arctan2(gy, gx, dtype=np.float64)
-    z = complex(float((mag * np.cos(4 * th)).sum()), float((mag * np.sin(4 * th)).sum()))
-    # angles on the raster (rows down) run clockwise as shown: walls at +a there are turned onto the axes
-    # by a counter-clockwise turn of a
-    angle = math.degrees(math.atan2(z.imag, z.real) / 4.0)
-    return (45.0 if angle <= -45.0 else angle), abs(z) / total
-
-
-def _segment_aligned(grid: OccupancyGrid, angle: float, coherence: float, *, door_width, corridor_width, delta,
-                     prune, progress, envelope_gap, inside_points, door_hints, footprint, boundary) -> AreaGraph:
-    """``segment`` of a grid whose walls run at ``angle`` to the axes: the raster (and the room-name points,
-    door hints and boundary lines) turned by ``angle`` onto the axes, segmented there, and the labels taken
-    back to the grid by nearest neighbour; the polygons and passages are traced again on the grid (pixel
-    edges, as always), types and clearances come from the turned segmentation. Free pixels whose turned
-    position fell on a wall (rounding, along the walls) take the label of the nearest labelled pixel."""
-    import dataclasses
-
-    import cv2
-    from scipy import ndimage
-
-    from .raster_io import rotate_raster
-
-    t_all = time.perf_counter()
-    res = float(grid.resolution)
-    data = grid.data
-    rdata, m = rotate_raster(data, angle)
-    rgrid = OccupancyGrid(rdata, 0.0, 0.0, res, grid.crs_wkt)
-    progress.info(f"walls at {angle:.1f} degrees to the raster (coherence {coherence:.2f}): segmented turned onto "
-                  "the axes")
-
-    def to_turned(x, y):  # world metres -> the turned grid's world metres (pixel corners throughout)
-        c, r = grid.world_to_pixel(np.asarray(x, np.float64), np.asarray(y, np.float64))
-        c2 = m[0, 0] * (c - 0.5) + m[0, 1] * (r - 0.5) + m[0, 2] + 0.5
-        r2 = m[1, 0] * (c - 0.5) + m[1, 1] * (r - 0.5) + m[1, 2] + 0.5
-        return rgrid.pixel_to_world(c2, r2)
-
-    pts = None
-    if inside_points is not None and len(inside_points):
-        xy = np.asarray(inside_points, dtype=np.float64).reshape(-1, 2)
-        pts = np.stack(to_turned(xy[:, 0], xy[:, 1]), axis=1)
-    hints = None
-    if door_hints:
-        hints = []
-        for h in door_hints:
-            (x0, x1), (y0, y1) = to_turned([h.x0, h.x1], [h.y0, h.y1])
-            hints.append(dataclasses.replace(h, x0=float(x0), y0=float(y0), x1=float(x1), y1=float(y1)))
-    rbound = rotate_raster(boundary, angle, fill=False)[0] if boundary is not None else None
-    ag = _segment(rgrid, door_width, corridor_width, delta, prune, progress.sub(0, 90), envelope_gap, pts, hints,
-                  footprint, rbound)
-    # back: every grid pixel takes the label of its turned position
-    rows, cols = data.shape
-    rr, cc = np.mgrid[0:rows, 0:cols].astype(np.float32)
-    mapx = (m[0, 0] * cc + m[0, 1] * rr + m[0, 2]).astype(np.float32)
-    mapy = (m[1, 0] * cc + m[1, 1] * rr + m[1, 2]).astype(np.float32)
-    del rr, cc
-    rl = ag.labels.astype(np.float32)  # remap reads float32 exactly up to 2^24 labels
-    labels = cv2.remap(rl, mapx, mapy, cv2.INTER_NEAREST, borderMode=cv2.BORDER_CONSTANT, borderValue=0)
-    src_free = cv2.remap((rdata == FREE).view(np.uint8), mapx, mapy, cv2.INTER_NEAREST,
-                         borderMode=cv2.BORDER_CONSTANT, borderValue=0).view(bool)
-    del mapx, mapy
-    labels = labels.astype(np.int32)
-    free = data == FREE
-    holes = free & ~src_free  # rounding put these free pixels on a wall of the turned raster
-    if holes.any() and labels.any():
-        _, (ir, ic) = ndimage.distance_transform_edt(labels == 0, return_indices=True)
-        near = labels[ir, ic]
-        grow = holes & (cv2.dilate((labels > 0).view(np.uint8), np.ones((3, 3), np.uint8)) > 0)
-        labels[grow] = near[grow]
-    if not door_hints:
-        labels[~free] = 0
-    group_peak = np.zeros(max(int(ag.labels.max()), 0) + 1)
-    for a in ag.areas:
-        group_peak[a.id] = a.max_clearance / res + 0.5
-    labels = _single_pieces(labels)
-    stats = dict(ag.stats)
-    stats.update(aligned_deg=float(angle), alignment_coherence=float(coherence), pixels=float(data.size),
-                 free_area_m2=float(free.sum()) * res * res)
-    skel = ag.skeleton
-    if skel is not None:  # the skeleton's pixels on the grid (nearest pixel of each turned pixel)
-        inv = cv2.invertAffineTransform(m)
-        rcols = rdata.shape[1]
-
-        def back(flat):
-            r2, c2 = np.divmod(np.asarray(flat, np.int64), rcols)
-            c = np.clip(np.rint(inv[0, 0] * c2 + inv[0, 1] * r2 + inv[0, 2]), 0, cols - 1).astype(np.int64)
-            r = np.clip(np.rint(inv[1, 0] * c2 + inv[1, 1] * r2 + inv[1, 2]), 0, rows - 1).astype(np.int64)
-            return r * cols + c
-
-        skel = dataclasses.replace(skel, shape=data.shape, node_pixels=[back(p) for p in skel.node_pixels],
-                                   edge_pixels=[back(p) for p in skel.edge_pixels])
-    return _area_graph(labels, grid, group_peak, door_hints, stats, progress, skel, t_all)
-
-
 def segment(grid: OccupancyGrid, door_width: float = DEFAULT_DOOR_WIDTH,
             corridor_width: float = DEFAULT_CORRIDOR_WIDTH, delta: float = DEFAULT_DELTA,
             prune: float = DEFAULT_PRUNE, progress: Optional[Progress] = None,
@@ -3232,22 +3113,6 @@ def segment(grid: OccupancyGrid, door_width: float = DEFAULT_DOOR_WIDTH,
     evidence where they close a space (``supported_boundary``), never walls.
     """
     progress = ensure(progress)
-    if ALIGN_WALLS:
-        _check_inputs(grid, door_width, corridor_width, delta, prune)
-        angle, coherence = wall_direction(grid.data)
-        if abs(angle) >= ALIGN_MIN_DEG and coherence >= ALIGN_MIN_COHERENCE:
-            return _segment_aligned(grid, angle, coherence, door_width=door_width, corridor_width=corridor_width,
-                                    delta=delta, prune=prune, progress=progress, envelope_gap=envelope_gap,
-                                    inside_points=inside_points, door_hints=door_hints, footprint=footprint,
-                                    boundary=boundary)
-    return _segment(grid, door_width, corridor_width, delta, prune, progress, envelope_gap, inside_points,
-                    door_hints, footprint, boundary)
-
-
-def _segment(grid: OccupancyGrid, door_width: float, corridor_width: float, delta: float, prune: float,
-             progress: Progress, envelope_gap: float, inside_points, door_hints, footprint: bool,
-             boundary: Optional[np.ndarray]) -> AreaGraph:
-    """``segment`` on the grid as it is (its rules read wall lines, openings and kernels along the axes)."""
     t_all = time.perf_counter()
     stats: Dict[str, float] = {}
     data, alpha = _check_inputs(grid, door_width, corridor_width, delta, prune)
@@ -3393,15 +3258,6 @@ def _segment(grid: OccupancyGrid, door_width: float, corridor_width: float, delt
     stats["merge_s"] = time.perf_counter() - t
     progress.step(65, f"merged into {int(labels.max())} areas")
 
-    return _area_graph(labels, grid, group_peak, door_hints, stats, progress, skel, t_all)
-
-
-def _area_graph(labels: np.ndarray, grid: OccupancyGrid, group_peak: np.ndarray, door_hints, stats: dict,
-                progress: Progress, skel, t_all: float) -> AreaGraph:
-    """The Area Graph of a label raster on ``grid``: pixel-edge polygons, passages across the openings
-    (and the door hints' where no opening joins), area types from the clearance peaks (``group_peak``, px
-    + 0.5), consecutive ids, components; ``stats`` gets the counts and seconds."""
-    res = float(grid.resolution)
     t = time.perf_counter()
     polys = label_polygons(labels, grid)
     stats["polygons_s"] = time.perf_counter() - t
