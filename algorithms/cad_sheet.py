@@ -606,11 +606,7 @@ def _find_plans(geoms: Sequence[CadGeometry], texts: Sequence[CadText], rules: L
         hit = np.isfinite(d)
         jj = np.where(hit, j, 0)
         x0, y0, x1, y1 = plans[sel].extent
-        txy = texts_xy
-        if turn is not None:  # (a whole small drawing returned above: k is a group here)
-            x0, y0, x1, y1 = ext[k]  # the plan's box along its walls (the CAD frame's box has empty corners)
-            txy = texts_xy @ turn
-        inside = (txy[:, 0] >= x0) & (txy[:, 0] <= x1) & (txy[:, 1] >= y0) & (txy[:, 1] <= y1)
+        inside = (texts_xy[:, 0] >= x0) & (texts_xy[:, 0] <= x1) & (texts_xy[:, 1] >= y0) & (texts_xy[:, 1] <= y1)
         tkeep = (hit & (plab[jj] == k)) | (inside & ~hit)
     else:
         tkeep = np.zeros(0, dtype=bool)

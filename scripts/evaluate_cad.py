@@ -98,8 +98,10 @@ def transformed(deg: float = 0.0, mirror: bool = False, scale: float = 1.0, shif
 
     orig_explode, orig_hidden, orig_header = cad_import._explode, cad_explode.hidden_symbols, cad_import._header_unit
 
-    def explode(path, *args, **kwargs):
-        raw = orig_explode(path, *args, **kwargs)
+    def explode(path, tol_du, *args, **kwargs):
+        # curves flattened to the same chord in metres: the drawing's own units are 1 / scale of the new ones
+        raw = orig_explode(path, tol_du / scale, *args, **kwargs)
+        raw.tol = tol_du
         p = raw.pieces
         if path not in centre:
             pts = np.concatenate([c_[:, :2] for c_ in p.coords if len(c_)] or [np.zeros((1, 2))])

@@ -9,7 +9,7 @@ import numpy as np
 import pytest
 
 from algorithms import pipeline
-from algorithms.cad_classify import _leaf_and_arc
+from algorithms.cad_classify import _circle_from_3, _leaf_and_arc
 from algorithms.cad_import import import_dxf
 from algorithms.errors import InputError
 
@@ -39,6 +39,17 @@ def _save(doc, tmp_path, name="t.dxf"):
     p = tmp_path / name
     doc.saveas(p)
     return str(p)
+
+
+@pytest.mark.parametrize("ox, oy", [(0.0, 0.0), (1.2e4, -6.4e3), (5e5, 3.5e6), (5e5, 9.5e6)])
+def test_swing_circle_in_georeferenced_coordinates(ox, oy):
+    """The three-point circle of a door swing (a 0.9 m leaf) in site or UTM coordinates (southern northings
+    near 10^7 m): the squares of the coordinates cancel in float64 (r came out 0.98 m at 10^7, beyond the
+    swing test's 2 cm), so the circle is computed again relative to the first point where it is off."""
+    pts = [(ox + 0.9 * math.cos(t), oy + 0.9 * math.sin(t)) for t in np.radians([0.0, 45.0, 90.0])]
+    cx, cy, r = _circle_from_3(*pts)
+    assert abs(r - 0.9) < 1e-6 and abs(cx - ox) < 1e-6 and abs(cy - oy) < 1e-6
+    assert _circle_from_3((ox, oy), (ox + 1.0, oy), (ox + 2.0, oy)) is None  # on a line
 
 
 def test_leaf_and_arc_polyline_shape():
