@@ -17,6 +17,21 @@ WIDE_SWEEP = 185.0  # degrees: a door drawn opening flat against the wall (half 
 
 
 def _circle_from_3(p0, p1, p2):
+    """(cx, cy, r) of the circle through three points, None when they are (nearly) on a line. Where the
+    squares of the coordinates lose the circle (georeferenced drawings: UTM coordinates of 10^6 m, whose
+    squares cancel to nothing in float64) it is computed again relative to ``p0``."""
+    circ = _circle_at(p0, p1, p2)
+    if circ is not None:
+        ux, uy, r = circ
+        tol = 1e-6 * max(1.0, r)
+        if abs(math.hypot(p1[0] - ux, p1[1] - uy) - r) <= tol and abs(math.hypot(p2[0] - ux, p2[1] - uy) - r) <= tol:
+            return circ
+    ox, oy = float(p0[0]), float(p0[1])
+    circ = _circle_at((0.0, 0.0), (p1[0] - ox, p1[1] - oy), (p2[0] - ox, p2[1] - oy))
+    return None if circ is None else (circ[0] + ox, circ[1] + oy, circ[2])
+
+
+def _circle_at(p0, p1, p2):
     ax, ay = p0
     bx, by = p1
     cx, cy = p2

@@ -340,13 +340,61 @@ def split_elevations(allp: np.ndarray, plab: np.ndarray, ncomp: int, texts: Sequ
     return plab, ncomp, split
 
 
+ALIGN_SHEET = True  # a plan whose walls run at an angle to the CAD frame is grouped in the frame of its walls ...
+ALIGN_MIN_DEG = 1.0  # ... when they are at least this far from the axes (degrees): 1 degree turns a 1.5 m band
+#                     by 1.5 m over 86 m, the width of a large plan
+ALIGN_MIN_COHERENCE = 0.25  # ... and have a dominant direction at all (see ``wall_direction``)
+
+
+def wall_direction(geoms: Sequence[CadGeometry]) -> Tuple[float, float]:
+    """The dominant direction of the wall geometry, modulo 90 degrees: ``(angle, coherence)``, ``angle`` in
+    (-45, 45] degrees counter-clockwise in the CAD frame, ``coherence`` in [0, 1] (1: every wall segment
+    parallel or square to it). Each segment of a wall-kind geometry votes with its length on its quadrupled
+    angle (walls and the walls square to them agree)."""
+    z = 0j
+    total = 0.0
+    for g in geoms:
+        if g.kind not in WALL_KINDS or len(g.coords) < 2:
+            continue
+        d = np.diff(g.coords[:, :2], axis=0)
+        d = d[np.isfinite(d).all(axis=1)]
+        length = np.hypot(d[:, 0], d[:, 1])
+        a = 4.0 * np.arctan2(d[:, 1], d[:, 0])
+        z += complex(float((length * np.cos(a)).sum()), float((length * np.sin(a)).sum()))
+        total += float(length.sum())
+    if total <= 0:
+        return 0.0, 0.0
+    angle = math.degrees(math.atan2(z.imag, z.real) / 4.0)
+    return (45.0 if angle <= -45.0 else angle), abs(z) / total
+
+
 def find_plans(geoms: Sequence[CadGeometry], texts: Sequence[CadText], rules: LayerRules,
                plan: PlanArg = None, gap: float = GAP, progress=None):
     """Group the sheet's structural geometry into plans and select one.
 
     Returns ``(plans, keep_geom, keep_text, dropped_frames)``: ``plans`` a list of PlanInfo (index 0 =
     the default plan, the selected one flagged), boolean masks over ``geoms`` and ``texts`` of what lies
-    in the selected plan, and the number of frame/legend geometries left out."""
+    in the selected plan, and the number of frame/legend geometries left out.
+
+    The groups' boxes, the bands that split an elevation off and the titles' reach are taken along the
+    axes: on a plan whose walls run at an angle (``ALIGN_MIN_DEG`` or more: a building drawn in site or
+    survey coordinates, a turned sheet) they are taken along its walls' directions instead. The extents
+    returned and the texts kept are in the CAD frame either way."""
+    choice = parse_plan(plan)
+    if ALIGN_SHEET and not isinstance(choice, tuple):
+        angle, coherence = wall_direction(geoms)
+        if abs(angle) >= ALIGN_MIN_DEG and coherence >= ALIGN_MIN_COHERENCE:
+            c, s = math.cos(math.radians(angle)), math.sin(math.radians(angle))
+            return _find_plans(geoms, texts, rules, plan, gap, turn=np.array(((c, -s), (s, c))))
+    return _find_plans(geoms, texts, rules, plan, gap)
+
+
+def _find_plans(geoms: Sequence[CadGeometry], texts: Sequence[CadText], rules: LayerRules,
+                plan: PlanArg = None, gap: float = GAP, turn: Optional[np.ndarray] = None):
+    """``find_plans``; ``turn`` (2x2, row vectors @ turn): the frame of the walls' directions, in which the
+    elevation bands, the groups' boxes and the titles' reach are judged (None: the CAD frame)."""
+    import dataclasses
+
     from scipy.sparse import coo_matrix
     from scipy.sparse.csgraph import connected_components
     from scipy.spatial import cKDTree
@@ -381,7 +429,12 @@ def find_plans(geoms: Sequence[CadGeometry], texts: Sequence[CadText], rules: La
     ncomp, clab = connected_components(graph, directed=False)
     plab = clab[inv]
     n_joined = ncomp
-    plab, ncomp, _ = split_elevations(allp, plab, ncomp, texts, rules)
+    allo, texts_d = allp, texts  # the CAD frame: the extents returned and the texts kept
+    if turn is not None:  # boxes, bands and titles' reach along the walls' directions
+        allp = allp @ turn
+        tp = np.array([(t.x, t.y) for t in texts], dtype=np.float64).reshape(-1, 2) @ turn
+        texts_d = [dataclasses.replace(t, x=float(x), y=float(y)) for t, (x, y) in zip(texts, tp)]
+    plab, ncomp, _ = split_elevations(allp, plab, ncomp, texts_d, rules)
     # a geometry's samples are at most SAMPLE apart, so all of them fall in one group
     geom_group = np.full(n, -1, dtype=np.int64)
     geom_group[own] = plab
@@ -394,12 +447,19 @@ def find_plans(geoms: Sequence[CadGeometry], texts: Sequence[CadText], rules: La
     np.minimum.at(ext[:, 1], plab, allp[:, 1])
     np.maximum.at(ext[:, 2], plab, allp[:, 0])
     np.maximum.at(ext[:, 3], plab, allp[:, 1])
+    exto = ext.copy()
+    if turn is not None:
+        exto[:] = (np.inf, np.inf, -np.inf, -np.inf)
+        np.minimum.at(exto[:, 0], plab, allo[:, 0])
+        np.minimum.at(exto[:, 1], plab, allo[:, 1])
+        np.maximum.at(exto[:, 2], plab, allo[:, 0])
+        np.maximum.at(exto[:, 3], plab, allo[:, 1])
     mass = np.where(wall > 0, wall, 0.0)
     if mass.max() <= 0:  # no wall layer at all (spaghetti drawings on reference layers): all structure counts
         mass = total.copy()
     # islands inside a larger group's box (free-standing columns in a hall, a kiosk in an atrium) belong
     # to it, unless a title says they are a detail view
-    tk = _title_kinds(texts, rules)
+    tk = _title_kinds(texts_d, rules)
     own = _own_titles(tk, ext)
     titles = [_title_of(tuple(ext[k]), own[k], rules) for k in range(ncomp)]
     for k in range(n_joined, ncomp):  # elevations split off: never merged back as a wing
@@ -449,12 +509,14 @@ def find_plans(geoms: Sequence[CadGeometry], texts: Sequence[CadText], rules: La
         plab = new[plab]
         geom_group = np.where(geom_group >= 0, new[np.maximum(geom_group, 0)], -1)
         ext2 = np.tile(np.array([np.inf, np.inf, -np.inf, -np.inf]), (len(uniq_roots), 1))
+        exto2 = ext2.copy()
         for k in range(ncomp):
             j = new[k]
-            ext2[j, :2] = np.minimum(ext2[j, :2], ext[k, :2])
-            ext2[j, 2:] = np.maximum(ext2[j, 2:], ext[k, 2:])
+            for e2, e1 in ((ext2, ext), (exto2, exto)):
+                e2[j, :2] = np.minimum(e2[j, :2], e1[k, :2])
+                e2[j, 2:] = np.maximum(e2[j, 2:], e1[k, 2:])
         wall, total, mass = (np.bincount(new, weights=v, minlength=len(uniq_roots)) for v in (wall, total, mass))
-        ext, ncomp = ext2, len(uniq_roots)
+        ext, exto, ncomp = ext2, exto2, len(uniq_roots)
     infos = []
     own = _own_titles(tk, ext)
     biggest = float(mass.max())
@@ -476,7 +538,8 @@ def find_plans(geoms: Sequence[CadGeometry], texts: Sequence[CadText], rules: La
             kind = "detail" if diag < DETAIL_SIZE_SHARE * big_diag else "other"
         else:
             kind = "plan"
-        infos.append([k, PlanInfo(index=-1, extent=e, wall_length=round(float(mass[k]), 2), title=title, kind=kind)])
+        infos.append([k, PlanInfo(index=-1, extent=tuple(float(v) for v in exto[k]), wall_length=round(float(mass[k]), 2),
+                                  title=title, kind=kind)])
     if not any(info.kind != "other" for _, info in infos):
         # nothing on the sheet is plan-sized: a small drawing, not a sheet; keep it whole
         allc = np.concatenate([g.coords[np.isfinite(g.coords).all(axis=1)] for g in geoms])
@@ -530,7 +593,7 @@ def find_plans(geoms: Sequence[CadGeometry], texts: Sequence[CadText], rules: La
     keep = geom_group == k
     # non-structural geometry kept by the import (doors when asked, hatches...) follows the nearest group
     others = np.flatnonzero((geom_group < 0) & ~frames)
-    tree = cKDTree(allp)
+    tree = cKDTree(allo)
     if len(others):
         cen = np.array([np.nanmean(geoms[i].coords, axis=0) for i in others])
         ok = np.isfinite(cen).all(axis=1)

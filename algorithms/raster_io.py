@@ -212,3 +212,31 @@ def read_grid(path: str, resolution: Optional[float] = None, origin=(0.0, 0.0)) 
     else:  # a raster from another tool: image convention (dark = occupied), like PNG and ROS maps
         data = _classify(arr)
     return OccupancyGrid(data, float(gt[0]), float(gt[3]), float(gt[1]), ds.GetProjection() or "")
+
+
+def rotate_raster(img: np.ndarray, degrees: float, fill=None):
+    """``img`` (2-D, or 3-D with channels) turned counter-clockwise (as shown, rows down) by ``degrees`` about
+    its centre, nearest neighbour (occupancy values, labels and ground-truth colours stay exact), on a canvas
+    large enough that nothing is cut. The new corners take ``fill``, by default the value most common on the
+    image's border (what lies outside the map). Returns ``(turned, m)``: ``m`` the 2x3 affine matrix that
+    takes (col, row) pixel indices of ``img`` to those of ``turned``."""
+    import cv2
+
+    img = np.ascontiguousarray(img)
+    h, w = img.shape[:2]
+    if fill is None:
+        border = np.concatenate([img[0], img[-1], img[:, 0], img[:, -1]]).reshape(-1, *img.shape[2:])
+        vals, counts = np.unique(border, axis=0, return_counts=True)
+        fill = vals[int(np.argmax(counts))]
+    m = cv2.getRotationMatrix2D(((w - 1) / 2.0, (h - 1) / 2.0), float(degrees), 1.0)
+    c, s = abs(m[0, 0]), abs(m[0, 1])
+    nw, nh = int(math.ceil(w * c + h * s - 1e-9)) + 2, int(math.ceil(w * s + h * c - 1e-9)) + 2
+    m[0, 2] += (nw - w) / 2.0
+    m[1, 2] += (nh - h) / 2.0
+    fill = np.atleast_1d(fill)
+    border_value = tuple(float(v) for v in fill) + (0.0,) * (4 - fill.size)
+    dtype = img.dtype
+    src = img.view(np.uint8) if dtype == bool else img
+    out = cv2.warpAffine(src, m, (nw, nh), flags=cv2.INTER_NEAREST, borderMode=cv2.BORDER_CONSTANT,
+                         borderValue=border_value)
+    return (out.view(bool) if dtype == bool else out), m

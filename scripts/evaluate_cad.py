@@ -7,14 +7,21 @@ room names (conflicts), stairs / lifts found, semantic accuracy (named areas who
 inside them, %) and the ignored texts by reason. Totals over the plans with room text at the end.
 Nothing is written next to the drawings; the figures can be rerun on any folder.
 
-Usage: evaluate_cad.py [--data DIR ...] [--json FILE] [--files NAME ...] [--misses]
+Usage: evaluate_cad.py [--data DIR ...] [--json FILE] [--files NAME ...] [--misses] [--rotate DEG] [--mirror]
+                       [--scale F] [--shift DX DY]
 ``--misses`` lists, per plan, the room-name texts that miss and why (outside every area, only nearby, in an
 area holding another name, in an area named after another text): where to look on a new drawing.
+``--rotate DEG`` / ``--mirror`` / ``--scale F`` convert every drawing turned about its centre (counter-clockwise),
+mirrored (x -> -x) and its coordinates multiplied by F (the header unit follows when one fits: m -> cm at 100,
+else unitless): unseen drawings come at an angle, mirrored and in mm, cm or m. The transform is applied to the
+exploded drawing (as if the model space were one INSERT with that rotation, mirror and scale), DXF and DWG alike.
 Default data: ../shared/data/dxf/archweb and ../shared/data/dwg (relative to the repository).
 Exit status 0 when every plan converted, 1 otherwise.
 """
 import argparse
+import contextlib
 import json
+import math
 import os
 import sys
 import time
@@ -23,6 +30,8 @@ from pathlib import Path
 
 REPO = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(REPO))
+
+import numpy as np  # noqa: E402
 
 from algorithms import pipeline, semantics  # noqa: E402
 from algorithms.errors import InputError  # noqa: E402
@@ -43,6 +52,92 @@ def drawings(folders):
         for root, _, files in os.walk(folder):
             out.extend(Path(root) / f for f in sorted(files) if f.lower().endswith(EXTS))
     return sorted(out)
+
+
+def _similarity(deg: float, mirror: bool, scale: float) -> np.ndarray:
+    """2x2 matrix: mirror (x -> -x) first, then scale, then turn counter-clockwise by ``deg``."""
+    c, s = math.cos(math.radians(deg)), math.sin(math.radians(deg))
+    return np.array(((c, -s), (s, c))) @ np.diag((-scale if mirror else scale, scale))
+
+
+def _header_after(unit: str, scale: float) -> str:
+    """The header unit of a drawing whose coordinates were multiplied by ``scale``: the unit that keeps the
+    real size (m -> cm at 100, mm -> m at 0.001), else 'unitless'."""
+    from algorithms.cad_units import UNIT_SCALES
+
+    if unit not in UNIT_SCALES:
+        return unit
+    return next((u for u, f in UNIT_SCALES.items() if math.isclose(f, UNIT_SCALES[unit] / scale, rel_tol=1e-9)),
+                "unitless")
+
+
+@contextlib.contextmanager
+def transformed(deg: float = 0.0, mirror: bool = False, scale: float = 1.0, shift=(0.0, 0.0)):
+    """While active, every drawing the importer reads is turned by ``deg`` about the median of its geometry,
+    mirrored and scaled: the exploded pieces, texts (position, rotation, height), and the hidden stair / lift
+    symbols, exactly as an INSERT of the model space with that transform would explode (cad_explode); then moved
+    by ``shift`` metres (by the header unit; drawing units when it has none). Nothing changes when the
+    transform is the identity. Yields ``forward(xy, unit)``: (n, 2) metres of the last drawing
+    read, as delivered (``unit``: metres per drawing unit), in the transformed drawing's frame."""
+    from algorithms import cad_explode, cad_import, cad_units
+
+    if not deg % 360 and not mirror and scale == 1.0 and not any(shift):
+        yield lambda xy, unit=1.0: np.asarray(xy, np.float64)
+        return
+    if not (scale > 0 and math.isfinite(scale)):
+        raise InputError(f"--scale must be a positive number, got {scale}")
+    A = _similarity(deg, mirror, scale)
+    rot = math.degrees(math.atan2(A[1, 0], A[0, 0]))
+    centre = {}  # path -> (centre, shift) in drawing units: the same for both explodes and the hidden symbols
+
+    def move(xy, c, unit=1.0):  # c: (centre, shift); unit: metres per drawing unit of xy
+        return (np.asarray(xy, np.float64) - c[0] * unit) @ A.T + (c[0] + c[1]) * unit
+
+    def turn_texts(texts, c):
+        return [(*move((x, y), c), t, h * scale, (r + rot) % 360.0, *rest) for (x, y, t, h, r, *rest) in texts]
+
+    orig_explode, orig_hidden, orig_header = cad_import._explode, cad_explode.hidden_symbols, cad_import._header_unit
+
+    def explode(path, tol_du, *args, **kwargs):
+        # curves flattened to the same chord in metres: the drawing's own units are 1 / scale of the new ones
+        raw = orig_explode(path, tol_du / scale, *args, **kwargs)
+        raw.tol = tol_du
+        p = raw.pieces
+        if path not in centre:
+            pts = np.concatenate([c_[:, :2] for c_ in p.coords if len(c_)] or [np.zeros((1, 2))])
+            pts = pts[np.isfinite(pts).all(axis=1)]  # filled pieces separate their rings by NaN rows
+            per_unit = cad_units.UNIT_SCALES.get(raw.header_unit, 1.0)
+            centre["last"] = centre[path] = (np.median(pts, axis=0) if len(pts) else np.zeros(2),
+                                             np.asarray(shift, np.float64) / per_unit)
+        c = centre[path]
+        p.coords = [np.ascontiguousarray(move(c_[:, :2], c)) if len(c_) else c_ for c_ in p.coords]
+        p.width = [w * scale for w in p.width]
+        p.texts, p.hidden_texts = turn_texts(p.texts, c), turn_texts(p.hidden_texts, c)
+        raw.header_unit = _header_after(raw.header_unit, scale)
+        return raw
+
+    def hidden(doc, states, rules, unit, extent=None, **kw):
+        c = centre.get("last", (np.zeros(2), np.zeros(2)))
+        if extent is not None:  # the box in the drawing's own frame: the bounding box of the turned-back corners
+            x0, y0, x1, y1 = extent
+            back = ((np.array(((x0, y0), (x1, y0), (x1, y1), (x0, y1))) - (c[0] + c[1]) * unit) @ np.linalg.inv(A).T
+                    + c[0] * unit)
+            extent = (*back.min(axis=0), *back.max(axis=0))
+        out = orig_hidden(doc, states, rules, unit, extent, **kw)
+        for g in out:
+            g.coords = move(g.coords, c, unit)
+        return out
+
+    cad_import._explode, cad_explode.hidden_symbols = explode, hidden
+    cad_import._header_unit = lambda doc: _header_after(cad_units._header_unit(doc), scale)
+
+    def forward(xy, unit=1.0):
+        return move(np.asarray(xy, np.float64), centre.get("last", (np.zeros(2), np.zeros(2))), unit)
+
+    try:
+        yield forward
+    finally:
+        cad_import._explode, cad_explode.hidden_symbols, cad_import._header_unit = orig_explode, orig_hidden, orig_header
 
 
 def evaluate_plan(path, **kwargs):
@@ -135,7 +230,18 @@ def main(argv=None):
     ap.add_argument("--no-names", action="store_true", help="run without the room-name stage")
     ap.add_argument("--misses", action="store_true",
                     help="also list, per plan, the room-name texts that miss (outside, nearby, conflict, not own)")
+    ap.add_argument("--rotate", type=float, default=0.0, metavar="DEG",
+                    help="turn every drawing by DEG degrees (counter-clockwise) before the conversion")
+    ap.add_argument("--mirror", action="store_true", help="mirror every drawing (x -> -x) before the conversion")
+    ap.add_argument("--shift", type=float, nargs=2, default=(0.0, 0.0), metavar=("DX", "DY"),
+                    help="move every drawing by DX, DY metres (a fraction of a raster cell measures how much the "
+                         "figures depend on where the raster's cells fall)")
+    ap.add_argument("--scale", type=float, default=1.0, metavar="F",
+                    help="multiply every drawing's coordinates by F (the header unit follows where one fits)")
     args = ap.parse_args(argv)
+    if not (args.scale > 0 and math.isfinite(args.scale)):
+        print(f"--scale must be a positive number, got {args.scale}", file=sys.stderr)
+        return 2
     folders = args.data or [str(p) for p in DEFAULT_DATA]
     paths = drawings(folders)
     if args.files:
@@ -145,7 +251,8 @@ def main(argv=None):
         return 2
     results = []
     for p in paths:
-        r = evaluate_plan(p, names=not args.no_names)
+        with transformed(args.rotate, args.mirror, args.scale, args.shift):
+            r = evaluate_plan(p, names=not args.no_names)
         results.append(r)
         print(f"{p.name}: {'ok' if r['ok'] else 'FAILED'} ({r['seconds']:.1f} s)", file=sys.stderr, flush=True)
     tot = print_table(results)

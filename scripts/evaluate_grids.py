@@ -8,8 +8,9 @@ occupied, white = free, grey = unknown), optionally ``input_raw/NAME.png`` (the 
 ``gt/`` is scored at ``--resolution``). Each map is segmented with the default widths and, where
 maps.csv gives widths, with those too. Prints recall, precision, MCC and F1 per map and the means;
 with ``--out DIR`` writes ``scores.csv`` and side-by-side pictures (input | ground truth |
-segmentation | errors) of the ``--worst`` lowest-scoring maps.
-Usage: evaluate_grids.py [--data DIR] [--out DIR] [--raw] [--worst N] [--maps NAME ...]
+segmentation | errors) of the ``--worst`` lowest-scoring maps. ``--rotate DEG ...`` scores each map (and
+its ground truth) turned by those angles too: a SLAM map is rarely aligned with the axes.
+Usage: evaluate_grids.py [--data DIR] [--out DIR] [--raw] [--worst N] [--maps NAME ...] [--rotate DEG ...]
 """
 import argparse
 import csv
@@ -26,7 +27,7 @@ sys.path.insert(0, str(REPO))
 from algorithms import segmentation  # noqa: E402
 from algorithms.errors import InputError  # noqa: E402
 from algorithms.evaluate import evaluate, gt_rooms, read_gt_image  # noqa: E402
-from algorithms.raster_io import read_grid  # noqa: E402
+from algorithms.raster_io import read_grid, rotate_raster  # noqa: E402
 
 MEAN_TARGET = 0.90
 MAP_TARGET = 0.75
@@ -68,6 +69,16 @@ def _read_map(path: Path, resolution: float):
 
     img = cv2.imread(str(path), cv2.IMREAD_GRAYSCALE)
     return OccupancyGrid(_classify(img), 0.0, img.shape[0] * resolution, float(resolution))
+
+
+def rotate_map(grid, gt: np.ndarray, degrees: float):
+    """The occupancy grid and its ground-truth image turned together by ``degrees`` counter-clockwise
+    (``raster_io.rotate_raster``: nearest neighbour, padded with what lies outside each)."""
+    from algorithms.model import OccupancyGrid
+
+    data = rotate_raster(grid.data, degrees)[0]
+    return (OccupancyGrid(data, 0.0, data.shape[0] * grid.resolution, grid.resolution),
+            rotate_raster(gt, degrees)[0])
 
 
 def _colours(n: int, seed: int = 7) -> np.ndarray:
@@ -115,44 +126,48 @@ def side_by_side(grid, gt_img: np.ndarray, labels: np.ndarray, ev: dict, path: s
 
 
 def run(data: Path, out_dir=None, only=None, raw=False, worst=3, resolution=0.05, out=sys.stdout,
-        settings=("maps.csv", "default")):
+        settings=("maps.csv", "default"), angles=(0,)):
     results = []
     kept = {}
     for m in load_maps(data, resolution):
         if only and m["name"] not in only:
             continue
         src = data / ("input_raw" if raw and (data / "input_raw" / f"{m['name']}.png").is_file() else "input")
-        grid = _read_map(src / f"{m['name']}.png", m["resolution"])
-        gt = read_gt_image(str(data / "gt" / f"{m['name']}.png"))
+        grid0 = _read_map(src / f"{m['name']}.png", m["resolution"])
+        gt0 = read_gt_image(str(data / "gt" / f"{m['name']}.png"))
         runs = []
         if "maps.csv" in settings and m["widths_given"]:
             runs.append(("maps.csv", m["door"], m["corridor"]))
         if "default" in settings:
             runs.append(("default", segmentation.DEFAULT_DOOR_WIDTH, segmentation.DEFAULT_CORRIDOR_WIDTH))
-        for setting, dw, cw in runs:
+        for angle, (setting, dw, cw) in ((a, r) for a in angles for r in runs):
+            grid, gt = rotate_map(grid0, gt0, angle) if angle % 360 else (grid0, gt0)
             t = time.perf_counter()
             ag = segmentation.segment(grid, door_width=dw, corridor_width=cw)
             dt = time.perf_counter() - t
             ev = evaluate(ag.labels, gt)
             figures = {k: ev[k] for k in ("recall", "precision", "mcc", "f1", "n_gt")}
-            results.append(dict(map=m["name"], setting=setting, door=dw, corridor=cw, seconds=dt,
+            results.append(dict(map=m["name"], setting=setting, angle=angle, door=dw, corridor=cw, seconds=dt,
                                 areas=len(ag.areas), **figures))
             if out_dir and setting == "default":
-                kept[m["name"]] = (ev["mcc"], grid, gt, ag.labels, ev)
-    hdr = (f"{'map':22s} {'widths':9s} {'door':>5s} {'corr':>5s} {'areas':>5s} {'gt':>3s} {'recall':>6s} "
+                key = m["name"] + (f"_rot{angle:g}" if angle % 360 else "")
+                kept[key] = (ev["mcc"], grid, gt, ag.labels, ev)
+    turned = any(a % 360 for a in angles)
+    hdr = (f"{'map':22s} {'widths':9s} " + (f"{'deg':>4s} " if turned else "") + f"{'door':>5s} {'corr':>5s} "
+           f"{'areas':>5s} {'gt':>3s} {'recall':>6s} "
            f"{'prec':>6s} {'MCC':>6s} {'F1':>6s} {'s':>5s}")
     print(hdr, file=out)
     print("-" * len(hdr), file=out)
     for r in results:
-        print(f"{r['map']:22s} {r['setting']:9s} {r['door']:5.2f} {r['corridor']:5.2f} {r['areas']:5d} {r['n_gt']:3d} "
+        print(f"{r['map']:22s} {r['setting']:9s} " + (f"{r['angle']:4g} " if turned else "") + f"{r['door']:5.2f} {r['corridor']:5.2f} {r['areas']:5d} {r['n_gt']:3d} "
               f"{r['recall']:6.3f} {r['precision']:6.3f} {r['mcc']:6.3f} {r['f1']:6.3f} {r['seconds']:5.2f}", file=out)
     print("-" * len(hdr), file=out)
-    for setting in ("maps.csv", "default"):
-        sel = [r for r in results if r["setting"] == setting]
+    for setting, angle in ((s_, a) for s_ in ("maps.csv", "default") for a in angles):
+        sel = [r for r in results if r["setting"] == setting and r["angle"] == angle]
         if not sel:
             continue
         mean = {k: sum(r[k] for r in sel) / len(sel) for k in ("recall", "precision", "mcc", "f1")}
-        print(f"{'mean':22s} {setting:9s} {'':5s} {'':5s} {'':5s} {'':3s} {mean['recall']:6.3f} "
+        print(f"{'mean':22s} {setting:9s} " + (f"{angle:4g} " if turned else "") + f"{'':5s} {'':5s} {'':5s} {'':3s} {mean['recall']:6.3f} "
               f"{mean['precision']:6.3f} {mean['mcc']:6.3f} {mean['f1']:6.3f}   (worst "
               f"{min(r['mcc'] for r in sel):.3f})", file=out)
     if out_dir:
@@ -179,17 +194,21 @@ def main(argv=None):
     ap.add_argument("--raw", action="store_true", help="segment input_raw/ (as recorded, with unknown space)")
     ap.add_argument("--resolution", type=float, default=0.05, help="m/px where maps.csv gives none (default 0.05)")
     ap.add_argument("--maps", nargs="*", default=None)
+    ap.add_argument("--rotate", nargs="*", type=float, default=None, metavar="DEG",
+                    help="also score every map and its ground truth turned by these angles (counter-clockwise, "
+                         "degrees); 0 is always scored; the target is judged on the unturned maps")
     args = ap.parse_args(argv)
     data = Path(args.data)
     if not (data / "gt").is_dir() or not (data / "input").is_dir():
         print(f"no grid_gt-like data at {data} (need input/ and gt/)", file=sys.stderr)
         return 2
     try:
-        results = run(data, args.out, args.maps, args.raw, args.worst, args.resolution)
+        angles = [0.0] + [a for a in (args.rotate or []) if a % 360]
+        results = run(data, args.out, args.maps, args.raw, args.worst, args.resolution, angles=angles)
     except InputError as exc:
         print(f"error: {exc}", file=sys.stderr)
         return 2
-    sel = [r["mcc"] for r in results if r["setting"] == "default"]
+    sel = [r["mcc"] for r in results if r["setting"] == "default" and r["angle"] == 0]
     if not sel:
         print("no map scored", file=sys.stderr)
         return 2

@@ -9,8 +9,9 @@ import numpy as np
 import pytest
 
 from algorithms import pipeline
-from algorithms.cad_classify import _leaf_and_arc
+from algorithms.cad_classify import _circle_from_3, _leaf_and_arc
 from algorithms.cad_import import import_dxf
+from algorithms.errors import InputError
 
 
 def _doc():
@@ -38,6 +39,17 @@ def _save(doc, tmp_path, name="t.dxf"):
     p = tmp_path / name
     doc.saveas(p)
     return str(p)
+
+
+@pytest.mark.parametrize("ox, oy", [(0.0, 0.0), (1.2e4, -6.4e3), (5e5, 3.5e6), (5e5, 9.5e6)])
+def test_swing_circle_in_georeferenced_coordinates(ox, oy):
+    """The three-point circle of a door swing (a 0.9 m leaf) in site or UTM coordinates (southern northings
+    near 10^7 m): the squares of the coordinates cancel in float64 (r came out 0.98 m at 10^7, beyond the
+    swing test's 2 cm), so the circle is computed again relative to the first point where it is off."""
+    pts = [(ox + 0.9 * math.cos(t), oy + 0.9 * math.sin(t)) for t in np.radians([0.0, 45.0, 90.0])]
+    cx, cy, r = _circle_from_3(*pts)
+    assert abs(r - 0.9) < 1e-6 and abs(cx - ox) < 1e-6 and abs(cy - oy) < 1e-6
+    assert _circle_from_3((ox, oy), (ox + 1.0, oy), (ox + 2.0, oy)) is None  # on a line
 
 
 def test_leaf_and_arc_polyline_shape():
@@ -345,9 +357,10 @@ def test_an_eave_line_close_to_the_facade_closes_nothing(tmp_path):
 
 
 # ------------------------------------------------------------------ an elevation drawn close to the plan
-def _plan_with_elevation(tmp_path, title="ELEVACION PRINCIPAL", gap=2.0):
+def _plan_with_elevation(tmp_path, title="ELEVACION PRINCIPAL", gap=2.0, angle=0.0):
     """A 30 x 16 m plan of six rooms (titled 'PLANTA DE DISTRIBUCION') and, ``gap`` m below it (closer than
-    the sheet gap), its main elevation: a facade outline with doors and windows, titled ``title`` under it."""
+    the sheet gap), its main elevation: a facade outline with doors and windows, titled ``title`` under it;
+    the whole sheet turned by ``angle`` degrees about the origin."""
     doc = _doc()
     msp = doc.modelspace()
     for i in range(3):
@@ -368,6 +381,11 @@ def _plan_with_elevation(tmp_path, title="ELEVACION PRINCIPAL", gap=2.0):
     msp.add_line((3, base), (27, base), dxfattribs={"layer": "A-WALL"})  # ground line
     if title:
         msp.add_text(title, dxfattribs={"layer": "TXT", "height": 0.6, "insert": (10.0, base - 1.2)})
+    if angle:
+        from ezdxf.math import Matrix44
+
+        for e in msp:
+            e.transform(Matrix44.z_rotate(math.radians(angle)))
     return _save(doc, tmp_path, "elev.dxf")
 
 
@@ -380,6 +398,37 @@ def test_an_elevation_drawn_close_below_the_plan_is_a_group_of_its_own(tmp_path,
     other = [p for p in drawing.plans if not p.selected]
     assert len(other) == 1 and other[0].kind == "detail" and other[0].title == title
     assert all(g.coords[:, 1].min() >= -0.5 for g in drawing.geometries)
+
+
+@pytest.mark.parametrize("angle", [12.0, 30.0, -20.0, 45.0])
+def test_an_elevation_beside_a_turned_plan_is_a_group_of_its_own(tmp_path, angle, monkeypatch):
+    """A sheet drawn turned (a building in site or survey coordinates): the empty band between the plan and
+    its elevation runs along the walls, not along the axes, and the boxes that decide which title is the
+    plan's are the walls' boxes (cad_sheet.ALIGN_SHEET). Without the rule the elevation stays with the plan
+    or takes its title (the sheet is then refused as 'only detail views')."""
+    from algorithms import cad_sheet
+
+    path = _plan_with_elevation(tmp_path, angle=angle)
+    drawing = import_dxf(path)
+    sel = [p for p in drawing.plans if p.selected]
+    assert len(sel) == 1 and sel[0].kind == "plan" and sel[0].title == "PLANTA DE DISTRIBUCION"
+    other = [p for p in drawing.plans if not p.selected]
+    assert len(other) == 1 and other[0].kind == "detail" and other[0].title == "ELEVACION PRINCIPAL"
+    turn, coherence = cad_sheet.wall_direction(drawing.geometries)
+    assert abs(turn - (angle if angle < 45 else 45.0)) < 0.5 and coherence > 0.9
+    c, s = math.cos(math.radians(angle)), math.sin(math.radians(angle))
+    back = np.concatenate([g.coords for g in drawing.geometries]) @ np.array(((c, -s), (s, c)))
+    assert back[:, 1].min() >= -0.5 and back[:, 0].min() >= -0.5  # the plan alone, turned back
+    x0, y0, x1, y1 = sel[0].extent  # in the CAD frame: the box of the turned plan
+    corners = np.array(((0.0, 0.0), (30.0, 0.0), (30.0, 16.0), (0.0, 16.0))) @ np.array(((c, s), (-s, c)))
+    assert np.allclose((x0, y0, x1, y1), (*corners.min(axis=0), *corners.max(axis=0)), atol=0.3)
+    monkeypatch.setattr(cad_sheet, "ALIGN_SHEET", False)
+    try:
+        plans = import_dxf(path).plans
+    except InputError as exc:
+        assert "only plan-like groups are detail views" in str(exc)
+    else:
+        assert not any(p.kind == "detail" for p in plans)
 
 
 def test_an_untitled_view_close_to_the_plan_stays_with_it(tmp_path):

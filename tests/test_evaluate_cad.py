@@ -4,6 +4,7 @@ import json
 import subprocess
 import sys
 
+import numpy as np
 import pytest
 
 from algorithms.sample_building import generate_building
@@ -100,3 +101,45 @@ def test_misses_list_the_texts_that_miss(tmp_path, capsys):
     ev.print_misses([{"plan": "x.dxf", "ok": True, "missed": list(missed.values())}])
     out = capsys.readouterr().out
     assert "x.dxf: 4 room-name texts miss" in out and "also named" in out and "no area" in out
+
+
+# ------------------------------------------------------------------ turned, mirrored, rescaled drawings
+@pytest.mark.slow
+@pytest.mark.parametrize("deg, mirror", [(30.0, False), (0.0, True), (-20.0, True)])
+def test_turned_or_mirrored_sample_building_keeps_its_areas_and_names(folder, deg, mirror):
+    """An unseen drawing comes at an angle or mirrored: the sample floor turned about its centre and/or
+    mirrored converts to the same areas, passages and named rooms as delivered, every room name in an
+    area of its own, and every ground-truth room is found (IoU >= 0.8 with its best area, the ground
+    truth moved with the drawing)."""
+    from shapely.geometry import Polygon
+
+    from algorithms import pipeline
+    from algorithms.sample_building import ground_truth_rooms
+
+    ev = _module()
+    src = folder / "sample-F1.dxf"
+    base = ev.evaluate_plan(src)
+    with ev.transformed(deg, mirror) as forward:
+        fig = ev.evaluate_plan(src)
+        floor = pipeline.process_floor(str(src))
+        unit = floor.drawing.unit_scale
+        rooms = [(r["name"], Polygon(forward(np.asarray(r["polygon"].exterior.coords), unit)))
+                 for r in ground_truth_rooms(str(folder / "sample-F1.gt.geojson"))]
+    assert fig["ok"] and fig["inside_pct"] == 100.0 == fig["own_area_pct"] and fig["conflicts"] == 0
+    for key in ("areas", "passages", "named_areas", "stairs", "elevators", "room_texts"):
+        assert fig[key] == base[key], key
+    areas = [a.polygon for a in floor.refined.areas]
+    for name, gt in rooms:
+        best = max(areas, key=lambda p: p.intersection(gt).area)
+        iou = best.intersection(gt).area / best.union(gt).area
+        assert iou >= 0.8, (name, round(iou, 3))
+
+
+def test_transform_options_on_the_command_line(folder, capsys):
+    ev = _module()
+    assert ev.main(["--data", str(folder / "sample-F1.dxf"), "--scale", "0"]) == 2  # clear error, no run
+    assert "--scale must be a positive number" in capsys.readouterr().err
+    assert ev._header_after("m", 1000.0) == "mm" and ev._header_after("mm", 0.001) == "m"
+    assert ev._header_after("m", 7.0) == "unitless" and ev._header_after("unitless", 10.0) == "unitless"
+    a = ev._similarity(90.0, True, 2.0)  # mirror x, scale 2, then a quarter turn
+    assert np.allclose(a @ (1.0, 0.0), (0.0, -2.0)) and np.allclose(a @ (0.0, 1.0), (-2.0, 0.0))

@@ -438,3 +438,26 @@ def test_corridor_loops_on_the_shared_robot_maps(shared_data, folder_name):
         assert on[n] >= off[n] - 0.002, (n, on, off)
     assert on["intel_map"] >= off["intel_map"] + 0.07, (on, off)
     assert min(on.values()) >= 0.75 and np.mean(list(on.values())) >= 0.90, on
+
+
+@pytest.mark.xfail(strict=True, reason="known limit (session 8, docs/segmentation.md 'Turned, mirrored and rescaled "
+                   "input'): on a plan turned 10-30 degrees the wall-line openings gain candidates across the corridor "
+                   "(the corner test reads pixel staircases as wall ends) and one office merges into the corridor")
+@pytest.mark.parametrize("angle", [10.0, 20.0])
+def test_offices_behind_wide_openings_on_a_turned_plan(angle):
+    """The offices of ``test_offices_behind_wide_openings_are_rooms``, the raster turned by ``angle``: every
+    office should stay its own area (it does at 0 and 45 degrees)."""
+    from algorithms.raster_io import rotate_raster
+
+    grid, rooms, corridor, side = _offices_on_corridor()
+    ids = np.zeros(grid.data.shape, np.uint8)
+    for k, (x0, y0, x1, y1) in enumerate(rooms + [corridor], start=1):
+        ids[_px(y0):_px(y1), _px(x0):_px(x1)] = k
+    data, _ = rotate_raster(grid.data, angle, fill=OCCUPIED)
+    turned, _ = rotate_raster(ids, angle, fill=0)
+    ag = seg.segment(OccupancyGrid(data, 0.0, data.shape[0] * RES, RES))
+    best = []
+    for k in range(1, len(rooms) + 2):
+        vals, counts = np.unique(ag.labels[turned == k], return_counts=True)
+        best.append(int(vals[vals > 0][np.argmax(counts[vals > 0])]))
+    assert len(set(best)) == len(best), best  # four offices and the corridor: five areas
