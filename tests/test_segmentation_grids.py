@@ -440,12 +440,9 @@ def test_corridor_loops_on_the_shared_robot_maps(shared_data, folder_name):
     assert min(on.values()) >= 0.75 and np.mean(list(on.values())) >= 0.90, on
 
 
-@pytest.mark.parametrize("angle", [10.0, 20.0])
-def test_offices_behind_wide_openings_on_a_turned_plan(angle):
-    """The offices of ``test_offices_behind_wide_openings_are_rooms``, the raster turned by ``angle``: every
-    office stays its own area. Before session 9 one merged into the corridor: the Hough lines of a face at an
-    angle (1 deg apart) crossed in the opening and cut slivers (``SAME_OPENING_PX``), and the line continued
-    from one jamb passed the wall beyond by a pixel (``GAP_SIDE_PX``)."""
+def _turned_offices_areas(angle):
+    """The area of ``_offices_on_corridor`` turned by ``angle`` (raster and truth turned alike) that holds most of
+    each office and of the corridor: five different areas when every office is its own."""
     from algorithms.raster_io import rotate_raster
 
     grid, rooms, corridor, side = _offices_on_corridor()
@@ -459,6 +456,16 @@ def test_offices_behind_wide_openings_on_a_turned_plan(angle):
     for k in range(1, len(rooms) + 2):
         vals, counts = np.unique(ag.labels[turned == k], return_counts=True)
         best.append(int(vals[vals > 0][np.argmax(counts[vals > 0])]))
+    return best
+
+
+@pytest.mark.parametrize("angle", [10.0, 20.0])
+def test_offices_behind_wide_openings_on_a_turned_plan(angle):
+    """The offices of ``test_offices_behind_wide_openings_are_rooms``, the raster turned by ``angle``: every
+    office stays its own area. Before session 9 one merged into the corridor: the Hough lines of a face at an
+    angle (1 deg apart) crossed in the opening and cut slivers (``SAME_OPENING_PX``), and the line continued
+    from one jamb passed the wall beyond by a pixel (``GAP_SIDE_PX``)."""
+    best = _turned_offices_areas(angle)
     assert len(set(best)) == len(best), best  # four offices and the corridor: five areas
 
 
@@ -466,21 +473,9 @@ def test_offices_behind_wide_openings_on_a_turned_plan(angle):
 def test_rules_off_turned_offices_merge(angle, monkeypatch):
     """The failure ``SAME_OPENING_PX`` and ``GAP_SIDE_PX`` fix, so the turned-plan test cannot pass by accident:
     without them one office joins the corridor."""
-    from algorithms.raster_io import rotate_raster
-
     monkeypatch.setattr(seg, "SAME_OPENING_PX", 0.0)
     monkeypatch.setattr(seg, "GAP_SIDE_PX", 0)
-    grid, rooms, corridor, side = _offices_on_corridor()
-    ids = np.zeros(grid.data.shape, np.uint8)
-    for k, (x0, y0, x1, y1) in enumerate(rooms + [corridor], start=1):
-        ids[_px(y0):_px(y1), _px(x0):_px(x1)] = k
-    data, _ = rotate_raster(grid.data, angle, fill=OCCUPIED)
-    turned, _ = rotate_raster(ids, angle, fill=0)
-    ag = seg.segment(OccupancyGrid(data, 0.0, data.shape[0] * RES, RES))
-    best = []
-    for k in range(1, len(rooms) + 2):
-        vals, counts = np.unique(ag.labels[turned == k], return_counts=True)
-        best.append(int(vals[vals > 0][np.argmax(counts[vals > 0])]))
+    best = _turned_offices_areas(angle)
     assert len(set(best)) < len(best), best
 
 
