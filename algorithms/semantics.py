@@ -410,18 +410,14 @@ STACKED_NAMES_GUARD = True  # two stacked lines that are each a complete name of
 def _room_word(low: str, rules: NameRules):
     """(keyword, kind) of the longest room word in ``low`` (casefolded): a type keyword (kind: its type
     entry), a shaft keyword (kind 'shaft') or a service-point keyword (kind 'point'); None when none."""
-    best = None
-    for kw, rx, entry in rules._type_keywords:  # longest first
-        if kw in low and rx.search(low):
-            best = (kw, (entry.get("type"), entry.get("indoor"), entry.get("room")))
-            break
+    hit = _type_entry(low, rules)
+    best = None if hit is None else (hit[0], (hit[1].get("type"), hit[1].get("indoor"), hit[1].get("room")))
     for kind, words in (("shaft", rules.shaft_keywords), ("point", rules.point_keywords)):
         for w in words:
             w = normalize_text(w).casefold()
             if best is not None and len(w.lstrip("=")) <= len(best[0]):
                 continue
-            hit = (low == w[1:].strip()) if w.startswith("=") else bool(_keyword_regex(w).search(low))
-            if hit:
+            if _matches([w], low):
                 best = (w.lstrip("="), (kind,))
     return best
 
