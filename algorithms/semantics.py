@@ -402,13 +402,81 @@ def _est_width(s: str, h: float) -> float:
 
 _NO_JOIN = ("elevation", "area", "dimension", "axis", "door/window code", "scale", "stair arrow", "empty")
 
+# switches of the two rules below (tests turn them off to show what they do)
+TEXT_FRAME_JOIN = True  # lines of a label are stacked in the texts' own frame, not only when upright
+STACKED_NAMES_GUARD = True  # two stacked lines that are each a complete name of a different kind stay two
+
+
+def _room_word(low: str, rules: NameRules):
+    """(keyword, kind) of the longest room word in ``low`` (casefolded): a type keyword (kind: its type
+    entry), a shaft keyword (kind 'shaft') or a service-point keyword (kind 'point'); None when none."""
+    hit = _type_entry(low, rules)
+    best = None if hit is None else (hit[0], (hit[1].get("type"), hit[1].get("indoor"), hit[1].get("room")))
+    for kind, words in (("shaft", rules.shaft_keywords), ("point", rules.point_keywords)):
+        for w in words:
+            w = normalize_text(w).casefold()
+            if best is not None and len(w.lstrip("=")) <= len(best[0]):
+                continue
+            if _matches([w], low):
+                best = (w.lstrip("="), (kind,))
+    return best
+
+
+_GENERIC_ROOM = ("room", "room", "")  # the kind of 'room', 'sala', 'Raum': a word of a name, not a name
+
+
+def _two_names(upper: str, lower: str, rules: NameRules, roles_differ: bool = False) -> bool:
+    """Two stacked lines that are each a complete name by themselves are two names, not one label: each
+    holds a room word (a type, shaft or service-point keyword) and they name different kinds of space
+    ('排风井' over '清洁间': a shaft and a cleaners' closet of two neighbouring shafts), or they are the
+    same name twice. A keyword running across the two lines keeps them one name ('Vano' over 'scala':
+    'vano scala'); so do lines of one kind ('WC' over 'uomini'), a line without a room word ('Ufficio' over
+    'direttore') and a line that is only a generic room word ('Sala' over 'riunioni', 'Technical' over
+    'room'; a name ending in one, '理论与计算研究室', is complete). ``roles_differ``: one line is a room name, the other one the rules ignore (a note): they are two
+    labels when either holds a room word ('送风' supply air over '女卫生间', a shaft's '水井' over a room's
+    name): a note's second line without one ('PISO DE LADRILLO' over 'ESPINA DE PEZ') stays in the note."""
+    a, b = normalize_text(upper).casefold(), normalize_text(lower).casefold()
+    ka, kb = _room_word(a, rules), _room_word(b, rules)
+    # a line that is only a generic word ('Sala', 'room') is part of a name; '理论与计算研究室' (…室) is a name
+    whole = [k is not None and not (k[1] == _GENERIC_ROOM and low == k[0]) for k, low in ((ka, a), (kb, b))]
+    if roles_differ:
+        return any(whole)
+    if not all(whole):
+        return False
+    kj = _room_word(a + " " + b, rules)
+    if kj is not None and kj[0] not in a and kj[0] not in b:
+        return False  # one keyword over both lines
+    return ka[1] != kb[1] or _key(upper) == _key(lower)
+
+
+def _frame_angle(rotation: float) -> Optional[float]:
+    """The angle (deg, (-90, 90]) of the frame a text's lines stack in, None when it cannot be a line of a
+    label. The rotation alone does not tell a mirrored text from an upside-down one (a mirrored INSERT gives
+    180 - r): a text turned more than 90 deg is read as mirrored, its lines stacked as if it were turned back
+    by 180 deg (an upright label mirrored reads top to bottom; a plan turned upside down, not mirrored, joins
+    its lines in reverse order). Texts within 1 deg of upright use the page axes; with ``TEXT_FRAME_JOIN``
+    off only they are lines (the old behaviour)."""
+    r = float(rotation or 0.0)
+    if not math.isfinite(r):
+        return None
+    a = r % 180.0
+    if a < 1.0 or a > 179.0:
+        return 0.0
+    if not TEXT_FRAME_JOIN:
+        return None
+    return a - 180.0 if a > 90.0 else a
+
 
 def group_lines(texts: Sequence[CadText], rules=None, _memo=None) -> List[Label]:
     """Join the lines of multi-line labels drawn as separate TEXTs: same layer, height (+-15 %) and
-    rotation, the next line 0.5-2.7 heights below the previous one and overlapping it horizontally.
+    rotation (+-1 deg), the next line 0.5-2.7 heights below the previous one and overlapping it along the
+    line, both measured in the texts' own frame (a label on a turned or mirrored drawing reads as
+    delivered). Two lines that are each a complete name of another kind stay two (``_two_names``).
     Each text belongs to at most one label; ATTRIBs and MTEXTs stay alone (they carry their own lines)."""
     labels: List[Label] = []
     cand = []
+    ang: Dict[int, float] = {}
+    roles: Dict[int, str] = {}
     memo = {} if _memo is None else _memo
     rules_ = _resolve(rules)
     for k, t in enumerate(texts):
@@ -416,45 +484,31 @@ def group_lines(texts: Sequence[CadText], rules=None, _memo=None) -> List[Label]
         lab = Label([_text_id(t, k)], s, float(t.x), float(t.y), float(t.height or 0.0), t.layer or "",
                     getattr(t, "block", "") or "", getattr(t, "tag", "") or "")
         labels.append(lab)
-        if t.entity == "TEXT" and s and t.height and t.height > 0 and abs(((t.rotation or 0) + 1) % 180 - 1) < 1 \
-                and math.isfinite(lab.x) and math.isfinite(lab.y):
+        a = _frame_angle(t.rotation) if t.entity == "TEXT" and s and t.height and t.height > 0 else None
+        if a is not None and math.isfinite(lab.x) and math.isfinite(lab.y):
             role, reason = _classify_memo(memo, s, rules_, lab.layer, lab.block, lab.tag)
             callout = rules_.callout is not None and rules_.callout.match(s.casefold()) is not None
             # numbers, elevations, areas... are lines of their own: "Office" over "101" is name + number;
             # so is a detail callout ("E1-ST-01详见…" stacked over "E1-ST-02详见…" are two callouts)
             if role != "number" and not callout and reason.split(" (")[0] not in _NO_JOIN:
                 cand.append(len(labels) - 1)
+                ang[len(labels) - 1], roles[len(labels) - 1] = a, role
     if len(cand) < 2:
         return labels
-    # sort candidates top to bottom; link each line to the nearest line right above it
-    cand.sort(key=lambda i: (-labels[i].y, labels[i].x))
-    xs = np.array([labels[i].x for i in cand])
-    ys = np.array([labels[i].y for i in cand])
     above: Dict[int, int] = {}
-    taken = set()
-    for a_pos, i in enumerate(cand):
-        li = labels[i]
-        h = li.height
-        dy = ys - li.y  # positive: the other line is above
-        ok = (dy >= 0.5 * h) & (dy <= 2.7 * h)
-        if not ok.any():
-            continue
-        best = None
-        for b_pos in np.flatnonzero(ok):
-            j = cand[b_pos]
-            lj = labels[j]
-            if j in taken or lj.layer != li.layer or abs(lj.height - h) > 0.15 * max(h, lj.height):
-                continue
-            wi, wj = _est_width(li.text, h), _est_width(lj.text, h)
-            # overlap of [x, x + w] extents, tolerant to centred/right alignment
-            if min(li.x + wi, lj.x + wj) - max(li.x - 0.5 * wi, lj.x - 0.5 * wj) <= 0:
-                continue
-            d = dy[b_pos] + abs(lj.x - li.x) / max(wi, wj, 1e-9)
-            if best is None or d < best[0]:
-                best = (d, j)
-        if best is not None:
-            above[i] = best[1]
-            taken.add(best[1])
+    # texts of one rotation (+-1 deg, modulo 180) stack in their own frame: u along the line, v up
+    cand.sort(key=lambda i: ang[i])
+    groups: List[List[int]] = [[cand[0]]]
+    for i in cand[1:]:
+        if ang[i] - ang[groups[-1][-1]] <= 1.0:
+            groups[-1].append(i)
+        else:
+            groups.append([i])
+    if len(groups) > 1 and ang[groups[0][0]] + 180.0 - ang[groups[-1][-1]] <= 1.0:
+        groups[0] = groups.pop() + groups[0]  # 179.5 and 0.3 deg are one rotation
+    for grp in groups:
+        if len(grp) > 1:
+            _link_lines(labels, grp, float(np.median([ang[i] for i in grp])), above, rules_, roles)
     if not above:
         return labels
     below = {j: i for i, j in above.items()}
@@ -477,6 +531,46 @@ def group_lines(texts: Sequence[CadText], rules=None, _memo=None) -> List[Label]
                          x=float(np.mean([p.x for p in parts])), y=float(np.mean([p.y for p in parts])),
                          height=lab.height, layer=lab.layer, block=lab.block, tag=lab.tag))
     return out
+
+
+def _link_lines(labels: List[Label], cand: List[int], deg: float, above: Dict[int, int], rules: NameRules,
+                roles: Dict[int, str]) -> None:
+    """Link each candidate line to the nearest line right above it in the frame turned by ``deg``
+    (``above[line] = the line above``). With ``STACKED_NAMES_GUARD`` a room name and a line the rules ignore
+    ('送风' supply air over '女卫生间', a shaft's '水井' beside a room name) are not one label either: the
+    lines of one label are of one role (the old join made the name a note and lost it)."""
+    c, s_ = (1.0, 0.0) if deg == 0.0 else (math.cos(math.radians(deg)), math.sin(math.radians(deg)))
+    uv = {i: (labels[i].x * c + labels[i].y * s_, -labels[i].x * s_ + labels[i].y * c) for i in cand}
+    # sort candidates top to bottom
+    cand = sorted(cand, key=lambda i: (-uv[i][1], uv[i][0]))
+    xs = np.array([uv[i][0] for i in cand])
+    ys = np.array([uv[i][1] for i in cand])
+    taken = set(above.values())
+    for a_pos, i in enumerate(cand):
+        li = labels[i]
+        h = li.height
+        dy = ys - ys[a_pos]  # positive: the other line is above
+        ok = (dy >= 0.5 * h) & (dy <= 2.7 * h)
+        if not ok.any():
+            continue
+        best = None
+        for b_pos in np.flatnonzero(ok):
+            j = cand[b_pos]
+            lj = labels[j]
+            if j in taken or lj.layer != li.layer or abs(lj.height - h) > 0.15 * max(h, lj.height):
+                continue
+            wi, wj = _est_width(li.text, h), _est_width(lj.text, h)
+            # overlap of [u, u + w] extents, tolerant to centred/right alignment
+            if min(xs[a_pos] + wi, xs[b_pos] + wj) - max(xs[a_pos] - 0.5 * wi, xs[b_pos] - 0.5 * wj) <= 0:
+                continue
+            d = dy[b_pos] + abs(xs[b_pos] - xs[a_pos]) / max(wi, wj, 1e-9)
+            if best is None or d < best[0]:
+                best = (d, j)
+        if best is not None:
+            if STACKED_NAMES_GUARD and _two_names(labels[best[1]].text, li.text, rules, roles[best[1]] != roles[i]):
+                continue
+            above[i] = best[1]
+            taken.add(best[1])
 
 
 def classify_labels(texts: Sequence[CadText], rules=None) -> List[Label]:
