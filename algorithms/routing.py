@@ -85,8 +85,8 @@ QUAD_SEGS = 2  # 45 degree chords on the rounded corners of grown walls (sagitta
 AVOIDABLE = ("stairs", "elevator")
 LANDMARKS = 12  # ALT heuristic landmarks (maps too large for the node distance table)
 COMPACT_TABLES = True  # the query tables in compact dtypes (float32 costs, int16 predecessors where they fit):
-# half the memory a query reads, the sums still in float64 (float32 keeps < 0.1 mm on costs of km)
-MAX_TABLE_NODES = 4000  # node-to-node distance table (n^2 x 12 bytes: 190 MB at 4000) up to this size
+# half the memory the tables hold; choices on float32 sums, the chosen costs recomputed in float64
+MAX_TABLE_NODES = 4000  # node-to-node distance table (n^2 x 6 bytes kept, 96 MB at 4000) up to this size
 MAX_TABLES = 4  # tables kept per map and radius (vertical cost x avoid set)
 _FAR = 1e15  # landmark distance standing for "unreachable"
 KIND_CODES_INV = ("room", "corridor", "stairs", "elevator", "other")

@@ -600,7 +600,9 @@ def stats(rows):
     return {"clear_med": statistics.median(clear) if clear else None, "clear_min": min(clear) if clear else None,
             "n": n_all, "lost": lost, "within": within, "rel_med": statistics.median(rel), "rel_max": max(rel),
             "rel_min": min(rel), "rel8_med": statistics.median(rel8), "q_med": statistics.median(qw),
-            "q_cpu_med": statistics.median(qc), "q_cpu_seq_med": statistics.median(qs), "q_cpu_best_med": statistics.median(qb), "q_max": max(qw), "g_med": statistics.median(gw),
+            "q_cpu_med": statistics.median(qc),
+            "q_cpu_seq_med": statistics.median(qs), "q_cpu_best_med": statistics.median(qb), "q_max": max(qw),
+            "g_med": statistics.median(gw),
             "speed_med": statistics.median(speed), "speed_min": min(speed), "below_euclid": below,
             "g_cpu_med": statistics.median(gc), "speed_cpu_med": statistics.median(speed_cpu) if speed_cpu else 0.0,
             "speed_best_med": statistics.median(speed_best) if speed_best else 0.0,
@@ -614,14 +616,15 @@ def table(results, cross):
              f"{ROUNDS}, median | grid A* median: wall / CPU | speed-up median, CPU: grid CPU / osmAG CPU best of "
              f"{ROUNDS} (min) | speed-up median, grid CPU / osmAG first-run CPU | speed-up median, wall (min) | "
              "map build (CPU) | osmAG path clearance on the raster: median / worst |",
-             "| --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: |"]
+             "| --- |" + " ---: |" * 14]
     crosses = cross if isinstance(cross, list) else [cross]
     for res in results + [c for c in crosses if c and c.get("rows")]:
         s = stats(res["rows"])
         lost = f" ({s['lost']} without osmAG route)" if s["lost"] else ""
         lines.append(f"| {res['label']} | {s['n']} | {s['within']}/{s['n']}{lost} | {s['rel_med'] * 100:+.2f} % / "
                      f"{s['rel_max'] * 100:+.2f} % | {s['rel8_med'] * 100:+.2f} % | {s['q_med']:.2f} ms "
-                     f"({s['q_max']:.2f}) | **{s['q_cpu_seq_med']:.2f} ms** | {s['q_cpu_med']:.2f} ms | {s['q_cpu_best_med']:.2f} ms | "
+                     f"({s['q_max']:.2f}) | **{s['q_cpu_seq_med']:.2f} ms** | "
+                     f"{s['q_cpu_med']:.2f} ms | {s['q_cpu_best_med']:.2f} ms | "
                      f"{s['g_med']:.2f} s / {s['g_cpu_med']:.2f} s | **{s['speed_best_med']:,.0f}x** "
                      f"({s['speed_best_min']:,.0f}x) | {s['speed_cpu_med']:,.0f}x | "
                      f"{s['speed_med']:,.0f}x ({s['speed_min']:,.0f}x) | {res['build']:.2f} s "
