@@ -84,7 +84,9 @@ OPENING_TOL = 0.05  # a wall within 5 cm of a passage segment is part of the ope
 QUAD_SEGS = 2  # 45 degree chords on the rounded corners of grown walls (sagitta 7.6 % of r)
 AVOIDABLE = ("stairs", "elevator")
 LANDMARKS = 12  # ALT heuristic landmarks (maps too large for the node distance table)
-MAX_TABLE_NODES = 4000  # node-to-node distance table (n^2 x 12 bytes: 190 MB at 4000) up to this size
+COMPACT_TABLES = True  # the query tables in compact dtypes (float32 costs, int16 predecessors where they fit):
+# half the memory the tables hold; choices on float32 sums, the chosen costs recomputed in float64
+MAX_TABLE_NODES = 4000  # node-to-node distance table (n^2 x 6 bytes kept, 96 MB at 4000) up to this size
 MAX_TABLES = 4  # tables kept per map and radius (vertical cost x avoid set)
 _FAR = 1e15  # landmark distance standing for "unreachable"
 KIND_CODES_INV = ("room", "corridor", "stairs", "elevator", "other")
@@ -477,7 +479,8 @@ class _Piece:
         i, j = iu[vis], ju[vis]
         w = np.hypot(self.V[i, 0] - self.V[j, 0], self.V[i, 1] - self.V[j, 1]) + 1e-12
         g = coo_matrix((w, (i, j)), shape=(n, n)).tocsr()
-        self.D, self.pred = shortest_path(g, method="D", directed=False, return_predecessors=True)
+        self.D, pred = shortest_path(g, method="D", directed=False, return_predecessors=True)
+        self.pred = _compact_index(pred)
 
     def path_between(self, a: int, b: int) -> np.ndarray:
         """The shortest path a -> b as points, kept (also as [(x, y, vertex)] in ``tpaths``)."""
@@ -511,7 +514,10 @@ class _Piece:
         t = [(vx * Q[:, 1] - vy * Q[:, 0], vy - Q[:, 1], Q[:, 0] - vx) for Q in (P, N)]
         ent = np.unique(np.array([vi for _, vi, _ in self.entries], np.int64)) if self.entries else \
             np.zeros(0, np.int64)
-        self._qt = (vx, vy, t[0], t[1], ent, self.D[:, ent] if self.D is not None and len(ent) else None)
+        Dent = self.D[:, ent] if self.D is not None and len(ent) else None
+        if Dent is not None and COMPACT_TABLES:
+            Dent = Dent.astype(np.float32)  # added to float64 distances: the sums stay float64
+        self._qt = (vx, vy, t[0], t[1], ent, Dent)
         # the entries as arrays: graph node, vertex, snap distance
         self.e_node = np.array([nd for nd, _, _ in self.entries], np.int64)
         self.e_vi = np.array([vi for _, vi, _ in self.entries], np.int64)
@@ -545,7 +551,7 @@ class _Piece:
             dist, via = np.full(n, np.inf), np.full(n, -1)
             dist[ent] = tot[best, np.arange(len(ent))]
             via[ent] = idx[best]
-            return dist, via
+            return self._exact(px, py, ent, dist, via)
         tot = d0[:, None] + self.D[idx, :]
         best = np.argmin(tot, axis=0)
         return tot[best, np.arange(n)], idx[best]
@@ -610,7 +616,7 @@ class _Piece:
             ok = np.isfinite(val)
             dist[ent[ok]] = val[ok]
             via[ent[ok]] = cand[best[ok]]
-            return dist, via
+            return self._exact(px, py, ent[ok], dist, via)
         T = d0[:, None] + Dent[cand]
         state = np.zeros(len(cand), np.int8)
         cols = np.arange(len(ent))
@@ -625,6 +631,14 @@ class _Piece:
         ok = np.isfinite(val)
         dist[ent[ok]] = val[ok]
         via[ent[ok]] = cand[best[ok]]
+        return self._exact(px, py, ent[ok], dist, via)
+
+    def _exact(self, px: float, py: float, ent: np.ndarray, dist: np.ndarray, via: np.ndarray):
+        """With ``COMPACT_TABLES`` the best first corner per entry was chosen on float32 path lengths: the
+        chosen ones' costs again in float64 (one element of D per entry)."""
+        if COMPACT_TABLES and len(ent):
+            v = via[ent]
+            dist[ent] = np.hypot(self.V[v, 0] - px, self.V[v, 1] - py) + self.D[v, ent]
         return dist, via
 
     def pair_cost(self, sp, tp, s_int: Optional[bool] = None, t_int: Optional[bool] = None):
@@ -672,6 +686,12 @@ class _Piece:
             if st[j] == 0:
                 self._test(tp, t_int, ct, st, np.array([j]), M.min(axis=0))
                 M[:, st == -1] = np.inf
+
+
+def _compact_index(a: np.ndarray) -> np.ndarray:
+    """Predecessor indices (-9999: none) as int16 where they fit (``COMPACT_TABLES``), else int32."""
+    small = COMPACT_TABLES and (a.size == 0 or (int(a.max()) < 32768 and int(a.min()) >= -32768))
+    return a.astype(np.int16 if small else np.int32)
 
 
 def _avoid_mask(avoid) -> Optional[np.ndarray]:
@@ -1486,6 +1506,9 @@ class RouteMap:
                     nodes.reverse()
                     for x, y in zip(nodes, nodes[1:]):
                         came_e[y] = edge[(x, y)]
+                    if dist.dtype != np.float64:  # the cost in full precision: the chain's edges summed
+                        ce = np.fromiter(came_e.values(), np.int64, len(came_e))
+                        ub = float(sc[i] + tc[j] + csr["cost"][ce].sum() + vc * csr["span"][ce].sum())
                     s_vi = {s0: int(svi[i])}
                     came_t = (t0, int(tvi[j]))
             if came_t is None:
@@ -1605,7 +1628,9 @@ class RouteMap:
             first[1:] = (rows[order][1:] != rows[order][:-1]) | (csr["nbr"][order][1:] != csr["nbr"][order][:-1])
             sel = order[first & np.isfinite(w[order])]
             edge = dict(zip(zip(rows[sel].tolist(), csr["nbr"][sel].tolist()), sel.tolist()))
-            got = (dist, pred.astype(np.int32), edge)
+            if COMPACT_TABLES:
+                dist = dist.astype(np.float32)  # read a few rows per query; summed with float64 costs
+            got = (dist, _compact_index(pred), edge)
             while len(g.tables) >= MAX_TABLES:
                 g.tables.pop(next(iter(g.tables)))
             g.tables[key] = got

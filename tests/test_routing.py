@@ -734,3 +734,26 @@ def test_route_through_a_chain_of_wide_openings_is_the_straight_line():
         straight = math.hypot(t[0] - s[0], t[1] - s[1])
         assert straight - 1e-9 <= res.length <= straight * 1.001
         assert res.graph_cost > res.length  # the fixed nodes alone bend
+
+
+def test_compact_tables_give_the_same_routes(monkeypatch):
+    """COMPACT_TABLES (float32 node and entry tables, int16 predecessors) picks on float32 sums but reports
+    float64 costs: the same routes as the full-precision tables, on a hall map and two floors with stairs
+    avoided, costs within 1e-9 m and the same passages and areas crossed; the tables are half the size."""
+    from algorithms import routing
+
+    cases = [(_hall_map(), [("Room 0", "Corridor"), ("Room 1", "Room 3"), ((3.0, 12.0), (39.0, 12.0)),
+                            ((1.0, 1.0), "Room 0")], {}),
+             (two_floors(), [("Office 1", "Office 2")], {"vertical_cost": 10, "avoid": ["stairs"]})]
+    for (areas, passages), pairs, kw in cases:
+        got = {}
+        for compact in (False, True):
+            monkeypatch.setattr(routing, "COMPACT_TABLES", compact)
+            rm = RouteMap.from_areas(areas, passages)
+            got[compact] = [rm.route(a, b, robot_radius=0.3, **kw) for a, b in pairs]
+            dist, pred, _ = rm._table(rm.graph(0.3), float(kw.get("vertical_cost", 15.0)),
+                                      rm._avoid_set(kw.get("avoid", ())))
+            assert (dist.dtype, pred.dtype) == ((np.float32, np.int16) if compact else (np.float64, np.int32))
+        for a, b in zip(got[False], got[True]):
+            assert b.cost == pytest.approx(a.cost, abs=1e-9) and b.length == pytest.approx(a.length, abs=1e-9)
+            assert (b.passages, b.areas) == (a.passages, a.areas)
