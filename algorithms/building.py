@@ -214,14 +214,10 @@ def read_floor(path: str, frame, progress=None) -> FloorData:
 PASSAGE_END_TOL = 0.01
 
 
-def _attach_passage_ends(areas: List[Area], passages: List[Passage], tol: float = PASSAGE_END_TOL) -> int:
-    """Insert every passage end lying within ``tol`` of one of its two areas' exterior ring, but not on it,
-    into that ring as a vertex (on the nearest edge), when the ring stays valid. Returns the count."""
-    import shapely
-    from shapely.geometry import Point
-
+def _passage_ends(areas: List[Area], passages: List[Passage]):
+    """(area, end coordinate) for both ends of every passage line and each of its two areas that is a non-empty
+    Polygon, in the order :func:`_attach_passage_ends` judges them."""
     by_id = {a.id: a for a in areas}
-    ends = []  # (area, end) in the order they are judged
     for p in passages:
         if p.line is None or p.line.is_empty:
             continue
@@ -229,7 +225,17 @@ def _attach_passage_ends(areas: List[Area], passages: List[Passage], tol: float 
             a = by_id.get(aid)
             if a is None or getattr(a.polygon, "geom_type", "") != "Polygon" or a.polygon.is_empty:
                 continue
-            ends += [(a, p.line.coords[0]), (a, p.line.coords[-1])]
+            yield a, p.line.coords[0]
+            yield a, p.line.coords[-1]
+
+
+def _attach_passage_ends(areas: List[Area], passages: List[Passage], tol: float = PASSAGE_END_TOL) -> int:
+    """Insert every passage end lying within ``tol`` of one of its two areas' exterior ring, but not on it,
+    into that ring as a vertex (on the nearest edge), when the ring stays valid. Returns the count."""
+    import shapely
+    from shapely.geometry import Point
+
+    ends = list(_passage_ends(areas, passages))
     if not ends:
         return 0
     # every end's distance to its ring in one call; an area whose ring took a vertex meanwhile is measured again

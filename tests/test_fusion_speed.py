@@ -186,23 +186,13 @@ def test_shaft_mouth_finds_the_door_of_a_lift_in_a_hall():
 
 
 def _attach_passage_ends_reference(areas, passages, tol=building.PASSAGE_END_TOL):
-    """building._attach_passage_ends as it was: one Point and one distance call per passage end (the insertion
-    itself is building._insert_end, unchanged)."""
-    by_id = {a.id: a for a in areas}
+    """building._attach_passage_ends as it was: one Point and one distance call per passage end (the ends it judges
+    are building._passage_ends and the insertion building._insert_end, both unchanged)."""
     n = 0
-    for p in passages:
-        if p.line is None or p.line.is_empty:
-            continue
-        for aid in (p.from_id, p.to_id):
-            a = by_id.get(aid)
-            if a is None or getattr(a.polygon, "geom_type", "") != "Polygon" or a.polygon.is_empty:
-                continue
-            for c in (p.line.coords[0], p.line.coords[-1]):
-                ext = a.polygon.exterior
-                pt = Point(c[:2])
-                d = ext.distance(pt)
-                if 1e-9 < d <= tol:
-                    n += building._insert_end(a, c, tol)
+    for a, c in building._passage_ends(areas, passages):
+        d = a.polygon.exterior.distance(Point(c[:2]))
+        if 1e-9 < d <= tol:
+            n += building._insert_end(a, c, tol)
     return n
 
 
