@@ -809,83 +809,82 @@ def _pull_crossings(T, cpc, cross, span) -> Tuple[float, set]:
         if not todo:
             break
         again = set()
-        if True:
-            props, polys, segs = [], [], []
-            prev = -9  # chunk of the last crossing proposed to move in this round
-            for k in todo:
-                c, n = cross[k]
-                pa, pb = cpc[c - 1], cpc[c + 1]
-                if pa is None or pb is None or scale[k] < 0.2:
-                    continue
-                L = T[c - 1] if c - 1 > 1 else T[0] + T[c - 1]  # the start point belongs to its piece's path
-                R = T[c + 1][::-1] if c + 1 < last else T[-1] + T[c + 1][::-1]
-                ia, ib = _back(L, len(L) - 1), _back(R, len(R) - 1)
-                if ia < 0 or ib < 0:
-                    continue  # the entry point is the neighbouring crossing's too
-                if ia == 0 and prev == c - 2 and c - 1 > 1:
-                    again.add(k)  # its previous point is the entry of a crossing moving in this round
-                    continue
-                qa, qb, a, b = L[-1], R[-1], L[ia], R[ib]
-                (q0x, q0y), (ux, uy), w = span[n]
-                x = T[c][0]
-                lo = -((x[0] - q0x) * ux + (x[1] - q0y) * uy)
-                p1x, p1y, p2x, p2y = a[0] - qa[0], a[1] - qa[1], b[0] - qb[0], b[1] - qb[1]
-                # the shift s minimising |p1 - s u| + |p2 - s u|: where the segment p1 p2 (or p1 and p2
-                # mirrored across the line) meets the line through the origin along u
-                t1, t2 = p1x * ux + p1y * uy, p2x * ux + p2y * uy
-                h1, h2 = abs(p1y * ux - p1x * uy), abs(p2y * ux - p2x * uy)
-                sh = t1 + (t2 - t1) * h1 / (h1 + h2) if h1 + h2 > 1e-12 else min(max(0.0, min(t1, t2)), max(t1, t2))
-                sh = scale[k] * min(max(sh, lo), lo + w)
-                dx, dy = sh * ux, sh * uy
-                old = math.hypot(p1x, p1y) + math.hypot(p2x, p2y)
-                if math.hypot(p1x - dx, p1y - dy) + math.hypot(p2x - dx, p2y - dy) >= old - PULL_MIN_GAIN:
-                    continue
-                na, nb = (qa[0] + dx, qa[1] + dy, -1), (qb[0] + dx, qb[1] + dy, -1)
-                opts = []  # per side: [(segment, index of the point kept before the new entry, bend, extra)]
-                for Q, i, pc, nq in ((L, ia, pa, na), (R, ib, pb, nb)):
-                    o = [(len(segs), i, None, 0.0)]  # keep the previous point
-                    segs.append((Q[i][:2], nq[:2]))
-                    polys.append(pc)
-                    i0 = _back(Q, i)
-                    if i0 >= 0:  # drop it: the point before it sees the new entry
-                        o.append((len(segs), i0, None, -math.hypot(Q[i0][0] - Q[i][0], Q[i0][1] - Q[i][1])))
-                        segs.append((Q[i0][:2], nq[:2]))
-                        polys.append(pc)
-                    v = Q[i][2]
-                    if v >= 0 and pc.prv[v, 0] == pc.prv[v, 0]:  # a corner: bend at a ring neighbour first
-                        for nbr in (pc.prv[v], pc.nxt[v]):
-                            bx, by = float(nbr[0]), float(nbr[1])
-                            o.append((len(segs), i, (bx, by, -1), math.hypot(bx - Q[i][0], by - Q[i][1])))
-                            segs.append(((bx, by), nq[:2]))
-                            polys.append(pc)
-                    opts.append(o)
-                props.append((k, c, L, R, na, nb, dx, dy, old, opts))
-                prev = c
-            if not props:
+        props, polys, segs = [], [], []
+        prev = -9  # chunk of the last crossing proposed to move in this round
+        for k in todo:
+            c, n = cross[k]
+            pa, pb = cpc[c - 1], cpc[c + 1]
+            if pa is None or pb is None or scale[k] < 0.2:
                 continue
-            ok = _segments_in(np.array(segs, float), polys)
-            for (k, c, L, R, na, nb, dx, dy, old, opts) in props:
-                best = []
-                for Q, nq, o in ((L, na, opts[0]), (R, nb, opts[1])):
-                    cand = [(math.hypot((v or Q[i])[0] - nq[0], (v or Q[i])[1] - nq[1]) + extra, i, v)
-                            for j, i, v, extra in o if ok[j]]
-                    best.append(min(cand, key=lambda t: t[0]) if cand else None)
-                if best[0] is None or best[1] is None:
-                    scale[k] *= 0.5  # does not fit: a smaller shift next round
-                    again.add(k)
-                    continue
-                if best[0][0] + best[1][0] >= old - 1e-9:
-                    continue
-                (_, i, v), (_, j, u) = best[0][:3], best[1][:3]
-                A = L[:i + 1] + ([v] if v else []) + [na]
-                B = (R[:j + 1] + ([u] if u else []) + [nb])[::-1]
-                T[c - 1] = A if c - 1 > 1 else A[1:]
-                T[c + 1] = B if c + 1 < last else B[:-1]
-                x = T[c][0]
-                T[c] = [(x[0] + dx, x[1] + dy, -1)]
-                changed.update((c - 1, c, c + 1))
-                saved += old - best[0][0] - best[1][0]
-                again.update((k - 1, k, k + 1))  # its neighbours' targets moved
+            L = T[c - 1] if c - 1 > 1 else T[0] + T[c - 1]  # the start point belongs to its piece's path
+            R = T[c + 1][::-1] if c + 1 < last else T[-1] + T[c + 1][::-1]
+            ia, ib = _back(L, len(L) - 1), _back(R, len(R) - 1)
+            if ia < 0 or ib < 0:
+                continue  # the entry point is the neighbouring crossing's too
+            if ia == 0 and prev == c - 2 and c - 1 > 1:
+                again.add(k)  # its previous point is the entry of a crossing moving in this round
+                continue
+            qa, qb, a, b = L[-1], R[-1], L[ia], R[ib]
+            (q0x, q0y), (ux, uy), w = span[n]
+            x = T[c][0]
+            lo = -((x[0] - q0x) * ux + (x[1] - q0y) * uy)
+            p1x, p1y, p2x, p2y = a[0] - qa[0], a[1] - qa[1], b[0] - qb[0], b[1] - qb[1]
+            # the shift s minimising |p1 - s u| + |p2 - s u|: where the segment p1 p2 (or p1 and p2
+            # mirrored across the line) meets the line through the origin along u
+            t1, t2 = p1x * ux + p1y * uy, p2x * ux + p2y * uy
+            h1, h2 = abs(p1y * ux - p1x * uy), abs(p2y * ux - p2x * uy)
+            sh = t1 + (t2 - t1) * h1 / (h1 + h2) if h1 + h2 > 1e-12 else min(max(0.0, min(t1, t2)), max(t1, t2))
+            sh = scale[k] * min(max(sh, lo), lo + w)
+            dx, dy = sh * ux, sh * uy
+            old = math.hypot(p1x, p1y) + math.hypot(p2x, p2y)
+            if math.hypot(p1x - dx, p1y - dy) + math.hypot(p2x - dx, p2y - dy) >= old - PULL_MIN_GAIN:
+                continue
+            na, nb = (qa[0] + dx, qa[1] + dy, -1), (qb[0] + dx, qb[1] + dy, -1)
+            opts = []  # per side: [(segment, index of the point kept before the new entry, bend, extra)]
+            for Q, i, pc, nq in ((L, ia, pa, na), (R, ib, pb, nb)):
+                o = [(len(segs), i, None, 0.0)]  # keep the previous point
+                segs.append((Q[i][:2], nq[:2]))
+                polys.append(pc)
+                i0 = _back(Q, i)
+                if i0 >= 0:  # drop it: the point before it sees the new entry
+                    o.append((len(segs), i0, None, -math.hypot(Q[i0][0] - Q[i][0], Q[i0][1] - Q[i][1])))
+                    segs.append((Q[i0][:2], nq[:2]))
+                    polys.append(pc)
+                v = Q[i][2]
+                if v >= 0 and pc.prv[v, 0] == pc.prv[v, 0]:  # a corner: bend at a ring neighbour first
+                    for nbr in (pc.prv[v], pc.nxt[v]):
+                        bx, by = float(nbr[0]), float(nbr[1])
+                        o.append((len(segs), i, (bx, by, -1), math.hypot(bx - Q[i][0], by - Q[i][1])))
+                        segs.append(((bx, by), nq[:2]))
+                        polys.append(pc)
+                opts.append(o)
+            props.append((k, c, L, R, na, nb, dx, dy, old, opts))
+            prev = c
+        if not props:
+            continue
+        ok = _segments_in(np.array(segs, float), polys)
+        for (k, c, L, R, na, nb, dx, dy, old, opts) in props:
+            best = []
+            for Q, nq, o in ((L, na, opts[0]), (R, nb, opts[1])):
+                cand = [(math.hypot((v or Q[i])[0] - nq[0], (v or Q[i])[1] - nq[1]) + extra, i, v)
+                        for j, i, v, extra in o if ok[j]]
+                best.append(min(cand, key=lambda t: t[0]) if cand else None)
+            if best[0] is None or best[1] is None:
+                scale[k] *= 0.5  # does not fit: a smaller shift next round
+                again.add(k)
+                continue
+            if best[0][0] + best[1][0] >= old - 1e-9:
+                continue
+            (_, i, v), (_, j, u) = best[0][:3], best[1][:3]
+            A = L[:i + 1] + ([v] if v else []) + [na]
+            B = (R[:j + 1] + ([u] if u else []) + [nb])[::-1]
+            T[c - 1] = A if c - 1 > 1 else A[1:]
+            T[c + 1] = B if c + 1 < last else B[:-1]
+            x = T[c][0]
+            T[c] = [(x[0] + dx, x[1] + dy, -1)]
+            changed.update((c - 1, c, c + 1))
+            saved += old - best[0][0] - best[1][0]
+            again.update((k - 1, k, k + 1))  # its neighbours' targets moved
         todo = [k for k in sorted(again) if 0 <= k < len(cross) and span[cross[k][1]][2] >= PULL_MIN_SPAN]
     return saved, changed
 
