@@ -96,6 +96,20 @@ def test_summary_medians_and_markdown(tmp_path):
     assert "| bad.dwg | library DWG |" in text and "**failed**: InputError: 'bad.dwg' / is damaged" in text
     assert "| filtered SIST floor DXF -> osmAG (median) | ≤ 2.5 s, ≤ 1 GB | 2.00 s | 2.00 s | 350 MB | yes |" in text
     assert "[png](gallery/SIST-F1.png)" in text
+    assert "Runs per plan: 3, once only when the first run took more than 8 CPU s" in text
+    assert "speed targets' plans (filtered SIST floors, SIST-F5.dwg) one at a time" in text
+    A.max_repeat_cpu = float("inf")  # the default: every plan runs --runs times
+    bench.write_markdown(out, [s], {"resolution": [], "floors": [], "building": None}, 60.0, A)
+    assert "Runs per plan: 3; the speed targets'" in out.read_text(encoding="utf-8")
+
+
+def test_target_plans_are_timed_alone():
+    """The plans whose wall seconds are a target's figure run one at a time (nothing else on the 2 cores)."""
+    bench = _bench_module()
+    assert bench._target_plan(("SIST-F3", "SIST filtered DXF", "x.dxf", "3"))
+    assert bench._target_plan(("SIST-F5.dwg", "SIST original DWG", "x.dwg", "5"))
+    assert not bench._target_plan(("SIST-F1.dwg", "SIST original DWG", "x.dwg", "1"))
+    assert not bench._target_plan(("office", "ArchWeb DXF", "x.dxf", "1"))
 
 
 def test_growth_exponent():
