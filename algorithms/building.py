@@ -1639,19 +1639,24 @@ def merge_floor_files(paths: Sequence[str], out_path: str, building_name: str = 
 
 
 def _convert_one(args):
-    from . import pipeline
+    from . import pipeline, segmentation
 
     dxf, out, level, kwargs = args
     import time as _t
 
     t0 = _t.perf_counter()
-    stats = pipeline.convert_dxf(dxf, out, level=level, **kwargs)
+    with segmentation.busy_cpu():  # in a pool: one of the CPUs its workers keep busy
+        stats = pipeline.convert_dxf(dxf, out, level=level, **kwargs)
     return out, _t.perf_counter() - t0, stats.get("areas"), stats.get("passages")
 
 
-def _one_thread_worker() -> None:
-    """Pool initializer: the worker's segmentation runs on one thread (``CAD2OSMAG_THREADS=1``)."""
-    os.environ["CAD2OSMAG_THREADS"] = "1"
+def _pool_worker(running) -> None:
+    """Pool initializer: the workers count their running conversions in ``running`` (shared); a worker's
+    segmentation takes a second thread only while a CPU is left (``segmentation.share_cpus``): with as many
+    workers as CPUs, once the other worker has no floor left."""
+    from . import segmentation
+
+    segmentation.share_cpus(running)
 
 
 def convert_floors(dxf_paths: Sequence[str], out_dir: str, levels: Optional[Sequence[str]] = None,
@@ -1694,11 +1699,10 @@ def convert_floors(dxf_paths: Sequence[str], out_dir: str, levels: Optional[Sequ
         import multiprocessing as mp
 
         ctx = mp.get_context("spawn")  # no fork of a process that may hold QGIS/Qt state
-        # as many workers as CPUs keep every core busy: a worker's own second thread (segmentation) would only
-        # compete with the other workers for the cores
-        busy = workers >= (len(os.sched_getaffinity(0)) if hasattr(os, "sched_getaffinity") else (os.cpu_count() or 1))
-        with cf.ProcessPoolExecutor(max_workers=workers, mp_context=ctx,
-                                    initializer=_one_thread_worker if busy else None) as ex:
+        # workers busy on every core: a worker's own second thread (segmentation) would only compete with the
+        # other workers for the cores; it runs once a core is left (the last floors: _pool_worker)
+        with cf.ProcessPoolExecutor(max_workers=workers, mp_context=ctx, initializer=_pool_worker,
+                                    initargs=(ctx.Value("i", 0),)) as ex:
             futs = {ex.submit(_convert_one, job): k for k, job in enumerate(jobs)}
             for f in cf.as_completed(futs):
                 k = futs[f]

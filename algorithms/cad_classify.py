@@ -432,6 +432,8 @@ def classify_entities(geoms: Sequence[CadGeometry], chains: Sequence[str], rules
         main_cls = cls[:end]
         _free_furniture(geoms[:end], main_cls, weak)
         check()
+        furniture_groups(geoms[:end], main_cls, weak)
+        check()
         floor_markings(geoms[:end], main_cls, weak)
         check()
         hints.extend(lined_doorways(geoms[:end], main_cls, weak, hints))
@@ -1047,6 +1049,84 @@ def floor_markings(geoms: Sequence[CadGeometry], cls: List[str], weak: set) -> i
         for k in ks:
             cls[idx[k]] = "marking"
         n += len(ks)
+    return n
+
+
+# ------------------------------------------------------------------------------------------ furniture in pieces
+FURNITURE_GROUPS = True  # switch: free-standing furniture drawn in many strokes or with curves (below)
+FURNITURE_PIECES = 8  # lines: a free-standing group of this many straight pieces is furniture drawn in strokes
+CURVED_TYPES = ("ARC", "CIRCLE", "ELLIPSE", "SPLINE")
+
+
+def furniture_groups(geoms: Sequence[CadGeometry], cls: List[str], weak: set) -> int:
+    """Free-standing furniture drawn in pieces on ``weak`` layers (layer "0", fallback layers): a group of
+    touching open lines (chairs drawn as dozens of elliptic arcs, a table with its chairs, a sink, a plant)
+    that touches no other geometry (no wall, hatch, column or filled piece within TOUCH), is furniture-sized
+    (its oriented box FURNITURE_MIN-FURNITURE_MAX), holds a curved piece or at least FURNITURE_PIECES pieces,
+    and has no two lines at a wall's thickness apart (``_has_wall_pair``: a wall stub). Columns, shafts and
+    voids are drawn as few straight strokes (a square, a square with its diagonals) or filled, and stay; a
+    single closed outline is ``_free_furniture``'s. Marked "furniture" in ``cls``. Returns how many lines.
+
+    A hall full of tables and chairs on the wall layer otherwise splits into areas along the rows of chairs
+    (kindergarten-1's round dining hall: twelve areas)."""
+    import shapely
+    from shapely import STRtree
+
+    if not FURNITURE_GROUPS:
+        return 0
+    cand, coords = [], []
+    sel = [i for i, g in enumerate(geoms) if not cls[i] and g.layer in weak and not g.filled
+           and g.entity in MARKING_TYPES and g.kind not in ("column", "stair", "elevator", "boundary", AUX_KIND)]
+    for i, c in zip(sel, _finite_rows([geoms[i].coords for i in sel])):
+        if len(c) >= 2:
+            cand.append(i)
+            coords.append(c)
+    if len(cand) < 2:
+        return 0
+    lines = _linestrings(coords)
+    bounds = shapely.bounds(lines)
+    groups = []
+    for ks in _touching_groups(lines, STRtree(lines)).values():
+        if len(ks) < 2:
+            continue
+        b = bounds[ks]
+        if max(b[:, 2].max() - b[:, 0].min(), b[:, 3].max() - b[:, 1].min()) >= FURNITURE_MAX * math.sqrt(2):
+            continue  # no oriented box of furniture size fits (quick test before the exact one)
+        curved = any(geoms[cand[k]].entity in CURVED_TYPES for k in ks)
+        if not curved and len(ks) < FURNITURE_PIECES:
+            continue
+        box = shapely.oriented_envelope(shapely.multilinestrings(lines[ks].tolist()))
+        if box.geom_type != "Polygon":
+            continue
+        xy = np.asarray(box.exterior.coords)
+        side = np.hypot(*np.diff(xy[:3], axis=0).T)
+        if side.max() > FURNITURE_MAX or side.min() < FURNITURE_MIN:
+            continue
+        straight = [geoms[cand[k]] for k in ks if geoms[cand[k]].entity in ("LINE", "LWPOLYLINE", "POLYLINE")]
+        if straight and _has_wall_pair(np.concatenate([_segments(g.coords, g.closed) for g in straight])):
+            continue
+        groups.append(ks)
+    if not groups:
+        return 0
+    # touching nothing else: every other piece of the drawing (filled, columns, other layers, classified ones
+    # but furniture) within TOUCH of the group vetoes it
+    others = [i for i, g in enumerate(geoms) if cls[i] != "furniture" and g.kind not in ("boundary", AUX_KIND)]
+    o_idx, o_coords = [], []
+    for i, c in zip(others, _finite_rows([geoms[i].coords for i in others])):
+        if len(c) >= 1:
+            o_idx.append(i)
+            o_coords.append(c if len(c) >= 2 else np.vstack([c, c]))
+    tree = STRtree(_linestrings(o_coords))
+    o_idx = np.asarray(o_idx, dtype=np.int64)
+    n = 0
+    for ks in groups:
+        members = {cand[k] for k in ks}
+        hit = o_idx[tree.query(lines[ks], predicate="dwithin", distance=TOUCH)[1]]
+        if any(int(j) not in members for j in hit):
+            continue
+        for i in members:
+            cls[i] = "furniture"
+        n += len(members)
     return n
 
 

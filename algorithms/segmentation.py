@@ -75,6 +75,7 @@ Steps (``AreaGraph.stats`` keeps the wall time of each):
 """
 from __future__ import annotations
 
+import contextlib
 import math
 import os
 import threading
@@ -161,10 +162,42 @@ def _check_inputs(grid: OccupancyGrid, door_width: float, corridor_width: float,
 # --------------------------------------------------------------------------- helpers
 def _threads_on() -> bool:
     """Whether independent raster passes of one floor run on two threads (``_Background``): not on a
-    one-CPU machine, nor with ``CAD2OSMAG_THREADS=1`` in the environment."""
+    one-CPU machine, nor with ``CAD2OSMAG_THREADS=1`` in the environment, nor in a process-pool worker
+    while the pool's conversions keep every CPU busy (``share_cpus``)."""
     if os.environ.get("CAD2OSMAG_THREADS", "").strip() == "1":
         return False
-    return _cpus() > 1
+    cpus = _cpus()
+    running = _POOL.get("running")
+    return cpus > 1 and (running is None or running.value < cpus)
+
+
+_POOL: dict = {}
+
+
+def share_cpus(running) -> None:
+    """Make this process a worker of a pool that shares the CPUs: ``running`` (a ``multiprocessing.Value``
+    of type 'i', shared by the pool's workers) counts the pool's conversions running now (``busy_cpu``). A
+    worker's segmentation then runs its second thread only while fewer conversions than CPUs run, i.e. once
+    another worker has no floor left (the last floors of a building), never beside a busy worker on every
+    CPU. The output is the same either way (``_Background``)."""
+    _POOL["running"] = running
+
+
+@contextlib.contextmanager
+def busy_cpu():
+    """Count the conversion run inside as one busy CPU of this worker's pool (``share_cpus``); nothing
+    outside a pool."""
+    running = _POOL.get("running")
+    if running is None:
+        yield
+        return
+    with running.get_lock():
+        running.value += 1
+    try:
+        yield
+    finally:
+        with running.get_lock():
+            running.value -= 1
 
 
 def _cpus() -> int:

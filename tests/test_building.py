@@ -1116,14 +1116,28 @@ def test_hidden_stair_marks_type_an_enclosed_core_drawn_without_treads():
     assert hidden_stair_marks([Area(4, box(0, 0, 3.5, 7.5))], mark(1, 3, "")) == {}  # shown: treads decide
 
 
-def test_pool_workers_as_many_as_cpus_run_their_segmentation_on_one_thread(monkeypatch):
-    """convert_floors' pool initializer (used when the workers fill every CPU): the segmentation's second
-    thread would only compete with the other workers."""
+def test_pool_workers_take_a_second_thread_only_while_a_cpu_is_left(monkeypatch):
+    """convert_floors' pool workers count their running conversions (shared): with every CPU busy a worker's
+    segmentation runs on one thread (a second would only compete with the other workers); once another
+    worker has no floor left, the last floors take the free CPU."""
+    import multiprocessing as mp
+
     from algorithms import segmentation
 
     monkeypatch.delenv("CAD2OSMAG_THREADS", raising=False)
     monkeypatch.setattr(segmentation, "_cpus", lambda: 2)
+    monkeypatch.setattr(segmentation, "_POOL", {})
     assert segmentation._threads_on()
-    building._one_thread_worker()
-    assert os.environ["CAD2OSMAG_THREADS"] == "1" and not segmentation._threads_on()
-    monkeypatch.delenv("CAD2OSMAG_THREADS")
+    running = mp.get_context("spawn").Value("i", 0)
+    building._pool_worker(running)
+    with segmentation.busy_cpu():
+        assert running.value == 1 and segmentation._threads_on()  # the other worker idle: both cores
+        running.value += 1  # the other worker converts a floor too
+        assert not segmentation._threads_on()
+        running.value -= 1
+    assert running.value == 0
+    with pytest.raises(RuntimeError), segmentation.busy_cpu():  # counted down on errors too
+        raise RuntimeError("bad floor")
+    assert running.value == 0
+    monkeypatch.setenv("CAD2OSMAG_THREADS", "1")  # the user's switch wins
+    assert not segmentation._threads_on()
