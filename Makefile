@@ -9,8 +9,9 @@ APT_PACKAGES := qgis python3-qgis qgis-providers python3-venv python3-gdal gdal-
                 python3-dev build-essential libproj-dev proj-bin \
                 libeigen3-dev libopencv-core-dev libopencv-imgproc-dev qttools5-dev-tools
 STAMP := $(VENV)/.installed
+KERNELS := algorithms/cad2osmag_kernels_aot.built
 
-.PHONY: install demo test test-quick bench bench-route evaluate evaluate-cad clean help translations package test-qgis340
+.PHONY: install kernels demo test test-quick bench bench-route evaluate evaluate-cad clean help translations package test-qgis340
 
 help:
 	@echo "make demo        install what is missing, build the sample building and convert it (out/demo/)"
@@ -27,7 +28,15 @@ help:
 	@echo "make package     build dist/cad2osmag-<version>.zip for QGIS's Install from ZIP"
 	@echo "make test-qgis340  the suite on QGIS 3.40 LTR (Debian 13 root filesystem, built on first use)"
 
-install: $(STAMP)
+install: $(STAMP) $(KERNELS)
+
+# the segmentation's kernels built ahead of time (scripts/build_kernels.py: no numba import per process);
+# rebuilt when the kernels change; a failed build is not an error (numba or numpy run instead)
+$(KERNELS): $(STAMP) algorithms/_kernels_nb.py algorithms/kernels.py scripts/build_kernels.py
+	$(PY) scripts/build_kernels.py
+	touch $(KERNELS)
+
+kernels: $(KERNELS)
 
 $(STAMP): requirements.txt requirements-dev.txt constraints-build.txt scripts/install.sh scripts/setup-profile.sh
 	bash scripts/install.sh "$(APT_PACKAGES)"

@@ -414,31 +414,3 @@ def label_boxes(labels, n):
                     box[v, 3] = c
             box[v, 1] = r + 1
     return box, seen
-
-
-def selftest():
-    """Call every kernel once on a tiny input: loads (or compiles) them all, so that a numba or a
-    cache that does not work shows here, where ``kernels.get`` falls back to numpy, not mid-run."""
-    mask = np.zeros((6, 7), np.bool_)
-    mask[1:5, 1:6] = True
-    dist = np.where(mask, np.float32(1.0), np.float32(0.0)).astype(np.float32)
-    dist[2:4, 2:5] = 2.0
-    img, pos, bounds = thin_setup(mask, dist)
-    luts = np.zeros((2, 256), np.bool_)
-    cand = np.empty(len(pos), np.int64)
-    flags = np.empty(len(pos), np.bool_)
-    thin_layers(img, pos, bounds, 0, len(bounds) - 1, luts, 9, cand, 0, flags)
-    thin_rest(img, luts, 9, flags)
-    markers = np.zeros((6, 7), np.int32)
-    markers[2, 2] = 1
-    basins = ascent_basins(dist, mask, markers)
-    lab = basins.copy()
-    orphan_pieces(lab, markers, mask)
-    grow_rounds(lab.ravel(), np.zeros(1, np.int64), 6, 7, np.zeros(1, np.int32), np.zeros(1, np.int64), False)
-    grow_rounds(lab.ravel(), np.zeros(1, np.int64), 6, 7, markers.ravel(), np.zeros(2, np.int64), True)
-    src, vals = zone_seeds(markers, markers, 0, 6, 0, 7, 1)
-    zone_assign(lab, markers, np.zeros((6, 7), np.int32), vals, 0, 0, 1)
-    neighbour_pairs(lab, dist, True)
-    label_boxes(markers, 1)
-    label_boxes(markers[:, 1:], 1)  # a view (the zones' box in nearest_seed_regions): its own signature
-    label_boxes(markers.astype(np.int64), 1)

@@ -11,14 +11,20 @@ from algorithms import kernels
 from .test_speed_equivalence import _random_rooms
 
 
-@pytest.fixture
-def both_paths():
-    """Run a callable with the numpy path and with the compiled one; restores the default after."""
-    if kernels.get() is None:
-        kernels.set_enabled(True)
-        if kernels.get() is None:
-            kernels.set_enabled(None)
-            pytest.skip("numba is not installed: only the numpy path exists")
+@pytest.fixture(params=["build", "numba"])
+def both_paths(request, monkeypatch):
+    """Run a callable with the numpy path and with a compiled one (the ahead-of-time build, or numba's
+    kernels); restores the default after."""
+    if request.param == "numba":
+        monkeypatch.setattr(kernels, "AOT", False)
+    kernels.set_enabled(True)
+    mod = kernels.get()
+    if mod is None:
+        kernels.set_enabled(None)
+        pytest.skip("numba is not installed: only the numpy path exists")
+    if request.param == "build" and not isinstance(mod, kernels._AotKernels):
+        kernels.set_enabled(None)
+        pytest.skip("no ahead-of-time build here (scripts/build_kernels.py)")
 
     def run(fn):
         kernels.set_enabled(False)
@@ -161,7 +167,7 @@ def test_the_path_that_runs_is_logged():
     finally:
         kernels.set_enabled(None)
     if kernels.get() is not None:
-        assert "numba" in kernels.describe()
+        assert "compiled kernels" in kernels.describe()
     p = RecordingProgress()
     from algorithms import segmentation
     from algorithms.model import OccupancyGrid
@@ -220,7 +226,7 @@ def test_qgis_process_segment_runs_the_kernels_and_gives_the_numpy_result(tmp_pa
                                       "AREAS": tmp_path / "a.gpkg", "PASSAGES": tmp_path / "p.gpkg", "LABELS": out})
     assert "pixel loops:" in log
     if kernels.get() is not None:
-        assert "compiled kernels (numba" in log, log[-2000:]
+        assert "compiled kernels (" in log, log[-2000:]
     kernels.set_enabled(False)
     try:
         ref = segmentation.segment(plan.grid, door_width=1.0, corridor_width=2.0)
@@ -257,7 +263,7 @@ def test_preload_loads_in_a_thread_and_get_waits_for_it(monkeypatch):
         gate.set()
         assert (kernels.get() is not None) == expected
         assert kernels._STATE["loaded"] and not th.is_alive()
-        assert ("numba" in kernels.describe()) == expected and "loading" not in kernels.describe()
+        assert ("compiled kernels" in kernels.describe()) == expected and "loading" not in kernels.describe()
     finally:
         gate.set()
         monkeypatch.setattr(kernels, "_load", real)
@@ -290,7 +296,7 @@ def test_qgis_process_conversion_preloads_the_kernels_and_writes_the_same_map(tm
     _, res, log = run_alg("dxftoosmag", {"INPUT": info["dxf"], "OUTPUT": str(out), "LEVEL": 1}, headless=True)
     assert "pixel loops:" in log
     if kernels.get() is not None:  # loaded here first: this process's conversion does not preload
-        assert "pixel loops: compiled kernels (numba" in log, log[-2000:]
+        assert "pixel loops: compiled kernels (" in log, log[-2000:]
     ref = tmp_path / "here.osm"
     pipeline.convert_dxf(info["dxf"], str(ref), level="1")
     a1, p1, _r1, _ = osmag.read_osmag(str(out))
@@ -314,3 +320,69 @@ def test_a_compiling_load_is_noted_once():
         assert "compiled on this first use in 14 s" in note and kernels.compile_note() == ""
     finally:
         kernels.set_enabled(None)
+
+
+# ------------------------------------------------------------------ the ahead-of-time build
+def _aot_or_skip():
+    kernels.set_enabled(None)
+    mod = kernels.get()
+    if not isinstance(mod, kernels._AotKernels):
+        pytest.skip("no ahead-of-time build here (scripts/build_kernels.py)")
+    return mod
+
+
+def test_the_build_loads_without_numba_and_says_so():
+    """A fresh process with the build imports no numba: the fixed cost of every conversion process."""
+    import subprocess
+    import sys
+
+    _aot_or_skip()
+    code = ("import sys; sys.path.insert(0, '.'); from algorithms import kernels; m = kernels.get(); "
+            "print(type(m).__name__, 'numba' in sys.modules, kernels.describe())")
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True,
+                         cwd=str(__import__("pathlib").Path(__file__).resolve().parents[1])).stdout
+    assert out.startswith("_AotKernels False pixel loops: compiled kernels (ahead-of-time build")
+
+
+def test_arguments_outside_the_built_signatures_run_numba_with_the_same_result():
+    """The build's wrappers do not check types (a float64 clearance would be read as float32): every call is
+    checked, and another dtype, a strided array where a contiguous one is built or a read-only one goes to
+    numba's kernel."""
+    mod = _aot_or_skip()
+    mask = _blobs(3)
+    dist = (mask * 2.0).astype(np.float32)
+    specs = mod._by_base["thin_setup"][0][1]
+    assert kernels._fits(specs, (mask, dist))
+    assert not kernels._fits(specs, (mask, dist.astype(np.float64)))
+    assert not kernels._fits(specs, (mask[:, ::2], dist[:, ::2]))
+    ro = dist.copy()
+    ro.flags.writeable = False
+    assert not kernels._fits(specs, (mask, ro))
+    assert not kernels._fits(mod._by_base["grow_rounds"][0][1],
+                             (np.zeros(3, np.int32), np.zeros(1, np.int64), 1, 3, np.zeros(3, np.int32),
+                              np.zeros(1, np.int64), 1))  # an int where a bool is built
+    a = mod.thin_setup(mask, dist.astype(np.float64))  # numba's float64 kernel
+    b = mod.thin_setup(mask, dist)
+    _same(a, b)  # the clearance's values are the same in both dtypes here
+
+
+def test_a_stale_build_is_not_loaded(monkeypatch):
+    """Built from another ``_kernels_nb.py`` (its stamp differs): numba's kernels run instead."""
+    _aot_or_skip()
+    monkeypatch.setattr(kernels, "source_digest", lambda: "0" * 64)
+    kernels.set_enabled(None)
+    try:
+        mod = kernels.get()
+        assert mod is not None and not isinstance(mod, kernels._AotKernels)
+    finally:
+        monkeypatch.undo()
+        kernels.set_enabled(None)
+
+
+def test_signature_table_parses():
+    specs = kernels._arg_specs("Tuple((u1[:, ::1], i4[::1]))(i4[:, :], i4[:, ::1], i8, b1)")
+    assert specs == ((np.dtype(np.int32), 2, False), (np.dtype(np.int32), 2, True), ("i8", None, None),
+                     ("b1", None, None))
+    assert {base for _n, base, _s in kernels.AOT_EXPORTS} == {
+        "thin_setup", "thin_layers", "thin_rest", "ascent_basins", "grow_rounds", "orphan_pieces", "zone_seeds",
+        "zone_assign", "neighbour_pairs", "label_boxes"}
