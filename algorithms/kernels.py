@@ -142,7 +142,23 @@ def source_digest() -> str:
         h.update(fh.read())
     h.update(repr(AOT_EXPORTS).encode())
     h.update(np.__version__.encode())
+    h.update(_cpu_id().encode())  # the build is for this processor (``target_cpu="host"``)
     return h.hexdigest()
+
+
+def _cpu_id() -> str:
+    """This processor's instruction-set features (Linux: the first ``flags`` line of /proc/cpuinfo), so that a
+    build for one processor is never loaded on another; the machine name elsewhere."""
+    import platform
+
+    try:
+        with open("/proc/cpuinfo", encoding="ascii", errors="replace") as fh:
+            for line in fh:
+                if line.startswith("flags"):
+                    return platform.machine() + ":" + " ".join(sorted(line.split(":", 1)[1].split()))
+    except OSError:
+        pass
+    return platform.machine() + ":" + platform.processor()
 
 
 def aot_paths():

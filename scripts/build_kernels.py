@@ -51,6 +51,7 @@ def main() -> int:
     with tempfile.TemporaryDirectory(prefix="cad2osmag-kernels-") as tmp:
         cc = CC(kernels.AOT_MODULE)
         cc.output_dir = tmp
+        cc.target_cpu = "host"  # this machine's instruction set, as numba's own kernels (the stamp says which)
         for name, base, sig in kernels.AOT_EXPORTS:
             cc.export(name, sig)(getattr(mod, base).py_func)
         t0 = time.perf_counter()

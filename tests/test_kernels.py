@@ -386,3 +386,14 @@ def test_signature_table_parses():
     assert {base for _n, base, _s in kernels.AOT_EXPORTS} == {
         "thin_setup", "thin_layers", "thin_rest", "ascent_basins", "grow_rounds", "orphan_pieces", "zone_seeds",
         "zone_assign", "neighbour_pairs", "label_boxes"}
+
+
+def test_the_build_releases_the_gil():
+    """The segmentation runs kernels on its second thread beside the first (``segmentation._Background``): the
+    build's wrappers must release the GIL as numba's ``nogil`` kernels do (``scripts/build_kernels.py`` sets
+    numba's ``release_gil`` flag for them). Such wrappers call ``PyEval_SaveThread``; a build without the flag
+    does not reference it (checked on a build made without it)."""
+    _aot_or_skip()
+    path, _stamp = kernels.aot_paths()
+    with open(path, "rb") as fh:
+        assert b"PyEval_SaveThread" in fh.read()
