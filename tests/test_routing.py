@@ -635,6 +635,10 @@ def test_bench_cross_building_on_a_small_fused_file(tmp_path):
     # the speed-up is CPU over CPU: grid A* CPU / osmAG CPU best of the rounds, never below the first run's
     assert s["g_cpu_med"] > 0 and s["speed_best_med"] >= s["speed_cpu_med"] > 0
     assert "speed-up median, CPU" in bench.table([], [dict(res, label="two floors")])[0]
+    # the stairs-avoiding graph (both corridors re-pieced) and a first query with it, timed on their own
+    assert res["variant_areas"] == 2 and res["variant_cpu"] > 0 and res["first_avoid_cpu"] > 0
+    assert "2 areas that share a passage with a stair area" in bench.variant_note(res)
+    assert all("pair_call" not in r and "_call" not in r for r in res["rows"])
 
 
 @pytest.mark.slow
@@ -855,3 +859,25 @@ def test_avoid_variants_are_built_once_cached_and_leave_the_plain_graph_alone(mo
             == (z.cost, z.length, z.passages, z.areas)
     assert [list(x) for x in g.adj] == adj and {k: pc.entries for k, pc in g.pieces.items()} == entries
     assert routing.MAX_VARIANTS == 2
+
+
+def test_avoided_stairs_a_door_right_next_to_the_opening_is_crossed_r_away():
+    """A room next to the stair box (their drawings overlap by 15 cm, as converted plans do), its door from
+    the hall starting at the stair's corner: the door's crossing node at the jamb lies 15 cm from the stair
+    area, so with AVOID=stairs the hall does not join it (the route crosses the door at its other node, r
+    from the stair area); without AVOID both nodes are used."""
+    areas, passages, stair = _stair_off_a_hall()
+    stair = box(8, 10, 12.15, 14)
+    areas[1] = area(2, stair, "Stair", atype="stairs")
+    areas.append(area(3, box(12, 10, 16, 14), "Room"))
+    passages.append(passage(11, 3, 1, (12, 10), (13.2, 10), "D"))
+    rm = RouteMap.from_areas(areas, passages)
+    g = rm.graph(0.3)
+    door = [n for n in range(len(g.pos)) if g.passage[n] == 1]
+    assert sorted(round(g.pos[n][0], 2) for n in door) == [12.3, 12.9]
+    hall = {nd for pc in g.pieces_by_area[0] for nd, _, _ in pc.entries}
+    v = rm._avoid_variant(g, {"stairs"})
+    hall_v = {nd for pc in v.pieces_by_area[0] for nd, _, _ in pc.entries}
+    assert set(door) <= hall and hall_v & set(door) == {n for n in door if g.pos[n][0] > 12.5}
+    res = rm.route((14.0, 11.0), (5.0, 5.0), robot_radius=0.3, avoid=["stairs"])
+    assert res.passages == ["D"] and clearance_ok(res.points, stair, 0.3)
