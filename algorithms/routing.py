@@ -1535,8 +1535,6 @@ class RouteMap:
         res.query_ms = (time.perf_counter() - t0) * 1000.0
         if opened:
             res.warnings.append(opened)
-            if not quiet:
-                progress.warning(opened)
         if not quiet:
             progress.step(100, f"route: {res.length:.2f} m, {res.level_changes} level changes, "
                                f"{len(res.areas)} areas, {len(res.passages)} passages ({res.query_ms:.2f} ms)")
