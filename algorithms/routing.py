@@ -40,7 +40,9 @@ radius ``r`` is planned for in its configuration space, built once per map and r
   test per corner, :meth:`_Piece.build_visibility`), elsewhere from a segment test against the piece's
   edges. :meth:`RouteMap.prepare` builds all of it up front for many queries.
 * ``avoid`` drops area types from the search: ``("stairs",)`` for wheelchairs and wheeled robots (lifts
-  only), ``("elevator",)`` for evacuation routes.
+  only), ``("elevator",)`` for evacuation routes. Their passages are then walls for the robot's disc: the
+  areas next to an avoided one get pieces that keep ``r`` from it and from its openings (a variant of the
+  graph per avoid set, built on its first query and kept, :meth:`RouteMap._build_variant`).
 
 Coordinates are metres in the map's frame (osmAG files: the local frame of the root node, x east,
 y north). The result keeps the level of every vertex. :class:`RouteMap` is the entry point::
