@@ -1289,10 +1289,10 @@ class RouteMap:
         passage's opening and the avoided area grown by the robot radius (the passage becomes a wall: the disc
         keeps r from the passage's line and from the avoided area), joined to the same passage nodes but
         those of the closed passages and those closer than r to the avoided area or the closed opening (a
-        door next to a stair's opening: the robot crossing it there would come closer than r). Every other piece, the nodes, their positions and spans are shared
-        with ``g`` (unchanged); the node table, landmarks, point grids and the polylines' cache are the
-        variant's own. The avoided areas' own pieces stay (a query that starts or ends in one is planned on
-        ``g``)."""
+        door next to a stair's opening: the robot crossing it there would come closer than r). Every other
+        piece, the nodes, their positions and spans are shared with ``g`` (unchanged); the node table,
+        landmarks, point grids and STR tree are the variant's own. The avoided areas' own pieces stay (a
+        query that starts or ends in one is planned on ``g``)."""
         import shapely
         from shapely.geometry import Polygon
         from shapely.ops import unary_union

@@ -848,6 +848,9 @@ def test_avoid_variants_are_built_once_cached_and_leave_the_plain_graph_alone(mo
     rm.route("Office 1", "Office 1b", robot_radius=0.3, vertical_cost=10, avoid=["elevator"])
     rm.route("Office 1", "Office 1b", robot_radius=0.3, vertical_cost=10, avoid=["elevator", "stairs"])
     assert builds == [("stairs",), ("elevator",), ("elevator", "stairs")]
+    k_1b = rm.index[5]  # next to the lift: re-pieced when lifts are avoided, shared when stairs are
+    assert g.variants[("elevator",)].pieces_by_area[k_1b][0] is not g.pieces_by_area[k_1b][0]
+    assert v.pieces_by_area[k_1b][0] is g.pieces_by_area[k_1b][0]
     assert list(g.variants) == [("elevator",), ("elevator", "stairs")]  # MAX_VARIANTS = 2: stairs dropped
     rm.route("Office 1", "Office 2", robot_radius=0.3, vertical_cost=10, avoid=["stairs"])
     assert len(builds) == 4 and list(g.variants) == [("elevator", "stairs"), ("stairs",)]
