@@ -40,7 +40,9 @@ radius ``r`` is planned for in its configuration space, built once per map and r
   test per corner, :meth:`_Piece.build_visibility`), elsewhere from a segment test against the piece's
   edges. :meth:`RouteMap.prepare` builds all of it up front for many queries.
 * ``avoid`` drops area types from the search: ``("stairs",)`` for wheelchairs and wheeled robots (lifts
-  only), ``("elevator",)`` for evacuation routes.
+  only), ``("elevator",)`` for evacuation routes. Their passages are then walls for the robot's disc: the
+  areas next to an avoided one get pieces that keep ``r`` from it and from its openings (a variant of the
+  graph per avoid set, built on its first query and kept, :meth:`RouteMap._build_variant`).
 
 Coordinates are metres in the map's frame (osmAG files: the local frame of the root node, x east,
 y north). The result keeps the level of every vertex. :class:`RouteMap` is the entry point::
@@ -88,6 +90,8 @@ COMPACT_TABLES = True  # the query tables in compact dtypes (float32 costs, int1
 # half the memory the tables hold; choices on float32 sums, the chosen costs recomputed in float64
 MAX_TABLE_NODES = 4000  # node-to-node distance table (n^2 x 6 bytes kept, 96 MB at 4000) up to this size
 MAX_TABLES = 4  # tables kept per map and radius (vertical cost x avoid set)
+AVOID_WALLS = True  # passages into avoided areas are walls for the robot's disc (see RouteMap._avoid_variant)
+MAX_VARIANTS = 2  # avoid variants of a graph kept (least recently used dropped)
 _FAR = 1e15  # landmark distance standing for "unreachable"
 KIND_CODES_INV = ("room", "corridor", "stairs", "elevator", "other")
 KIND_CODES = {k: i for i, k in enumerate(KIND_CODES_INV)}
@@ -915,6 +919,10 @@ class _Graph:
         self.piece_tree = None
         self.piece_list: List[_Piece] = []
         self.span: Dict[int, tuple] = {}  # crossing node -> its passage's usable span: (start, direction, length)
+        self.r = 0.0  # the robot radius it was built for
+        self.avoid: Tuple[str, ...] = ()  # the avoided area types this graph's pieces keep r from (a variant)
+        self.variants: Dict[tuple, "_Graph"] = {}  # avoid set -> variant of this graph (RouteMap._avoid_variant)
+        self.last_variant = None  # (avoid set, variant) of the last query with an avoid set
 
     def csr(self) -> Dict[str, np.ndarray]:
         """The adjacency as flat arrays (built once): per node a slice of neighbours, planar costs,
@@ -1108,8 +1116,8 @@ class RouteMap:
         visibility polygons of the large pieces' corners. For many queries on one map (a robot's planner,
         the benchmark); a single query does not need it (QGIS's route tool does not call it)."""
         progress = ensure(progress)
-        g = self.graph(robot_radius, progress=progress.sub(0, 50))
         avoid_set = self._avoid_set(avoid)
+        g = self._avoid_variant(self.graph(robot_radius, progress=progress.sub(0, 50)), avoid_set)
         vc = float(vertical_cost)
         if self._table(g, vc, avoid_set) is None:
             self._landmarks(g, vc)
@@ -1230,25 +1238,114 @@ class RouteMap:
         for m, pc in enumerate(g.pieces.values()):
             if m % 16 == 0:
                 progress.step(80.0 + 20.0 * m / npc)
-            pc.solve()
-            kind = self.types[pc.area_index]
-            for x in range(len(pc.entries)):
-                nx, vx, dx = pc.entries[x]
-                for y in range(x + 1, len(pc.entries)):
-                    ny, vy, dy = pc.entries[y]
-                    if nx == ny:
-                        continue
-                    c = pc.D[vx, vy]
-                    if not math.isfinite(c):
-                        continue
-                    cost = dx + c + dy
-                    g.adj[nx].append((ny, cost, kind, (pc.key, vx, vy), 0))
-                    g.adj[ny].append((nx, cost, kind, (pc.key, vy, vx), 0))
+            self._join_piece(g, pc)
+        g.r = r
         g.build_s = time.perf_counter() - t0
         progress.step(100, f"routing graph for a robot radius of {r:.2f} m: {len(g.pos)} nodes, "
                            f"{sum(len(a) for a in g.adj) // 2} edges, {len(g.pieces)} area pieces, "
                            f"{len(g.closed)} passages closed, built in {g.build_s:.2f} s")
         return g
+
+    def _join_piece(self, g: _Graph, pc: _Piece):
+        """Solve a piece (its visibility graph) and join every pair of its nodes in the graph."""
+        pc.solve()
+        kind = self.types[pc.area_index]
+        for x in range(len(pc.entries)):
+            nx, vx, dx = pc.entries[x]
+            for y in range(x + 1, len(pc.entries)):
+                ny, vy, dy = pc.entries[y]
+                if nx == ny:
+                    continue
+                c = pc.D[vx, vy]
+                if not math.isfinite(c):
+                    continue
+                cost = dx + c + dy
+                g.adj[nx].append((ny, cost, kind, (pc.key, vx, vy), 0))
+                g.adj[ny].append((nx, cost, kind, (pc.key, vy, vx), 0))
+
+    # ------------------------------------------------------------------ avoided areas: their passages as walls
+    def _avoid_variant(self, g: _Graph, avoid: set) -> _Graph:
+        """The graph a query with this avoid set plans on: ``g`` itself when nothing is avoided, else its
+        variant in which the passages into avoided areas are walls for the robot's disc (built on the first
+        query with that set, the last ``MAX_VARIANTS`` kept, see :meth:`_build_variant`)."""
+        if not avoid or not AVOID_WALLS:
+            return g
+        last = g.last_variant
+        if last is not None and last[0] == avoid:
+            return last[1]
+        key = tuple(sorted(avoid))
+        v = g.variants.pop(key, None)
+        if v is None:
+            v = self._build_variant(g, key)
+        g.variants[key] = v  # (re)inserted last: the most recently used
+        while len(g.variants) > MAX_VARIANTS:
+            g.variants.pop(next(iter(g.variants)))
+        g.last_variant = (set(avoid), v)
+        return v
+
+    def _build_variant(self, g: _Graph, avoid: Tuple[str, ...]) -> _Graph:
+        """A copy of graph ``g`` for a robot that must not enter the areas of the types ``avoid``: every area
+        that shares a (horizontal) passage with an avoided area gets new pieces, its old ones minus the
+        passage's opening and the avoided area grown by the robot radius (the passage becomes a wall: the disc
+        keeps r from the passage's line and from the avoided area), joined to the same passage nodes but
+        those of the closed passages and those closer than r to the avoided area or the closed opening (a
+        door next to a stair's opening: the robot crossing it there would come closer than r). Every other
+        piece, the nodes, their positions and spans are shared with ``g`` (unchanged); the node table,
+        landmarks, point grids and STR tree are the variant's own. The avoided areas' own pieces stay (a
+        query that starts or ends in one is planned on ``g``)."""
+        import shapely
+        from shapely.geometry import Polygon
+        from shapely.ops import unary_union
+
+        t0 = time.process_time()
+        r, vset, aset = g.r, set(self.vertical), set(avoid)
+        keep_off: Dict[int, list] = {}  # area -> geometry its robot keeps r from
+        closed: Dict[int, set] = {}  # area -> passages closed for it
+        for i, p in enumerate(self.passages):
+            if i in vset:
+                continue
+            a, b = self.index[p.from_id], self.index[p.to_id]
+            for x, y in ((a, b), (b, a)):
+                if self.types[y] in aset and self.types[x] not in aset and g.pieces_by_area.get(x):
+                    opening = p.line.buffer(OPENING_TOL, cap_style="flat") if p.line.length > 1e-6 else p.line
+                    keep_off.setdefault(x, []).extend([opening, self.areas[y].polygon])
+                    closed.setdefault(x, set()).add(i)
+        v = _Graph()
+        v.pos, v.rank, v.level, v.passage, v.span, v.closed, v.free = g.pos, g.rank, g.level, g.passage, g.span, \
+            g.closed, g.free
+        v.r, v.avoid = r, avoid
+        v.pieces, v.pieces_by_area, v.adj = dict(g.pieces), dict(g.pieces_by_area), list(g.adj)
+        for k in sorted(keep_off):
+            olds = g.pieces_by_area[k]
+            old_keys = {pc.key for pc in olds}
+            wall = unary_union(keep_off[k]).buffer(r, quad_segs=QUAD_SEGS)
+            part = unary_union([pc.poly for pc in olds]).difference(wall)
+            polys = [q for q in getattr(part, "geoms", [part]) if isinstance(q, Polygon) and q.area > 1e-4]
+            new = []
+            for n, q in enumerate(polys):
+                pc = _Piece((k, n) + avoid, k, q, olds[0].level)
+                v.pieces[pc.key] = pc
+                new.append(pc)
+            for pc in olds:
+                del v.pieces[pc.key]
+            v.pieces_by_area[k] = new
+            nodes = sorted({nd for pc in olds for nd, _, _ in pc.entries})
+            xy = np.array([g.pos[nd] for nd in nodes], float).reshape(-1, 2)
+            near = shapely.contains_xy(wall, xy[:, 0], xy[:, 1])  # a door right next to the avoided area
+            for nd, too_near in zip(nodes, near.tolist()):
+                # the node's edges through the old pieces go; those through the new ones come
+                v.adj[nd] = [e for e in v.adj[nd] if e[3][0] not in old_keys]
+                i = g.passage[nd]
+                if i in closed[k] or too_near:
+                    continue
+                got = self._entry(v, k, g.pos[nd], far=i < 0 or i in vset)
+                if got is not None:
+                    pc, q, d = got
+                    pc.entries.append((nd, pc.add_point(q), d))
+            for pc in new:
+                self._join_piece(v, pc)
+        v.build_s = time.process_time() - t0
+        return v
 
     def _entry(self, g: _Graph, k: int, x, far: bool = False):
         """(piece, point in it, distance) where a node at x enters area k, or None."""
@@ -1305,11 +1402,14 @@ class RouteMap:
                              "give the level too")
         return ks[0]
 
-    def area_point(self, k: int, robot_radius: float = DEFAULT_ROBOT_RADIUS) -> Tuple[float, float]:
-        """A point well inside area k where the robot fits (the most interior point of its largest piece)."""
+    def area_point(self, k: int, robot_radius: float = DEFAULT_ROBOT_RADIUS, avoid: Sequence[str] = (),
+                   g: Optional[_Graph] = None) -> Tuple[float, float]:
+        """A point well inside area k where the robot fits (the most interior point of its largest piece;
+        with ``avoid``, of the piece that keeps the robot r from the avoided areas)."""
         from .model import polylabel
 
-        g = self.graph(robot_radius)
+        if g is None:
+            g = self._avoid_variant(self.graph(robot_radius), self._avoid_set(avoid))
         pcs = g.pieces_by_area.get(k, [])
         if not pcs:
             raise InputError(f"area '{self.areas[k].name}' (level {self.levels[k]}) has no room for a robot of "
@@ -1320,16 +1420,22 @@ class RouteMap:
             pt = pc.poly.representative_point()
         return float(pt.x), float(pt.y)
 
-    def locate(self, xy, level=None, robot_radius: float = DEFAULT_ROBOT_RADIUS, what: str = "start"):
-        """(piece, snapped point, snap distance) for a point; snaps up to SNAP metres, else InputError."""
-        return self._locate(xy, level, robot_radius, what)[:3]
+    def locate(self, xy, level=None, robot_radius: float = DEFAULT_ROBOT_RADIUS, what: str = "start",
+               avoid: Sequence[str] = ()):
+        """(piece, snapped point, snap distance) for a point; snaps up to SNAP metres, else InputError.
+        With ``avoid``, in the pieces of the avoid set's graph (which keep r from the avoided areas)."""
+        g = self._avoid_variant(self.graph(robot_radius), self._avoid_set(avoid)) if avoid else None
+        return self._locate(xy, level, robot_radius, what, g)[:3]
 
-    def _locate(self, xy, level=None, robot_radius: float = DEFAULT_ROBOT_RADIUS, what: str = "start"):
-        """:meth:`locate` plus whether the point lies strictly inside its piece (None: not known yet)."""
+    def _locate(self, xy, level=None, robot_radius: float = DEFAULT_ROBOT_RADIUS, what: str = "start",
+                g: Optional[_Graph] = None):
+        """:meth:`locate` plus whether the point lies strictly inside its piece (None: not known yet); on
+        graph ``g`` (default: the radius's graph)."""
         from shapely.geometry import Point
 
         lev = self._check_level(level, what)
-        g = self.graph(robot_radius)
+        if g is None:
+            g = self.graph(robot_radius)
         x, y = float(xy[0]), float(xy[1])
         if not (math.isfinite(x) and math.isfinite(y)):
             raise InputError(f"{what}: the point ({xy[0]}, {xy[1]}) is not a valid coordinate")
@@ -1411,23 +1517,41 @@ class RouteMap:
             raise InputError(f"VERTICAL_COST must be a non-negative number of metres, got {vertical_cost}")
         vc = float(vertical_cost)
         avoid_set = self._avoid_set(avoid)
-        g = self.graph(robot_radius, progress=None if quiet else progress.sub(0, 90))
-        ends = []
-        for what, p, lev in (("start", start, start_level), ("goal", goal, goal_level)):
-            if isinstance(p, str):
-                k = self.find_area(p, lev)
-                p = self.area_point(k, robot_radius)
-                lev = self.levels[k]
-            ends.append(self._locate(p, lev, robot_radius, what))
+        base = self.graph(robot_radius, progress=None if quiet else progress.sub(0, 90))
+        g = self._avoid_variant(base, avoid_set) if avoid_set else base
+        ends = self._ends(g, start, goal, start_level, goal_level, robot_radius)
+        if g is not base and any(self.types[e[0].area_index] in avoid_set for e in ends):
+            # a start or goal inside an avoided area (sent into a stair well): it has to pass that area's
+            # passage, so the passages into avoided areas stay open for this query (other avoided areas are
+            # still not crossed)
+            g = base
+            ends = self._ends(g, start, goal, start_level, goal_level, robot_radius)
+            opened = (f"the {'start' if self.types[ends[0][0].area_index] in avoid_set else 'goal'} lies in an "
+                      f"avoided area ({', '.join(sorted(avoid_set))}): its passages are open for this route")
+        else:
+            opened = None
         if self._table(g, vc, avoid_set) is None:  # once per map, vertical cost (and avoid set)
             self._landmarks(g, vc)
         t0 = time.perf_counter()
         res = self._search(g, ends[0], ends[1], vc, avoid_set, robot_radius)
         res.query_ms = (time.perf_counter() - t0) * 1000.0
+        if opened:
+            res.warnings.append(opened)
         if not quiet:
             progress.step(100, f"route: {res.length:.2f} m, {res.level_changes} level changes, "
                                f"{len(res.areas)} areas, {len(res.passages)} passages ({res.query_ms:.2f} ms)")
         return res
+
+    def _ends(self, g: _Graph, start, goal, start_level, goal_level, robot_radius: float):
+        """Start and goal (points or area names) located on graph ``g``: :meth:`_locate` results."""
+        ends = []
+        for what, p, lev in (("start", start, start_level), ("goal", goal, goal_level)):
+            if isinstance(p, str):
+                k = self.find_area(p, lev)
+                p = self.area_point(k, robot_radius, g=g)
+                lev = self.levels[k]
+            ends.append(self._locate(p, lev, robot_radius, what, g))
+        return ends
 
     @staticmethod
     def _avoid_set(avoid) -> set:
@@ -1818,8 +1942,9 @@ class RouteMap:
     # ------------------------------------------------------------------ diagnostics
     def components(self, robot_radius: float = DEFAULT_ROBOT_RADIUS, avoid: Sequence[str] = ()) -> List[List[int]]:
         """Connected parts of the map for this robot: lists of area indices (largest first)."""
-        g = self.graph(robot_radius)
-        return [sorted(c) for c in self._area_components(g, set(avoid))[0]]
+        avoid = self._avoid_set(avoid)
+        g = self._avoid_variant(self.graph(robot_radius), avoid)
+        return [sorted(c) for c in self._area_components(g, avoid)[0]]
 
     def _area_components(self, g: _Graph, avoid: set):
         parent = list(range(len(self.areas)))
@@ -1874,6 +1999,9 @@ class RouteMap:
             # same part of the graph, different piece of one area: the area itself is cut by the radius
             msg = (f"no route from '{self.areas[a].name}' to '{self.areas[b].name}' for a robot of radius "
                    f"{robot_radius:.2f} m: a narrowing inside an area is too tight for it")
+            if g.avoid and any(len(pc.key) > 2 for pc in (spc, tpc)):
+                msg += (f" (avoiding {', '.join(g.avoid)}, the robot keeps {robot_radius:.2f} m from those areas "
+                        "and their openings: that closes the way)")
         else:
             msg = (f"no route for a robot of radius {robot_radius:.2f} m"
                    f"{' avoiding ' + ', '.join(sorted(avoid)) if avoid else ''}: the start (area "

@@ -287,7 +287,7 @@ def cross_floor(fl1, fl2, n_pairs, rng, log):
     levels = ["1"] * len(a1) + ["2"] * len(a2)
     t0, c0 = time.perf_counter(), time.process_time()
     rm = RouteMap(a1 + a2, list(fl1.refined.passages) + p2 + vertical, levels=levels)
-    rm.prepare(ROBOT_RADIUS, VERTICAL_COST, avoid=("stairs",))
+    variant = prepare_avoiding(rm, ("stairs",))
     build, build_cpu = time.perf_counter() - t0, time.process_time() - c0
     g1 = GridFloor(fl1.grid, a1, ROBOT_RADIUS)
     g2 = GridFloor(fl2.grid, a2, ROBOT_RADIUS)
@@ -351,8 +351,9 @@ def cross_floor(fl1, fl2, n_pairs, rng, log):
             log(f"  cross-floor pair {len(rows) - 1}: osmAG cost {ours:.2f} in {q_wall * 1000:.2f} ms; grid "
                 f"{best8:.2f} (string-pulled {best_any:.2f}) in {g_wall:.2f} s")
     back_to_back(rm, rows)
+    variant.update(first_avoid_query(rm, rows))
     return {"rows": rows, "build": build, "build_cpu": build_cpu, "lifts": len(lifts), "vertical": len(vertical),
-            "map": rm}
+            "map": rm, **variant}
 
 
 # =========================================================================== a fused building (osmAG file)
@@ -437,7 +438,7 @@ def cross_building(path, n_pairs, rng, log, label):
     most of the slow grid runs)."""
     t0, c0 = time.perf_counter(), time.process_time()
     rm = RouteMap.from_osmag(str(path))
-    rm.prepare(ROBOT_RADIUS, VERTICAL_COST, avoid=AVOID)
+    variant = prepare_avoiding(rm, AVOID)
     build, build_cpu = time.perf_counter() - t0, time.process_time() - c0
     g = rm.graph(ROBOT_RADIUS)
     links = lift_links(rm, g)
@@ -524,8 +525,43 @@ def cross_building(path, n_pairs, rng, log, label):
             log(f"  {label} pair {len(rows) - 1} ({la} -> {lb}): osmAG cost {ours:.2f} in {qw[0] * 1000:.2f} ms; grid "
                 f"{best8:.2f} (string-pulled {best_any:.2f}) in {g_wall:.1f} s")
     back_to_back(rm, rows)
-    return {"label": label, "rows": rows, "build": build, "build_cpu": build_cpu, "lifts": len(links),
+    variant.update(first_avoid_query(rm, rows))
+    return {"label": label, "rows": rows, "build": build, "build_cpu": build_cpu, "lifts": len(links), **variant,
             "summary": rm.summary(ROBOT_RADIUS), "areas": len(rm.areas), "passages": len(rm.passages)}
+
+
+def prepare_avoiding(rm, avoid):
+    """``rm.prepare`` for the lifts-only queries, with the avoid set's graph (its pieces next to the avoided
+    areas rebuilt with their passages as walls) timed on its own: {"variant_cpu": s, "variant_areas": n}."""
+    g = rm.graph(ROBOT_RADIUS)
+    c0 = time.process_time()
+    v = rm._avoid_variant(g, rm._avoid_set(avoid))
+    out = {"variant_cpu": time.process_time() - c0,
+           "variant_areas": sum(1 for k, pcs in v.pieces_by_area.items() if pcs is not g.pieces_by_area.get(k))}
+    rm.prepare(ROBOT_RADIUS, VERTICAL_COST, avoid=avoid)
+    return out
+
+
+def first_avoid_query(rm, rows):
+    """What the first query with a new avoid set pays: the avoid set's graph dropped, one pair's query
+    (the first) timed in CPU with everything it builds (the variant, its node table, point grids; the
+    visibility polygons come later, by prepare or a hall's third query): {"first_avoid_cpu": s}."""
+    if not rows or "pair_call" not in rows[0]:
+        return {}
+    args, kwargs = rows[0]["pair_call"]
+    for r in rows:
+        r.pop("pair_call", None)
+    g = rm.graph(ROBOT_RADIUS)
+    g.variants.clear()
+    g.last_variant = None
+    c0 = time.process_time()
+    try:
+        rm.route(*args, **kwargs)
+    except Exception:  # noqa: BLE001 - the failure was logged in the first loop
+        pass
+    out = {"first_avoid_cpu": time.process_time() - c0}
+    rm.prepare(ROBOT_RADIUS, VERTICAL_COST, avoid=kwargs.get("avoid", ()))
+    return out
 
 
 def back_to_back(rm, rows):
@@ -538,11 +574,13 @@ def back_to_back(rm, rows):
             rm.route(*rows[-1]["_call"][0], **rows[-1]["_call"][1])
         except Exception:  # noqa: BLE001 - the failure was logged in the first loop
             pass
+    g = rm.graph(ROBOT_RADIUS)
     for r in rows:
-        args, kwargs = r.pop("_call")
-        for pc in rm.graph(ROBOT_RADIUS).pieces.values():
-            pc.paths.clear()
-            pc.tpaths.clear()
+        args, kwargs = r["pair_call"] = r.pop("_call")
+        for pcs in [g.pieces] + [v.pieces for v in g.variants.values()]:  # (the avoid sets' own pieces too)
+            for pc in pcs.values():
+                pc.paths.clear()
+                pc.tpaths.clear()
         c0 = time.process_time()
         try:
             rm.route(*args, **kwargs)
@@ -607,6 +645,16 @@ def stats(rows):
             "g_cpu_med": statistics.median(gc), "speed_cpu_med": statistics.median(speed_cpu) if speed_cpu else 0.0,
             "speed_best_med": statistics.median(speed_best) if speed_best else 0.0,
             "speed_best_min": min(speed_best) if speed_best else 0.0}
+
+
+def variant_note(res) -> str:
+    """The avoid set's own graph (passages into stair areas as walls): what it costs once."""
+    if "variant_cpu" not in res:
+        return ""
+    return (f" Avoiding stairs: {res['variant_areas']} areas that share a passage with a stair area get pieces "
+            f"with those passages as walls, built in {res['variant_cpu']:.2f} s CPU once per map (then kept); "
+            f"a first query with that avoid set on a map without it takes "
+            f"{res.get('first_avoid_cpu', float('nan')):.2f} s CPU (that build, its node table, point grids).")
 
 
 def table(results, cross):
@@ -736,7 +784,7 @@ def main():
                      f"{s['pieces']} area pieces, {s['closed']} passages closed for the robot.")
     if cross and cross.get("rows"):
         extra.append(f"- cross-floor map: {cross['vertical']} vertical passages between the floors' shafts "
-                     f"({cross['lifts']} lift).")
+                     f"({cross['lifts']} lift).{variant_note(cross)}")
     for cb in crosses[1:] if cross else crosses:
         s = cb["summary"]
         extra.append(f"- {cb['label']}: {cb['areas']} areas, {cb['passages']} passages on levels "
@@ -745,7 +793,7 @@ def main():
                      f"{s['pieces']} area pieces; pairs on two adjacent levels, the grid reference is the best over "
                      "the lifts between them (tried in the order of their straight-line bound, stopped when that "
                      "bound cannot win), on rasters of the levels drawn from the map (0.05 m/px, area borders as "
-                     "walls, passages open).")
+                     "walls, passages open; the stair areas and their openings blocked)." + variant_note(cb))
     text = "\n".join(head + lines + [""] + extra + [MARK_END]) + "\n"
     print(text)
     if args.write:

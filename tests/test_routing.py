@@ -143,7 +143,7 @@ def check_astar_matches_dijkstra(rm, r, vc=15.0, avoid=(), pairs=20, seed=0):
     from scipy.sparse import coo_matrix
     from scipy.sparse.csgraph import dijkstra
 
-    g = rm.graph(r)
+    g = rm._avoid_variant(rm.graph(r), rm._avoid_set(avoid))  # with avoid: the graph whose stair openings are walls
     n = len(g.pos)
     rows, cols, w = [], [], []
     for a, lst in enumerate(g.adj):
@@ -155,16 +155,16 @@ def check_astar_matches_dijkstra(rm, r, vc=15.0, avoid=(), pairs=20, seed=0):
             w.append(c + vc * span + 1e-12)
     # start/goal as extra nodes n, n+1
     rng = np.random.default_rng(seed)
-    ks = [k for k in range(len(rm.areas)) if g.pieces_by_area.get(k)]
+    ks = [k for k in range(len(rm.areas)) if g.pieces_by_area.get(k) and rm.types[k] not in avoid]
     for _ in range(pairs):
         a, b = rng.choice(ks, 2, replace=False)
+        pa, pb = rm.area_point(a, r, avoid), rm.area_point(b, r, avoid)
         try:
-            res = rm.route(rm.area_point(a, r), rm.area_point(b, r), rm.levels[a], rm.levels[b], robot_radius=r,
-                           vertical_cost=vc, avoid=avoid)
+            res = rm.route(pa, pb, rm.levels[a], rm.levels[b], robot_radius=r, vertical_cost=vc, avoid=avoid)
         except RouteError:
             continue
-        s = rm.locate(rm.area_point(a, r), rm.levels[a], r)
-        t = rm.locate(rm.area_point(b, r), rm.levels[b], r)
+        s = rm.locate(pa, rm.levels[a], r, avoid=avoid)
+        t = rm.locate(pb, rm.levels[b], r, avoid=avoid)
         sd, _ = s[0].point_costs(s[1])  # the dense reference: every corner tested
         td, _ = t[0].point_costs(t[1])
         R, C, W = list(rows), list(cols), list(w)
@@ -225,6 +225,7 @@ def test_cross_floor_route_uses_stairs_or_lift_and_avoid_stairs_detours():
     # a goal inside a stair well is still reached when stairs are avoided: by lift, then in through its door
     into = rm.route("Office 1", "Stair 2", robot_radius=0.3, vertical_cost=10, avoid=["stairs"])
     assert "Lift 1-2" in into.passages and into.areas[-1] == "Stair 2" and "Stair 1" not in into.areas
+    assert "the goal lies in an avoided area (stairs): its passages are open for this route" in into.warnings
     # only stairs lead up: a wheelchair route does not exist, and the message says why
     no_lift = [p for p in passages if p.name != "Lift 1-2"]
     rm2 = RouteMap.from_areas(areas, no_lift)
@@ -539,7 +540,8 @@ def test_node_table_equals_astar_and_parallel_edges_keep_the_cheaper(monkeypatch
     wheel = rm3.route("Office 1", "Office 2", robot_radius=0.3, vertical_cost=10, avoid=["stairs"])
     walk = rm3.route("Office 1", "Office 2", robot_radius=0.3, vertical_cost=10)
     assert "Lift 1-2" in wheel.passages and "Stair 1-2" in walk.passages
-    assert len(rm3.graph(0.3).tables) == 2
+    g3 = rm3.graph(0.3)  # a table per avoid set: the stairs-avoiding one on the graph whose stair openings are walls
+    assert len(g3.tables) == 1 and len(g3.variants[("stairs",)].tables) == 1
 
 
 def test_point_grid_locates_like_the_polygons():
@@ -633,6 +635,10 @@ def test_bench_cross_building_on_a_small_fused_file(tmp_path):
     # the speed-up is CPU over CPU: grid A* CPU / osmAG CPU best of the rounds, never below the first run's
     assert s["g_cpu_med"] > 0 and s["speed_best_med"] >= s["speed_cpu_med"] > 0
     assert "speed-up median, CPU" in bench.table([], [dict(res, label="two floors")])[0]
+    # the stairs-avoiding graph (both corridors re-pieced) and a first query with it, timed on their own
+    assert res["variant_areas"] == 2 and res["variant_cpu"] > 0 and res["first_avoid_cpu"] > 0
+    assert "2 areas that share a passage with a stair area" in bench.variant_note(res)
+    assert all("pair_call" not in r and "_call" not in r for r in res["rows"])
 
 
 @pytest.mark.slow
@@ -751,9 +757,130 @@ def test_compact_tables_give_the_same_routes(monkeypatch):
             monkeypatch.setattr(routing, "COMPACT_TABLES", compact)
             rm = RouteMap.from_areas(areas, passages)
             got[compact] = [rm.route(a, b, robot_radius=0.3, **kw) for a, b in pairs]
-            dist, pred, _ = rm._table(rm.graph(0.3), float(kw.get("vertical_cost", 15.0)),
-                                      rm._avoid_set(kw.get("avoid", ())))
+            av = rm._avoid_set(kw.get("avoid", ()))
+            dist, pred, _ = rm._table(rm._avoid_variant(rm.graph(0.3), av), float(kw.get("vertical_cost", 15.0)), av)
             assert (dist.dtype, pred.dtype) == ((np.float32, np.int16) if compact else (np.float64, np.int32))
         for a, b in zip(got[False], got[True]):
             assert b.cost == pytest.approx(a.cost, abs=1e-9) and b.length == pytest.approx(a.length, abs=1e-9)
             assert (b.passages, b.areas) == (a.passages, a.areas)
+
+
+# --------------------------------------------------------------------------- avoided areas: openings are walls
+def _stair_off_a_hall(through_only=False):
+    """A 20 x 10 hall with a stair box (x 8..12) opening onto it over its whole 4 m width at y = 10, and a
+    block in the hall right under the opening (x 8.5..11.5, up to y 9.6): between the block and the opening
+    the robot's disc (r 0.3) fits only by reaching into the opening's mouth. ``through_only``: the block
+    reaches the hall's floor, so the mouth is the only way from west to east."""
+    hall = box(0, 0, 20, 10).difference(box(8.5, 0 if through_only else 7, 11.5, 9.6))
+    stair = box(8, 10, 12, 14)
+    areas = [area(1, hall, "Hall", atype="corridor"), area(2, stair, "Stair", atype="stairs")]
+    return areas, [passage(10, 2, 1, (8, 10), (12, 10), "S")], stair
+
+
+def test_avoided_stairs_opening_is_a_wall_for_the_robot(monkeypatch):
+    """AVOID=stairs: the passages into a stair area are walls for the robot's disc, so the route keeps r
+    from the stair area (up to the 45 degree chords of the grown corners); without AVOID (or with the rule
+    switched off) the same route cuts through the opening's mouth, closer than r to the stair."""
+    from algorithms import routing
+
+    areas, passages, stair = _stair_off_a_hall()
+    r, s, t = 0.3, (5.0, 9.0), (15.0, 9.0)
+    rm = RouteMap.from_areas(areas, passages)
+    walk = rm.route(s, t, robot_radius=r)
+    wheel = rm.route(s, t, robot_radius=r, avoid=["stairs"])
+    assert LineString(walk.points).distance(stair) < 0.15  # through the mouth, above the block
+    assert clearance_ok(wheel.points, stair, r)  # below the block: r from the stair area
+    assert clearance_ok(wheel.points, areas[0].polygon.exterior, r)
+    assert wheel.areas == ["Hall"] and wheel.passages == [] and wheel.length > walk.length + 1.0
+    monkeypatch.setattr(routing, "AVOID_WALLS", False)
+    old = RouteMap.from_areas(areas, passages).route(s, t, robot_radius=r, avoid=["stairs"])
+    assert old.length == pytest.approx(walk.length, abs=1e-9)  # the limit this rule removes
+
+
+def test_avoided_stairs_only_way_through_the_mouth_is_no_route():
+    """When the only way between two points passes within r of the avoided stair area (here through its
+    opening's mouth) or through the stair area itself, AVOID=stairs gives no route, and says why."""
+    areas, passages, stair = _stair_off_a_hall(through_only=True)
+    rm = RouteMap.from_areas(areas, passages)
+    assert rm.route((5.0, 9.0), (15.0, 9.0), robot_radius=0.3).length > 10.0
+    with pytest.raises(RouteError, match=r"too tight.*avoiding stairs, the robot keeps 0.30 m from those areas"):
+        rm.route((5.0, 9.0), (15.0, 9.0), robot_radius=0.3, avoid=["stairs"])
+    # a room reached only through the stair well
+    areas, passages, _ = _stair_off_a_hall()
+    areas.append(area(3, box(8, 14, 12, 18), "Loft"))
+    passages.append(passage(11, 3, 2, (9, 14), (11, 14), "L"))
+    rm = RouteMap.from_areas(areas, passages)
+    assert "Stair" in rm.route((2.0, 2.0), "Loft", robot_radius=0.3).areas
+    with pytest.raises(RouteError, match=r"avoiding stairs: the start \(area 'Hall'.*the goal \(area 'Loft'"):
+        rm.route((2.0, 2.0), "Loft", robot_radius=0.3, avoid=["stairs"])
+
+
+def test_avoid_variants_are_built_once_cached_and_leave_the_plain_graph_alone(monkeypatch):
+    """The graph of an avoid set is built on its first query and reused (the second query builds nothing);
+    at most MAX_VARIANTS are kept (least recently used dropped); queries without AVOID give the same bytes
+    before and after, on a graph the variants did not touch (its pieces and edges shared, not changed)."""
+    from algorithms import routing
+
+    areas, passages = two_floors()
+    areas.append(area(5, box(20, 3, 36, 8), "Office 1b", "1"))  # next to the lift, a door into it and one out
+    passages += [passage(13, 5, 3, (36, 4), (36, 5.5), "LO"), passage(14, 5, 1, (25, 3), (26, 3), "OC")]
+    rm = RouteMap.from_areas(areas, passages)
+    plain = RouteMap.from_areas(areas, passages)
+    pairs = [("Office 1", "Office 2", None), ((2.0, 1.5), (30.0, 1.0), "1"), ((1.0, 1.0), "Office 1", "1")]
+    before = [rm.route(a, b, lv, lv, robot_radius=0.3, vertical_cost=10) for a, b, lv in pairs]
+    g = rm.graph(0.3)
+    adj = [list(x) for x in g.adj]
+    entries = {k: list(pc.entries) for k, pc in g.pieces.items()}
+    builds = []
+    real = RouteMap._build_variant
+    monkeypatch.setattr(RouteMap, "_build_variant", lambda self, g, av: builds.append(av) or real(self, g, av))
+    w1 = rm.route("Office 1", "Office 2", robot_radius=0.3, vertical_cost=10, avoid=["stairs"])
+    v = g.variants[("stairs",)]
+    n_pieces = len(v.pieces)
+    w2 = rm.route((2.0, 1.5), "Office 2", "1", robot_radius=0.3, vertical_cost=10, avoid=["stair"])
+    assert builds == [("stairs",)] and g.variants[("stairs",)] is v and len(v.pieces) == n_pieces
+    assert "Lift 1-2" in w1.passages and "Lift 1-2" in w2.passages
+    # the corridors next to the stairs have new pieces, the offices and lifts share theirs
+    k_corr, k_off = rm.index[1], rm.index[4]
+    assert v.pieces_by_area[k_corr][0] is not g.pieces_by_area[k_corr][0]
+    assert v.pieces_by_area[k_off][0] is g.pieces_by_area[k_off][0]
+    assert v.build_s >= 0 and len(v.pos) == len(g.pos)
+    rm.route("Office 1", "Office 1b", robot_radius=0.3, vertical_cost=10, avoid=["elevator"])
+    rm.route("Office 1", "Office 1b", robot_radius=0.3, vertical_cost=10, avoid=["elevator", "stairs"])
+    assert builds == [("stairs",), ("elevator",), ("elevator", "stairs")]
+    k_1b = rm.index[5]  # next to the lift: re-pieced when lifts are avoided, shared when stairs are
+    assert g.variants[("elevator",)].pieces_by_area[k_1b][0] is not g.pieces_by_area[k_1b][0]
+    assert v.pieces_by_area[k_1b][0] is g.pieces_by_area[k_1b][0]
+    assert list(g.variants) == [("elevator",), ("elevator", "stairs")]  # MAX_VARIANTS = 2: stairs dropped
+    rm.route("Office 1", "Office 2", robot_radius=0.3, vertical_cost=10, avoid=["stairs"])
+    assert len(builds) == 4 and list(g.variants) == [("elevator", "stairs"), ("stairs",)]
+    after = [rm.route(a, b, lv, lv, robot_radius=0.3, vertical_cost=10) for a, b, lv in pairs]
+    fresh = [plain.route(a, b, lv, lv, robot_radius=0.3, vertical_cost=10) for a, b, lv in pairs]
+    for x, y, z in zip(before, after, fresh):
+        assert x.points.tobytes() == y.points.tobytes() == z.points.tobytes()
+        assert (x.cost, x.length, x.passages, x.areas) == (y.cost, y.length, y.passages, y.areas) \
+            == (z.cost, z.length, z.passages, z.areas)
+    assert [list(x) for x in g.adj] == adj and {k: pc.entries for k, pc in g.pieces.items()} == entries
+    assert routing.MAX_VARIANTS == 2
+
+
+def test_avoided_stairs_a_door_right_next_to_the_opening_is_crossed_r_away():
+    """A room next to the stair box (their drawings overlap by 15 cm, as converted plans do), its door from
+    the hall starting at the stair's corner: the door's crossing node at the jamb lies 15 cm from the stair
+    area, so with AVOID=stairs the hall does not join it (the route crosses the door at its other node, r
+    from the stair area); without AVOID both nodes are used."""
+    areas, passages, stair = _stair_off_a_hall()
+    stair = box(8, 10, 12.15, 14)
+    areas[1] = area(2, stair, "Stair", atype="stairs")
+    areas.append(area(3, box(12, 10, 16, 14), "Room"))
+    passages.append(passage(11, 3, 1, (12, 10), (13.2, 10), "D"))
+    rm = RouteMap.from_areas(areas, passages)
+    g = rm.graph(0.3)
+    door = [n for n in range(len(g.pos)) if g.passage[n] == 1]
+    assert sorted(round(g.pos[n][0], 2) for n in door) == [12.3, 12.9]
+    hall = {nd for pc in g.pieces_by_area[0] for nd, _, _ in pc.entries}
+    v = rm._avoid_variant(g, {"stairs"})
+    hall_v = {nd for pc in v.pieces_by_area[0] for nd, _, _ in pc.entries}
+    assert set(door) <= hall and hall_v & set(door) == {n for n in door if g.pos[n][0] > 12.5}
+    res = rm.route((14.0, 11.0), (5.0, 5.0), robot_radius=0.3, avoid=["stairs"])
+    assert res.passages == ["D"] and clearance_ok(res.points, stair, 0.3)
