@@ -30,7 +30,7 @@ sys.path.insert(0, str(REPO))
 from algorithms import segmentation  # noqa: E402
 from algorithms.errors import InputError  # noqa: E402
 from algorithms.evaluate import evaluate, gt_rooms, read_gt_image  # noqa: E402
-from algorithms.raster_io import read_grid, rotate_raster  # noqa: E402
+from algorithms.raster_io import border_value, read_grid, rotate_raster  # noqa: E402
 
 MEAN_TARGET = 0.90
 MAP_TARGET = 0.75
@@ -90,10 +90,8 @@ def shift_map(grid, gt: np.ndarray, dx: int, dy: int):
     from algorithms.model import OccupancyGrid
 
     def pad(img):
-        border = np.concatenate([img[0], img[-1], img[:, 0], img[:, -1]]).reshape(-1, *img.shape[2:])
-        vals, counts = np.unique(border, axis=0, return_counts=True)
         out = np.empty((img.shape[0] + dy, img.shape[1] + dx) + img.shape[2:], img.dtype)
-        out[...] = vals[int(np.argmax(counts))]
+        out[...] = border_value(img)
         out[dy:, dx:] = img
         return out
 
