@@ -448,11 +448,10 @@ SIST_FRAMES = {"2": "4", "4": "2"}  # F2 and F4 are drawn in one frame (../share
 # (segmentation.GAP_SIDE_PX, for faces at an angle); boundary pixels only (every area IoU >= 0.996 on SIST-F1 .dxf and .dwg and A-A3-10-04, counts
 # unchanged); with GAP_SIDE_PX = 0 SIST-F1's digest is its previous pin exactly (checked)
 # (this building pin moved with SIST-F1's)
-# re-pinned (session 9, task angles): moved with SIST-F1's pin (segmentation.FACE_FRAME / FACE_PHASES / FACE_FIT: the
-# wall faces found wherever the floor lies in its raster and fitted to their pixels; SIST-F1 81 -> 82 areas); every
-# other figure of this test unchanged; with FACE_FRAME = FACE_FIT = SLIVERS_APART = False the previous pin 66cebd5b...
-# returns exactly (checked)
-SIST_BUILDING_SHA256 = "f4731b61c9f5c6813eb3757acad17f3c301e107c1a2fba784843be43033c0a5b"
+# re-pinned (session 9, task angles): moved with SIST-F1's pin (segmentation.FACE_FRAME / FACE_PHASES: the wall
+# faces found wherever the floor lies in its raster); every other figure of this test unchanged; with FACE_FRAME =
+# SLIVERS_APART = False the previous pin 66cebd5b... returns exactly (checked)
+SIST_BUILDING_SHA256 = "f839df6303e23db92a0f8fc40841aa82cd93641d8d945b373e90f985b53b33f4"
 
 
 @pytest.mark.slow

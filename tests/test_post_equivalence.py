@@ -46,13 +46,14 @@ PINNED_DWG = {
     # re-pinned (session 8, task W): a wall line's gap also ends where the wall beyond lies one pixel beside the line
     # (segmentation.GAP_SIDE_PX, for faces at an angle); boundary pixels only (every area IoU >= 0.996 on SIST-F1 .dxf and .dwg and A-A3-10-04, counts
     # unchanged); with GAP_SIDE_PX = 0 the digests are the previous pins exactly (checked)
-    # re-pinned (session 9, task angles): the wall faces' Hough in the face pixels' box (segmentation.FACE_FRAME,
-    # FACE_PHASES) and fitted to the face pixels (FACE_FIT): SIST-F1 141 -> 143 areas, 194 -> 195 passages (138 of 147
-    # segmented areas identical; the west corridor's north end, the glass arc's strip, an alcove, three fronts:
-    # docs/segmentation.md), A-A3-10-04 counts unchanged (221 of 223 identical, two re-cut, IoU 0.90 / 0.95); with
-    # FACE_FRAME = FACE_FIT = SLIVERS_APART = False the digests are the previous pins 3af2f84e... / 56958186... exactly
-    "sist-original/SIST-F1.dwg": ("7b4aadf55f73e14f72d73e5d56fcff52c64a424787b6cdd4d1bc228441f9eec4", 143, 195),
-    "library/A-A3-10-04.dwg": ("0f96cce3d1f2961d4bb8c4ba521cead7bd9169a592efc5e34e5664953eb4c246", 64, 78),
+    # re-pinned (session 9, task angles): the wall faces' Hough in the face pixels' box, on a 2 x 2 block of frames
+    # (segmentation.FACE_FRAME, FACE_PHASES: the openings wherever the sheet lies): SIST-F1 141 -> 142 areas (138 of
+    # 147 segmented areas identical: the west corridor's north end, the glass arc's strip, fronts re-cut, IoU 0.20-0.93),
+    # A-A3-10-04 (drawn at -19 deg) counts unchanged (220 of 223 identical: a corridor's end bay, a hall's entrance
+    # recess and one finger of a comb-shaped room cut off, IoU 0.91 / 0.95 / 0.62); with FACE_FRAME = SLIVERS_APART =
+    # False the digests are the previous pins 3af2f84e... / 56958186... exactly (checked)
+    "sist-original/SIST-F1.dwg": ("f5df0f5e89490e970542f78b5fbad64f1e7ba8119adf6b508be8a62fcd3f0ff9", 142, 194),
+    "library/A-A3-10-04.dwg": ("f92e578a59ab19a9a5c45b95aae3cf48c12de66d1672b0ce6c131b066eda2117", 64, 78),
 }
 
 
