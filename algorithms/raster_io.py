@@ -214,6 +214,13 @@ def read_grid(path: str, resolution: Optional[float] = None, origin=(0.0, 0.0)) 
     return OccupancyGrid(data, float(gt[0]), float(gt[3]), float(gt[1]), ds.GetProjection() or "")
 
 
+def border_value(img: np.ndarray):
+    """The value (a pixel: scalar or channel vector) most common on ``img``'s border: what lies outside the map."""
+    border = np.concatenate([img[0], img[-1], img[:, 0], img[:, -1]]).reshape(-1, *img.shape[2:])
+    vals, counts = np.unique(border, axis=0, return_counts=True)
+    return vals[int(np.argmax(counts))]
+
+
 def rotate_raster(img: np.ndarray, degrees: float, fill=None):
     """``img`` (2-D, or 3-D with channels) turned counter-clockwise (as shown, rows down) by ``degrees`` about
     its centre, nearest neighbour (occupancy values, labels and ground-truth colours stay exact), on a canvas
@@ -225,18 +232,16 @@ def rotate_raster(img: np.ndarray, degrees: float, fill=None):
     img = np.ascontiguousarray(img)
     h, w = img.shape[:2]
     if fill is None:
-        border = np.concatenate([img[0], img[-1], img[:, 0], img[:, -1]]).reshape(-1, *img.shape[2:])
-        vals, counts = np.unique(border, axis=0, return_counts=True)
-        fill = vals[int(np.argmax(counts))]
+        fill = border_value(img)
     m = cv2.getRotationMatrix2D(((w - 1) / 2.0, (h - 1) / 2.0), float(degrees), 1.0)
     c, s = abs(m[0, 0]), abs(m[0, 1])
     nw, nh = int(math.ceil(w * c + h * s - 1e-9)) + 2, int(math.ceil(w * s + h * c - 1e-9)) + 2
     m[0, 2] += (nw - w) / 2.0
     m[1, 2] += (nh - h) / 2.0
     fill = np.atleast_1d(fill)
-    border_value = tuple(float(v) for v in fill) + (0.0,) * (4 - fill.size)
+    outside = tuple(float(v) for v in fill) + (0.0,) * (4 - fill.size)
     dtype = img.dtype
     src = img.view(np.uint8) if dtype == bool else img
     out = cv2.warpAffine(src, m, (nw, nh), flags=cv2.INTER_NEAREST, borderMode=cv2.BORDER_CONSTANT,
-                         borderValue=border_value)
+                         borderValue=outside)
     return (out.view(bool) if dtype == bool else out), m

@@ -9,8 +9,11 @@ occupied, white = free, grey = unknown), optionally ``input_raw/NAME.png`` (the 
 maps.csv gives widths, with those too. Prints recall, precision, MCC and F1 per map and the means;
 with ``--out DIR`` writes ``scores.csv`` and side-by-side pictures (input | ground truth |
 segmentation | errors) of the ``--worst`` lowest-scoring maps. ``--rotate DEG ...`` scores each map (and
-its ground truth) turned by those angles too: a SLAM map is rarely aligned with the axes.
+its ground truth) turned by those angles too: a SLAM map is rarely aligned with the axes. ``--shift DX,DY ...``
+scores each map moved by whole pixels too (padded on the left and top with what lies outside it): a map
+lands anywhere in its raster, and no figure should depend on where.
 Usage: evaluate_grids.py [--data DIR] [--out DIR] [--raw] [--worst N] [--maps NAME ...] [--rotate DEG ...]
+                         [--shift DX,DY ...]
 """
 import argparse
 import csv
@@ -27,7 +30,7 @@ sys.path.insert(0, str(REPO))
 from algorithms import segmentation  # noqa: E402
 from algorithms.errors import InputError  # noqa: E402
 from algorithms.evaluate import evaluate, gt_rooms, read_gt_image  # noqa: E402
-from algorithms.raster_io import read_grid, rotate_raster  # noqa: E402
+from algorithms.raster_io import border_value, read_grid, rotate_raster  # noqa: E402
 
 MEAN_TARGET = 0.90
 MAP_TARGET = 0.75
@@ -81,6 +84,21 @@ def rotate_map(grid, gt: np.ndarray, degrees: float):
             rotate_raster(gt, degrees)[0])
 
 
+def shift_map(grid, gt: np.ndarray, dx: int, dy: int):
+    """The occupancy grid and its ground-truth image moved ``dx`` px right and ``dy`` px down together:
+    padded on the left and top with what lies outside each (the value most common on its border)."""
+    from algorithms.model import OccupancyGrid
+
+    def pad(img):
+        out = np.empty((img.shape[0] + dy, img.shape[1] + dx) + img.shape[2:], img.dtype)
+        out[...] = border_value(img)
+        out[dy:, dx:] = img
+        return out
+
+    data = pad(grid.data)
+    return OccupancyGrid(data, 0.0, data.shape[0] * grid.resolution, grid.resolution), pad(gt)
+
+
 def _colours(n: int, seed: int = 7) -> np.ndarray:
     rng = np.random.default_rng(seed)
     col = rng.integers(60, 240, size=(n + 1, 3)).astype(np.uint8)
@@ -126,7 +144,7 @@ def side_by_side(grid, gt_img: np.ndarray, labels: np.ndarray, ev: dict, path: s
 
 
 def run(data: Path, out_dir=None, only=None, raw=False, worst=3, resolution=0.05, out=sys.stdout,
-        settings=("maps.csv", "default"), angles=(0,)):
+        settings=("maps.csv", "default"), angles=(0,), shifts=((0, 0),)):
     results = []
     kept = {}
     for m in load_maps(data, resolution):
@@ -140,36 +158,49 @@ def run(data: Path, out_dir=None, only=None, raw=False, worst=3, resolution=0.05
             runs.append(("maps.csv", m["door"], m["corridor"]))
         if "default" in settings:
             runs.append(("default", segmentation.DEFAULT_DOOR_WIDTH, segmentation.DEFAULT_CORRIDOR_WIDTH))
-        for angle, (setting, dw, cw) in ((a, r) for a in angles for r in runs):
+        for angle, (sx, sy), (setting, dw, cw) in ((a, s_, r) for a in angles for s_ in shifts for r in runs):
             grid, gt = rotate_map(grid0, gt0, angle) if angle % 360 else (grid0, gt0)
+            if sx or sy:
+                grid, gt = shift_map(grid, gt, sx, sy)
             t = time.perf_counter()
             ag = segmentation.segment(grid, door_width=dw, corridor_width=cw)
             dt = time.perf_counter() - t
             ev = evaluate(ag.labels, gt)
             figures = {k: ev[k] for k in ("recall", "precision", "mcc", "f1", "n_gt")}
-            results.append(dict(map=m["name"], setting=setting, angle=angle, door=dw, corridor=cw, seconds=dt,
+            results.append(dict(map=m["name"], setting=setting, angle=angle, shift=f"{sx},{sy}", door=dw, corridor=cw, seconds=dt,
                                 areas=len(ag.areas), **figures))
             if out_dir and setting == "default":
-                key = m["name"] + (f"_rot{angle:g}" if angle % 360 else "")
+                key = m["name"] + (f"_rot{angle:g}" if angle % 360 else "") + (f"_shift{sx}_{sy}" if sx or sy else "")
                 kept[key] = (ev["mcc"], grid, gt, ag.labels, ev)
     turned = any(a % 360 for a in angles)
-    hdr = (f"{'map':22s} {'widths':9s} " + (f"{'deg':>4s} " if turned else "") + f"{'door':>5s} {'corr':>5s} "
+    moved = any(any(s_) for s_ in shifts)
+    hdr = (f"{'map':22s} {'widths':9s} " + (f"{'deg':>4s} " if turned else "") + (f"{'shift':>5s} " if moved else "")
+           + f"{'door':>5s} {'corr':>5s} "
            f"{'areas':>5s} {'gt':>3s} {'recall':>6s} "
            f"{'prec':>6s} {'MCC':>6s} {'F1':>6s} {'s':>5s}")
     print(hdr, file=out)
     print("-" * len(hdr), file=out)
     for r in results:
-        print(f"{r['map']:22s} {r['setting']:9s} " + (f"{r['angle']:4g} " if turned else "") + f"{r['door']:5.2f} {r['corridor']:5.2f} {r['areas']:5d} {r['n_gt']:3d} "
+        print(f"{r['map']:22s} {r['setting']:9s} " + (f"{r['angle']:4g} " if turned else "")
+              + (f"{r['shift']:>5s} " if moved else "") + f"{r['door']:5.2f} {r['corridor']:5.2f} {r['areas']:5d} {r['n_gt']:3d} "
               f"{r['recall']:6.3f} {r['precision']:6.3f} {r['mcc']:6.3f} {r['f1']:6.3f} {r['seconds']:5.2f}", file=out)
     print("-" * len(hdr), file=out)
-    for setting, angle in ((s_, a) for s_ in ("maps.csv", "default") for a in angles):
-        sel = [r for r in results if r["setting"] == setting and r["angle"] == angle]
+    for setting, angle, (sx, sy) in ((s_, a, d) for s_ in ("maps.csv", "default") for a in angles for d in shifts):
+        sel = [r for r in results if r["setting"] == setting and r["angle"] == angle and r["shift"] == f"{sx},{sy}"]
         if not sel:
             continue
         mean = {k: sum(r[k] for r in sel) / len(sel) for k in ("recall", "precision", "mcc", "f1")}
-        print(f"{'mean':22s} {setting:9s} " + (f"{angle:4g} " if turned else "") + f"{'':5s} {'':5s} {'':5s} {'':3s} {mean['recall']:6.3f} "
+        print(f"{'mean':22s} {setting:9s} " + (f"{angle:4g} " if turned else "")
+              + (f"{f'{sx},{sy}':>5s} " if moved else "") + f"{'':5s} {'':5s} {'':5s} {'':3s} {mean['recall']:6.3f} "
               f"{mean['precision']:6.3f} {mean['mcc']:6.3f} {mean['f1']:6.3f}   (worst "
               f"{min(r['mcc'] for r in sel):.3f})", file=out)
+    if moved:  # the spread of each map's MCC over the shifts (what a map's figure owes to where it lies)
+        for setting, angle in ((s_, a) for s_ in ("maps.csv", "default") for a in angles):
+            for name in dict.fromkeys(r["map"] for r in results):
+                v = [r["mcc"] for r in results if r["setting"] == setting and r["angle"] == angle and r["map"] == name]
+                if len(v) > 1:
+                    print(f"{'spread':8s} {name:22s} {setting:9s} " + (f"{angle:4g} " if turned else "")
+                          + f"{min(v):.3f}-{max(v):.3f} ({max(v) - min(v):.3f}, mean {sum(v) / len(v):.3f})", file=out)
     if out_dir:
         os.makedirs(out_dir, exist_ok=True)
         with open(os.path.join(out_dir, "scores.csv"), "w", newline="", encoding="utf-8") as fh:
@@ -197,18 +228,30 @@ def main(argv=None):
     ap.add_argument("--rotate", nargs="*", type=float, default=None, metavar="DEG",
                     help="also score every map and its ground truth turned by these angles (counter-clockwise, "
                          "degrees); 0 is always scored; the target is judged on the unturned maps")
+    ap.add_argument("--shift", nargs="*", default=None, metavar="DX,DY",
+                    help="also score every map moved by these whole pixels (padded on the left and top; "
+                         "'2' is '2,2'); no shift is always scored; the target is judged on the maps as they are")
     args = ap.parse_args(argv)
+    try:
+        shifts = [(0, 0)] + [d for d in ((int(t.split(",")[0]), int(t.split(",")[-1])) for t in (args.shift or []))
+                             if any(d)]
+    except ValueError:
+        print(f"--shift takes whole pixels DX,DY (or one number for both), not {args.shift}", file=sys.stderr)
+        return 2
+    if any(v < 0 for d in shifts for v in d):
+        print("--shift takes pixels >= 0 (the map is padded on the left and top)", file=sys.stderr)
+        return 2
     data = Path(args.data)
     if not (data / "gt").is_dir() or not (data / "input").is_dir():
         print(f"no grid_gt-like data at {data} (need input/ and gt/)", file=sys.stderr)
         return 2
     try:
         angles = [0.0] + [a for a in (args.rotate or []) if a % 360]
-        results = run(data, args.out, args.maps, args.raw, args.worst, args.resolution, angles=angles)
+        results = run(data, args.out, args.maps, args.raw, args.worst, args.resolution, angles=angles, shifts=shifts)
     except InputError as exc:
         print(f"error: {exc}", file=sys.stderr)
         return 2
-    sel = [r["mcc"] for r in results if r["setting"] == "default" and r["angle"] == 0]
+    sel = [r["mcc"] for r in results if r["setting"] == "default" and r["angle"] == 0 and r["shift"] == "0,0"]
     if not sel:
         print("no map scored", file=sys.stderr)
         return 2

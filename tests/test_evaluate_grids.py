@@ -85,3 +85,23 @@ def test_rotated_maps_are_scored_at_every_angle(tmp_path):
         assert r["areas"] == 2 and r["mcc"] > 0.95 and r["f1"] == 1.0, r
     assert " deg " in buf.getvalue()
     assert evaluate_grids.main(["--data", str(tmp_path), "--rotate", "30"]) == 0  # judged on the unturned maps
+
+
+def test_shifted_maps_are_scored_at_every_shift(tmp_path):
+    """--shift: the map and its ground truth moved together by whole pixels (padded with what lies outside each);
+    two rooms joined by a 0.9 m door: the same figures at every shift, the spread printed per map; a bad shift
+    is a clear error."""
+    _two_rooms(tmp_path, "a", 18)
+    grid = evaluate_grids._read_map(tmp_path / "input" / "a.png", 0.05)
+    gt = evaluate_grids.read_gt_image(str(tmp_path / "gt" / "a.png"))
+    g2, gt2 = evaluate_grids.shift_map(grid, gt, 3, 1)
+    assert g2.data.shape == (101, 183) and (g2.data[1:, 3:] == grid.data).all()
+    assert (g2.data[0] == grid.data[0, 0]).all() and (gt2[:, :3] == gt[0, 0]).all()
+    buf = io.StringIO()
+    res = evaluate_grids.run(tmp_path, out=buf, shifts=((0, 0), (1, 0), (2, 3)))
+    assert [r["shift"] for r in res] == ["0,0", "1,0", "2,3"]
+    assert len({(r["areas"], round(r["mcc"], 6)) for r in res}) == 1 and res[0]["mcc"] > 0.95
+    assert "spread   a" in buf.getvalue() and "(0.000," in buf.getvalue()
+    assert evaluate_grids.main(["--data", str(tmp_path), "--shift", "1", "0,2"]) == 0
+    assert evaluate_grids.main(["--data", str(tmp_path), "--shift", "x"]) == 2
+    assert evaluate_grids.main(["--data", str(tmp_path), "--shift=-1,0"]) == 2
