@@ -560,12 +560,7 @@ def _free_furniture(geoms: Sequence[CadGeometry], cls: List[str], weak: set) -> 
             cand.append(i)
     if not cand:
         return
-    sel = [i for i in range(len(geoms)) if not cls[i]]
-    coords, idx = [], []
-    for i, c in zip(sel, _finite_rows([geoms[i].coords for i in sel])):
-        if len(c) >= 2:
-            coords.append(c)
-            idx.append(i)
+    idx, coords = _finite_lines(geoms, [i for i in range(len(geoms)) if not cls[i]])
     lines = _linestrings(coords)  # one vectorised call (a LineString per entity cost 0.4 s on SIST-F1.dwg)
     tree = STRtree(lines)
     # every candidate at once (the outcome of one does not depend on another's): its outline, the zone
@@ -946,6 +941,17 @@ def _finite_rows(coords: List[np.ndarray]) -> List[np.ndarray]:
     return out
 
 
+def _finite_lines(geoms: Sequence[CadGeometry], sel: Sequence[int]) -> Tuple[List[int], List[np.ndarray]]:
+    """(indices, coordinates) of the geometries ``sel`` that keep at least two finite points (``_finite_rows``):
+    the lines a ``_linestrings`` call can build, in ``sel``'s order."""
+    idx, coords = [], []
+    for i, c in zip(sel, _finite_rows([geoms[i].coords for i in sel])):
+        if len(c) >= 2:
+            idx.append(i)
+            coords.append(c)
+    return idx, coords
+
+
 def floor_markings(geoms: Sequence[CadGeometry], cls: List[str], weak: set) -> int:
     """Markings drawn on the floor (a sports court's lines, circles and arcs; a painted play area) on the
     same layer as the walls ("0", fallback layers): a group of lines on ``weak`` layers that touches no other
@@ -961,11 +967,7 @@ def floor_markings(geoms: Sequence[CadGeometry], cls: List[str], weak: set) -> i
 
     sel = [i for i, g in enumerate(geoms)
            if not (cls[i] or g.filled or g.kind in ("column", "stair", "elevator", "boundary", AUX_KIND))]
-    idx, coords = [], []
-    for i, c in zip(sel, _finite_rows([geoms[i].coords for i in sel])):
-        if len(c) >= 2:
-            idx.append(i)
-            coords.append(c)
+    idx, coords = _finite_lines(geoms, sel)
     if len(idx) < 4:
         return 0
     cand = [k for k, i in enumerate(idx) if geoms[i].layer in weak and geoms[i].entity in MARKING_TYPES]
@@ -1074,13 +1076,9 @@ def furniture_groups(geoms: Sequence[CadGeometry], cls: List[str], weak: set) ->
 
     if not FURNITURE_GROUPS:
         return 0
-    cand, coords = [], []
-    sel = [i for i, g in enumerate(geoms) if not cls[i] and g.layer in weak and not g.filled
-           and g.entity in MARKING_TYPES and g.kind not in ("column", "stair", "elevator", "boundary", AUX_KIND)]
-    for i, c in zip(sel, _finite_rows([geoms[i].coords for i in sel])):
-        if len(c) >= 2:
-            cand.append(i)
-            coords.append(c)
+    cand, coords = _finite_lines(geoms, [
+        i for i, g in enumerate(geoms) if not cls[i] and g.layer in weak and not g.filled
+        and g.entity in MARKING_TYPES and g.kind not in ("column", "stair", "elevator", "boundary", AUX_KIND)])
     if len(cand) < 2:
         return 0
     lines = _linestrings(coords)
