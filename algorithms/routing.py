@@ -922,7 +922,6 @@ class _Graph:
         self.r = 0.0  # the robot radius it was built for
         self.avoid: Tuple[str, ...] = ()  # the avoided area types this graph's pieces keep r from (a variant)
         self.variants: Dict[tuple, "_Graph"] = {}  # avoid set -> variant of this graph (RouteMap._avoid_variant)
-        self.last_variant = None  # (avoid set, variant) of the last query with an avoid set
 
     def csr(self) -> Dict[str, np.ndarray]:
         """The adjacency as flat arrays (built once): per node a slice of neighbours, planar costs,
@@ -1270,17 +1269,15 @@ class RouteMap:
         query with that set, the last ``MAX_VARIANTS`` kept, see :meth:`_build_variant`)."""
         if not avoid or not AVOID_WALLS:
             return g
-        last = g.last_variant
-        if last is not None and last[0] == avoid:
-            return last[1]
         key = tuple(sorted(avoid))
+        if g.variants and next(reversed(g.variants)) == key:  # the most recently used: nothing to reorder
+            return g.variants[key]
         v = g.variants.pop(key, None)
         if v is None:
             v = self._build_variant(g, key)
         g.variants[key] = v  # (re)inserted last: the most recently used
         while len(g.variants) > MAX_VARIANTS:
             g.variants.pop(next(iter(g.variants)))
-        g.last_variant = (set(avoid), v)
         return v
 
     def _build_variant(self, g: _Graph, avoid: Tuple[str, ...]) -> _Graph:

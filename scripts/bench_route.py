@@ -553,7 +553,6 @@ def first_avoid_query(rm, rows):
         r.pop("pair_call", None)
     g = rm.graph(ROBOT_RADIUS)
     g.variants.clear()
-    g.last_variant = None
     c0 = time.process_time()
     try:
         rm.route(*args, **kwargs)
