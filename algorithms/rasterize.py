@@ -300,6 +300,9 @@ def draw_geometries(img: np.ndarray, geometries: Sequence[CadGeometry], ox: floa
             cv2.polylines(img, rings, True, OCCUPIED, thickness=1, lineType=lt, shift=SHIFT)
 
 
+REPAIR_BOXES = 2000  # specks looked at one by one in their boxes up to this many (more: one whole-raster pass)
+
+
 def repair(img: np.ndarray, kernel: int) -> np.ndarray:
     """Closing then opening-by-reconstruction with a kernel x kernel rectangle (see module doc)."""
     import cv2
@@ -310,15 +313,26 @@ def repair(img: np.ndarray, kernel: int) -> np.ndarray:
     se = cv2.getStructuringElement(cv2.MORPH_RECT, (k, k))
     closed = cv2.morphologyEx(img, cv2.MORPH_CLOSE, se, borderType=cv2.BORDER_CONSTANT, borderValue=0)
     opened = cv2.morphologyEx(closed, cv2.MORPH_OPEN, se, borderType=cv2.BORDER_CONSTANT, borderValue=0)
-    n, labels, stats, _ = cv2.connectedComponentsWithStats((closed > 0).astype(np.uint8), connectivity=8)
+    closed = cv2.threshold(closed, 0, OCCUPIED, cv2.THRESH_BINARY)[1]  # every occupied value is OCCUPIED
+    n, labels, stats, _ = cv2.connectedComponentsWithStats(closed, connectivity=8)
     if n <= 1:
         return closed
-    keep = np.zeros(n, dtype=bool)
-    keep[labels[opened > 0]] = True
+    # a piece spanning more than 2 kernels is kept; a smaller one only when the opening left some of it: such
+    # pieces are specks, each looked at in its own box (not the whole raster: ~0.1 s on a SIST floor)
     span = np.maximum(stats[:, cv2.CC_STAT_WIDTH], stats[:, cv2.CC_STAT_HEIGHT])
-    keep |= span > 2 * k
-    keep[0] = False
-    return np.where(keep, OCCUPIED, FREE).astype(np.uint8)[labels]
+    small = np.flatnonzero(span[1:] <= 2 * k) + 1
+    if len(small) > REPAIR_BOXES:  # a speckled drawing: one pass over the raster beats that many boxes
+        keep = span > 2 * k
+        keep[labels[opened > 0]] = True
+        keep[0] = False
+        return np.where(keep, OCCUPIED, FREE).astype(np.uint8)[labels]
+    for i in small:
+        x, y, w, h = (int(v) for v in stats[i, :4])
+        box = (slice(y, y + h), slice(x, x + w))
+        piece = labels[box] == i
+        if not (opened[box][piece] > 0).any():
+            closed[box][piece] = FREE
+    return closed
 
 
 DOOR_CLEAR_DEPTH = 0.6  # metres across a door hint that are kept free (walls up to this thick)
