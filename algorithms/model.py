@@ -206,6 +206,7 @@ class AreaGraph:
     grid: Optional[OccupancyGrid] = None
     stats: Dict[str, float] = field(default_factory=dict)  # timings (s) and figures for the log
     skeleton: Optional[object] = None  # the skeleton graph segmentation used (skeleton.SkeletonGraph)
+    skeleton_grid: Optional[OccupancyGrid] = None  # the grid the skeleton lies on (None: ``grid``)
 
     def area_by_id(self) -> Dict[int, Area]:
         return {a.id: a for a in self.areas}

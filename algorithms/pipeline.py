@@ -154,9 +154,10 @@ def process_floor(dxf_path: str, *, rules=None, layers=None, units=None, include
                   delta: float = segmentation.DEFAULT_DELTA, prune: float = segmentation.DEFAULT_PRUNE,
                   epsilon_px: float = refine.EPSILON_PX, min_area: float = refine.MIN_AREA_M2,
                   level: str = "1", names: bool = True, name_rules=None, carve: bool = True,
-                  progress=None) -> FloorResult:
+                  topology_resolution: Optional[float] = None, progress=None) -> FloorResult:
     """Run stages 1-5 on one DXF floor (stage 5, room names and types, unless ``names`` is False);
-    nothing is written."""
+    nothing is written. ``topology_resolution``: the cell size of the segmentation's topology steps
+    (``segmentation.topology_scale``; None = ``segmentation.TOPOLOGY_RESOLUTION``, 0 = the raster's cells)."""
     progress = ensure(progress)
     timings: Dict[str, float] = {}
     cpu: Dict[str, float] = {}  # CPU seconds of this process per stage: what counts on a loaded machine
@@ -190,7 +191,7 @@ def process_floor(dxf_path: str, *, rules=None, layers=None, units=None, include
     seg = timed("segment", 35, 80, segmentation.segment, grid, door_width=door_width,
                 corridor_width=corridor_width, delta=delta, prune=prune,
                 inside_points=_inside_points(drawing, name_rules, classified), door_hints=drawing.doors, footprint=True,
-                boundary=rasterize.boundary_mask(drawing.boundary, grid))
+                boundary=rasterize.boundary_mask(drawing.boundary, grid), topology_resolution=topology_resolution)
     note = kernels.compile_note()  # compiled beside the first steps on this machine's first run: say so
     if note:
         progress.info(note)
@@ -215,9 +216,12 @@ def process_floor(dxf_path: str, *, rules=None, layers=None, units=None, include
                              hidden_texts=getattr(drawing, "hidden_texts", None), classified=classified,
                              partitions=getattr(drawing, "partitions", None), door_hints=drawing.doors)
         progress.info(names_report.summary())
-    closed, share = _closed_spaces(refined, drawing, name_rules, rstats, progress, classified)
+    # the outline (GEOS buffers and unions, which release the GIL) on the second core while the closed spaces
+    # are found: both only read the areas' polygons (closed spaces set tags)
     t0, c0 = time.perf_counter(), time.process_time()
-    outline = floor_outline(refined.areas)
+    outline_job = segmentation._Background(lambda: floor_outline(refined.areas))
+    closed, share = _closed_spaces(refined, drawing, name_rules, rstats, progress, classified)
+    outline = outline_job.result()
     timings["outline"], cpu["outline"] = time.perf_counter() - t0, time.process_time() - c0
     floor_area = None
     if outline is not None:

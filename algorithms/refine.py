@@ -13,7 +13,8 @@ Steps
    there, then the rings are cut into arcs at every vertex where the set of adjacent faces changes
    (3+ faces meet, or a shared border meets a wall) and at every passage endpoint (locked).
 3. **Simplify each arc once** with its end points fixed (Douglas–Peucker, ε = ``epsilon_px`` ·
-   ``resolution``) and **remove spikes** iteratively (interior vertices whose angle is below
+   ``resolution``; on a border between two areas ε times the segmentation's ``topology_scale``, the raster
+   cells per side of the cells that decided the border, ``segmentation.topology_scale``) and **remove spikes** iteratively (interior vertices whose angle is below
    ``spike_angle`` degrees and whose protrusion from the chord of its neighbours is below
    ``spike_length`` metres; arc end points, hence passage endpoints and junctions, are never removed).
 4. **Rebuild** every polygon from its arcs, so adjacent areas keep the very same vertices along their
@@ -419,7 +420,8 @@ def refine(graph: AreaGraph, resolution: float, epsilon_px: float = EPSILON_PX,
     """Simplify and clean an area partition; see the module docstring.
 
     Returns ``(refined_graph, stats)``. ``stats`` holds: ``vertices_before``, ``vertices_after``,
-    ``vertex_reduction`` (fraction), ``epsilon_m`` (= epsilon_px · resolution, the bound),
+    ``vertex_reduction`` (fraction), ``epsilon_m`` (= epsilon_px · resolution, the bound; ``border_epsilon_m``
+    on borders between two areas),
     ``max_deviation_dp_m`` (after Douglas–Peucker), ``max_deviation_m`` (after spike removal too),
     ``spikes_removed``, ``merged``, ``dropped``, ``passages_removed``, ``arcs``, ``arcs_fallback``
     (arcs simplified less to keep polygons valid), ``vertices_inserted`` (noding), ``components`` and
@@ -593,14 +595,19 @@ def refine(graph: AreaGraph, resolution: float, epsilon_px: float = EPSILON_PX,
         for aid, _ in lst:
             arc_faces[aid].add(int(part.ring_face[ri]))
     fallback_arcs = set()
+    # a border between two areas was decided on the segmentation's topology cells (``topology_scale`` raster
+    # cells per side, segmentation.topology_scale): its steps are that coarse, and so is its tolerance
+    border_scale = max(1, int(graph.stats.get("topology_scale", 1)))
+    shared = np.array([len(f) > 1 for f in arc_faces], bool)
     for it in range(4):
         for lv in range(3):
-            sel = todo[levels[todo] == lv]
-            if len(sel) == 0:
-                continue
-            dp, fin = _simplify_arcs([arc_xy0[i] for i in sel], tols[lv], spike_angle, spike_length)
-            for i, d, f in zip(sel.tolist(), dp, fin):
-                arc_dp[i], arc_fin[i] = d, f
+            for sel, scale in ((todo[(levels[todo] == lv) & ~shared[todo]], 1),
+                               (todo[(levels[todo] == lv) & shared[todo]], border_scale)):
+                if len(sel) == 0:
+                    continue
+                dp, fin = _simplify_arcs([arc_xy0[i] for i in sel], tols[lv] * scale, spike_angle, spike_length)
+                for i, d, f in zip(sel.tolist(), dp, fin):
+                    arc_dp[i], arc_fin[i] = d, f
         for fi in dirty:
             polys[fi] = build(fi)
         arr = np.array(polys, dtype=object)
@@ -675,7 +682,7 @@ def refine(graph: AreaGraph, resolution: float, epsilon_px: float = EPSILON_PX,
         "passages_in": len(graph.passages), "passages_out": len(out_passages),
         "vertices_before": v_before, "vertices_after": v_after,
         "vertex_reduction": (1.0 - v_after / v_before) if v_before else 0.0,
-        "epsilon_px": float(epsilon_px), "epsilon_m": float(tol),
+        "epsilon_px": float(epsilon_px), "epsilon_m": float(tol), "border_epsilon_m": float(tol * border_scale),
         "max_deviation_dp_m": dev_dp, "max_deviation_m": dev_fin,
         "spikes_removed": spikes, "merged": minfo["merged"], "dropped": minfo["dropped"],
         "dropped_ids": minfo["dropped_ids"], "merged_into": minfo["merged_into"],
@@ -686,7 +693,7 @@ def refine(graph: AreaGraph, resolution: float, epsilon_px: float = EPSILON_PX,
     }
     progress.step(100, f"refine: vertices {v_before} -> {v_after} (-{100 * stats['vertex_reduction']:.1f} %), "
                        f"max deviation {dev_fin * 100:.2f} cm (DP alone {dev_dp * 100:.2f} cm, bound ε·r = "
-                       f"{tol * 100:.2f} cm), {spikes} spike vertices removed, {len(fallback_arcs)} arcs simplified "
+                       f"{tol * 100:.2f} cm{'' if border_scale == 1 else f', {tol * border_scale * 100:.2f} cm on borders between two areas'}), {spikes} spike vertices removed, {len(fallback_arcs)} arcs simplified "
                        "less to stay valid")
     out = AreaGraph(out_areas, out_passages, labels=graph.labels, grid=graph.grid, stats=dict(graph.stats))
     out.stats.update({f"refine_{k}": v for k, v in stats.items() if isinstance(v, (int, float))})

@@ -86,7 +86,7 @@ import numpy as np
 
 from . import kernels
 from .errors import InputError
-from .model import FREE, UNKNOWN, Area, AreaGraph, OccupancyGrid, Passage
+from .model import FREE, OCCUPIED, UNKNOWN, Area, AreaGraph, OccupancyGrid, Passage
 from .progress import Progress, ensure
 from .skeleton import SkeletonGraph, nearest_seed_regions, skeleton_graph  # noqa: F401  (re-exported)
 
@@ -2756,19 +2756,18 @@ def label_polygons(labels: np.ndarray, grid: OccupancyGrid) -> Dict[int, object]
     import shapely
     from osgeo import gdal, ogr
 
+    from osgeo import gdal_array
+
     gdal.UseExceptions()
-    rows, cols = labels.shape
-    drv = gdal.GetDriverByName("MEM")
-    ds = drv.Create("", cols, rows, 1, gdal.GDT_Int32)
+    # the label raster itself, no copy, is the band and its own mask (label 0: no area)
+    arr = np.ascontiguousarray(labels, dtype=np.int32)
+    ds = gdal_array.OpenArray(arr)
     ds.SetGeoTransform(grid.geotransform)
     band = ds.GetRasterBand(1)
-    band.WriteArray(labels.astype(np.int32, copy=False))
-    mds = drv.Create("", cols, rows, 1, gdal.GDT_Byte)
-    mds.GetRasterBand(1).WriteArray((labels > 0).view(np.uint8))
     ods = ogr.GetDriverByName("Memory").CreateDataSource("areas")
     layer = ods.CreateLayer("areas")
     layer.CreateField(ogr.FieldDefn("id", ogr.OFTInteger))
-    gdal.Polygonize(band, mds.GetRasterBand(1), layer, 0, [])
+    gdal.Polygonize(band, band, layer, 0, [])
     polys: Dict[int, object] = {}
     for feat in layer:
         lid = int(feat.GetField(0))
@@ -3154,7 +3153,6 @@ def open_ground_spaces(areas: List[Area], passages: List[Passage], grid: Occupan
     from shapely.geometry import LineString, Point
 
     from .model import OCCUPIED
-    from .rasterize import repaint_polygon
 
     closed = set(closed_ids)
     usable = [a for a in areas if a.polygon is not None and not a.polygon.is_empty and a.type != "structure"]
@@ -3180,14 +3178,24 @@ def open_ground_spaces(areas: List[Area], passages: List[Passage], grid: Occupan
     if not keep:
         return []
     lab = np.zeros(grid.shape, np.int32)
-    for a in usable:
-        for part in getattr(a.polygon, "geoms", [a.polygon]):
+    # every area's exterior filled (sub-pixel, as rasterize.repaint_polygon), the first area in order winning a
+    # pixel two fills cover: painted straight into the raster from the last one to the first
+    for a in reversed(usable):
+        for part in reversed(list(getattr(a.polygon, "geoms", [a.polygon]))):
             if part.geom_type == "Polygon" and not part.is_empty:
-                repaint_polygon(lab, grid, part, a.id, old_id=0)
+                xs, ys = np.asarray(part.exterior.coords).T
+                c, r = grid.world_to_pixel(xs, ys)
+                cv2.fillPoly(lab, [np.round(np.column_stack((c, r)) * 8).astype(np.int32)], int(a.id), shift=3)
     passable = grid.data != OCCUPIED
     cross = cv2.getStructuringElement(cv2.MORPH_CROSS, (3, 3))  # 4-connected steps: a ring OPEN_RING_PX deep
-    lab = _grow_into_slivers(lab, passable, OPEN_SLIVER_PX)  # compared with ids only (np.isin): any dtype
-    free0 = (passable & (lab == 0)).view(np.uint8)
+    # the pixels the areas hold once grown into their slivers (_grow_into_slivers, whose ids are needed near the
+    # measured components only): a pixel is reached in as many 8-neighbour rounds through passable pixels
+    held = (lab > 0).view(np.uint8)
+    k3 = np.ones((3, 3), np.uint8)
+    pass8 = passable.view(np.uint8)
+    for _ in range(OPEN_SLIVER_PX):
+        held = held | (cv2.dilate(held, k3) & pass8)
+    free0 = pass8 & (held ^ 1)
     n, outside = cv2.connectedComponents(free0, connectivity=4, ltype=cv2.CV_32S)
     border = np.unique(np.concatenate([outside[0], outside[-1], outside[:, 0], outside[:, -1]]))
     border = border[border > 0]
@@ -3207,7 +3215,12 @@ def open_ground_spaces(areas: List[Area], passages: List[Passage], grid: Occupan
         r0, r1 = max(int(ra) - m, 0), min(int(rb) + m + 1, rows)
         if c1 <= c0 or r1 <= r0:
             continue
-        mine = np.isin(lab[r0:r1, c0:c1], ids).view(np.uint8)
+        # the grown ids in the window: grown on it widened by the rounds (a pixel's id comes from at most that far)
+        g = OPEN_SLIVER_PX
+        gr0, gc0 = max(r0 - g, 0), max(c0 - g, 0)
+        sub = _grow_into_slivers(lab[gr0:min(r1 + g, rows), gc0:min(c1 + g, cols)],
+                                 passable[gr0:min(r1 + g, rows), gc0:min(c1 + g, cols)], g)
+        mine = np.isin(sub[r0 - gr0:r1 - gr0, c0 - gc0:c1 - gc0], ids).view(np.uint8)
         pw = passable[r0:r1, c0:c1].view(np.uint8)
         grown = mine
         for _ in range(OPEN_RING_PX):  # the ring beyond the outline, through free pixels only (never a wall)
@@ -3263,11 +3276,116 @@ def room_name_points(texts, rules=None) -> np.ndarray:
     return np.asarray(pts, dtype=np.float64).reshape(-1, 2)
 
 
+# --------------------------------------------------------------------------- topology on coarser cells
+def _topology_default(default: float = 0.088) -> float:
+    """``CAD2OSMAG_TOPOLOGY_CELL`` from the environment (metres, >= 0), else ``default``."""
+    try:
+        v = float(os.environ.get("CAD2OSMAG_TOPOLOGY_CELL", default))
+    except ValueError:
+        return default
+    return v if math.isfinite(v) and v >= 0 else default
+
+
+TOPOLOGY_RESOLUTION = _topology_default()  # metres (0.088 = 2 x 0.044): the skeleton, regions and merges work on
+# cells of about this size (a whole multiple of the raster's cells, which then only trace the outlines and passages);
+# 0 = all on the raster's own cells (the output before session 10). CAD2OSMAG_TOPOLOGY_CELL overrides it.
+
+
+def topology_scale(resolution: float, door_width: float = DEFAULT_DOOR_WIDTH,
+                   corridor_width: float = DEFAULT_CORRIDOR_WIDTH, delta: float = DEFAULT_DELTA,
+                   cell: Optional[float] = None) -> int:
+    """How many raster cells (per side) one cell of the segmentation's topology steps covers: ``cell``
+    (default ``TOPOLOGY_RESOLUTION``, metres) / ``resolution`` rounded down; 1 when that is finer than the
+    raster, when ``cell`` is 0, or when coarser cells are too coarse for the openings (alpha < 2 px^2)."""
+    cell = TOPOLOGY_RESOLUTION if cell is None else float(cell)
+    if not (np.isfinite(cell) and cell > 0 and resolution > 0):
+        return 1
+    k = int(math.floor(cell / resolution + 1e-6))
+    while k > 1 and compute_alpha(door_width, corridor_width, delta, resolution * k) < 2:
+        k -= 1
+    return max(k, 1)
+
+
+def _pool_max(img: np.ndarray, k: int) -> np.ndarray:
+    """The largest value of every k x k cell of ``img`` (bool or uint8); the last row / column of cells may
+    hang over the raster: they see its edge pixels repeated."""
+    rows, cols = img.shape
+    R, C = -(-rows // k), -(-cols // k)
+    if (R * k, C * k) != (rows, cols):
+        img = np.pad(img, ((0, R * k - rows), (0, C * k - cols)), mode="edge")
+    out = img[0::k, 0::k].copy()
+    for i in range(k):
+        for j in range(k):
+            if i or j:
+                np.maximum(out, img[i::k, j::k], out=out)
+    return out
+
+
+def _coarsen_any(mask: np.ndarray, k: int) -> np.ndarray:
+    """``mask`` on cells of k x k pixels: true where any pixel of the cell is."""
+    return _pool_max(mask, k)
+
+
+_CODES = np.full(256, OCCUPIED, np.uint8)  # every value but free and unknown is occupied
+_CODES[FREE] = FREE
+_CODES[UNKNOWN] = UNKNOWN
+
+
+def coarsen_grid(grid: OccupancyGrid, k: int, opened: Optional[np.ndarray] = None) -> OccupancyGrid:
+    """``grid`` on cells of k x k pixels (same top-left corner): a cell is occupied when any of its pixels is,
+    else unknown when any is, else free; the pixels of ``opened`` (door openings) count as free. Walls never
+    open on the coarser cells (a wall one pixel thick stays closed); the free space shrinks by less than a
+    cell at each wall face."""
+    codes = _CODES[np.asarray(grid.data, dtype=np.uint8)]
+    if opened is not None:
+        codes[opened] = FREE
+    return OccupancyGrid(_pool_max(codes, k), grid.origin_x, grid.origin_y, grid.resolution * k, grid.crs_wkt)
+
+
+def refine_labels(coarse_labels: np.ndarray, coarse: OccupancyGrid, grid: OccupancyGrid, k: int,
+                  opened: Optional[np.ndarray] = None) -> np.ndarray:
+    """The area labels of ``coarse`` (``grid`` on k x k cells, :func:`coarsen_grid`) on the pixels of
+    ``grid``: every pixel of a labelled cell (all free) takes its label, and the free pixels of the cells at
+    wall faces (cells holding an occupied or unknown pixel) take the label of a 4-neighbour, growing k pixels
+    from the labelled cells (the largest label on a tie). Free pixels of free cells the segmentation left
+    outside every area stay outside."""
+    rows, cols = grid.shape
+    R, C = coarse_labels.shape
+    big = np.empty((R * k, C * k), np.int32)
+    big.reshape(R, k, C, k)[...] = coarse_labels[:, None, :, None]
+    labels = big if big.shape == (rows, cols) else np.ascontiguousarray(big[:rows, :cols])
+    # the pixels of the cells at wall faces (cells not free) that are free themselves
+    cells = np.flatnonzero(np.asarray(coarse.data).ravel() != FREE)
+    cr, cc = np.divmod(cells, C)
+    fr = (cr[:, None] * k + np.arange(k)[None, :]).repeat(k, axis=1).ravel()
+    fc = np.tile(cc[:, None] * k + np.arange(k)[None, :], (1, k)).ravel()
+    inside = (fr < rows) & (fc < cols)
+    todo = fr[inside] * cols + fc[inside]
+    free = np.asarray(grid.data).ravel()[todo] == FREE
+    if opened is not None:
+        free |= opened.ravel()[todo]
+    todo = todo[free]
+    flat = labels.ravel()
+    todo = todo[flat[todo] == 0]
+    r, c = np.divmod(todo, cols)
+    for _ in range(k):
+        if not len(todo):
+            break
+        best = np.zeros(len(todo), flat.dtype)
+        for ok, step in ((r > 0, -cols), (r < rows - 1, cols), (c > 0, -1), (c < cols - 1, 1)):
+            np.maximum(best, np.where(ok, flat[np.where(ok, todo + step, todo)], 0), out=best)
+        got = best > 0
+        flat[todo[got]] = best[got]
+        todo, r, c = todo[~got], r[~got], c[~got]
+    return labels
+
+
 def segment(grid: OccupancyGrid, door_width: float = DEFAULT_DOOR_WIDTH,
             corridor_width: float = DEFAULT_CORRIDOR_WIDTH, delta: float = DEFAULT_DELTA,
             prune: float = DEFAULT_PRUNE, progress: Optional[Progress] = None,
             envelope_gap: float = DEFAULT_ENVELOPE_GAP, inside_points=None, door_hints=None,
-            footprint: bool = False, boundary: Optional[np.ndarray] = None) -> AreaGraph:
+            footprint: bool = False, boundary: Optional[np.ndarray] = None,
+            topology_resolution: Optional[float] = None) -> AreaGraph:
     """Segment the free space of ``grid`` into an Area Graph.
 
     Returns an ``AreaGraph`` whose areas carry exact pixel-edge polygons (world metres), whose
@@ -3292,22 +3410,49 @@ def segment(grid: OccupancyGrid, door_width: float = DEFAULT_DOOR_WIDTH,
     t_all = time.perf_counter()
     stats: Dict[str, float] = {}
     data, alpha = _check_inputs(grid, door_width, corridor_width, delta, prune)
-    res = float(grid.resolution)
-    r_alpha = math.sqrt(alpha)
-    stats.update(alpha_px2=float(alpha), alpha_radius_m=r_alpha * res, resolution=res,
-                 pixels=float(data.size))
-    progress.step(2, f"alpha = {alpha} px^2 (probe disk radius {r_alpha * res:.2f} m at {res:g} m/px)")
     from . import kernels
 
     progress.info(kernels.describe())
-
-    t = time.perf_counter()
-    free = data == FREE
+    opened = None
     if door_hints:
         from .rasterize import door_opening_mask
 
-        free = free | (door_opening_mask(door_hints, free.shape, grid.origin_x, grid.origin_y, res)
-                       & (data != FREE) & (data != UNKNOWN))
+        opened = (door_opening_mask(door_hints, data.shape, grid.origin_x, grid.origin_y, grid.resolution)
+                  & (data != FREE) & (data != UNKNOWN))
+    k = topology_scale(grid.resolution, door_width, corridor_width, delta, cell=topology_resolution)
+    work = grid
+    if k > 1:
+        t = time.perf_counter()
+        work = coarsen_grid(grid, k, opened)
+        stats["coarsen_s"] = time.perf_counter() - t
+        if boundary is not None:
+            boundary = _coarsen_any(boundary, k)
+    stats.update(pixels=float(data.size), topology_scale=float(k))
+    labels, group_peak, skel = _segment_labels(work, door_width, corridor_width, delta, prune, progress,
+                                               envelope_gap, inside_points, opened if k == 1 else None,
+                                               footprint, boundary, stats)
+    if k > 1:
+        t = time.perf_counter()
+        labels = refine_labels(labels, work, grid, k, opened)
+        stats["fine_labels_s"] = time.perf_counter() - t
+    return _area_graph(labels, group_peak, grid, work.resolution, door_hints, skel, work, stats, progress, t_all)
+
+
+def _segment_labels(grid: OccupancyGrid, door_width: float, corridor_width: float, delta: float, prune: float,
+                    progress: Progress, envelope_gap: float, inside_points, opened: Optional[np.ndarray],
+                    footprint: bool, boundary: Optional[np.ndarray], stats: Dict[str, float]):
+    """The area labels of ``grid`` (steps interior .. merge of :func:`segment`): (labels, clearance peak of
+    every label in pixels, skeleton graph). ``opened``: occupied pixels the door hints open."""
+    data, alpha = _check_inputs(grid, door_width, corridor_width, delta, prune)
+    res = float(grid.resolution)
+    r_alpha = math.sqrt(alpha)
+    stats.update(alpha_px2=float(alpha), alpha_radius_m=r_alpha * res, resolution=res)
+    progress.step(2, f"alpha = {alpha} px^2 (probe disk radius {r_alpha * res:.2f} m at {res:g} m/px)")
+
+    t = time.perf_counter()
+    free = data == FREE
+    if opened is not None:
+        free = free | opened
     pix_pts = None
     if inside_points is not None and len(inside_points):
         xy = np.asarray(inside_points, dtype=np.float64).reshape(-1, 2)
@@ -3433,7 +3578,15 @@ def segment(grid: OccupancyGrid, door_width: float = DEFAULT_DOOR_WIDTH,
         labels, group_peak = _cut_partition_lines(labels, space, dist, res, max_cut_m, group_peak, stats, occupied)
     stats["merge_s"] = time.perf_counter() - t
     progress.step(65, f"merged into {int(labels.max())} areas")
+    return labels, group_peak, skel
 
+
+def _area_graph(labels: np.ndarray, group_peak: np.ndarray, grid: OccupancyGrid, peak_res: float, door_hints,
+                skel, skel_grid: OccupancyGrid, stats: Dict[str, float], progress: Progress,
+                t_all: float) -> AreaGraph:
+    """Areas (outlines traced on ``grid``) and passages of the area labels; ``group_peak``: every label's
+    clearance peak in pixels of ``peak_res`` metres."""
+    res = peak_res
     t = time.perf_counter()
     polys = label_polygons(labels, grid)
     stats["polygons_s"] = time.perf_counter() - t
@@ -3480,4 +3633,4 @@ def segment(grid: OccupancyGrid, door_width: float = DEFAULT_DOOR_WIDTH,
     progress.step(100, f"{len(areas)} areas ({sum(a.type == 'room' for a in areas)} rooms), "
                        f"{len(passages)} passages, interior {stats['interior_area_m2']:.1f} m2")
     return AreaGraph(areas=areas, passages=passages, labels=labels.astype(np.int32, copy=False), grid=grid,
-                     stats=stats, skeleton=skel)
+                     stats=stats, skeleton=skel, skeleton_grid=skel_grid)

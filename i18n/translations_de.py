@@ -119,7 +119,7 @@ T = {
      "rules; see 'List DXF/DWG layers'). UNITS: the unit the drawing is drawn in (auto: read from the "
      "header and checked for a plausible building size).\n"
      "RESOLUTION: raster pixel size in metres (0.044 m by default; smaller follows thin walls better but is "
-     "slower). DOOR_WIDTH: the widest door in metres (2.8 m): narrower openings separate rooms. "
+     "slower). TOPOLOGY_CELL: the cell size (m) of the segmentation's skeleton and merges (0.088 m, two raster pixels; the outlines keep the raster's pixels; 0 = the raster's pixels, slower). DOOR_WIDTH: the widest door in metres (2.8 m): narrower openings separate rooms. "
      "CORRIDOR_WIDTH: corridor width in metres (8 m). MIN_AREA: areas smaller than this (m²) merge into a "
      "neighbour (stairs and lifts are kept). INCLUDE_DOORS: draw door layers as walls (doorways closed; off "
      "by default, so that doorways stay open).\n"
@@ -145,7 +145,7 @@ T = {
          "Zeichnung gezeichnet ist (auto: aus dem Dateikopf gelesen und auf eine plausible Gebäudegröße "
          "geprüft).\n"
          "RESOLUTION: Pixelgröße des Rasters in Metern (0.044 m als Vorgabe; kleiner folgt dünnen Wänden "
-         "besser, ist aber langsamer). DOOR_WIDTH: die breiteste Tür in Metern (2.8 m): schmalere Öffnungen "
+         "besser, ist aber langsamer). TOPOLOGY_CELL: die Zellgröße (m) von Skelett und Zusammenführungen der Segmentierung (0.088 m, zwei Rasterpixel; die Umrisse behalten die Pixel des Rasters; 0 = die Pixel des Rasters, langsamer). DOOR_WIDTH: die breiteste Tür in Metern (2.8 m): schmalere Öffnungen "
          "trennen Räume. CORRIDOR_WIDTH: Flurbreite in Metern (8 m). MIN_AREA: Flächen kleiner als dieser "
          "Wert (m²) werden mit einer Nachbarfläche zusammengeführt (Treppen und Aufzüge bleiben erhalten). "
          "INCLUDE_DOORS: Tür-Layer als Wände zeichnen (Türöffnungen geschlossen; als Vorgabe aus, damit "
@@ -1013,7 +1013,7 @@ T = {
      "segmentation missed them. Every area has a 'component' field: its connected component in the area "
      "graph (0 = the largest); the log lists the others (rooms no passage reaches). STRUCTURE (optional): "
      "the structure lines of the drawing (WALLS of 'Extract structure'); stair and lift symbols in them "
-     "type their areas stairs/elevator.\n"
+     "type their areas stairs/elevator. TOPOLOGY_CELL (0.088 m): the skeleton, regions and merges work on cells of about this size (the largest whole multiple of the raster's cell not above it; a cell is free only when all its pixels are, so walls never open), the outlines and passages are traced on the raster's own cells; 0 = everything on the raster's cells (about twice as slow on a 0.044 m CAD raster).\n"
      "Figures: AREA_COUNT, ROOM_COUNT, CORRIDOR_COUNT, PASSAGE_COUNT; INTERIOR_AREA_M2, the free area "
      "inside the building (m²); COMPONENTS and LARGEST_COMPONENT_SHARE (share of the area in the largest "
      "component); ALPHA, the probe disk in px²; SECONDS, the segmentation time."):
@@ -1045,7 +1045,7 @@ T = {
          "Zusammenhangskomponente im Flächengraphen (0 = die größte); das Protokoll listet die übrigen "
          "(Räume, die kein Durchgang erreicht). STRUCTURE (optional): die Bauteillinien der Zeichnung "
          "(WALLS von „Bauteile extrahieren“); Treppen- und Aufzugssymbole darin geben ihren Flächen den Typ "
-         "stairs/elevator.\n"
+         "stairs/elevator. TOPOLOGY_CELL (0.088 m): Skelett, Regionen und Zusammenführungen arbeiten auf Zellen etwa dieser Größe (das größte ganze Vielfache der Rasterzelle, das sie nicht übersteigt; eine Zelle ist nur frei, wenn alle ihre Pixel es sind, Wände öffnen sich also nie), Umrisse und Durchgänge werden auf den Pixeln des Rasters selbst nachgezeichnet; 0 = alles auf den Pixeln des Rasters (auf einem CAD-Raster mit 0.044 m etwa doppelt so langsam).\n"
          "Kennzahlen: AREA_COUNT, ROOM_COUNT, CORRIDOR_COUNT, PASSAGE_COUNT; INTERIOR_AREA_M2, die freie "
          "Fläche im Gebäude (m²); COMPONENTS und LARGEST_COMPONENT_SHARE (Flächenanteil in der größten "
          "Komponente); ALPHA, die Prüfscheibe in px²; SECONDS, die Dauer der Segmentierung."),
@@ -1057,6 +1057,7 @@ T = {
     "Delta δ added to the width (m)": "Zuschlag δ zur Breite (m)",
     "Prune Voronoi branches shorter than (m)": "Voronoi-Äste kürzer als (m) entfernen",
     "Bridge facade openings up to (m)": "Fassadenöffnungen überbrücken bis (m)",
+    "Cell size of the skeleton and merges (m; 0 = the raster's cells)": "Zellgröße von Skelett und Zusammenführungen (m; 0 = die Zellen des Rasters)",
     "Structure lines of the drawing (WALLS of 'Extract structure'), to recognise stairs and lifts":
         "Bauteillinien der Zeichnung (WALLS von „Bauteile extrahieren“), um Treppen und Aufzüge zu erkennen",
     "Use the plan's footprint as evidence of inside space":

@@ -111,7 +111,7 @@ T = {
      "rules; see 'List DXF/DWG layers'). UNITS: the unit the drawing is drawn in (auto: read from the "
      "header and checked for a plausible building size).\n"
      "RESOLUTION: raster pixel size in metres (0.044 m by default; smaller follows thin walls better but is "
-     "slower). DOOR_WIDTH: the widest door in metres (2.8 m): narrower openings separate rooms. "
+     "slower). TOPOLOGY_CELL: the cell size (m) of the segmentation's skeleton and merges (0.088 m, two raster pixels; the outlines keep the raster's pixels; 0 = the raster's pixels, slower). DOOR_WIDTH: the widest door in metres (2.8 m): narrower openings separate rooms. "
      "CORRIDOR_WIDTH: corridor width in metres (8 m). MIN_AREA: areas smaller than this (m²) merge into a "
      "neighbour (stairs and lifts are kept). INCLUDE_DOORS: draw door layers as walls (doorways closed; off "
      "by default, so that doorways stay open).\n"
@@ -131,7 +131,7 @@ T = {
          "化多边形），并写出锚定在地球上的 osmAG 文件。每一步也可作为单独的算法运行，以便更精细地控制。\n"
          "INPUT：平面图（.dxf 或 .dwg）。LAYER_RULES：图层关键词的 JSON 文件（留空：内置规则；参见“列出 "
          "DXF/DWG 图层”）。UNITS：图纸的绘图单位（auto：从文件头读取，并按合理的建筑尺寸校验）。\n"
-         "RESOLUTION：栅格像素大小，单位米（默认 0.044 m；越小越能贴合薄墙，但速度越慢）。DOOR_WIDTH：最宽的"
+         "RESOLUTION：栅格像素大小，单位米（默认 0.044 m；越小越能贴合薄墙，但速度越慢）。TOPOLOGY_CELL：分割的骨架与合并所用的单元大小（米；0.088 m，即两个栅格像素；轮廓保留栅格像素；0 = 栅格像素，较慢）。DOOR_WIDTH：最宽的"
          "门，单位米（2.8 m）：更窄的开口将房间分开。CORRIDOR_WIDTH：走廊宽度，单位米（8 m）。MIN_AREA：小于"
          "此面积（m²）的区域并入相邻区域（楼梯和电梯保留）。INCLUDE_DOORS：将门图层作为墙绘制（门洞封闭；默"
          "认关闭，使门洞保持开放）。\n"
@@ -888,7 +888,7 @@ T = {
      "segmentation missed them. Every area has a 'component' field: its connected component in the area "
      "graph (0 = the largest); the log lists the others (rooms no passage reaches). STRUCTURE (optional): "
      "the structure lines of the drawing (WALLS of 'Extract structure'); stair and lift symbols in them "
-     "type their areas stairs/elevator.\n"
+     "type their areas stairs/elevator. TOPOLOGY_CELL (0.088 m): the skeleton, regions and merges work on cells of about this size (the largest whole multiple of the raster's cell not above it; a cell is free only when all its pixels are, so walls never open), the outlines and passages are traced on the raster's own cells; 0 = everything on the raster's cells (about twice as slow on a 0.044 m CAD raster).\n"
      "Figures: AREA_COUNT, ROOM_COUNT, CORRIDOR_COUNT, PASSAGE_COUNT; INTERIOR_AREA_M2, the free area "
      "inside the building (m²); COMPONENTS and LARGEST_COMPONENT_SHARE (share of the area in the largest "
      "component); ALPHA, the probe disk in px²; SECONDS, the segmentation time."):
@@ -908,7 +908,7 @@ T = {
          "用建筑轮廓，对图像和 ROS 地图（机器人地图，房间旁的空闲空间是扫描结束的地方）不使用。可选的 DOORS"
          "（门垛到门垛的线）保持开放，并在分割遗漏的地方成为通道。每个区域都有 'component' 字段：其在区域图"
          "中的连通分量（0 = 最大的）；日志列出其他分量（没有通道可达的房间）。STRUCTURE（可选）：图纸的结构"
-         "线（“提取建筑结构”的 WALLS）；其中的楼梯和电梯符号将所在区域的类型设为 stairs/elevator。\n"
+         "线（“提取建筑结构”的 WALLS）；其中的楼梯和电梯符号将所在区域的类型设为 stairs/elevator。TOPOLOGY_CELL（0.088 m）：骨架、区域和合并在约此大小的单元上进行（不超过它的栅格单元最大整数倍；只有单元内所有像素都空闲时单元才空闲，因此墙体永不打开），轮廓和通道在栅格自身的像素上描绘；0 = 全部在栅格像素上进行（在 0.044 m 的 CAD 栅格上约慢一倍）。\n"
          "统计值：AREA_COUNT、ROOM_COUNT、CORRIDOR_COUNT、PASSAGE_COUNT；INTERIOR_AREA_M2，建筑内的空闲面积"
          "（m²）；COMPONENTS 和 LARGEST_COMPONENT_SHARE（最大连通分量所占的面积比例）；ALPHA，探测圆盘，单位"
          " px²；SECONDS，分割用时。"),
@@ -918,6 +918,7 @@ T = {
     "Delta δ added to the width (m)": "宽度附加量 δ（米）",
     "Prune Voronoi branches shorter than (m)": "剪除短于此值的 Voronoi 分支（米）",
     "Bridge facade openings up to (m)": "弥合不超过此宽度的立面开口（米）",
+    "Cell size of the skeleton and merges (m; 0 = the raster's cells)": "骨架与合并的单元大小（米；0 = 栅格自身的单元）",
     "Structure lines of the drawing (WALLS of 'Extract structure'), to recognise stairs and lifts":
         "图纸的结构线（“提取建筑结构”的 WALLS），用于识别楼梯和电梯",
     "Use the plan's footprint as evidence of inside space": "将平面图的建筑轮廓作为室内空间的证据",

@@ -15,7 +15,7 @@ from qgis.core import (
     QgsProcessingParameterString,
 )
 
-from ..algorithms import pipeline
+from ..algorithms import pipeline, segmentation
 from .alg_extract_structure import add_plan_parameters, plan_argument
 from .alg_load_osmag import osmag_to_sinks
 from .base import CAD_FILTER, Cad2OsmagAlgorithm
@@ -41,7 +41,8 @@ class DxfToOsmagAlgorithm(Cad2OsmagAlgorithm):
             "built-in rules; see 'List DXF/DWG layers'). UNITS: the unit the drawing is drawn in (auto: read "
             "from the header and checked for a plausible building size).\n"
             "RESOLUTION: raster pixel size in metres (0.044 m by default; smaller follows thin walls better "
-            "but is slower). DOOR_WIDTH: the widest door in metres (2.8 m): narrower openings separate rooms. "
+            "but is slower). TOPOLOGY_CELL: the cell size (m) of the segmentation's skeleton and merges (0.088 m, "
+            "two raster pixels; the outlines keep the raster's pixels; 0 = the raster's pixels, slower). DOOR_WIDTH: the widest door in metres (2.8 m): narrower openings separate rooms. "
             "CORRIDOR_WIDTH: corridor width in metres (8 m). MIN_AREA: areas smaller than this (m²) merge into "
             "a neighbour (stairs and lifts are kept). INCLUDE_DOORS: draw door layers as walls (doorways "
             "closed; off by default, so that doorways stay open).\n"
@@ -65,6 +66,9 @@ class DxfToOsmagAlgorithm(Cad2OsmagAlgorithm):
                                                      defaultValue=0))
         self.addParameter(QgsProcessingParameterNumber("RESOLUTION", self.tr("Raster resolution (m/px)"),
                                                        QgsProcessingParameterNumber.Type.Double, 0.044, False, 0.005, 1.0))
+        self.addParameter(QgsProcessingParameterNumber(
+            "TOPOLOGY_CELL", self.tr("Cell size of the skeleton and merges (m; 0 = the raster's cells)"),
+            QgsProcessingParameterNumber.Type.Double, segmentation.TOPOLOGY_RESOLUTION, True, 0.0, 10.0))
         self.addParameter(QgsProcessingParameterNumber("DOOR_WIDTH", self.tr("Widest door (m)"),
                                                        QgsProcessingParameterNumber.Type.Double, 2.8, False, 0.3, 20))
         self.addParameter(QgsProcessingParameterNumber("CORRIDOR_WIDTH", self.tr("Corridor width (m)"),
@@ -126,6 +130,8 @@ class DxfToOsmagAlgorithm(Cad2OsmagAlgorithm):
             include_doors=self.parameterAsBool(parameters, "INCLUDE_DOORS", context),
             plan=plan_argument(self, parameters, context),
             resolution=self.parameterAsDouble(parameters, "RESOLUTION", context),
+            topology_resolution=(None if parameters.get("TOPOLOGY_CELL") in (None, "")
+                                 else self.parameterAsDouble(parameters, "TOPOLOGY_CELL", context)),
             door_width=self.parameterAsDouble(parameters, "DOOR_WIDTH", context),
             corridor_width=self.parameterAsDouble(parameters, "CORRIDOR_WIDTH", context),
             min_area=self.parameterAsDouble(parameters, "MIN_AREA", context),

@@ -158,7 +158,12 @@ def test_segment_writes_the_skeleton_graph(sample, tmp_path):
     ds = ogr.Open(str(tmp_path / "s.gpkg"))  # keep the datasource alive while its layer is read
     feats = list(ds.GetLayer(0))
     assert len(feats) >= 20
+    from algorithms import segmentation
+
+    # the line runs through the node pixels at both ends, the length between them: about two skeleton cells apart
+    # (the skeleton lies on the topology cells, segmentation.topology_scale x the raster's)
+    cell = grid.resolution * segmentation.topology_scale(grid.resolution)
     for f in feats:
         g = f.GetGeometryRef()
-        assert f.GetField("length_m") == pytest.approx(g.Length(), rel=0.2, abs=0.1)
+        assert f.GetField("length_m") == pytest.approx(g.Length(), rel=0.2, abs=max(0.1, 2.2 * cell))
         assert 0 < f.GetField("min_clearance_m") <= f.GetField("max_clearance_m") < 8

@@ -444,7 +444,9 @@ def test_library_terraces_outside_the_curtain_wall_count_out(shared_data, floor_
     folder = shared_data / "dwg" / "library"
     if not (folder / "A-A3-10-05.dwg").is_file():
         pytest.skip("the library DWG sheets are not in the shared data")
-    for sheet, m2 in (("A-A3-10-04.dwg", 200), ("A-A3-10-05.dwg", 300)):
+    # A-A3-10-04: 214.6 m2 counted out on the raster's cells, 192.8 m2 since session 10's topology cells: a 13.8 m2
+    # piece between the planters and a 9 m2 strip of another are no area at all any more (exterior either way)
+    for sheet, m2 in (("A-A3-10-04.dwg", 180), ("A-A3-10-05.dwg", 300)):
         f = floor_cache.process_floor(folder / sheet)
         out = set(f.stats["outdoor_spaces"])
         areas = [a for a in f.refined.areas if a.id in out]
