@@ -657,6 +657,14 @@ def boundary_mask(geometries: Sequence[CadGeometry], grid: "OccupancyGrid") -> O
     return mask if mask.any() else None
 
 
+def ring_px(ring, grid: OccupancyGrid) -> np.ndarray:
+    """A ring's vertices as the (col, row) pixel-corner coordinates of ``grid`` with 3 fractional bits, as
+    ``cv2.fillPoly(..., shift=3)`` takes them."""
+    xs, ys = np.asarray(ring.coords).T
+    c, r = grid.world_to_pixel(xs, ys)
+    return np.round(np.column_stack((c, r)) * 8).astype(np.int32)
+
+
 def repaint_polygon(labels: np.ndarray, grid: OccupancyGrid, polygon, new_id: int, old_id: Optional[int] = None,
                     mask: Optional[np.ndarray] = None) -> None:
     """Set to ``new_id`` the pixels of the label raster ``labels`` (on ``grid``) inside ``polygon``'s exterior
@@ -666,9 +674,7 @@ def repaint_polygon(labels: np.ndarray, grid: OccupancyGrid, polygon, new_id: in
     import cv2
 
     rows, cols = labels.shape
-    xs, ys = np.asarray(polygon.exterior.coords).T
-    c, r = grid.world_to_pixel(xs, ys)
-    pts = np.round(np.column_stack((c, r)) * 8).astype(np.int32)
+    pts = ring_px(polygon.exterior, grid)
     c0, r0 = max(int(pts[:, 0].min()) >> 3, 0), max(int(pts[:, 1].min()) >> 3, 0)
     c1, r1 = min((int(pts[:, 0].max()) >> 3) + 2, cols), min((int(pts[:, 1].max()) >> 3) + 2, rows)
     if c1 <= c0 or r1 <= r0:

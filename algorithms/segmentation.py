@@ -3153,6 +3153,7 @@ def open_ground_spaces(areas: List[Area], passages: List[Passage], grid: Occupan
     from shapely.geometry import LineString, Point
 
     from .model import OCCUPIED
+    from .rasterize import ring_px
 
     closed = set(closed_ids)
     usable = [a for a in areas if a.polygon is not None and not a.polygon.is_empty and a.type != "structure"]
@@ -3183,9 +3184,7 @@ def open_ground_spaces(areas: List[Area], passages: List[Passage], grid: Occupan
     for a in reversed(usable):
         for part in reversed(list(getattr(a.polygon, "geoms", [a.polygon]))):
             if part.geom_type == "Polygon" and not part.is_empty:
-                xs, ys = np.asarray(part.exterior.coords).T
-                c, r = grid.world_to_pixel(xs, ys)
-                cv2.fillPoly(lab, [np.round(np.column_stack((c, r)) * 8).astype(np.int32)], int(a.id), shift=3)
+                cv2.fillPoly(lab, [ring_px(part.exterior, grid)], int(a.id), shift=3)
     passable = grid.data != OCCUPIED
     cross = cv2.getStructuringElement(cv2.MORPH_CROSS, (3, 3))  # 4-connected steps: a ring OPEN_RING_PX deep
     # the pixels the areas hold once grown into their slivers (_grow_into_slivers, whose ids are needed near the
@@ -3321,11 +3320,6 @@ def _pool_max(img: np.ndarray, k: int) -> np.ndarray:
     return out
 
 
-def _coarsen_any(mask: np.ndarray, k: int) -> np.ndarray:
-    """``mask`` on cells of k x k pixels: true where any pixel of the cell is."""
-    return _pool_max(mask, k)
-
-
 _CODES = np.full(256, OCCUPIED, np.uint8)  # every value but free and unknown is occupied
 _CODES[FREE] = FREE
 _CODES[UNKNOWN] = UNKNOWN
@@ -3426,7 +3420,7 @@ def segment(grid: OccupancyGrid, door_width: float = DEFAULT_DOOR_WIDTH,
         work = coarsen_grid(grid, k, opened)
         stats["coarsen_s"] = time.perf_counter() - t
         if boundary is not None:
-            boundary = _coarsen_any(boundary, k)
+            boundary = _pool_max(boundary, k)  # true where any pixel of the cell is
     stats.update(pixels=float(data.size), topology_scale=float(k))
     labels, group_peak, skel = _segment_labels(work, door_width, corridor_width, delta, prune, progress,
                                                envelope_gap, inside_points, opened if k == 1 else None,

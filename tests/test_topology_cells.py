@@ -213,9 +213,7 @@ def test_open_ground_painting_first_area_wins_like_repainting_each():
     got = np.zeros(grid.shape, np.int32)
     for i, p in reversed(list(enumerate(polys, 1))):
         for part in reversed(list(getattr(p, "geoms", [p]))):
-            xs, ys = np.asarray(part.exterior.coords).T
-            c, r = grid.world_to_pixel(xs, ys)
-            cv2.fillPoly(got, [np.round(np.column_stack((c, r)) * 8).astype(np.int32)], i, shift=3)
+            cv2.fillPoly(got, [rasterize.ring_px(part.exterior, grid)], i, shift=3)
     assert np.array_equal(got, ref)
 
 
