@@ -14,8 +14,8 @@ Steps
    (3+ faces meet, or a shared border meets a wall) and at every passage endpoint (locked).
 3. **Simplify each arc once** with its end points fixed (Douglas–Peucker, ε = ``epsilon_px`` ·
    ``resolution``; on a border between two areas ε times the segmentation's ``topology_scale``, the raster
-   cells per side of the cells that decided the border, ``segmentation.topology_scale``) and **remove spikes** iteratively (interior vertices whose angle is below
-   ``spike_angle`` degrees and whose protrusion from the chord of its neighbours is below
+   cells per side of the cells that decided the border, ``segmentation.topology_scale``) and **remove
+   spikes** iteratively (interior vertices whose angle is below ``spike_angle`` degrees and whose protrusion from the chord of its neighbours is below
    ``spike_length`` metres; arc end points, hence passage endpoints and junctions, are never removed).
 4. **Rebuild** every polygon from its arcs, so adjacent areas keep the very same vertices along their
    border (no slivers, no gaps) and every passage endpoint is a vertex of both areas it joins.
@@ -691,10 +691,11 @@ def refine(graph: AreaGraph, resolution: float, epsilon_px: float = EPSILON_PX,
         "components": len(comps), "largest_component_share": comps[0]["share"] if comps else 1.0,
         "time_s": time.perf_counter() - t0,
     }
+    on_borders = "" if border_scale == 1 else f", {tol * border_scale * 100:.2f} cm on borders between two areas"
     progress.step(100, f"refine: vertices {v_before} -> {v_after} (-{100 * stats['vertex_reduction']:.1f} %), "
                        f"max deviation {dev_fin * 100:.2f} cm (DP alone {dev_dp * 100:.2f} cm, bound ε·r = "
-                       f"{tol * 100:.2f} cm{'' if border_scale == 1 else f', {tol * border_scale * 100:.2f} cm on borders between two areas'}), {spikes} spike vertices removed, {len(fallback_arcs)} arcs simplified "
-                       "less to stay valid")
+                       f"{tol * 100:.2f} cm{on_borders}), {spikes} spike vertices removed, {len(fallback_arcs)} arcs "
+                       "simplified less to stay valid")
     out = AreaGraph(out_areas, out_passages, labels=graph.labels, grid=graph.grid, stats=dict(graph.stats))
     out.stats.update({f"refine_{k}": v for k, v in stats.items() if isinstance(v, (int, float))})
     return out, stats
