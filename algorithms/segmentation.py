@@ -2754,9 +2754,7 @@ def _cut_partition_lines(labels: np.ndarray, space: np.ndarray, dist: np.ndarray
 def label_polygons(labels: np.ndarray, grid: OccupancyGrid) -> Dict[int, object]:
     """Exact pixel-edge outline of every label (4-connected), as shapely Polygons in world metres."""
     import shapely
-    from osgeo import gdal, ogr
-
-    from osgeo import gdal_array
+    from osgeo import gdal, gdal_array, ogr
 
     gdal.UseExceptions()
     # the label raster itself, no copy, is the band and its own mask (label 0: no area)
@@ -3422,22 +3420,26 @@ def segment(grid: OccupancyGrid, door_width: float = DEFAULT_DOOR_WIDTH,
         if boundary is not None:
             boundary = _pool_max(boundary, k)  # true where any pixel of the cell is
     stats.update(pixels=float(data.size), topology_scale=float(k))
-    labels, group_peak, skel = _segment_labels(work, door_width, corridor_width, delta, prune, progress,
-                                               envelope_gap, inside_points, opened if k == 1 else None,
-                                               footprint, boundary, stats)
+    # the raster's checks hold for its own cells; coarser cells are checked again (the probe disk against the map)
+    checked = (data, alpha) if k == 1 else _check_inputs(work, door_width, corridor_width, delta, prune)
+    labels, group_peak, skel = _segment_labels(work, checked, door_width, delta, prune, progress, envelope_gap,
+                                               inside_points, opened if k == 1 else None, footprint, boundary,
+                                               stats)
     if k > 1:
         t = time.perf_counter()
         labels = refine_labels(labels, work, grid, k, opened)
         stats["fine_labels_s"] = time.perf_counter() - t
-    return _area_graph(labels, group_peak, grid, work.resolution, door_hints, skel, work, stats, progress, t_all)
+    return _area_graph(labels, group_peak, grid, door_hints, skel, work, stats, progress, t_all)
 
 
-def _segment_labels(grid: OccupancyGrid, door_width: float, corridor_width: float, delta: float, prune: float,
-                    progress: Progress, envelope_gap: float, inside_points, opened: Optional[np.ndarray],
-                    footprint: bool, boundary: Optional[np.ndarray], stats: Dict[str, float]):
+def _segment_labels(grid: OccupancyGrid, checked: Tuple[np.ndarray, int], door_width: float, delta: float,
+                    prune: float, progress: Progress, envelope_gap: float, inside_points,
+                    opened: Optional[np.ndarray], footprint: bool, boundary: Optional[np.ndarray],
+                    stats: Dict[str, float]):
     """The area labels of ``grid`` (steps interior .. merge of :func:`segment`): (labels, clearance peak of
-    every label in pixels, skeleton graph). ``opened``: occupied pixels the door hints open."""
-    data, alpha = _check_inputs(grid, door_width, corridor_width, delta, prune)
+    every label in pixels, skeleton graph). ``checked``: ``_check_inputs`` of ``grid`` (its data and alpha);
+    ``opened``: occupied pixels the door hints open."""
+    data, alpha = checked
     res = float(grid.resolution)
     r_alpha = math.sqrt(alpha)
     stats.update(alpha_px2=float(alpha), alpha_radius_m=r_alpha * res, resolution=res)
@@ -3575,12 +3577,12 @@ def _segment_labels(grid: OccupancyGrid, door_width: float, corridor_width: floa
     return labels, group_peak, skel
 
 
-def _area_graph(labels: np.ndarray, group_peak: np.ndarray, grid: OccupancyGrid, peak_res: float, door_hints,
+def _area_graph(labels: np.ndarray, group_peak: np.ndarray, grid: OccupancyGrid, door_hints,
                 skel, skel_grid: OccupancyGrid, stats: Dict[str, float], progress: Progress,
                 t_all: float) -> AreaGraph:
     """Areas (outlines traced on ``grid``) and passages of the area labels; ``group_peak``: every label's
-    clearance peak in pixels of ``peak_res`` metres."""
-    res = peak_res
+    clearance peak in pixels of ``skel_grid``, the grid the labels were found on."""
+    res = float(skel_grid.resolution)
     t = time.perf_counter()
     polys = label_polygons(labels, grid)
     stats["polygons_s"] = time.perf_counter() - t
