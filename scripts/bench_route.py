@@ -542,6 +542,17 @@ def prepare_avoiding(rm, avoid):
     return out
 
 
+def _route_cpu(rm, args, kwargs) -> float:
+    """CPU seconds of one ``rm.route(*args, **kwargs)``; a failing query counts its time too (the failure was
+    logged in the first loop)."""
+    c0 = time.process_time()
+    try:
+        rm.route(*args, **kwargs)
+    except Exception:  # noqa: BLE001
+        pass
+    return time.process_time() - c0
+
+
 def first_avoid_query(rm, rows):
     """What the first query with a new avoid set pays: the avoid set's graph dropped, one pair's query
     (the first) timed in CPU with everything it builds (the variant, its node table, point grids; the
@@ -553,12 +564,7 @@ def first_avoid_query(rm, rows):
         r.pop("pair_call", None)
     g = rm.graph(ROBOT_RADIUS)
     g.variants.clear()
-    c0 = time.process_time()
-    try:
-        rm.route(*args, **kwargs)
-    except Exception:  # noqa: BLE001 - the failure was logged in the first loop
-        pass
-    out = {"first_avoid_cpu": time.process_time() - c0}
+    out = {"first_avoid_cpu": _route_cpu(rm, args, kwargs)}
     rm.prepare(ROBOT_RADIUS, VERTICAL_COST, avoid=kwargs.get("avoid", ()))
     return out
 
@@ -569,10 +575,7 @@ def back_to_back(rm, rows):
     forgotten before it), no grid A* in between to evict the processor's caches; like the main loop it
     starts with one untimed query (the last pair's, after that pair's grid A*). Fills ``q_cpu_seq``."""
     if rows:
-        try:
-            rm.route(*rows[-1]["_call"][0], **rows[-1]["_call"][1])
-        except Exception:  # noqa: BLE001 - the failure was logged in the first loop
-            pass
+        _route_cpu(rm, *rows[-1]["_call"])
     g = rm.graph(ROBOT_RADIUS)
     for r in rows:
         args, kwargs = r["pair_call"] = r.pop("_call")
@@ -580,12 +583,7 @@ def back_to_back(rm, rows):
             for pc in pcs.values():
                 pc.paths.clear()
                 pc.tpaths.clear()
-        c0 = time.process_time()
-        try:
-            rm.route(*args, **kwargs)
-        except Exception:  # noqa: BLE001 - the failure was logged in the first loop
-            pass
-        r["q_cpu_seq"] = time.process_time() - c0
+        r["q_cpu_seq"] = _route_cpu(rm, args, kwargs)
 
 
 def sist_building(cache, log):
