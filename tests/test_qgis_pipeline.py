@@ -167,3 +167,28 @@ def test_segment_writes_the_skeleton_graph(sample, tmp_path):
         g = f.GetGeometryRef()
         assert f.GetField("length_m") == pytest.approx(g.Length(), rel=0.2, abs=max(0.1, 2.2 * cell))
         assert 0 < f.GetField("min_clearance_m") <= f.GetField("max_clearance_m") < 8
+
+
+def test_segment_topology_cell_parameter(sample, tmp_path):
+    """TOPOLOGY_CELL: 0 segments on the raster's own pixels, the default on 2 x 2 cells: the sample floor's rooms
+    either way; a negative cell size is refused by the parameter, naming it, and writes nothing."""
+    from algorithms.cad_import import import_dxf
+    from algorithms.raster_io import write_grid
+    from algorithms.rasterize import rasterize
+
+    grid = rasterize(import_dxf(sample["dxf"][0]).geometries)
+    write_grid(str(tmp_path / "occ.tif"), grid)
+    counts = {}
+    for cell in ("", "0"):
+        params = {"INPUT": str(tmp_path / "occ.tif"), "AREAS": str(tmp_path / f"a{cell}.gpkg"),
+                  "PASSAGES": str(tmp_path / f"p{cell}.gpkg"), "LABELS": str(tmp_path / f"l{cell}.tif")}
+        if cell:
+            params["TOPOLOGY_CELL"] = cell
+        _, res, _ = run_alg("segment", params)
+        counts[cell] = (res["AREA_COUNT"], res["PASSAGE_COUNT"])
+    assert counts[""] == counts["0"] and counts[""][0] >= 15
+    code, _, log = run_alg("segment", {"INPUT": str(tmp_path / "occ.tif"), "AREAS": str(tmp_path / "bad.gpkg"),
+                                       "PASSAGES": str(tmp_path / "badp.gpkg"), "LABELS": str(tmp_path / "bad.tif"),
+                                       "TOPOLOGY_CELL": "-1"}, check=False)
+    assert code != 0 and "TOPOLOGY_CELL" in log
+    assert not (tmp_path / "bad.gpkg").exists()
