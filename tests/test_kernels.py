@@ -246,13 +246,16 @@ def test_preload_loads_in_a_thread_and_get_waits_for_it(monkeypatch):
     expected = kernels.get() is not None  # this environment's choice, loaded in the caller's thread
     kernels.set_enabled(None)
     gate = threading.Event()
-    real = kernels._load
+    real, real_aot = kernels._load, kernels._load_aot
 
-    def slow_load():
-        gate.wait(10)
-        return real()
+    def slow(load):  # both load paths wait: the ahead-of-time one loads in a millisecond, before describe asks
+        def wait_then_load():
+            gate.wait(10)
+            return load()
+        return wait_then_load
 
-    monkeypatch.setattr(kernels, "_load", slow_load)
+    monkeypatch.setattr(kernels, "_load", slow(real))
+    monkeypatch.setattr(kernels, "_load_aot", slow(real_aot))
     try:
         kernels.preload()
         kernels.preload()  # a second call starts no second load
@@ -267,6 +270,7 @@ def test_preload_loads_in_a_thread_and_get_waits_for_it(monkeypatch):
     finally:
         gate.set()
         monkeypatch.setattr(kernels, "_load", real)
+        monkeypatch.setattr(kernels, "_load_aot", real_aot)
         kernels.set_enabled(None)
 
 
