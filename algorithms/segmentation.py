@@ -2216,7 +2216,7 @@ SLIVERS_APART = True  # an opening that touches two spaces and slivers (pieces <
 
 def _split_at_wall_openings(labels: np.ndarray, space: np.ndarray, resolution: float, max_cut_m: float,
                             dist: np.ndarray, peaks: dict, grown: dict, occupied: Optional[np.ndarray] = None,
-                            openings=None, jog_px: int = 0, extensions=None):
+                            openings=None, jog_px: int = 0, extensions=None, rejoined: Optional[list] = None):
     """Rooms open to a corridor (or to each other) through an opening wider than a door but in a
     wall line: the wall's own line continued across the opening cuts the area in two when the
     opening is clearly narrower than the spaces on both sides measured along the line
@@ -2225,7 +2225,8 @@ def _split_at_wall_openings(labels: np.ndarray, space: np.ndarray, resolution: f
     no longer than the corridor is wide (no cut). Openings are judged, the pieces on both sides of
     a rejected one joined, and the rest judged again. Returns (labels, number of pieces cut off);
     ``peaks`` gets the clearance peak (px, from ``dist``) of every area cut or new, ``grown`` the
-    largest clearance of the slivers other areas received."""
+    largest clearance of the slivers other areas received. Pieces cut off with no space of their own join the
+    area they open onto (``PIECES_REJOIN``); their label ids stay unused, and ``rejoined`` gets their number."""
     import cv2
 
     if openings is None:
@@ -2360,7 +2361,54 @@ def _split_at_wall_openings(labels: np.ndarray, space: np.ndarray, resolution: f
                     grown[h] = max(grown.get(h, 0.0), float(dist[gw][m].max()))
         for lid in changed_ids:
             peaks[lid] = float(dist[sl][labels[sl] == lid].max())
+        if PIECES_REJOIN:
+            n_join = _rejoin_pieces_without_space(labels, gw, changed_ids, dist, MIN_RISE_M / resolution, peaks, grown)
+            kept_cuts -= n_join
+            if rejoined is not None:
+                rejoined.append(n_join)
     return labels, kept_cuts
+
+
+PIECES_REJOIN = True  # a piece a wall-line door cut off with no space of its own joins the area it opens onto ...
+# (the merge's pass 1 for the pieces the cut made: the merge had given it to the side of the door; SIST-F4.dwg's
+# lift lobby, 2 x 2 cells: the strip between the lift door and the car symbol, cut off the lobby, was an area)
+
+
+def _rejoin_pieces_without_space(labels: np.ndarray, gw, changed_ids, dist: np.ndarray, min_rise: float,
+                                 peaks: dict, grown: dict) -> int:
+    """The merge's first rule for the pieces an accepted wall-line door cut off: a piece whose clearance peak
+    rises less than ``min_rise`` (px) above the saddle (largest clearance along the shared border) to an area
+    other than the ones cut from the same area is no space of its own: it joins that area (the one of the
+    largest saddle). A room's front strip that the merge gave to the corridor before the door's cut is
+    the room's again. ``gw``: the window of the cut area grown by one pixel; ``changed_ids[0]`` is the
+    largest piece (kept), the others the new ones; ``peaks`` loses a joined piece, ``grown`` gets its peak for
+    the area it joined. Returns the number of pieces joined."""
+    new = changed_ids[1:]
+    if not new:
+        return 0
+    win = labels[gw]
+    dwin = dist[gw]
+    cut_from = np.fromiter(changed_ids, np.int64)
+    joined = 0
+    for lid in new:
+        best = None
+        for a, b, da, db in ((win[:-1, :], win[1:, :], dwin[:-1, :], dwin[1:, :]),
+                             (win[:, :-1], win[:, 1:], dwin[:, :-1], dwin[:, 1:])):
+            for p, q, dp, dq in ((a, b, da, db), (b, a, db, da)):
+                m = (p == lid) & (q > 0) & ~np.isin(q, cut_from)
+                if not m.any():
+                    continue
+                nb, sv = q[m], np.minimum(dp[m], dq[m]).astype(np.float64)
+                for h in np.unique(nb).tolist():
+                    s = float(sv[nb == h].max())
+                    if best is None or (s, -h) > (best[0], -best[1]):
+                        best = (s, h)
+        if best is None or peaks[lid] - best[0] >= min_rise:
+            continue
+        win[win == lid] = best[1]
+        grown[best[1]] = max(grown.get(best[1], 0.0), peaks.pop(lid))
+        joined += 1
+    return joined
 
 
 def _wall_line_doors(labels: np.ndarray, space: np.ndarray, dist: np.ndarray, resolution: float,
@@ -2380,15 +2428,16 @@ def _wall_line_doors(labels: np.ndarray, space: np.ndarray, dist: np.ndarray, re
         openings, jamb_ops = openings
     ext = _block_extensions(space, ~space if occupied is None else occupied, openings, resolution,
                             max_cut_m) if scanned else None
+    rejoined: list = []
     labels, n_cuts = _split_at_wall_openings(labels, space, resolution, max_cut_m, dist, peaks, grown, occupied,
-                                             openings=openings, extensions=ext)
+                                             openings=openings, extensions=ext, rejoined=rejoined)
     stats["block_cuts"] = float(len(ext or ()))
     stats["wall_line_doors"] = float(n_cuts)
     if jamb_ops:  # after the wall lines: a jamb's cut across a corridor is judged with the rooms already apart
         jext = _block_extensions(space, ~space if occupied is None else occupied, jamb_ops, resolution,
                                  max_cut_m) if scanned else None
         labels, n_jambs = _split_at_wall_openings(labels, space, resolution, max_cut_m, dist, peaks, grown,
-                                                  occupied, openings=jamb_ops, extensions=jext)
+                                                  occupied, openings=jamb_ops, extensions=jext, rejoined=rejoined)
         stats["jamb_doors"] = float(n_jambs)
     if peaks or grown:
         top = max(list(peaks) + list(grown))
@@ -2398,6 +2447,13 @@ def _wall_line_doors(labels: np.ndarray, space: np.ndarray, dist: np.ndarray, re
             group_peak[lid] = max(group_peak[lid], v)
         for lid, v in peaks.items():
             group_peak[lid] = max(v, grown.get(lid, 0.0))
+    stats["wall_line_pieces_rejoined"] = float(sum(rejoined))
+    if sum(rejoined):  # the joined pieces' ids are unused: renumber 1.. in the same order
+        used = np.bincount(labels.ravel(), minlength=len(group_peak)) > 0
+        used[0] = True
+        lut = np.cumsum(used).astype(np.int32) - 1
+        labels = lut[labels]
+        group_peak = group_peak[used]
     stats["wall_line_s"] = time.perf_counter() - t
     return labels, group_peak
 

@@ -456,7 +456,10 @@ SIST_FRAMES = {"2": "4", "4": "2"}  # F2 and F4 are drawn in one frame (../share
 # now and link to F2 (1-2: 2 + 4 -> 4 stairs + 3 lifts), F1's E1-P1 is no longer carved out of its lobby (the lobby
 # is re-cut: _carve_shaft's conditions no longer hold there): carved 15 -> 14, vertical passages 37 -> 38, F1 refined on
 # 7 shafts instead of 6; with CAD2OSMAG_TOPOLOGY_CELL=0 the previous pin f839df63... returns exactly (checked)
-SIST_BUILDING_SHA256 = "00f242b636748a3d9e3015fe43c56748adb9a980fa7fec7622b7a08a26e9c813"
+# re-pinned (session 11, issue 13): a piece a wall-line door cut off with no space of its own joins the area it opens onto (segmentation.PIECES_REJOIN):
+# moved with SIST-F1's pin (its west entrance channel is the hall's); with PIECES_REJOIN = False
+# the previous pin 00f242b6... exactly (checked)
+SIST_BUILDING_SHA256 = "a1d7ca7ee7e71bc7308c8c65046071d0d9c88708d2fcc3f78285cdbd3707d672"
 
 
 @pytest.mark.slow

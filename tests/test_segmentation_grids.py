@@ -614,3 +614,60 @@ def test_wall_face_at_an_angle_is_fitted_to_its_pixels(deg, monkeypatch):
     monkeypatch.setattr(seg, "FACE_FIT", False)
     if deg == 17.5:
         assert np.abs(angles() - deg).min() >= 0.3
+
+
+def _room_behind_opening(strip_m=0.75):
+    """Labels as the merge leaves them when a room's front has no space of its own: a corridor (y 0..2 m,
+    x 0..6 m), a wall (0.15 m) with a 1.2 m opening, a room 3 x 2.5 m behind it; the corridor's label 1
+    reaches through the opening over the room's first ``strip_m``, the rest of the room is label 2."""
+    space = np.zeros((_px(5.0), _px(6.0)), bool)
+    space[_px(0.2):_px(2.0), _px(0.2):_px(5.8)] = True  # corridor
+    space[_px(2.0):_px(2.15), _px(2.0):_px(3.2)] = True  # the opening in its wall line
+    space[_px(2.15):_px(4.65), _px(1.5):_px(4.5)] = True  # the room
+    labels = np.where(space, 1, 0).astype(np.int32)
+    labels[_px(2.15 + strip_m):_px(4.65), _px(1.5):_px(4.5)] = 2
+    import cv2
+
+    dist = cv2.distanceTransform(space.view(np.uint8), cv2.DIST_L2, 5).astype(np.float32)
+    return space, labels, dist
+
+
+@pytest.mark.parametrize("rejoin", [True, False])
+def test_a_piece_a_wall_line_door_cuts_off_joins_the_room_it_opens_onto(monkeypatch, rejoin):
+    """The merge gave a room's front strip (no clearance peak of its own: it rises less than MIN_RISE_M
+    above its border with the room) to the corridor, through the opening. The wall line's cut takes it off
+    the corridor; it is the room's (its door is the room's door), not an area of its own. SIST-F4.dwg: the
+    strip between a lift's door and the car symbol standing in the shaft, on 2 x 2 cells, was an area that
+    took the lift's name and left the lift reachable over 0.26 m only."""
+    monkeypatch.setattr(seg, "PIECES_REJOIN", rejoin)
+    space, labels, dist = _room_behind_opening()
+    peaks, grown = {}, {}
+    out, cuts = seg._split_at_wall_openings(labels.copy(), space, RES, 2.0, dist, peaks, grown)
+    corridor = out[_px(0.5):_px(1.8), _px(0.5):_px(5.5)]
+    strip = out[_px(2.3):_px(2.8), _px(1.7):_px(4.3)]
+    back = out[_px(3.2):_px(4.5), _px(1.7):_px(4.3)]
+    assert set(np.unique(corridor).tolist()) == {1} and set(np.unique(back).tolist()) == {2}
+    if rejoin:
+        assert set(np.unique(strip).tolist()) == {2} and cuts == 0  # the room is whole, through its door
+        assert set(np.unique(out).tolist()) == {0, 1, 2}
+        assert grown.get(2, 0.0) > 0 and not any(k > 2 for k in peaks)
+    else:
+        assert len(np.unique(strip)) == 1 and int(strip[0, 0]) not in (1, 2) and cuts == 1  # the defect
+
+
+def test_a_piece_with_space_of_its_own_stays_an_area():
+    """A vestibule deeper than its border with the room behind is wide (its clearance peak rises
+    MIN_RISE_M above that border): the cut keeps it an area, as the merge keeps such splits."""
+    space, labels, dist = _room_behind_opening(strip_m=1.5)
+    # a wall with a 0.5 m gap between the vestibule and the room: the vestibule's peak rises above it
+    wall = np.zeros_like(space)
+    wall[_px(3.65):_px(3.8), _px(1.5):_px(4.5)] = True
+    wall[_px(3.65):_px(3.8), _px(2.75):_px(3.25)] = False
+    space &= ~wall
+    labels[wall] = 0
+    import cv2
+
+    dist = cv2.distanceTransform(space.view(np.uint8), cv2.DIST_L2, 5).astype(np.float32)
+    out, cuts = seg._split_at_wall_openings(labels.copy(), space, RES, 2.0, dist, {}, {})
+    vest = out[_px(2.4):_px(3.4), _px(1.7):_px(4.3)]
+    assert cuts == 1 and len(np.unique(vest)) == 1 and int(vest[0, 0]) not in (1, 2)
