@@ -7,7 +7,9 @@ segments on the shared border of the two areas they join.
 Steps
 1. **Merge small areas**: every area below ``min_area`` (m², types in ``keep_types`` such as stairs and
    elevators are exempt) is merged into the neighbour it shares the longest border with, smallest
-   first, repeatedly; an isolated small area (no shared border) is dropped. Passages of a merged area
+   first, repeatedly (a stair or a lift only when it touches no other area, ``SHAFTS_LAST``: a stretch of
+   corridor merged into a stair would make the stair its way through); an isolated small area (no shared
+   border) is dropped. Passages of a merged area
    are re-pointed; passages that become internal, or lead to a dropped area, are removed.
 2. **Node the partition into arcs**: every ring vertex that lies on another ring's edge is inserted
    there, then the rings are cut into arcs at every vertex where the set of adjacent faces changes
@@ -42,6 +44,10 @@ SPIKE_ANGLE_DEG = 15.0
 SPIKE_LENGTH_M = 0.3
 MIN_AREA_M2 = 10.0
 KEEP_TYPES = ("stairs", "elevator")
+SHAFT_TYPES = ("stairs", "elevator")  # a small area joins a stair or a lift only when it touches nothing else ...
+SHAFTS_LAST = True  # ... (a corridor's stretch merged into a stair made the stair the corridor's only way through:
+# SIST-F4.dwg level 4, 2 x 2 cells: the 10 m2 stretch between the lift lobby and the E2 wing's corridor joined
+# stair E2-ST-01, its longest border, and the wing had no stair-free way to the lifts)
 
 
 # =========================================================================== validation helpers
@@ -120,7 +126,8 @@ def _overlapping_pairs(arr, valid, resolution: float):
 # =========================================================================== 1. small areas
 def merge_small_areas(areas: List[Area], passages: List[Passage], min_area: float,
                       keep_types=KEEP_TYPES, progress=None):
-    """Merge areas below ``min_area`` into the neighbour sharing the longest border.
+    """Merge areas below ``min_area`` into the neighbour sharing the longest border (with ``SHAFTS_LAST``
+    into a stair or a lift, ``SHAFT_TYPES``, only when no other area shares a border with it).
 
     Returns (areas, passages, info) with ``info`` = {"merged": n, "dropped": n, "dropped_ids": [...],
     "merged_into": {small_id: target_id}, "passages_removed": n}.
@@ -158,6 +165,10 @@ def merge_small_areas(areas: List[Area], passages: List[Passage], min_area: floa
             if len(touching):
                 lens = shapely.length(shapely.intersection(s.polygon.boundary,
                                                            shapely.boundary(polys[touching])))
+                if SHAFTS_LAST:
+                    shaft = np.array([areas[int(near[i])].type in SHAFT_TYPES for i in touching.tolist()], bool)
+                    if (~shaft & (lens > 1e-9)).any():
+                        lens = np.where(shaft, 0.0, lens)
                 k = int(np.argmax(lens))
                 if lens[k] > 1e-9:
                     best = areas[int(near[touching[k]])]

@@ -59,7 +59,10 @@ PINNED_DWG = {
     # re-pinned (session 11, issue 13): a piece a wall-line door cut off with no space of its own joins the area it opens onto (segmentation.PIECES_REJOIN):
     # SIST-F1.dwg 145/198 -> 144/197 (the landing in front of stair E1-ST-03 is the stair's), A-A3-10-04 unchanged;
     # with PIECES_REJOIN = False the previous pin 79f4b808... exactly (checked)
-    "sist-original/SIST-F1.dwg": ("eecabc211a4ccd59aed6ec4460af78f02699ab1caeba3130f987008dc0055d90", 144, 197),
+    # re-pinned (session 11): a small area joins a stair or a lift only when nothing else touches it (refine.
+    # SHAFTS_LAST): SIST-F1.dwg's 5.4 m2 piece before a stair (two rooms' doors open onto it) joins the lobby, counts
+    # unchanged; with SHAFTS_LAST = False the pin above (eecabc21...) exactly (checked)
+    "sist-original/SIST-F1.dwg": ("c2b4b3c21c7e10b61b3bc8f12d1a76aafd2fc9507ecbc8c7a095e3e3f8d6c680", 144, 197),
     "library/A-A3-10-04.dwg": ("86453c6922502fba73bf578fe9fa22c22d0ce085c44751fe98a3b03c986bac5e", 64, 80),
 }
 
@@ -103,7 +106,7 @@ def test_oriented_rings_equal_shapely_orient(seed):
 
 def _merge_reference(areas, passages, min_area, keep_types=refine.KEEP_TYPES):
     """refine.merge_small_areas as it was (every area's area and an intersects test against every area,
-    per merge)."""
+    per merge), with its rules (``SHAFTS_LAST``)."""
     import copy
 
     import shapely
@@ -122,6 +125,10 @@ def _merge_reference(areas, passages, min_area, keep_types=refine.KEEP_TYPES):
             touching = np.flatnonzero(shapely.intersects(s.polygon, polys))
             if len(touching):
                 lens = shapely.length(shapely.intersection(s.polygon.boundary, shapely.boundary(polys[touching])))
+                if refine.SHAFTS_LAST:  # session 11: a stair or a lift only when nothing else touches it
+                    shaft = np.array([others[int(i)].type in refine.SHAFT_TYPES for i in touching])
+                    if (~shaft & (lens > 1e-9)).any():
+                        lens = np.where(shaft, 0.0, lens)
                 k = int(np.argmax(lens))
                 if lens[k] > 1e-9:
                     best = others[int(touching[k])]

@@ -294,3 +294,36 @@ def test_overlap_check_skips_invalid_polygons_instead_of_raising():
     pairs = _overlapping_pairs(arr, valid, 0.05)
     assert [(x, y) for x, y, _ in pairs] == [(0, 2)]
     assert pairs[0][2] == pytest.approx(0.5)
+
+
+def _stretch_between_stair_and_corridor():
+    """A 4 x 2 m stretch (5) under a stair (1, their border 4 m long), a corridor (2) east of it (2 m border),
+    a room (3) west of it whose 1 m door opens onto the stretch only, and a 0.16 m2 niche (4) in the stair's
+    corner (it touches the stair alone). 0.05 m/px, y down."""
+    L = np.zeros((200, 300), np.int32)
+    L[10:90, 10:290] = 1  # the stair, north
+    L[90:130, 120:200] = 5  # the stretch
+    L[90:170, 200:290] = 2  # the corridor, east
+    L[90:170, 10:118] = 3  # the room, west (a wall between it and the stretch) ...
+    L[100:120, 118:120] = 3  # ... and its door
+    L[12:20, 12:20] = 4  # the niche
+    return L
+
+
+@pytest.mark.parametrize("shafts_last", [True, False])
+def test_a_small_stretch_joins_a_stair_only_when_it_touches_nothing_else(monkeypatch, shafts_last):
+    """SIST-F4.dwg (level 4): a corridor's 10 m2 stretch between a lobby and the E2 wing's corridor shared its
+    longest border with a stair and was merged into it: the stair became the wing's only way through, and a robot
+    avoiding stairs could not reach the lifts. A small area joins a stair or a lift only when nothing else
+    touches it (here the corridor); the niche touching the stair alone still joins it."""
+    from algorithms import refine as R
+
+    monkeypatch.setattr(R, "SHAFTS_LAST", shafts_last)
+    L = _stretch_between_stair_and_corridor()
+    g = graph_from_labels(L, 0.0, 10.0, RES, types={1: "stairs", 2: "corridor"})
+    areas, passages, info = R.merge_small_areas(g.areas, g.passages, 10.0, keep_types=())
+    into = info["merged_into"]
+    assert into[4] == 1  # the niche: the stair is its only neighbour
+    assert into[5] == (2 if shafts_last else 1)
+    if shafts_last:  # the room's door now opens onto the corridor, not the stair
+        assert any({p.from_id, p.to_id} == {2, 3} for p in passages)
