@@ -259,3 +259,14 @@ def test_a_robot_map_at_half_the_cell_size_segments_as_well_as_at_its_own(shared
     assert ag.stats["topology_scale"] == 3
     fine = evaluate(ag.labels, np.repeat(np.repeat(gt0, 2, 0), 2, 1))["mcc"]
     assert fine >= native - 0.03, (name, native, fine)
+
+
+@pytest.mark.parametrize("rows,cols,k", [(7, 9, 2), (8, 9, 2), (7, 8, 2), (8, 8, 2), (10, 11, 3), (9, 9, 3), (5, 5, 1)])
+def test_upsampled_labels_are_the_cells_on_their_pixels_cut_at_the_edge(rows, cols, k):
+    """``_upsample`` writes every cell's label on its k x k pixels straight into the raster's shape (the last
+    row and column of cells cut by the edge): the same as repeating and cropping, without the cropped copy."""
+    rng = np.random.default_rng(rows * 100 + cols * 10 + k)
+    cells = rng.integers(0, 50, (-(-rows // k), -(-cols // k))).astype(np.int32)
+    want = np.repeat(np.repeat(cells, k, axis=0), k, axis=1)[:rows, :cols]
+    got = segmentation._upsample(cells, k, rows, cols)
+    assert got.shape == (rows, cols) and got.flags.c_contiguous and np.array_equal(got, want)
