@@ -2226,7 +2226,7 @@ def _split_at_wall_openings(labels: np.ndarray, space: np.ndarray, resolution: f
     a rejected one joined, and the rest judged again. Returns (labels, number of pieces cut off);
     ``peaks`` gets the clearance peak (px, from ``dist``) of every area cut or new, ``grown`` the
     largest clearance of the slivers other areas received. Pieces cut off with no space of their own join the
-    area they open onto (``PIECES_REJOIN``); their label ids stay unused, and ``rejoined`` gets their number."""
+    area they open onto (``PIECES_REJOIN``; the new ids stay consecutive), and ``rejoined`` gets their number."""
     import cv2
 
     if openings is None:
@@ -2364,6 +2364,7 @@ def _split_at_wall_openings(labels: np.ndarray, space: np.ndarray, resolution: f
         if PIECES_REJOIN:
             n_join = _rejoin_pieces_without_space(labels, gw, changed_ids, dist, MIN_RISE_M / resolution, peaks, grown)
             kept_cuts -= n_join
+            next_id -= n_join
             if rejoined is not None:
                 rejoined.append(n_join)
     return labels, kept_cuts
@@ -2377,38 +2378,48 @@ PIECES_REJOIN = True  # a piece a wall-line door cut off with no space of its ow
 def _rejoin_pieces_without_space(labels: np.ndarray, gw, changed_ids, dist: np.ndarray, min_rise: float,
                                  peaks: dict, grown: dict) -> int:
     """The merge's first rule for the pieces an accepted wall-line door cut off: a piece whose clearance peak
-    rises less than ``min_rise`` (px) above the saddle (largest clearance along the shared border) to an area
-    other than the ones cut from the same area is no space of its own: it joins that area (the one of the
-    largest saddle). A room's front strip that the merge gave to the corridor before the door's cut is
-    the room's again. ``gw``: the window of the cut area grown by one pixel; ``changed_ids[0]`` is the
-    largest piece (kept), the others the new ones; ``peaks`` loses a joined piece, ``grown`` gets its peak for
-    the area it joined. Returns the number of pieces joined."""
+    rises less than ``min_rise`` (px) above the saddle (largest clearance along the shared border, as
+    ``_neighbour_pairs`` measures it) to an area other than the ones cut from the same area is no space of its
+    own: it joins that area (the one of the largest saddle). A room's front strip that the merge gave to the
+    corridor before the door's cut is the room's again. ``gw``: the window of the cut area grown by one pixel;
+    ``changed_ids[0]`` is the largest piece (kept), the others the new ones (consecutive ids); ``peaks`` and
+    ``grown`` follow the pieces. The new pieces left keep consecutive ids from ``changed_ids[1]`` on. Returns
+    the number of pieces joined."""
     new = changed_ids[1:]
     if not new:
         return 0
     win = labels[gw]
-    dwin = dist[gw]
+    dwin = np.ascontiguousarray(dist[gw], dtype=np.float32)
     cut_from = np.fromiter(changed_ids, np.int64)
-    joined = 0
+    pairs = None
+    kept = []
     for lid in new:
-        best = None
-        for a, b, da, db in ((win[:-1, :], win[1:, :], dwin[:-1, :], dwin[1:, :]),
-                             (win[:, :-1], win[:, 1:], dwin[:, :-1], dwin[:, 1:])):
-            for p, q, dp, dq in ((a, b, da, db), (b, a, db, da)):
-                m = (p == lid) & (q > 0) & ~np.isin(q, cut_from)
-                if not m.any():
-                    continue
-                nb, sv = q[m], np.minimum(dp[m], dq[m]).astype(np.float64)
-                for h in np.unique(nb).tolist():
-                    s = float(sv[nb == h].max())
-                    if best is None or (s, -h) > (best[0], -best[1]):
-                        best = (s, h)
-        if best is None or peaks[lid] - best[0] >= min_rise:
-            continue
-        win[win == lid] = best[1]
-        grown[best[1]] = max(grown.get(best[1], 0.0), peaks.pop(lid))
-        joined += 1
-    return joined
+        if pairs is None:  # (again after a join: the joined piece's border is its new area's)
+            pairs = _neighbour_pairs(np.ascontiguousarray(win), dwin)[:3]
+        lo, hi, val = pairs
+        other = np.where(lo == lid, hi, np.where(hi == lid, lo, 0))
+        m = (other > 0) & ~np.isin(other, cut_from)
+        if m.any():
+            nb = other[m]
+            hs, inv = np.unique(nb, return_inverse=True)
+            saddle = np.full(len(hs), -np.inf)
+            np.maximum.at(saddle, inv, val[m].astype(np.float64))
+            j = int(np.argmax(saddle))  # the largest saddle, the smallest id on a tie
+            if peaks[lid] - saddle[j] < min_rise:
+                h = int(hs[j])
+                win[win == lid] = h
+                grown.pop(lid, None)  # the clearance of slivers it received is not carried over (its peak is)
+                grown[h] = max(grown.get(h, 0.0), peaks.pop(lid))
+                pairs = None
+                continue
+        kept.append(lid)
+    for nid, lid in enumerate(kept, start=new[0]):  # the pieces left renumbered in order: no unused ids
+        if nid != lid:
+            win[win == lid] = nid
+            peaks[nid] = peaks.pop(lid)
+            if lid in grown:
+                grown[nid] = grown.pop(lid)
+    return len(new) - len(kept)
 
 
 def _wall_line_doors(labels: np.ndarray, space: np.ndarray, dist: np.ndarray, resolution: float,
@@ -2448,12 +2459,6 @@ def _wall_line_doors(labels: np.ndarray, space: np.ndarray, dist: np.ndarray, re
         for lid, v in peaks.items():
             group_peak[lid] = max(v, grown.get(lid, 0.0))
     stats["wall_line_pieces_rejoined"] = float(sum(rejoined))
-    if sum(rejoined):  # the joined pieces' ids are unused: renumber 1.. in the same order
-        used = np.bincount(labels.ravel(), minlength=len(group_peak)) > 0
-        used[0] = True
-        lut = np.cumsum(used).astype(np.int32) - 1
-        labels = lut[labels]
-        group_peak = group_peak[used]
     stats["wall_line_s"] = time.perf_counter() - t
     return labels, group_peak
 
